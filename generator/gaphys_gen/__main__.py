@@ -1,0 +1,75 @@
+"""Command line: python3 -m gaphys_gen (or generator/gaphys-gen) <command> ...
+
+  generate SPEC --variant reference|optimized --out DIR [--namespace NS] [--no-format]
+      Parse SPEC, expand it and write DIR/<ns>/<ns>.hpp and its companions
+      (all or none). NS defaults to the spec's algebra name.
+  check SPEC --variant V --out DIR [--namespace NS]
+      Exit 1, listing the files, if generating would change anything in DIR.
+"""
+
+import argparse
+import os
+import shlex
+import sys
+
+from . import model, output, render
+from .errors import SpecError, UsageError
+
+
+def parse_arguments(argv: list[str]) -> argparse.Namespace:
+    parser = argparse.ArgumentParser(prog="gaphys-gen", description="Geometric-algebra C++ generator.")
+    commands = parser.add_subparsers(dest="command", required=True)
+    for name, text in (("generate", "write the generated library"), ("check", "fail if DIR is stale")):
+        command = commands.add_parser(name, help=text)
+        command.add_argument("spec", help="the algebra spec (.ga)")
+        command.add_argument("--variant", choices=render.VARIANTS, required=True)
+        command.add_argument("--out", required=True, help="output folder (the include root)")
+        command.add_argument("--namespace", help="C++ namespace and header folder (default: the algebra name)")
+        command.add_argument("--no-format", action="store_true", help="skip clang-format")
+    return parser.parse_args(argv)
+
+
+def regenerate_command(arguments: argparse.Namespace) -> str:
+    words = ["gaphys-gen", "generate", arguments.spec, "--variant", arguments.variant, "--out", arguments.out]
+    if arguments.namespace:
+        words += ["--namespace", arguments.namespace]
+    return " ".join(shlex.quote(w) for w in words)
+
+
+def main(argv: list[str] | None = None) -> int:
+    arguments = parse_arguments(sys.argv[1:] if argv is None else argv)
+    try:
+        try:
+            algebra = model.load(arguments.spec)
+        except OSError as error:
+            raise UsageError(f"{arguments.spec}: cannot read: {error.strerror}") from error
+        namespace = arguments.namespace or algebra.name
+        if not namespace.isidentifier():
+            raise UsageError(f"--namespace {namespace!r} is not a C++ identifier")
+        formatter = None if arguments.no_format else render.find_clang_format()
+        if formatter is None and not arguments.no_format:
+            print("gaphys-gen: warning: clang-format not found, output is unformatted", file=sys.stderr)
+        files = render.render(algebra, arguments.variant, namespace, regenerate_command(arguments), formatter)
+    except (SpecError, UsageError) as error:
+        print(error, file=sys.stderr)
+        return 1
+    if arguments.command == "check":
+        stale = []
+        for relative, text in sorted(files.items()):
+            path = os.path.join(arguments.out, relative)
+            try:
+                with open(path, encoding="utf-8", newline="") as handle:
+                    if handle.read() == text:
+                        continue
+            except FileNotFoundError:
+                pass
+            stale.append(path)
+        for path in stale:
+            print(f"gaphys-gen: stale: {path}", file=sys.stderr)
+        return 1 if stale else 0
+    output.write_all(arguments.out, files)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,259 @@
+"""Symbolic expansion of functions on named types into kernels.
+
+For each (function, argument types) the spec asks for, plus the unary and
+linear functions every named type gets, we expand the function on symbolic
+arguments (one variable per stored coordinate; constant coordinates fold).
+The structurally nonzero result blades pick the return type: the declared
+named type with the fewest stored coordinates that holds them (and whose
+constant coordinates the result provably equals), else `mv`; a result that is
+only the scalar blade is a plain scalar.
+"""
+
+from dataclasses import dataclass
+from fractions import Fraction
+
+from . import symbolic as sym
+from .blades import PRODUCTS, conjugate_sign, involute_sign, reverse_sign
+from .errors import SpecError
+from .model import Algebra, FunctionRequest, NamedType
+from .symbolic import Poly, SymMV
+
+ARGUMENT_NAMES = ("a", "b")
+AUTO_UNARY = ("neg", "reverse", "involute", "conjugate", "norm2", "inverse", "dual", "undual")
+AUTO_BINARY_SAME_TYPE = ("add", "sub")
+
+
+@dataclass(frozen=True)
+class ResultType:
+    """What a kernel returns: a named type, the general `mv`, or a plain scalar."""
+
+    kind: str  # "named", "mv", "scalar"
+    named: NamedType | None = None
+
+
+@dataclass
+class Kernel:
+    function: str
+    arguments: tuple[NamedType, ...]  # named types; "smul" also takes a scalar first
+    result: ResultType
+    # Per output slot: (index, polynomial). index = stored coordinate of a named
+    # result, canonical blade index of an mv result, 0 for a scalar.
+    outputs: list[tuple[int, Poly]]
+    divisor: Poly | None = None  # each output is divided by this scalar
+    form: str = "polynomial"  # "polynomial", "exp_closed", "log_closed", "via_mv"
+    square: Poly | None = None  # exp/log closed forms: the scalar square of the (bi)vector part
+    cosine: Poly | None = None  # log closed form: the scalar part of the argument
+    log_fallback_output: int | None = None  # log: output that takes pi when the angle is 2 pi
+    mv_bits: int = 0  # mv result: the canonical-index bitmap of structurally nonzero blades
+
+    @property
+    def signature(self) -> tuple[str, tuple[str, ...]]:
+        return (self.function, tuple(a.name for a in self.arguments))
+
+
+def cost(poly: Poly) -> tuple[int, int]:
+    """(multiplications, additions) of evaluating poly as written."""
+    if poly.is_zero():
+        return 0, 0
+    muls = sum(max(len(m) - 1, 0) + (1 if abs(c) != 1 and m else 0) for m, c in poly.terms.items())
+    return muls, len(poly.terms) - 1
+
+
+class Expander:
+    def __init__(self, algebra: Algebra):
+        self.algebra = algebra
+        self.products = algebra.products
+        self.grade_of = lambda bitmap: bin(bitmap).count("1")
+        pseudoscalar = (1 << len(algebra.basis)) - 1
+        norm = dict(self.products.gp(pseudoscalar, pseudoscalar)).get(0, Fraction(0))
+        self.has_dual = norm != 0  # a degenerate metric has no dual through I^-1
+        self.pseudoscalar = {pseudoscalar: Poly.constant(1)}
+        self.pseudoscalar_inverse = {pseudoscalar: Poly.constant(1 / norm)} if self.has_dual else {}
+
+    # -- symbolic arguments and recipes -----------------------------------------------
+    def argument(self, named: NamedType, letter: str) -> SymMV:
+        value: SymMV = {}
+        stored = 0
+        for coordinate in named.coordinates:
+            if coordinate.constant is None:
+                poly = Poly.variable(f"{letter}{stored}")
+                stored += 1
+            else:
+                poly = Poly.constant(coordinate.constant)
+            value[coordinate.blade.bitmap] = poly.scale(Fraction(coordinate.sign))
+        return sym.clean(value)
+
+    def prod(self, kind: str, x: SymMV, y: SymMV) -> SymMV:
+        return sym.product(self.products, kind, x, y)
+
+    def reverse(self, x: SymMV) -> SymMV:
+        return sym.map_signs(x, reverse_sign)
+
+    def dual(self, x: SymMV) -> SymMV:
+        return self.prod("gp", x, self.pseudoscalar_inverse)
+
+    def undual(self, x: SymMV) -> SymMV:
+        return self.prod("gp", x, self.pseudoscalar)
+
+    def scalar_of(self, x: SymMV) -> Poly:
+        return x.get(0, Poly())
+
+    def recipe(self, function: str, args: list[SymMV]) -> tuple[SymMV, Poly | None]:
+        """The unnormalized result and an optional scalar divisor."""
+        if function in PRODUCTS:
+            return self.prod(function, args[0], args[1]), None
+        if function in ("add", "sub"):
+            return sym.add(args[0], args[1], 1 if function == "add" else -1), None
+        if function == "smul":
+            return sym.scale(args[1], Poly.variable("s")), None
+        if function == "neg":
+            return sym.scale(args[0], Poly.constant(-1)), None
+        if function == "reverse":
+            return self.reverse(args[0]), None
+        if function == "involute":
+            return sym.map_signs(args[0], involute_sign), None
+        if function == "conjugate":
+            return sym.map_signs(args[0], conjugate_sign), None
+        if function == "dual":
+            return self.dual(args[0]), None
+        if function == "undual":
+            return self.undual(args[0]), None
+        if function == "meet":
+            return self.undual(self.prod("op", self.dual(args[0]), self.dual(args[1]))), None
+        if function == "norm2":
+            return {0: self.scalar_of(self.prod("gp", args[0], self.reverse(args[0])))}, None
+        if function == "inverse":
+            x = args[0]
+            return self.reverse(x), self.scalar_of(self.prod("gp", x, self.reverse(x)))
+        if function == "apply":
+            v, x = args
+            sandwich = self.prod("gp", self.prod("gp", v, x), self.reverse(v))
+            # A versor sandwich preserves grade. The named versor types are not
+            # constrained to true versors, so other grades can appear symbolically;
+            # they vanish for every actual versor, and we drop them.
+            grades = {self.grade_of(b) for b in x}
+            sandwich = {b: p for b, p in sandwich.items() if self.grade_of(b) in grades}
+            return sandwich, self.scalar_of(self.prod("gp", v, self.reverse(v)))
+        raise AssertionError(function)
+
+    # -- result type ------------------------------------------------------------------
+    def fits(self, named: NamedType, result: SymMV, divisor: Poly | None) -> bool:
+        if not set(result) <= named.bitmaps:
+            return False
+        for coordinate in named.coordinates:
+            if coordinate.constant is not None:
+                value = result.get(coordinate.blade.bitmap, Poly()).scale(Fraction(coordinate.sign))
+                expected = (divisor or Poly.constant(1)).scale(coordinate.constant)
+                if value != expected:
+                    return False
+        return True
+
+    def result_type(self, result: SymMV, divisor: Poly | None) -> ResultType:
+        if set(result) <= {0}:
+            return ResultType("scalar")
+        candidates = [
+            (len(t.stored), len(t.coordinates), order, t)
+            for order, t in enumerate(self.algebra.types)
+            if self.fits(t, result, divisor)
+        ]
+        if not candidates:
+            return ResultType("mv")
+        return ResultType("named", min(candidates, key=lambda c: c[:3])[3])
+
+    def outputs(self, result: SymMV, rtype: ResultType) -> tuple[list[tuple[int, Poly]], int]:
+        if rtype.kind == "scalar":
+            return [(0, result.get(0, Poly()))], 0
+        if rtype.kind == "mv":
+            blades = [self.algebra.blade_by_bitmap(b) for b in result]
+            slots = sorted((b.index, result[b.bitmap]) for b in blades)
+            return slots, sum(1 << index for index, _ in slots)
+        slots = [
+            (i, result.get(c.blade.bitmap, Poly()).scale(Fraction(c.sign)))
+            for i, c in enumerate(rtype.named.stored)
+        ]
+        return slots, 0
+
+    # -- kernels ---------------------------------------------------------------------
+    def kernel(self, function: str, arguments: tuple[NamedType, ...], location=None) -> Kernel:
+        args = [self.argument(t, letter) for t, letter in zip(arguments, ARGUMENT_NAMES)]
+        if function == "smul":
+            args = [{}] + args
+        if function == "exp":
+            return self.exp_kernel(arguments[0], args[0])
+        if function == "log":
+            return self.log_kernel(arguments[0], args[0])
+        result, divisor = self.recipe(function, args)
+        if not result and location is not None:
+            raise SpecError(location, f"{function}({', '.join(a.name for a in arguments)}) is identically zero")
+        rtype = self.result_type(result, divisor)
+        if function == "norm2":
+            rtype = ResultType("scalar")
+        outputs, bits = self.outputs(result, rtype)
+        return Kernel(function, arguments, rtype, outputs, divisor, mv_bits=bits)
+
+    def blades_of_powers(self, x: SymMV) -> SymMV:
+        """Blades reachable in exp(x) = sum x^k / k!, as a symbolic mv of placeholder ones."""
+        reached = {0: Poly.constant(1)}
+        power = {0: Poly.constant(1)}
+        stable = 0
+        for _ in range(1 << len(self.algebra.basis)):
+            power = self.prod("gp", power, x)
+            before = set(reached)
+            reached.update({b: Poly.constant(1) for b in power})
+            stable = stable + 1 if set(reached) == before else 0
+            if stable == 2 or not power:
+                break
+        return reached
+
+    def exp_kernel(self, named: NamedType, x: SymMV) -> Kernel:
+        square = self.prod("gp", x, x)
+        if set(square) <= {0}:
+            # x^2 = s: exp(x) = c(s) + k(s) x; the runtime picks cos/sin, cosh/sinh or 1 + x.
+            result = sym.add({0: Poly.variable("c")}, sym.scale(x, Poly.variable("k")))
+            rtype = self.result_type({0: Poly.constant(1), **x}, None)
+            outputs, bits = self.outputs(result, rtype)
+            return Kernel("exp", (named,), rtype, outputs, None, "exp_closed", self.scalar_of(square), mv_bits=bits)
+        rtype = self.result_type(self.blades_of_powers(x), None)
+        return Kernel("exp", (named,), rtype, [], None, "via_mv")
+
+    def log_kernel(self, named: NamedType, x: SymMV) -> Kernel:
+        bivector = sym.grade_part(x, self.grade_of, 2)
+        other = {b: p for b, p in x.items() if self.grade_of(b) not in (0, 2)}
+        rtype = self.result_type(bivector, None) if bivector else ResultType("mv")
+        square = self.prod("gp", bivector, bivector)
+        if other or not set(square) <= {0} or rtype.kind != "named":
+            return Kernel("log", (named,), rtype, [], None, "via_mv")
+        # log(c + B) = f(s, c) B with B^2 = s; the runtime picks atan2, atanh or 1/c.
+        outputs, _ = self.outputs(sym.scale(bivector, Poly.variable("f")), rtype)
+        fallback = next(
+            (i for i, c in enumerate(rtype.named.stored)
+             if self.products.gp(c.blade.bitmap, c.blade.bitmap).get(0) == -1),
+            None,
+        )
+        return Kernel("log", (named,), rtype, outputs, None, "log_closed", self.scalar_of(square),
+                      self.scalar_of(x), fallback)
+
+
+def expand(algebra: Algebra) -> list[Kernel]:
+    """Every kernel the optimized variant emits, in a deterministic order."""
+    expander = Expander(algebra)
+    kernels: dict[tuple, Kernel] = {}
+
+    def add(function: str, arguments: tuple[NamedType, ...], location=None):
+        key = (function, tuple(a.name for a in arguments))
+        if key not in kernels:
+            kernels[key] = expander.kernel(function, arguments, location)
+
+    for named in algebra.types:
+        for function in AUTO_UNARY:
+            if function in ("dual", "undual", "inverse") and not expander.has_dual and function != "inverse":
+                continue
+            add(function, (named,))
+        add("smul", (named,))
+        for function in AUTO_BINARY_SAME_TYPE:
+            add(function, (named, named))
+    for request in algebra.functions:
+        if request.name in ("dual", "undual", "meet") and not expander.has_dual:
+            raise SpecError(request.location, f"{request.name} needs a non-degenerate metric (the pseudoscalar squares to 0)")
+        add(request.name, request.arguments, request.location)
+    return list(kernels.values())

@@ -1,0 +1,306 @@
+"""The validated algebra: what the parser read, checked and resolved.
+
+Everything here is exact and in canonical order. Canonical blade order: by
+grade, then lexicographically by the spec's basis-vector order.
+"""
+
+import hashlib
+import re
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+from . import syntax as ast
+from .blades import BladeAlgebra, Multivector, grade, reorder_sign
+from .errors import Location, SpecError
+
+MAX_DIMENSION = 5  # run-time bitmaps are 32-bit: one bit per basis blade
+
+BINARY_FUNCTIONS = ("gp", "op", "lc", "rc", "scp", "add", "sub", "meet", "apply")
+UNARY_FUNCTIONS = ("neg", "reverse", "involute", "conjugate", "dual", "undual", "norm2", "inverse", "exp", "log")
+FUNCTION_ARITY = {**{f: 2 for f in BINARY_FUNCTIONS}, **{f: 1 for f in UNARY_FUNCTIONS}}
+
+_CPP_RESERVED = set(
+    """alignas alignof and and_eq asm auto bitand bitor bool break case catch char char8_t char16_t
+    char32_t class compl concept const consteval constexpr constinit const_cast continue co_await
+    co_return co_yield decltype default delete do double dynamic_cast else enum explicit export extern
+    false float for friend goto if inline int long mutable namespace new noexcept not not_eq nullptr
+    operator or or_eq private protected public register reinterpret_cast requires return short signed
+    sizeof static static_assert static_cast struct switch template this thread_local throw true try
+    typedef typeid typename union unsigned using virtual void volatile wchar_t while xor xor_eq
+    mv real std blade_count dimension""".split()
+)
+_LIBRARY_NAMES = set(FUNCTION_ARITY) | {
+    "norm", "unit", "grade", "general_inverse", "approx_equal", "blade_names", "blade_grades",
+}
+
+
+@dataclass(frozen=True)
+class Blade:
+    index: int  # canonical index
+    bitmap: int
+    grade: int
+    name: str  # "e1^e2", "1" for the scalar
+    accessor: str  # "e12", "scalar"
+
+
+@dataclass(frozen=True)
+class Coordinate:
+    blade: Blade
+    sign: int  # the coordinate multiplies sign * blade (e2^e1 is -e1^e2)
+    constant: Fraction | None  # fixed value, not stored
+
+
+@dataclass(frozen=True)
+class NamedType:
+    name: str
+    coordinates: tuple[Coordinate, ...]
+    location: Location
+
+    @property
+    def stored(self) -> tuple[Coordinate, ...]:
+        return tuple(c for c in self.coordinates if c.constant is None)
+
+    @property
+    def bitmaps(self) -> frozenset[int]:
+        return frozenset(c.blade.bitmap for c in self.coordinates)
+
+
+MV = "mv"  # the general multivector, as an argument type
+
+
+@dataclass(frozen=True)
+class FunctionRequest:
+    name: str
+    arguments: tuple[NamedType, ...]
+    location: Location
+
+
+@dataclass(frozen=True)
+class Constant:
+    name: str
+    value: Multivector
+    location: Location
+
+
+@dataclass
+class Algebra:
+    name: str
+    path: str
+    spec_hash: str
+    basis: tuple[str, ...]
+    metric: tuple[tuple[Fraction, ...], ...]
+    scalar: str
+    blades: tuple[Blade, ...]
+    types: tuple[NamedType, ...]
+    aliases: dict[str, str]
+    constants: tuple[Constant, ...]
+    functions: tuple[FunctionRequest, ...]
+    products: BladeAlgebra = field(repr=False)
+
+    @property
+    def blade_count(self) -> int:
+        return len(self.blades)
+
+    def blade_by_bitmap(self, bitmap: int) -> Blade:
+        return self._by_bitmap[bitmap]
+
+    def __post_init__(self):
+        self._by_bitmap = {b.bitmap: b for b in self.blades}
+
+
+def accessor_name(factors: tuple[str, ...]) -> str:
+    """e1^e2 -> e12, no^ni -> no_ni, e1^e2^e3^ni -> e123_ni, scalar -> scalar."""
+    if not factors:
+        return "scalar"
+    groups: list[str] = []
+    for factor in factors:
+        if re.fullmatch(r"e\d", factor) and groups and re.fullmatch(r"e\d+", groups[-1]):
+            groups[-1] += factor[1:]
+        else:
+            groups.append(factor)
+    return "_".join(groups)
+
+
+def canonical_blades(basis: tuple[str, ...]) -> tuple[Blade, ...]:
+    n = len(basis)
+
+    def factors(bitmap):
+        return tuple(basis[i] for i in range(n) if bitmap >> i & 1)
+
+    def key(bitmap):
+        return (grade(bitmap), [i for i in range(n) if bitmap >> i & 1])
+
+    ordered = sorted(range(1 << n), key=key)
+    return tuple(
+        Blade(i, b, grade(b), "^".join(factors(b)) or "1", accessor_name(factors(b)))
+        for i, b in enumerate(ordered)
+    )
+
+
+class _Validator:
+    def __init__(self, spec: ast.SpecSyntax, text: str):
+        self.spec = spec
+        self.text = text
+
+    def error(self, location: Location, message: str) -> SpecError:
+        return SpecError(location, message, self.spec.lines[location.line - 1])
+
+    def check_identifier(self, name: str, location: Location, what: str) -> None:
+        if name in _CPP_RESERVED or name.startswith("basic_") or "__" in name:
+            raise self.error(location, f"{what} {name!r} is reserved in the generated C++")
+
+    def single(self, keyword: str, required: bool = True):
+        found = [s for s in self.spec.statements if s.keyword == keyword]
+        if len(found) > 1:
+            raise self.error(found[1].location, f"second '{keyword}' statement (first at line {found[0].location.line})")
+        if not found and required:
+            raise SpecError(Location(self.spec.path, 1, 1), f"missing '{keyword}' statement")
+        return found[0] if found else None
+
+    def blade_bitmap(self, ref: ast.BladeRef) -> tuple[int, int]:
+        """(bitmap, sign) of a blade as written; e2^e1 is -e1^e2."""
+        bitmap, sign = 0, 1
+        for factor, location in zip(ref.factors, ref.factor_locations):
+            if factor not in self.basis_index:
+                raise self.error(location, f"unknown basis vector {factor!r} (basis: {' '.join(self.basis)})")
+            bit = 1 << self.basis_index[factor]
+            if bitmap & bit:
+                raise self.error(location, f"basis vector {factor!r} repeated in blade")
+            sign *= reorder_sign(bitmap, bit)
+            bitmap |= bit
+        return bitmap, sign
+
+    def validate(self) -> Algebra:
+        algebra = self.single("algebra")
+        self.check_identifier(algebra.name, algebra.location, "algebra name")
+        basis_stmt = self.single("basis")
+        self.basis = basis_stmt.names
+        self.basis_index = {}
+        for name, location in zip(basis_stmt.names, basis_stmt.name_locations):
+            if name in self.basis_index:
+                raise self.error(location, f"basis vector {name!r} declared twice")
+            self.check_identifier(name, location, "basis vector name")
+            self.basis_index[name] = len(self.basis_index)
+        if len(self.basis) > MAX_DIMENSION:
+            raise self.error(basis_stmt.name_locations[MAX_DIMENSION], f"at most {MAX_DIMENSION} basis vectors are supported")
+        metric = self.validate_metric()
+        scalar_stmt = self.single("scalar", required=False)
+        blades = canonical_blades(self.basis)
+        by_bitmap = {b.bitmap: b for b in blades}
+        types = self.validate_types(by_bitmap)
+        type_names = {t.name: t for t in types}
+        aliases = self.validate_aliases(type_names)
+        return Algebra(
+            name=algebra.name,
+            path=self.spec.path,
+            spec_hash=hashlib.sha256(self.text.encode()).hexdigest(),
+            basis=self.basis,
+            metric=metric,
+            scalar=scalar_stmt.type_name if scalar_stmt else "double",
+            blades=blades,
+            types=types,
+            aliases=aliases,
+            constants=self.validate_constants(type_names, aliases),
+            functions=self.validate_functions(type_names, aliases),
+            products=BladeAlgebra(metric),
+        )
+
+    def validate_metric(self) -> tuple[tuple[Fraction, ...], ...]:
+        n = len(self.basis)
+        matrix: list[list[Fraction | None]] = [[None] * n for _ in range(n)]
+        for stmt in (s for s in self.spec.statements if s.keyword == "metric"):
+            for entry in stmt.entries:
+                for name in (entry.left, entry.right):
+                    if name not in self.basis_index:
+                        raise self.error(entry.location, f"unknown basis vector {name!r} in metric")
+                i, j = self.basis_index[entry.left], self.basis_index[entry.right]
+                for a, b in ((i, j), (j, i)):
+                    if matrix[a][b] is not None and matrix[a][b] != entry.value:
+                        raise self.error(
+                            entry.location,
+                            f"metric is not symmetric: {entry.left}.{entry.right} = {entry.value} "
+                            f"but {self.basis[a]}.{self.basis[b]} = {matrix[a][b]}",
+                        )
+                    matrix[a][b] = entry.value
+        return tuple(tuple(v if v is not None else Fraction(0) for v in row) for row in matrix)
+
+    def validate_types(self, by_bitmap: dict[int, Blade]) -> tuple[NamedType, ...]:
+        types, seen = [], {}
+        for stmt in (s for s in self.spec.statements if s.keyword == "type"):
+            self.check_identifier(stmt.name, stmt.location, "type name")
+            if stmt.name in _LIBRARY_NAMES:
+                raise self.error(stmt.location, f"type name {stmt.name!r} clashes with a library function")
+            if stmt.name in seen:
+                raise self.error(stmt.location, f"type {stmt.name!r} declared twice (first at line {seen[stmt.name]})")
+            seen[stmt.name] = stmt.location.line
+            coordinates, blades_seen = [], set()
+            for coordinate in stmt.coordinates:
+                bitmap, sign = self.blade_bitmap(coordinate.blade)
+                if bitmap in blades_seen:
+                    raise self.error(coordinate.blade.location, f"blade {by_bitmap[bitmap].name} appears twice in type {stmt.name!r}")
+                blades_seen.add(bitmap)
+                coordinates.append(Coordinate(by_bitmap[bitmap], sign, coordinate.constant))
+            if all(c.constant is not None for c in coordinates):
+                raise self.error(stmt.location, f"type {stmt.name!r} has no stored coordinate")
+            types.append(NamedType(stmt.name, tuple(coordinates), stmt.location))
+        return tuple(types)
+
+    def validate_aliases(self, type_names: dict) -> dict[str, str]:
+        aliases: dict[str, str] = {}
+        for stmt in (s for s in self.spec.statements if s.keyword == "alias"):
+            self.check_identifier(stmt.name, stmt.location, "alias name")
+            if stmt.name in type_names or stmt.name in aliases:
+                raise self.error(stmt.location, f"name {stmt.name!r} already declared")
+            if stmt.target not in type_names:
+                raise self.error(stmt.target_location, f"unknown type {stmt.target!r}")
+            aliases[stmt.name] = stmt.target
+        return aliases
+
+    def validate_constants(self, type_names: dict, aliases: dict) -> tuple[Constant, ...]:
+        constants, seen = [], set()
+        for stmt in (s for s in self.spec.statements if s.keyword == "constant"):
+            self.check_identifier(stmt.name, stmt.location, "constant name")
+            if stmt.name in seen or stmt.name in type_names or stmt.name in aliases or stmt.name in _LIBRARY_NAMES:
+                raise self.error(stmt.location, f"name {stmt.name!r} already declared")
+            seen.add(stmt.name)
+            value: Multivector = {}
+            for term in stmt.terms:
+                bitmap, sign = self.blade_bitmap(term.blade)
+                value[bitmap] = value.get(bitmap, Fraction(0)) + sign * term.coefficient
+            constants.append(Constant(stmt.name, {b: v for b, v in value.items() if v}, stmt.location))
+        return tuple(constants)
+
+    def validate_functions(self, type_names: dict, aliases: dict) -> tuple[FunctionRequest, ...]:
+        requests, seen = [], {}
+        for stmt in (s for s in self.spec.statements if s.keyword == "function"):
+            if stmt.name not in FUNCTION_ARITY:
+                known = ", ".join(sorted(FUNCTION_ARITY))
+                raise self.error(stmt.location, f"unknown function {stmt.name!r} (known: {known})")
+            if len(stmt.arguments) != FUNCTION_ARITY[stmt.name]:
+                raise self.error(stmt.location, f"{stmt.name} takes {FUNCTION_ARITY[stmt.name]} argument(s), not {len(stmt.arguments)}")
+            arguments = []
+            for name, location in zip(stmt.arguments, stmt.argument_locations):
+                resolved = aliases.get(name, name)
+                if resolved not in type_names:
+                    raise self.error(location, f"unknown type {name!r}")
+                arguments.append(type_names[resolved])
+            key = (stmt.name, tuple(a.name for a in arguments))
+            if key in seen:
+                raise self.error(stmt.location, f"function {stmt.name}({', '.join(key[1])}) declared twice (first at line {seen[key]})")
+            seen[key] = stmt.location.line
+            requests.append(FunctionRequest(stmt.name, tuple(arguments), stmt.location))
+        return tuple(requests)
+
+
+def validate(spec: ast.SpecSyntax, text: str) -> Algebra:
+    """Check a parsed spec and resolve it into an Algebra; raises SpecError with a location."""
+    return _Validator(spec, text).validate()
+
+
+def load(path: str, display_path: str | None = None) -> Algebra:
+    from .parser import parse
+
+    with open(path, encoding="utf-8") as handle:
+        text = handle.read()
+    shown = display_path or path
+    return validate(parse(text, shown), text)

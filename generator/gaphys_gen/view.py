@@ -1,0 +1,175 @@
+"""The view model: everything the templates print, prepared in Python.
+
+Templates only loop and print; every decision about the algebra (result
+types, expressions, counts, table contents) is made here.
+"""
+
+from fractions import Fraction
+
+from . import cpp
+from .blades import PRODUCTS, conjugate_sign, involute_sign, reverse_sign
+from .expand import Expander, Kernel
+from .model import Algebra, NamedType
+
+# Functions with a generic (mv) implementation that returns a scalar.
+SCALAR_GENERIC = {"scp", "norm2"}
+
+
+def type_cpp(named: NamedType) -> str:
+    return f"basic_{named.name}"
+
+
+def sparse_table(entries: list[list[tuple[int, Fraction]]]) -> dict:
+    offsets, terms = [0], []
+    for entry in entries:
+        terms.extend({"blade": b, "coefficient": repr(float(c))} for b, c in entry)
+        offsets.append(len(terms))
+    return {"offsets": offsets, "terms": terms}
+
+
+def tables(algebra: Algebra, expander: Expander) -> dict:
+    blades = algebra.blades
+    index = {b.bitmap: b.index for b in blades}
+
+    def as_entry(multivector):
+        return sorted((index[b], v) for b, v in multivector.items() if v)
+
+    products = {
+        kind: sparse_table([as_entry(algebra.products.product(kind, a.bitmap, b.bitmap)) for a in blades for b in blades])
+        for kind in PRODUCTS
+    }
+    linear = {}
+    if expander.has_dual:
+        for name, factor in (("dual", expander.pseudoscalar_inverse), ("undual", expander.pseudoscalar)):
+            (bitmap, poly), = factor.items()
+            value = poly.terms[()]
+            linear[name] = sparse_table(
+                [[(i, c * value) for i, c in as_entry(algebra.products.gp(b.bitmap, bitmap))] for b in blades]
+            )
+    signs = {
+        name: [sign(b.bitmap) for b in blades]
+        for name, sign in (("reverse", reverse_sign), ("involute", involute_sign), ("conjugate", conjugate_sign))
+    }
+    return {"products": products, "linear": linear, "signs": signs}
+
+
+def named_type(named: NamedType) -> dict:
+    coordinates, stored = [], 0
+    for c in named.coordinates:
+        coordinates.append(
+            {
+                "accessor": c.blade.accessor,
+                "blade_index": c.blade.index,
+                "blade_name": c.blade.name,
+                "sign": "" if c.sign > 0 else "-",
+                "stored_index": None if c.constant is not None else stored,
+                "constant": None if c.constant is None else cpp.number(c.constant),
+            }
+        )
+        stored += c.constant is None
+    return {
+        "name": named.name,
+        "cpp": type_cpp(named),
+        "size": stored,
+        "explicit": "explicit " if stored == 1 else "",  # no silent conversion from a bare scalar
+        "coordinates": coordinates,
+        "stored": [c for c in coordinates if c["stored_index"] is not None],
+        "constants": [c for c in coordinates if c["constant"] is not None],
+        "bits": hex(sum(1 << c.blade.index for c in named.coordinates)) + "u",
+        "description": ", ".join(c.blade.name + ("" if c.constant is None else f" = {c.constant}") for c in named.coordinates),
+    }
+
+
+def return_type(kernel: Kernel) -> str:
+    if kernel.result.kind == "scalar":
+        return "T"
+    if kernel.result.kind == "mv":
+        return "basic_mv<T>"
+    return type_cpp(kernel.result.named) + "<T>"
+
+
+def kernel_view(kernel: Kernel) -> dict:
+    names = [a.name for a in kernel.arguments]
+    params = [f"const {type_cpp(a)}<T>& {letter}" for a, letter in zip(kernel.arguments, "ab")]
+    mv_args = [f"basic_mv<T>({letter})" for letter in "ab"[: len(kernel.arguments)]]
+    shown = list(names)
+    if kernel.function == "smul":
+        params.insert(0, "T s")
+        mv_args.insert(0, "s")
+        shown.insert(0, "scalar")
+    rtype = return_type(kernel)
+    call = f"{kernel.function}({', '.join(mv_args)})"
+    if kernel.result.kind == "named":
+        via_mv = f"{rtype}({call})"
+    elif kernel.result.kind == "scalar" and kernel.function not in SCALAR_GENERIC:
+        via_mv = f"{call}.c[0]"
+    else:
+        via_mv = call
+    polys = [p for _, p in kernel.outputs] + [p for p in (kernel.divisor, kernel.square, kernel.cosine) if p]
+    muls, adds = cpp.count(polys)
+    if kernel.divisor is not None:
+        muls += len(kernel.outputs)
+    extra = {"exp_closed": ", 1 exp_of_square", "log_closed": ", 1 log_factor", "via_mv": " (general mv path)"}
+    result_name = kernel.result.named.name if kernel.result.named else ("scalar" if kernel.result.kind == "scalar" else "mv")
+    cost_text = "" if kernel.form == "via_mv" else f": {muls} mul, {adds} add" + (", 1 div" if kernel.divisor else "")
+    fallback = None
+    if kernel.log_fallback_output is not None:
+        fallback = kernel.log_fallback_output
+    return {
+        "form": kernel.form,
+        "name": kernel.function,
+        "summary": f"{kernel.function}({', '.join(shown)}) -> {result_name}",
+        "comment": f"{kernel.function}({', '.join(shown)}) -> {result_name}{cost_text}{extra.get(kernel.form, '')}",
+        "return_type": rtype,
+        "params": ", ".join(params),
+        "result_kind": kernel.result.kind,
+        "outputs": [{"index": i, "expr": cpp.expression(p)} for i, p in kernel.outputs],
+        "divisor": cpp.expression(kernel.divisor) if kernel.divisor is not None else None,
+        "square": cpp.expression(kernel.square) if kernel.square is not None else None,
+        "cosine": cpp.expression(kernel.cosine) if kernel.cosine is not None else None,
+        "fallback_index": fallback,
+        "mv_bits": hex(kernel.mv_bits) + "u",
+        "via_mv": via_mv,
+    }
+
+
+def constant_view(algebra: Algebra, expander: Expander, constant) -> dict:
+    value = {b: v for b, v in constant.value.items()}
+    from .symbolic import from_constant
+
+    rtype = expander.result_type(from_constant(value), None)
+    if rtype.kind == "named":
+        named = rtype.named
+        args = [cpp.number(Fraction(c.sign) * value.get(c.blade.bitmap, Fraction(0))) for c in named.stored]
+        return {"name": constant.name, "type": type_cpp(named) + "<T>", "init": "{" + ", ".join(args) + "}"}
+    entries = ", ".join(f"{{{algebra.blade_by_bitmap(b).index}, {cpp.number(v)}}}" for b, v in sorted(value.items()))
+    if rtype.kind == "scalar":
+        return {"name": constant.name, "type": "T", "init": f"({cpp.number(value.get(0, Fraction(0)))})"}
+    return {"name": constant.name, "type": "basic_mv<T>", "init": f"(basic_mv<T>::from_terms({{{entries}}}))"}
+
+
+def build(algebra: Algebra, kernels: list[Kernel], variant: str, banner: list[str], namespace: str) -> dict:
+    expander = Expander(algebra)
+    return {
+        "banner": banner,
+        "namespace": namespace,
+        "variant": variant,
+        "algebra": algebra.name,
+        "scalar": algebra.scalar,
+        "dimension": len(algebra.basis),
+        "blade_count": algebra.blade_count,
+        "basis": list(algebra.basis),
+        "blades": [{"index": b.index, "name": b.name, "grade": b.grade} for b in algebra.blades],
+        "grade_masks": [
+            hex(sum(1 << b.index for b in algebra.blades if b.grade == k)) + "u" for k in range(len(algebra.basis) + 1)
+        ],
+        "has_dual": expander.has_dual,
+        "binary_fallbacks": ["gp", "op", "lc", "rc", "add", "sub", "apply"] + (["meet"] if expander.has_dual else []),
+        "unary_fallbacks": ["neg", "general_inverse", "exp", "log", "inverse", "reverse", "involute", "conjugate"]
+        + (["dual", "undual"] if expander.has_dual else []),
+        "tables": tables(algebra, expander),
+        "types": [named_type(t) for t in algebra.types],
+        "aliases": [{"name": a, "target": "basic_" + t} for a, t in algebra.aliases.items()],
+        "constants": [constant_view(algebra, expander, c) for c in algebra.constants],
+        "kernels": [kernel_view(k) for k in kernels],
+    }

@@ -1,0 +1,228 @@
+// Algorithms on general multivectors that are not a single table lookup:
+// exp, log, the general inverse, printing. They are written once against the
+// generated `basic_mv` interface (c, bits, size, grade_mask, basis_blade,
+// blade_name) and the algebra's gp, found by argument-dependent lookup.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <ostream>
+#include <stdexcept>
+
+#include "scalar_functions.hpp"
+
+namespace gaphys::ga {
+
+template <class MV>
+typename MV::scalar_type max_abs(const MV& x) {
+  typename MV::scalar_type m = 0;
+  for (int i = 0; i < MV::size; ++i) m = std::max(m, std::abs(x.c[i]));
+  return m;
+}
+
+template <class MV>
+MV keep_grades(const MV& x, std::uint32_t mask) {
+  MV r = x;
+  for (int i = 0; i < MV::size; ++i)
+    if (!(mask >> i & 1)) r.c[i] = 0;
+  r.bits &= mask;
+  return r;
+}
+
+template <class MV>
+MV linear_combination(typename MV::scalar_type a, const MV& x, typename MV::scalar_type b, const MV& y) {
+  MV r;
+  for (int i = 0; i < MV::size; ++i) r.c[i] = a * x.c[i] + b * y.c[i];
+  r.bits = x.bits | y.bits;
+  return r;
+}
+
+template <class MV>
+MV plus_scalar(const MV& x, typename MV::scalar_type s) {
+  MV r = x;
+  r.c[0] += s;
+  r.bits |= 1;
+  return r;
+}
+
+// Tolerance for "numerically zero" relative to a magnitude.
+template <class T>
+T tolerance(T magnitude) {
+  return std::numeric_limits<T>::epsilon() * T(256) * std::max(T(1), magnitude);
+}
+
+// True when x is a scalar up to rounding.
+template <class MV>
+bool is_numerically_scalar(const MV& x, typename MV::scalar_type magnitude) {
+  return max_abs(keep_grades(x, ~std::uint32_t(1))) <= tolerance(magnitude);
+}
+
+// exp(x) = c + k x when x^2 is a scalar.
+template <class MV>
+MV exp_simple(const MV& x, typename MV::scalar_type square) {
+  const auto f = exp_of_square(square);
+  return plus_scalar(linear_combination(f.k, x, typename MV::scalar_type(0), x), f.c);
+}
+
+// Taylor series with scaling and squaring: exp(x) = exp(x / 2^m)^(2^m).
+template <class MV>
+MV exp_series(const MV& x) {
+  using T = typename MV::scalar_type;
+  int m = 0;
+  T scale = max_abs(x) * T(MV::size);
+  while (scale > T(0.5)) {
+    scale /= 2;
+    ++m;
+  }
+  const MV y = linear_combination(std::ldexp(T(1), -m), x, T(0), x);
+  MV sum = MV::basis_blade(0), term = MV::basis_blade(0);
+  for (int k = 1; k <= 18; ++k) {
+    term = gp(term, y);
+    term = linear_combination(T(1) / T(k), term, T(0), term);
+    sum = linear_combination(T(1), sum, T(1), term);
+  }
+  for (int i = 0; i < m; ++i) sum = gp(sum, sum);
+  return sum;
+}
+
+// Splits a bivector B of an algebra of dimension <= 5 into commuting parts
+// B = b1 + b2 with scalar squares l1, l2 (the invariant decomposition).
+// With W = <B^2>_4 / 2 = b1 b2: B^2 = l1 + l2 + 2W and W^2 = l1 l2, so l1, l2
+// solve l^2 - <B^2>_0 l + <W^2>_0 = 0, and (l1 - W) B = (l1 - l2) b1.
+// Returns false when the roots are complex or coincide.
+template <class MV>
+bool split_bivector(const MV& b, MV& b1, MV& b2, typename MV::scalar_type& l1, typename MV::scalar_type& l2) {
+  using T = typename MV::scalar_type;
+  const MV square = gp(b, b);
+  const MV w = linear_combination(T(0.5), keep_grades(square, MV::grade_mask(4)), T(0), square);
+  const T s0 = square.c[0];
+  const T w2 = gp(w, w).c[0];
+  const T disc = s0 * s0 - T(4) * w2;
+  const T scale = std::max(T(1), s0 * s0);
+  if (disc < -tolerance(scale)) return false;
+  const T root = std::sqrt(std::max(disc, T(0)));
+  if (root <= std::sqrt(tolerance(scale))) return false;
+  // Order so that l2 is the root nearer zero (the null part of a screw motion).
+  l1 = s0 >= 0 ? (s0 + root) / 2 : (s0 - root) / 2;
+  l2 = s0 - l1;
+  const MV l1_minus_w = plus_scalar(linear_combination(T(-1), w, T(0), w), l1);
+  b1 = keep_grades(gp(l1_minus_w, b), MV::grade_mask(2));
+  b1 = linear_combination(T(1) / (l1 - l2), b1, T(0), b1);
+  b2 = linear_combination(T(1), b, T(-1), b1);
+  return true;
+}
+
+// exp of any multivector: closed forms for bivectors (rotors, boosts,
+// translators, screw motions), the series otherwise.
+template <class MV>
+MV exp_general(const MV& x) {
+  using T = typename MV::scalar_type;
+  if ((x.bits & ~MV::grade_mask(2)) != 0) return exp_series(x);
+  const MV square = gp(x, x);
+  const T magnitude = max_abs(square);
+  if (is_numerically_scalar(square, magnitude)) return exp_simple(x, square.c[0]);
+  MV b1, b2;
+  T l1, l2;
+  if (!split_bivector(x, b1, b2, l1, l2)) return exp_series(x);
+  return gp(exp_simple(b1, l1), exp_simple(b2, l2));
+}
+
+// A plane to rotate in when log meets -1 (rotation by 2 pi): the first basis
+// bivector that squares to -1.
+template <class MV>
+MV log_fallback() {
+  using T = typename MV::scalar_type;
+  for (int i = 0; i < MV::size; ++i) {
+    if (!(MV::grade_mask(2) >> i & 1)) continue;
+    const MV e = MV::basis_blade(i);
+    if (gp(e, e).c[0] == T(-1)) return linear_combination(T(3.14159265358979323846), e, T(0), e);
+  }
+  throw std::domain_error("log: -1 has no logarithm in this algebra");
+}
+
+// log of an even versor of grades 0, 2 (and 4 for screw motions): the
+// bivector L with exp(L) = r. Rotation angles come out in [0, pi] per plane.
+// For a screw r = exp(b1) exp(b2), b1 a rotation (b1^2 = -t^2), b2 null and
+// commuting with b1: <r>_0 = cos t, <r>_2 = sin t u1 + cos t b2 (u1 = b1/t),
+// <r>_4 = sin t u1 b2, hence b2 = cos t <r>_2,null - (sin t u1) <r>_4.
+template <class MV>
+MV log_general(const MV& r) {
+  using T = typename MV::scalar_type;
+  const T magnitude = max_abs(r);
+  const std::uint32_t even = MV::grade_mask(0) | MV::grade_mask(2) | MV::grade_mask(4);
+  if (max_abs(keep_grades(r, ~even)) > tolerance(magnitude))
+    throw std::domain_error("log: argument is not an even versor (grades 0, 2, 4)");
+  const T c = r.c[0];
+  const MV b = keep_grades(r, MV::grade_mask(2));
+  const MV q = keep_grades(r, MV::grade_mask(4));
+  const MV square = gp(b, b);
+  if (max_abs(q) <= tolerance(magnitude) && is_numerically_scalar(square, max_abs(square))) {
+    if (log_needs_fallback(square.c[0], c)) return log_fallback<MV>();
+    return linear_combination(log_factor(square.c[0], c), b, T(0), b);
+  }
+  MV b1, b2;
+  T l1, l2;
+  if (!split_bivector(b, b1, b2, l1, l2) || l1 >= 0 || std::abs(l2) > std::sqrt(tolerance(std::abs(l1))))
+    throw std::domain_error("log: only rotations, boosts, translations and screw motions are supported");
+  const T s1 = std::sqrt(-l1);
+  const T angle = std::atan2(s1, c);
+  const MV null_part = linear_combination(c, b2, T(0), b2);
+  const MV correction = keep_grades(gp(b1, q), MV::grade_mask(2));
+  return linear_combination(angle / s1, b1, T(1), linear_combination(T(1), null_part, T(-1), correction));
+}
+
+// The inverse of any invertible multivector: solves x y = 1 for y by Gaussian
+// elimination on the matrix of left multiplication by x.
+template <class MV>
+MV general_inverse(const MV& x) {
+  using T = typename MV::scalar_type;
+  constexpr int n = MV::size;
+  std::array<std::array<T, n + 1>, n> m{};
+  for (int j = 0; j < n; ++j) {
+    const MV column = gp(x, MV::basis_blade(j));
+    for (int i = 0; i < n; ++i) m[i][j] = column.c[i];
+  }
+  m[0][n] = 1;
+  const T scale = max_abs(x);
+  for (int col = 0; col < n; ++col) {
+    int pivot = col;
+    for (int i = col + 1; i < n; ++i)
+      if (std::abs(m[i][col]) > std::abs(m[pivot][col])) pivot = i;
+    if (!(std::abs(m[pivot][col]) > tolerance(scale) * scale))
+      throw std::domain_error("general_inverse: the multivector is not invertible");
+    std::swap(m[pivot], m[col]);
+    for (int i = 0; i < n; ++i) {
+      if (i == col || m[i][col] == 0) continue;
+      const T f = m[i][col] / m[col][col];
+      for (int k = col; k <= n; ++k) m[i][k] -= f * m[col][k];
+    }
+  }
+  MV y;
+  for (int i = 0; i < n; ++i) {
+    y.c[i] = m[i][n] / m[i][i];
+    if (y.c[i] != 0) y.bits |= std::uint32_t(1) << i;
+  }
+  return y;
+}
+
+// Prints "1.5*e1 - 2*e1^e2", or "0".
+template <class MV>
+std::ostream& print(std::ostream& out, const MV& x) {
+  bool first = true;
+  for (int i = 0; i < MV::size; ++i) {
+    const auto v = x.c[i];
+    if (v == 0) continue;
+    if (!first) out << (v < 0 ? " - " : " + ");
+    else if (v < 0) out << "-";
+    out << std::abs(v);
+    if (i != 0) out << "*" << MV::blade_name(i);
+    first = false;
+  }
+  if (first) out << "0";
+  return out;
+}
+
+}  // namespace gaphys::ga

@@ -1,0 +1,7 @@
+// The gaphys GA runtime: what every generated algebra header includes.
+#pragma once
+
+#include "mv_algorithms.hpp"
+#include "scalar_functions.hpp"
+#include "table_product.hpp"
+#include "version.hpp"
