@@ -23,7 +23,7 @@ class SpecError(Exception):
         loc = self.location
         text = f"{loc.path}:{loc.line}:{loc.column}: error: {self.message}"
         if self.source_line:
-            text += "\n" + self.source_line.rstrip("\n") + "\n" + " " * (loc.column - 1) + "^"
+            text += "\n" + self.source_line.rstrip("\r\n") + "\n" + " " * (loc.column - 1) + "^"
         return text
 
 

@@ -172,7 +172,7 @@ class _Validator:
 
     def validate(self) -> Algebra:
         algebra = self.single("algebra")
-        self.check_identifier(algebra.name, algebra.location, "algebra name")
+        self.check_identifier(algebra.name, algebra.name_location, "algebra name")
         basis_stmt = self.single("basis")
         self.basis = basis_stmt.names
         self.basis_index = {}
@@ -186,6 +186,15 @@ class _Validator:
         metric = self.validate_metric()
         scalar_stmt = self.single("scalar", required=False)
         blades = canonical_blades(self.basis)
+        accessors: dict[str, str] = {}
+        for blade in blades:
+            if blade.accessor in accessors:
+                raise self.error(
+                    basis_stmt.location,
+                    f"blades {accessors[blade.accessor]} and {blade.name} would both be named "
+                    f"{blade.accessor!r} in C++; rename a basis vector",
+                )
+            accessors[blade.accessor] = blade.name
         by_bitmap = {b.bitmap: b for b in blades}
         types = self.validate_types(by_bitmap)
         type_names = {t.name: t for t in types}
@@ -210,9 +219,9 @@ class _Validator:
         matrix: list[list[Fraction | None]] = [[None] * n for _ in range(n)]
         for stmt in (s for s in self.spec.statements if s.keyword == "metric"):
             for entry in stmt.entries:
-                for name in (entry.left, entry.right):
+                for name, location in ((entry.left, entry.location), (entry.right, entry.right_location)):
                     if name not in self.basis_index:
-                        raise self.error(entry.location, f"unknown basis vector {name!r} in metric")
+                        raise self.error(location, f"unknown basis vector {name!r} in metric")
                 i, j = self.basis_index[entry.left], self.basis_index[entry.right]
                 for a, b in ((i, j), (j, i)):
                     if matrix[a][b] is not None and matrix[a][b] != entry.value:
@@ -249,7 +258,7 @@ class _Validator:
         aliases: dict[str, str] = {}
         for stmt in (s for s in self.spec.statements if s.keyword == "alias"):
             self.check_identifier(stmt.name, stmt.location, "alias name")
-            if stmt.name in type_names or stmt.name in aliases:
+            if stmt.name in type_names or stmt.name in aliases or stmt.name in _LIBRARY_NAMES:
                 raise self.error(stmt.location, f"name {stmt.name!r} already declared")
             if stmt.target not in type_names:
                 raise self.error(stmt.target_location, f"unknown type {stmt.target!r}")

@@ -2,27 +2,43 @@
 
 Every file is first written in full to a temporary file beside its target;
 only when all of them are written are they renamed into place (a rename is
-atomic on POSIX). A failure before that removes the temporaries and leaves the
-output folder as it was.
+atomic on POSIX). A failure before that removes the temporaries and any
+folder made for them, leaving the output folder as it was.
 """
 
 import os
 import tempfile
 
 
+def _make_folders(folder: str, made: list[str]) -> None:
+    """Like os.makedirs, recording each folder it creates (outermost first)."""
+    missing = []
+    while folder and not os.path.isdir(folder):
+        missing.append(folder)
+        folder = os.path.dirname(folder)
+    for path in reversed(missing):
+        os.mkdir(path)
+        made.append(path)
+
+
+def _unchanged(target: str, text: str) -> bool:
+    try:
+        with open(target, encoding="utf-8", newline="") as handle:
+            return handle.read() == text
+    except FileNotFoundError:
+        return False
+
+
 def write_all(root: str, files: dict[str, str]) -> list[str]:
     """Writes {relative path: text} under root; returns the paths that changed."""
     staged: list[tuple[str, str]] = []
+    made: list[str] = []
     try:
         for relative, text in sorted(files.items()):
             target = os.path.join(root, relative)
-            try:
-                with open(target, encoding="utf-8", newline="") as handle:
-                    if handle.read() == text:
-                        continue  # unchanged: keep the timestamp so builds stay incremental
-            except FileNotFoundError:
-                pass
-            os.makedirs(os.path.dirname(target), exist_ok=True)
+            if _unchanged(target, text):
+                continue  # keep the timestamp so that builds stay incremental
+            _make_folders(os.path.dirname(target), made)
             fd, temporary = tempfile.mkstemp(prefix=".gaphys-", dir=os.path.dirname(target))
             staged.append((temporary, target))
             with os.fdopen(fd, "w", encoding="utf-8", newline="") as handle:
@@ -30,6 +46,8 @@ def write_all(root: str, files: dict[str, str]) -> list[str]:
     except BaseException:
         for temporary, _ in staged:
             os.unlink(temporary)
+        for folder in reversed(made):
+            os.rmdir(folder)
         raise
     for temporary, target in staged:
         os.chmod(temporary, 0o644)

@@ -96,7 +96,7 @@ class _Parser:
 
     def stmt_algebra(self, keyword: Token) -> ast.Statement:
         name = self.expect("IDENT", what="an algebra name")
-        return ast.AlgebraStmt("algebra", keyword.location, name.text)
+        return ast.AlgebraStmt("algebra", keyword.location, name.text, name.location)
 
     def stmt_basis(self, keyword: Token) -> ast.Statement:
         names = [self.expect("IDENT", what="a basis vector name")]
@@ -113,7 +113,7 @@ class _Parser:
             self.expect("PUNCT", ".", what="'.' (as in `e1.e1 = 1`)")
             right = self.expect("IDENT", what="a basis vector name")
             self.expect("PUNCT", "=")
-            entries.append(ast.MetricEntry(left.text, right.text, self.number(), left.location))
+            entries.append(ast.MetricEntry(left.text, right.text, self.number(), left.location, right.location))
             if not self.accept(","):
                 break
         return ast.MetricStmt("metric", keyword.location, tuple(entries))
@@ -149,7 +149,7 @@ class _Parser:
         sign = Fraction(-1) if self.accept("-") else Fraction(1)
         while True:
             coefficient = Fraction(1)
-            if self.peek().kind == "NUMBER" and self.tokens[self.pos + 1].text == "*":
+            if self.peek().kind == "NUMBER" and self.tokens[self.pos + 1].text in ("*", "/"):
                 coefficient = self.number()
                 self.expect("PUNCT", "*")
             terms.append(ast.Term(sign * coefficient, self.blade()))

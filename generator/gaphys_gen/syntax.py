@@ -20,7 +20,8 @@ class MetricEntry:
     left: str
     right: str
     value: Fraction
-    location: Location
+    location: Location  # of the left name
+    right_location: Location
 
 
 @dataclass(frozen=True)
@@ -44,6 +45,7 @@ class Statement:
 @dataclass(frozen=True)
 class AlgebraStmt(Statement):
     name: str
+    name_location: Location
 
 
 @dataclass(frozen=True)

@@ -1,0 +1,244 @@
+// Compares the generated library on `mv` with results computed by ganja.js
+// (an independent GA implementation), read from a case file written by
+// ganja_oracle.mjs. Built once per algebra and variant; the algebra is chosen
+// by GAPHYS_ORACLE_E3GA / GAPHYS_ORACLE_C3GA.
+//
+// Usage: test_ganja_oracle_<alg>_<variant> [gtest flags] CASE_FILE
+//        (or set GAPHYS_ORACLE_CASES=CASE_FILE)
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "case_file.hpp"
+
+#if defined(GAPHYS_ORACLE_E3GA)
+#include <e3ga/e3ga.hpp>
+namespace alg = e3ga;
+static const char* const kAlgebra = "e3ga";
+#elif defined(GAPHYS_ORACLE_C3GA)
+#include <c3ga/c3ga.hpp>
+namespace alg = c3ga;
+static const char* const kAlgebra = "c3ga";
+#else
+#error "define GAPHYS_ORACLE_E3GA or GAPHYS_ORACLE_C3GA"
+#endif
+
+namespace {
+
+using gaphys_oracle::CaseFile;
+using gaphys_oracle::OracleCase;
+
+// The library counts blades with int; containers here use size_t.
+constexpr std::size_t kBladeCount = static_cast<std::size_t>(alg::blade_count);
+
+std::string g_case_path;  // from argv, else GAPHYS_ORACLE_CASES
+
+// Loads the case file once; on failure every test reports the reason.
+struct Loaded {
+  CaseFile file;
+  std::string error;
+};
+
+const Loaded& loaded() {
+  static const Loaded result = [] {
+    Loaded l;
+    std::string path = g_case_path;
+    if (path.empty()) {
+      const char* env = std::getenv("GAPHYS_ORACLE_CASES");
+      path = env ? env : "";
+    }
+    if (path.empty()) {
+      l.error = "no case file: pass its path as an argument or set GAPHYS_ORACLE_CASES";
+      return l;
+    }
+    try {
+      l.file = gaphys_oracle::read_case_file(path);
+    } catch (const std::exception& e) {
+      l.error = e.what();
+    }
+    return l;
+  }();
+  return result;
+}
+
+// Relative tolerance: float rounding of a result grows with its largest
+// coefficient, not with each coefficient (small ones come from cancellation),
+// so |got - want| <= tol * max(1, max_j |want_j|).
+template <typename T>
+constexpr double kTolerance = 0;
+template <>
+constexpr double kTolerance<float> = 1e-5;
+template <>
+constexpr double kTolerance<double> = 1e-12;
+
+template <typename T>
+alg::basic_mv<T> to_mv(const std::vector<double>& xs) {
+  std::array<T, kBladeCount> a{};
+  for (std::size_t i = 0; i < a.size(); ++i) a[i] = static_cast<T>(xs.at(i));
+  return alg::basic_mv<T>::from_array(a);
+}
+
+template <typename T>
+alg::basic_mv<T> input(const OracleCase& c, const char* key) {
+  return to_mv<T>(c.at(key));
+}
+
+template <typename T>
+std::vector<double> coefficients(const alg::basic_mv<T>& m) {
+  std::vector<double> xs(kBladeCount);
+  for (std::size_t i = 0; i < xs.size(); ++i) xs[i] = static_cast<double>(m[static_cast<int>(i)]);
+  return xs;
+}
+
+// Collects mismatches over all cases and reports the first few.
+class Mismatches {
+ public:
+  void compare(const OracleCase& c, const std::string& op, const std::vector<double>& got,
+               const std::vector<double>& want, double tol) {
+    double scale = 1;
+    for (double w : want) scale = std::max(scale, std::abs(w));
+    for (std::size_t i = 0; i < want.size(); ++i) {
+      const double err = std::abs(got.at(i) - want[i]);
+      if (err <= tol * scale) continue;  // also rejects NaN
+      if (++count_ <= kShown) {
+        std::ostringstream s;
+        s.precision(17);
+        s << c.label() << " " << op << " [" << (want.size() == 1 ? "scalar" : alg::blade_names[i])
+          << "]: got " << got[i] << ", ganja " << want[i] << ", |diff| " << err << " > "
+          << tol * scale;
+        report_ += s.str() + "\n";
+      }
+    }
+  }
+  void expect_none() const { EXPECT_EQ(count_, 0) << report_ << (count_ > kShown ? "...\n" : ""); }
+
+ private:
+  static constexpr int kShown = 10;
+  int count_ = 0;
+  std::string report_;
+};
+
+template <typename T>
+class GanjaOracle : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const Loaded& l = loaded();
+    ASSERT_TRUE(l.error.empty()) << l.error;
+    ASSERT_EQ(l.file.algebra, kAlgebra) << "case file is for another algebra";
+    ASSERT_FALSE(l.file.cases.empty());
+  }
+
+  // Runs fn(case) -> coefficients for every case and checks them against `op`.
+  template <typename Fn>
+  void check(const std::string& op, Fn fn) {
+    Mismatches m;
+    for (const OracleCase& c : loaded().file.cases)
+      m.compare(c, op, fn(c), c.at(op), kTolerance<T>);
+    m.expect_none();
+  }
+};
+
+struct ScalarNames {
+  template <typename T>
+  static std::string GetName(int) {
+    return std::is_same<T, float>::value ? "float" : "double";
+  }
+};
+
+using Scalars = ::testing::Types<float, double>;
+TYPED_TEST_SUITE(GanjaOracle, Scalars, ScalarNames);
+
+TYPED_TEST(GanjaOracle, BladeOrderMatches) {
+  const auto& names = loaded().file.blade_names;
+  ASSERT_EQ(names.size(), kBladeCount);
+  for (std::size_t i = 1; i < names.size(); ++i)
+    EXPECT_EQ(alg::blade_names[i], names[i]) << "index " << i;
+}
+
+TYPED_TEST(GanjaOracle, GeometricProduct) {
+  using T = TypeParam;
+  this->check("gp", [](const OracleCase& c) {
+    return coefficients(alg::gp(input<T>(c, "a"), input<T>(c, "b")));
+  });
+}
+
+TYPED_TEST(GanjaOracle, OuterProduct) {
+  using T = TypeParam;
+  this->check("op", [](const OracleCase& c) {
+    return coefficients(alg::op(input<T>(c, "a"), input<T>(c, "b")));
+  });
+}
+
+TYPED_TEST(GanjaOracle, LeftContraction) {
+  using T = TypeParam;
+  this->check("lc", [](const OracleCase& c) {
+    return coefficients(alg::lc(input<T>(c, "a"), input<T>(c, "b")));
+  });
+}
+
+TYPED_TEST(GanjaOracle, ScalarProduct) {
+  using T = TypeParam;
+  this->check("scp", [](const OracleCase& c) {
+    const T s = alg::scp(input<T>(c, "a"), input<T>(c, "b"));
+    return std::vector<double>{static_cast<double>(s)};
+  });
+}
+
+TYPED_TEST(GanjaOracle, Reverse) {
+  using T = TypeParam;
+  this->check("reverse",
+              [](const OracleCase& c) { return coefficients(alg::reverse(input<T>(c, "a"))); });
+}
+
+TYPED_TEST(GanjaOracle, Dual) {
+  using T = TypeParam;
+  this->check("dual",
+              [](const OracleCase& c) { return coefficients(alg::dual(input<T>(c, "a"))); });
+}
+
+TYPED_TEST(GanjaOracle, ApplyVersor) {
+  using T = TypeParam;
+  this->check("apply", [](const OracleCase& c) {
+    return coefficients(alg::apply(input<T>(c, "v"), input<T>(c, "a")));
+  });
+}
+
+// The documented `mv` invariant: a clear bit means an exactly zero coefficient.
+TYPED_TEST(GanjaOracle, ResultBitsInvariant) {
+  using T = TypeParam;
+  for (const OracleCase& c : loaded().file.cases) {
+    const auto a = input<T>(c, "a");
+    const auto b = input<T>(c, "b");
+    const alg::basic_mv<T> results[] = {alg::gp(a, b), alg::op(a, b),
+                                        alg::lc(a, b), alg::reverse(a),
+                                        alg::dual(a),  alg::apply(input<T>(c, "v"), a)};
+    for (const auto& r : results) {
+      for (std::size_t i = 0; i < kBladeCount; ++i) {
+        if (!((r.bits >> i) & 1u)) {
+          ASSERT_EQ(r.c[i], T(0)) << c.label() << " blade " << alg::blade_names[i];
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);  // removes the gtest flags
+  if (argc > 2) {
+    std::fprintf(stderr, "usage: %s [gtest flags] [CASE_FILE]\n", argv[0]);
+    return 2;
+  }
+  if (argc == 2) g_case_path = argv[1];
+  return RUN_ALL_TESTS();
+}
