@@ -183,6 +183,12 @@ class Expander:
         if function == "log":
             return self.log_kernel(arguments[0], args[0])
         result, divisor = self.recipe(function, args)
+        if divisor is not None and divisor.is_zero():
+            # A null type (e.g. ni alone) has no versor inverse, and a sandwich by it is undefined.
+            if location is None:
+                return None
+            raise SpecError(location, f"{function}({', '.join(a.name for a in arguments)}) divides by zero: "
+                                      f"{arguments[0].name} is null (<x ~x> = 0)")
         if not result and location is not None:
             raise SpecError(location, f"{function}({', '.join(a.name for a in arguments)}) is identically zero")
         rtype = self.result_type(result, divisor)
@@ -242,7 +248,9 @@ def expand(algebra: Algebra) -> list[Kernel]:
     def add(function: str, arguments: tuple[NamedType, ...], location=None):
         key = (function, tuple(a.name for a in arguments))
         if key not in kernels:
-            kernels[key] = expander.kernel(function, arguments, location)
+            kernel = expander.kernel(function, arguments, location)
+            if kernel is not None:
+                kernels[key] = kernel
 
     for named in algebra.types:
         for function in AUTO_UNARY:

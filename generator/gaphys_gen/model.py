@@ -217,6 +217,7 @@ class _Validator:
     def validate_metric(self) -> tuple[tuple[Fraction, ...], ...]:
         n = len(self.basis)
         matrix: list[list[Fraction | None]] = [[None] * n for _ in range(n)]
+        written: set[tuple[int, int]] = set()  # entries as given, to tell repeats from asymmetry
         for stmt in (s for s in self.spec.statements if s.keyword == "metric"):
             for entry in stmt.entries:
                 for name, location in ((entry.left, entry.location), (entry.right, entry.right_location)):
@@ -225,12 +226,19 @@ class _Validator:
                 i, j = self.basis_index[entry.left], self.basis_index[entry.right]
                 for a, b in ((i, j), (j, i)):
                     if matrix[a][b] is not None and matrix[a][b] != entry.value:
+                        if (i, j) in written:
+                            raise self.error(
+                                entry.location,
+                                f"metric entry {entry.left}.{entry.right} given twice with different values "
+                                f"({matrix[a][b]} and {entry.value})",
+                            )
                         raise self.error(
                             entry.location,
                             f"metric is not symmetric: {entry.left}.{entry.right} = {entry.value} "
                             f"but {self.basis[a]}.{self.basis[b]} = {matrix[a][b]}",
                         )
                     matrix[a][b] = entry.value
+                written.add((i, j))
         return tuple(tuple(v if v is not None else Fraction(0) for v in row) for row in matrix)
 
     def validate_types(self, by_bitmap: dict[int, Blade]) -> tuple[NamedType, ...]:

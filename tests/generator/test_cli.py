@@ -81,7 +81,8 @@ class CommandLine(unittest.TestCase):
         self.assertEqual(files_under(self.out), [])
 
     def test_generate_then_check(self):
-        arguments = (spec_path("e3ga"), "--variant", "optimized", "--out", self.out, "--namespace", "e3ga_test", "--no-format")
+        arguments = (spec_path("e3ga"), "--variant", "optimized", "--out", self.out,
+                     "--namespace", "e3ga_test", "--no-format")
         result = run_cli("generate", *arguments)
         self.assertEqual(result.returncode, 0, result.stderr)
         written = files_under(self.out)

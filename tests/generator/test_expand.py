@@ -394,7 +394,11 @@ class TypeSelection(SpecErrorAssertions, unittest.TestCase):
         return result.named.name if result.kind == "named" else result.kind
 
     def test_fewest_stored_coordinates_wins(self):
-        text = E3_PRELUDE + "type even_odd = 1, e1^e2, e1^e3, e2^e3, e1^e2^e3\ntype even = 1, e1^e2, e1^e3, e2^e3\ntype vector = e1, e2, e3\n"
+        text = E3_PRELUDE + (
+            "type even_odd = 1, e1^e2, e1^e3, e2^e3, e1^e2^e3\n"
+            "type even = 1, e1^e2, e1^e3, e2^e3\n"
+            "type vector = e1, e2, e3\n"
+        )
         self.assertEqual(self.result_name(text, "gp", "vector", "vector"), "even")
 
     def test_first_declared_wins_a_tie(self):

@@ -141,7 +141,8 @@ class FunctionErrors(SpecErrorAssertions, unittest.TestCase):
         self.assertSpecError(self.PRELUDE + "function gp(vector, rotor)\n", 6, 21, "unknown type 'rotor'")
 
     def test_too_many_arguments(self):
-        self.assertSpecError(self.PRELUDE + "function reverse(vector, vector)\n", 6, 10, "reverse takes 1 argument(s), not 2")
+        text = self.PRELUDE + "function reverse(vector, vector)\n"
+        self.assertSpecError(text, 6, 10, "reverse takes 1 argument(s), not 2")
 
     def test_too_few_arguments(self):
         self.assertSpecError(self.PRELUDE + "function gp(vector)\n", 6, 10, "gp takes 2 argument(s), not 1")

@@ -95,7 +95,8 @@ class SyntaxTree(unittest.TestCase):
     def test_constant_terms(self):
         tree = parse("constant c = -e1 + 2*e1^e2 - 0.5*ni\n", "x.ga")
         terms = tree.statements[0].terms
-        self.assertEqual([(t.coefficient, t.blade.factors) for t in terms], [(-1, ("e1",)), (2, ("e1", "e2")), (Fraction(-1, 2), ("ni",))])
+        expected = [(-1, ("e1",)), (2, ("e1", "e2")), (Fraction(-1, 2), ("ni",))]
+        self.assertEqual([(t.coefficient, t.blade.factors) for t in terms], expected)
 
     def test_constant_rational_coefficient(self):
         # Numbers elsewhere accept `a/b`; a constant's coefficient should too (`1/2*ni`).

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs what is missing on a fresh Debian machine, builds gaphys and runs
+# the demo. Safe to run again: it installs only what is not there.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
+
+missing=()
+for tool in cmake:cmake ninja:ninja-build g++:g++ clang-format:clang-format node:nodejs npm:npm; do
+  command -v "${tool%%:*}" >/dev/null 2>&1 || missing+=("${tool##*:}")
+done
+for package in libgtest-dev libgmock-dev libbenchmark-dev; do
+  dpkg -s "$package" >/dev/null 2>&1 || missing+=("$package")
+done
+python=$(command -v python3 || true)
+if [ -z "$python" ] || ! "$python" -c "import jinja2" 2>/dev/null; then
+  missing+=(python3 python3-jinja2)
+  python=/usr/bin/python3
+fi
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  as_root apt-get update -q
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q "${missing[@]}"
+fi
+
+# The ganja.js oracle (tests), pinned by package-lock.json.
+npm ci --no-audit --no-fund --loglevel=error
+
+cmake -S . -B build -G Ninja -DPython3_EXECUTABLE="$python"
+cmake --build build
+./build/examples/algebra_demo
