@@ -17,8 +17,8 @@ def number(value: Fraction) -> str:
 
 
 def variable(name: str) -> str:
-    """a3 -> a.c[3]; single-letter locals (s, c, k, f) stay as they are."""
-    if len(name) > 1 and name[1:].isdigit():
+    """a3 -> a.c[3] (argument coordinates); locals (s, c, k, f, t0, ...) stay as they are."""
+    if name[0] in "ab" and name[1:].isdigit():
         return f"{name[0]}.c[{name[1:]}]"
     return name
 

@@ -23,7 +23,10 @@ class SpecError(Exception):
         loc = self.location
         text = f"{loc.path}:{loc.line}:{loc.column}: error: {self.message}"
         if self.source_line:
-            text += "\n" + self.source_line.rstrip("\r\n") + "\n" + " " * (loc.column - 1) + "^"
+            line = self.source_line.rstrip("\r\n")
+            # Keep tabs in the caret's indent so it lines up in any terminal.
+            indent = "".join(ch if ch == "\t" else " " for ch in line[: loc.column - 1])
+            text += "\n" + line + "\n" + indent + "^"
         return text
 
 

@@ -9,7 +9,7 @@ constant coordinates the result provably equals), else `mv`; a result that is
 only the scalar blade is a plain scalar.
 """
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from fractions import Fraction
 
 from . import symbolic as sym
@@ -45,6 +45,8 @@ class Kernel:
     cosine: Poly | None = None  # log closed form: the scalar part of the argument
     log_fallback_output: int | None = None  # log: output that takes pi when the angle is 2 pi
     mv_bits: int = 0  # mv result: the canonical-index bitmap of structurally nonzero blades
+    # Named intermediate values (t0, t1, ...) the outputs may use, evaluated first.
+    temporaries: list[tuple[str, Poly]] = field(default_factory=list)
 
     @property
     def signature(self) -> tuple[str, tuple[str, ...]]:
@@ -194,8 +196,23 @@ class Expander:
         rtype = self.result_type(result, divisor)
         if function == "norm2":
             rtype = ResultType("scalar")
+        temporaries: list[tuple[str, Poly]] = []
+        if function == "apply":
+            # The type comes from the full expansion; the code computes t = v x
+            # first and then t ~v, which takes far fewer multiplications.
+            result, temporaries = self.staged_sandwich(args[0], args[1])
         outputs, bits = self.outputs(result, rtype)
-        return Kernel(function, arguments, rtype, outputs, divisor, mv_bits=bits)
+        used = {v for _, poly in outputs for monomial in poly.terms for v in monomial}
+        temporaries = [(name, poly) for name, poly in temporaries if name in used]
+        return Kernel(function, arguments, rtype, outputs, divisor, mv_bits=bits, temporaries=temporaries)
+
+    def staged_sandwich(self, v: SymMV, x: SymMV) -> tuple[SymMV, list[tuple[str, Poly]]]:
+        first = self.prod("gp", v, x)
+        temporaries = [(f"t{i}", poly) for i, (_, poly) in enumerate(sorted(first.items()))]
+        staged = {blade: Poly.variable(name) for (blade, _), (name, _) in zip(sorted(first.items()), temporaries)}
+        grades = {self.grade_of(b) for b in x}
+        result = {b: p for b, p in self.prod("gp", staged, self.reverse(v)).items() if self.grade_of(b) in grades}
+        return result, temporaries
 
     def blades_of_powers(self, x: SymMV) -> SymMV:
         """Blades reachable in exp(x) = sum x^k / k!, as a symbolic mv of placeholder ones."""

@@ -301,6 +301,8 @@ class _Validator:
                 if resolved not in type_names:
                     raise self.error(location, f"unknown type {name!r}")
                 arguments.append(type_names[resolved])
+            if stmt.name == "log" and any(c.blade.grade % 2 for c in arguments[0].coordinates):
+                raise self.error(stmt.argument_locations[0], f"log needs an even type (grades 0, 2, 4), not {arguments[0].name!r}")
             key = (stmt.name, tuple(a.name for a in arguments))
             if key in seen:
                 raise self.error(stmt.location, f"function {stmt.name}({', '.join(key[1])}) declared twice (first at line {seen[key]})")

@@ -148,11 +148,14 @@ class _Parser:
         terms = []
         sign = Fraction(-1) if self.accept("-") else Fraction(1)
         while True:
-            coefficient = Fraction(1)
-            if self.peek().kind == "NUMBER" and self.tokens[self.pos + 1].text in ("*", "/"):
+            if self.peek().kind == "NUMBER":
+                # `2`, `3/4`, `2 * e1`: a bare number is a multiple of the scalar blade.
+                location = self.peek().location
                 coefficient = self.number()
-                self.expect("PUNCT", "*")
-            terms.append(ast.Term(sign * coefficient, self.blade()))
+                blade = self.blade() if self.accept("*") else ast.BladeRef((), location, ())
+            else:
+                coefficient, blade = Fraction(1), self.blade()
+            terms.append(ast.Term(sign * coefficient, blade))
             if self.accept("+"):
                 sign = Fraction(1)
             elif self.accept("-"):

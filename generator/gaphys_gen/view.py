@@ -105,7 +105,8 @@ def kernel_view(kernel: Kernel) -> dict:
         via_mv = f"{call}.c[0]"
     else:
         via_mv = call
-    polys = [p for _, p in kernel.outputs] + [p for p in (kernel.divisor, kernel.square, kernel.cosine) if p]
+    polys = [p for _, p in kernel.outputs] + [p for _, p in kernel.temporaries]
+    polys += [p for p in (kernel.divisor, kernel.square, kernel.cosine) if p]
     muls, adds = cpp.count(polys)
     if kernel.divisor is not None:
         muls += len(kernel.outputs)
@@ -123,7 +124,12 @@ def kernel_view(kernel: Kernel) -> dict:
         "return_type": rtype,
         "params": ", ".join(params),
         "result_kind": kernel.result.kind,
-        "outputs": [{"index": i, "expr": cpp.expression(p)} for i, p in kernel.outputs],
+        # The value each output returns: divided by the kernel's divisor when it has one.
+        "outputs": [
+            {"index": i, "value": f"({cpp.expression(p)}) * inv" if kernel.divisor is not None else cpp.expression(p)}
+            for i, p in kernel.outputs
+        ],
+        "temporaries": [{"name": n, "expr": cpp.expression(p)} for n, p in kernel.temporaries],
         "divisor": cpp.expression(kernel.divisor) if kernel.divisor is not None else None,
         "square": cpp.expression(kernel.square) if kernel.square is not None else None,
         "cosine": cpp.expression(kernel.cosine) if kernel.cosine is not None else None,

@@ -197,6 +197,8 @@ class KernelValues(unittest.TestCase):
                     env.update({f"{letter}{i}": v for i, v in enumerate(stored)})
                     args.append(value_of(named, stored))
                 env["s"] = random_fraction(rng)
+                for temporary, poly in k.temporaries:  # staged kernels: intermediates first
+                    env[temporary] = evaluate(poly, env)
                 if k.divisor is not None and evaluate(k.divisor, env) == 0:
                     continue  # a singular sample (inverse of a null vector)
                 expected = reference(k.function, args, env["s"])
@@ -242,6 +244,13 @@ class OperationCounts(unittest.TestCase):
             k = kernel(name, function, *types)
             total = [sum(cost(poly)[i] for _, poly in k.outputs) for i in (0, 1)]
             self.assertEqual(total, [muls, adds], (name, function, types))
+
+    def test_sandwich_is_staged(self):
+        # R x ~R as t = R x (4 outputs of 3 products) then t ~R (3 outputs of 4 products),
+        # not the fully expanded cubic (60 products).
+        k = kernel("e3ga", "apply", "rotor", "vector")
+        staged = sum(cost(p)[0] for _, p in k.temporaries) + sum(cost(p)[0] for _, p in k.outputs)
+        self.assertEqual((len(k.temporaries), staged), (4, 24))
 
     def test_cost_of_single_polynomials(self):
         k = kernel("e3ga", "scp", "vector", "vector")

@@ -133,6 +133,9 @@ class ReservedNames(SpecErrorAssertions, unittest.TestCase):
 class FunctionErrors(SpecErrorAssertions, unittest.TestCase):
     PRELUDE = E3_PRELUDE + "type vector = e1, e2, e3\nalias vec = vector\n"
 
+    def test_log_of_an_odd_type(self):
+        self.assertSpecError(self.PRELUDE + "function log(vector)\n", 6, 14, "log needs an even type")
+
     def test_unknown_function(self):
         error = self.assertSpecError(self.PRELUDE + "function cross(vector, vector)\n", 6, 10, "unknown function 'cross'")
         self.assertIn("gp", error.message)  # lists the known ones

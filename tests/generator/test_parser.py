@@ -104,6 +104,12 @@ class SyntaxTree(unittest.TestCase):
         terms = tree.statements[0].terms
         self.assertEqual([(t.coefficient, t.blade.factors) for t in terms], [(Fraction(1, 2), ("ni",))])
 
+    def test_constant_bare_numbers_are_scalar_multiples(self):
+        tree = parse("constant h = 2 + e1 - 3/4\n", "x.ga")
+        terms = tree.statements[0].terms
+        self.assertEqual([(t.coefficient, t.blade.factors) for t in terms],
+                         [(2, ()), (1, ("e1",)), (Fraction(-3, 4), ())])
+
     def test_crlf_line_endings(self):
         tree = parse("algebra t\r\nbasis e1 e2\r\n", "x.ga")
         self.assertEqual(tree.statements[1].names, ("e1", "e2"))

@@ -100,14 +100,25 @@ bool split_bivector(const MV& b, MV& b1, MV& b2, typename MV::scalar_type& l1, t
   const MV w = linear_combination(T(0.5), keep_grades(square, MV::grade_mask(4)), T(0), square);
   const T s0 = square.c[0];
   const T w2 = gp(w, w).c[0];
-  const T disc = s0 * s0 - T(4) * w2;
-  const T scale = std::max(T(1), s0 * s0);
-  if (disc < -tolerance(scale)) return false;
-  const T root = std::sqrt(std::max(disc, T(0)));
-  if (root <= std::sqrt(tolerance(scale))) return false;
-  // Order so that l2 is the root nearer zero (the null part of a screw motion).
-  l1 = s0 >= 0 ? (s0 + root) / 2 : (s0 - root) / 2;
-  l2 = s0 - l1;
+  const T w_size = max_abs(w);
+  if (std::abs(w2) <= tolerance(w_size * w_size)) {
+    // W is null (W^2 = 0): a screw motion in conformal space, whose parts are a
+    // rotation (l1 = <B^2>_0) and a null translation along the axis (l2 = 0).
+    // Taking the roots directly avoids a square root that loses half the digits
+    // when the rotation is small.
+    if (s0 == 0) return false;
+    l1 = s0;
+    l2 = 0;
+  } else {
+    const T disc = s0 * s0 - T(4) * w2;
+    const T scale = std::max(T(1), s0 * s0);
+    if (disc < -tolerance(scale)) return false;
+    const T root = std::sqrt(std::max(disc, T(0)));
+    if (root <= std::sqrt(tolerance(scale))) return false;
+    // Order so that l2 is the root nearer zero.
+    l1 = s0 >= 0 ? (s0 + root) / 2 : (s0 - root) / 2;
+    l2 = s0 - l1;
+  }
   const MV l1_minus_w = plus_scalar(linear_combination(T(-1), w, T(0), w), l1);
   b1 = keep_grades(gp(l1_minus_w, b), MV::grade_mask(2));
   b1 = linear_combination(T(1) / (l1 - l2), b1, T(0), b1);
@@ -159,19 +170,48 @@ MV log_general(const MV& r) {
   const MV b = keep_grades(r, MV::grade_mask(2));
   const MV q = keep_grades(r, MV::grade_mask(4));
   const MV square = gp(b, b);
-  if (max_abs(q) <= tolerance(magnitude) && is_numerically_scalar(square, max_abs(square))) {
+  // r is a simple rotation, boost or translation when its 4-vector part q
+  // (= sin(t) u1 b2 for a screw, see below) is negligible next to the
+  // rotation's own size sqrt|<b^2>_0|. An absolute test is not enough: near a
+  // full turn sin(t) is tiny while the translation b2 is not.
+  const T s0 = square.c[0];
+  const bool simple = max_abs(q) <= tolerance(T(1)) * std::sqrt(std::abs(s0)) * std::max(T(1), magnitude);
+  if (simple && max_abs(keep_grades(square, ~(MV::grade_mask(0) | MV::grade_mask(4)))) <= tolerance(max_abs(square))) {
     if (log_needs_fallback(square.c[0], c)) return log_fallback<MV>();
     return linear_combination(log_factor(square.c[0], c), b, T(0), b);
   }
-  MV b1, b2;
-  T l1, l2;
-  if (!split_bivector(b, b1, b2, l1, l2) || l1 >= 0 || std::abs(l2) > std::sqrt(tolerance(std::abs(l1))))
+  // A screw: r = (c + s u1)(1 + b2) with u1^2 = -1, b2 null and commuting
+  // with u1 (rotation about an axis, translation along it). So
+  //   <r>_2 = b = s u1 + c b2,   <r>_4 = q = s u1 b2,   <b^2>_0 = -s^2,
+  //   d := <b q>_2 = (s u1 + c b2)(s u1 b2) = -s^2 b2        (b2^2 = 0).
+  // d gives the direction of b2 (from products of small numbers: accurate),
+  // and its length two ways: c b2 is b's part along d, and b2 = -d / s^2.
+  // Combining them as c (c b2) + s^2 b2 = b2 divides by nothing, so the result
+  // L = angle/s (b - c b2) + b2 has exp(L) = r to rounding even near a full
+  // turn, where r fixes the axis only through O(s) terms. (Coefficient-wise
+  // projection on d: the rotation's translation-like part is orthogonal to it
+  // in the blade basis, as in the conformal model.)
+  const T sin2 = -s0;
+  const MV d = keep_grades(gp(b, q), MV::grade_mask(2));
+  T d_norm2 = 0, b_along = 0;
+  for (int i = 0; i < MV::size; ++i) {
+    d_norm2 += d.c[i] * d.c[i];
+    b_along += b.c[i] * d.c[i];
+  }
+  if (!(sin2 > 0) || !(d_norm2 > 0) || max_abs(gp(d, d)) > tolerance(d_norm2))
     throw std::domain_error("log: only rotations, boosts, translations and screw motions are supported");
-  const T s1 = std::sqrt(-l1);
-  const T angle = std::atan2(s1, c);
-  const MV null_part = linear_combination(c, b2, T(0), b2);
-  const MV correction = keep_grades(gp(b1, q), MV::grade_mask(2));
-  return linear_combination(angle / s1, b1, T(1), linear_combination(T(1), null_part, T(-1), correction));
+  const T d_norm = std::sqrt(d_norm2);
+  const T length = c * b_along / d_norm - d_norm;  // b2 = length * d / |d|
+  const MV b2 = linear_combination(length / d_norm, d, T(0), d);
+  MV rotation = linear_combination(T(1), b, -c, b2);  // s u1
+  // s u1 has no part along d, but computing it cancels O(1) numbers; what is
+  // left along d would be amplified by angle/s into the translation, to which
+  // exp is fully sensitive. Project it out (exact in exact arithmetic).
+  T along = 0;
+  for (int i = 0; i < MV::size; ++i) along += rotation.c[i] * d.c[i];
+  rotation = linear_combination(T(1), rotation, -along / d_norm2, d);
+  const T s = std::sqrt(sin2);
+  return linear_combination(std::atan2(s, c) / s, rotation, T(1), b2);
 }
 
 // The inverse of any invertible multivector: solves x y = 1 for y by Gaussian
