@@ -1,0 +1,190 @@
+#!/usr/bin/env python3
+"""Print table 5.1 of the thesis next to gaphys's reference and optimized variants.
+
+From the repository root:
+
+    cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DGAPHYS_BUILD_BENCHMARKS=ON
+    cmake --build build-bench -j 2
+    python3 bench/print_table.py --build-dir build-bench --repetitions 5 --json-dir build-bench/bench-json
+
+It runs bench_table_5_1_{reference,optimized} and bench_c3ga_kernels_{reference,optimized}
+(found under --build-dir) with --benchmark_repetitions=N --benchmark_format=json and prints
+Markdown tables: CPU seconds per 10,000,000 calls (median over the repetitions), the
+reference / optimized ratio, and the thesis's figures (seconds of user time for 10,000,000
+calls). --json-dir keeps the raw JSON; --from-json DIR prints the tables from a kept run
+without running anything. Python 3 standard library only.
+"""
+
+import argparse
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+VARIANTS = ("reference", "optimized")
+EXECUTABLES = ("bench_table_5_1", "bench_c3ga_kernels")
+
+# Table 5.1 of the thesis: user seconds for 10,000,000 calls.
+THESIS_COLUMNS = ("GATL", "Gaigen 2", "Gaigen 2 + profiling")
+THESIS = {
+    "add": (1.14, 13.96, 13.76),
+    "gp": (1.63, 19.60, 0.14),
+    "lc": (1.10, 13.86, 13.96),
+    "op": (1.20, 15.74, 14.70),
+    "scp": (1.08, 2.62, 2.14),
+}
+THESIS_NAMES = {"add": "plus / add", "lc": "lcont"}
+FUNCTIONS = ("add", "gp", "lc", "op", "scp")
+ARGUMENTS = ("mv", "vector", "bivector", "rotor", "motor")
+ARGUMENT_LABELS = {
+    "mv": "random full mv",
+    "vector": "vectors",
+    "bivector": "2-blades",
+    "rotor": "rotors",
+    "motor": "motors",
+}
+KERNELS = {
+    "op4_points": "`p1 ^ p2 ^ p3 ^ p4` (sphere through 4 normalized points)",
+    "apply_motor_point": "`apply(motor, normalized_point)`",
+    "meet_dual_spheres": "`meet(dual_sphere, dual_sphere)`",
+}
+
+
+def find_executable(build_dir, name):
+    matches = sorted(p for p in Path(build_dir).rglob(name) if p.is_file())
+    if not matches:
+        sys.exit(f"print_table: {name} not found under {build_dir} (built with -DGAPHYS_BUILD_BENCHMARKS=ON?)")
+    return matches[0]
+
+
+def run(executable, args):
+    command = [
+        str(executable),
+        f"--benchmark_repetitions={args.repetitions}",
+        "--benchmark_report_aggregates_only=true",
+        "--benchmark_enable_random_interleaving=true",
+        "--benchmark_format=json",
+    ]
+    if args.min_time:
+        command.append(f"--benchmark_min_time={args.min_time}")
+    if args.filter:
+        command.append(f"--benchmark_filter={args.filter}")
+    print("print_table: running " + " ".join(command), file=sys.stderr, flush=True)
+    return subprocess.run(command, check=True, stdout=subprocess.PIPE, text=True).stdout
+
+
+def load_results(args):
+    """Returns {(variant, benchmark name): {"median": seconds, "cv": fraction}}, a JSON context
+    and the number of repetitions."""
+    results, context, repetitions = {}, {}, set()
+    for variant in VARIANTS:
+        for name in EXECUTABLES:
+            file_name = f"{name}_{variant}.json"
+            if args.from_json:
+                text = (Path(args.from_json) / file_name).read_text()
+            else:
+                text = run(find_executable(args.build_dir, f"{name}_{variant}"), args)
+                if args.json_dir:
+                    Path(args.json_dir).mkdir(parents=True, exist_ok=True)
+                    (Path(args.json_dir) / file_name).write_text(text)
+            data = json.loads(text)
+            context = data["context"]
+            found = data["context"].get("gaphys_variant")
+            if found != variant:
+                sys.exit(f"print_table: {file_name} was produced by variant {found!r}, expected {variant!r}")
+            for b in data["benchmarks"]:
+                aggregate = b.get("aggregate_name")
+                if aggregate not in ("median", "cv"):
+                    continue
+                repetitions.add(b["repetitions"])
+                # The cv of s_per_10M is a fraction; its median is in seconds.
+                results.setdefault((variant, b["run_name"]), {})[aggregate] = b["s_per_10M"]
+    return results, context, "/".join(str(r) for r in sorted(repetitions))
+
+
+def seconds(cell):
+    if cell is None or "median" not in cell:
+        return "n/a"
+    text = f"{cell['median']:.3f}"
+    if "cv" in cell:
+        text += f" ±{100 * cell['cv']:.0f}%"
+    return text
+
+
+def ratio(reference, optimized):
+    if not reference or not optimized or "median" not in reference or "median" not in optimized:
+        return "n/a"
+    return f"{reference['median'] / optimized['median']:.1f}x"
+
+
+def table_5_1(results, algebra, repetitions):
+    lines = [
+        f"#### {algebra}: `mv` arguments, CPU seconds per 10,000,000 calls (median of {repetitions}, ±cv)",
+        "",
+        "| function | arguments | reference | optimized | ref / opt | "
+        + " | ".join(f"thesis: {c}" for c in THESIS_COLUMNS)
+        + " |",
+        "|---|---|---:|---:|---:|" + "---:|" * len(THESIS_COLUMNS),
+    ]
+    for function in FUNCTIONS:
+        first = True
+        for argument in ARGUMENTS:
+            name = f"{algebra}/{function}/{argument}"
+            ref, opt = results.get(("reference", name)), results.get(("optimized", name))
+            if ref is None and opt is None:
+                continue
+            label = function
+            if function in THESIS_NAMES:
+                label += f" ({THESIS_NAMES[function]})"
+            thesis = [f"{t:.2f}" for t in THESIS[function]] if first else [""] * len(THESIS_COLUMNS)
+            cells = [label if first else "", ARGUMENT_LABELS[argument], seconds(ref), seconds(opt), ratio(ref, opt)]
+            lines.append("| " + " | ".join(cells + thesis) + " |")
+            first = False
+    return lines
+
+
+def kernel_table(results, repetitions):
+    lines = [
+        f"#### c3ga kernels: CPU seconds per 10,000,000 calls (median of {repetitions}, ±cv)",
+        "",
+        "| kernel | arguments | reference | optimized | ref / opt |",
+        "|---|---|---:|---:|---:|",
+    ]
+    for kernel, label in KERNELS.items():
+        for form, form_label in (("named", "named types"), ("mv", "same values in `mv`")):
+            name = f"c3ga/{kernel}/{form}"
+            ref, opt = results.get(("reference", name)), results.get(("optimized", name))
+            if ref is None and opt is None:
+                continue
+            cells = [label if form == "named" else "", form_label, seconds(ref), seconds(opt), ratio(ref, opt)]
+            lines.append("| " + " | ".join(cells) + " |")
+    return lines
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    source = parser.add_mutually_exclusive_group()
+    source.add_argument("--build-dir", default="build-bench", help="CMake build directory holding the benchmarks")
+    source.add_argument("--from-json", metavar="DIR", help="read the JSON a previous run kept instead of running")
+    parser.add_argument("--repetitions", type=int, default=5, help="benchmark repetitions; the table shows medians")
+    parser.add_argument("--min-time", help="passed as --benchmark_min_time (e.g. 0.5, or 0.5s for benchmark >= 1.8)")
+    parser.add_argument("--filter", help="passed as --benchmark_filter (a regex on the benchmark names)")
+    parser.add_argument("--json-dir", metavar="DIR", help="keep each executable's JSON output here")
+    args = parser.parse_args()
+
+    results, context, repetitions = load_results(args)
+    lines = []
+    for algebra in ("e3ga", "c3ga"):
+        lines += table_5_1(results, algebra, repetitions) + [""]
+    lines += kernel_table(results, repetitions) + [""]
+    lines.append(
+        f"Machine: {context.get('num_cpus', '?')} CPUs at {context.get('mhz_per_cpu', '?')} MHz, "
+        f"Google Benchmark library reports build type {context.get('library_build_type', '?')} "
+        "(its own timing loop; the measured code is built with the project's flags). "
+        "The thesis's figures are user seconds measured with `time` on its own machine and library versions."
+    )
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()
