@@ -46,7 +46,7 @@ ARGUMENT_LABELS = {
 KERNELS = {
     "op4_points": "`p1 ^ p2 ^ p3 ^ p4` (sphere through 4 normalized points)",
     "apply_motor_point": "`apply(motor, normalized_point)`",
-    "meet_dual_spheres": "`meet(dual_sphere, dual_sphere)`",
+    "meet_dual_spheres": "`meet(dual(s1), dual(s2))` (circle of two dual spheres)",
 }
 
 

@@ -13,10 +13,9 @@ done
 for package in libgtest-dev libgmock-dev libbenchmark-dev; do
   dpkg -s "$package" >/dev/null 2>&1 || missing+=("$package")
 done
-python=$(command -v python3 || true)
-if [ -z "$python" ] || ! "$python" -c "import jinja2" 2>/dev/null; then
+python=$(bash tools/find-python.sh)
+if ! "$python" -c "import jinja2" 2>/dev/null; then
   missing+=(python3 python3-jinja2)
-  python=/usr/bin/python3
 fi
 if [ ${#missing[@]} -gt 0 ]; then
   echo "setup: installing ${missing[*]}"
@@ -26,6 +25,7 @@ fi
 
 # The ganja.js oracle (tests), pinned by package-lock.json.
 npm ci --no-audit --no-fund --loglevel=error
+python=$(bash tools/find-python.sh)
 
 cmake -S . -B build -G Ninja -DPython3_EXECUTABLE="$python"
 cmake --build build
