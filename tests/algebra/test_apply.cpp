@@ -5,6 +5,7 @@
 #include <e3ga/e3ga.hpp>
 
 #include "algebra_test_support.hpp"
+#include "c3ga_test_support.hpp"
 
 namespace {
 
@@ -93,16 +94,6 @@ TYPED_TEST(Apply, E3gaRotorCompositionComposesRotations) {
 }
 
 // ---- c3ga ----
-
-template <class T>
-c3ga::basic_normalized_point<T> point_of(const vec3& x) {
-  return make_point<c3ga::basic_normalized_point<T>>(x);
-}
-
-template <class T>
-c3ga::basic_dual_sphere<T> dual_sphere_of(const vec3& c, double r) {
-  return make_dual_sphere<c3ga::basic_dual_sphere<T>>(c, r);
-}
 
 // The rotor exp(-angle/2 axis I3) of c3ga.
 template <class T>

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "algebra_test_support.hpp"
+#include "c3ga_test_support.hpp"
 
 namespace {
 
@@ -25,16 +26,6 @@ constexpr int trials = 50;
 template <class T>
 class C3gaGeometry : public ::testing::Test {};
 TYPED_TEST_SUITE(C3gaGeometry, scalar_types);
-
-template <class T>
-c3ga::basic_normalized_point<T> point_of(const vec3& x) {
-  return make_point<c3ga::basic_normalized_point<T>>(x);
-}
-
-template <class T>
-c3ga::basic_dual_sphere<T> dual_sphere_of(const vec3& c, double r) {
-  return make_dual_sphere<c3ga::basic_dual_sphere<T>>(c, r);
-}
 
 // The Euclidean point of a (scaled) conformal point: x / (-ni . x).
 template <class T>
