@@ -5,6 +5,11 @@
       (all or none). NS defaults to the spec's algebra name.
   check SPEC --variant V --out DIR [--namespace NS]
       Exit 1, listing the files, if generating would change anything in DIR.
+  merge --spec SPEC --out PROFILE INPUT...
+      Add the counts of several profiles of SPEC into one (written atomically).
+  report PROFILE --spec SPEC [--coverage 0.999] [--top N]
+      The hot (function, argument bitmaps) combinations with blade names, and the
+      share of calls an optimized build at that coverage still sends to the fallback.
 """
 
 import argparse
@@ -12,7 +17,7 @@ import os
 import shlex
 import sys
 
-from . import model, output, render
+from . import model, output, profile, render
 from .errors import SpecError, UsageError
 
 
@@ -26,7 +31,29 @@ def parse_arguments(argv: list[str]) -> argparse.Namespace:
         command.add_argument("--out", required=True, help="output folder (the include root)")
         command.add_argument("--namespace", help="C++ namespace and header folder (default: the algebra name)")
         command.add_argument("--no-format", action="store_true", help="skip clang-format")
+    merge = commands.add_parser("merge", help="add the counts of several profiles")
+    merge.add_argument("inputs", nargs="+", help="profiles to merge")
+    merge.add_argument("--spec", required=True, help="the spec the profiles were recorded with")
+    merge.add_argument("--out", required=True, help="merged profile to write")
+    report = commands.add_parser("report", help="show the hot combinations of a profile")
+    report.add_argument("profile")
+    report.add_argument("--spec", required=True)
+    report.add_argument("--coverage", type=float, default=0.999, help="share of calls to specialize")
+    report.add_argument("--top", type=int, default=20, help="rows to show")
     return parser.parse_args(argv)
+
+
+def profile_command(arguments: argparse.Namespace) -> int:
+    algebra = model.load(arguments.spec)
+    if arguments.command == "merge":
+        loaded = [(path, profile.load(path, algebra)) for path in arguments.inputs]
+        profile.write(arguments.out, profile.merge(loaded))
+    else:
+        if not 0 < arguments.coverage <= 1:
+            raise UsageError(f"--coverage must be in (0, 1], not {arguments.coverage}")
+        print(profile.report(profile.load(arguments.profile, algebra), algebra, arguments.coverage, arguments.top),
+              end="")
+    return 0
 
 
 def regenerate_command(arguments: argparse.Namespace) -> str:
@@ -38,6 +65,12 @@ def regenerate_command(arguments: argparse.Namespace) -> str:
 
 def main(argv: list[str] | None = None) -> int:
     arguments = parse_arguments(sys.argv[1:] if argv is None else argv)
+    if arguments.command in ("merge", "report"):
+        try:
+            return profile_command(arguments)
+        except (SpecError, UsageError) as error:
+            print(error, file=sys.stderr)
+            return 1
     try:
         try:
             algebra = model.load(arguments.spec)

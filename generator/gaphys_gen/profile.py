@@ -1,0 +1,204 @@
+"""Profiles: which coefficients were really nonzero in each library call.
+
+A profile is JSON written by the instrumented variant (and by `merge`):
+
+    {"format": "gaphys-profile", "version": 1,
+     "algebra": "c3ga", "spec_hash": "<sha256 of the spec>", "generator_version": "0.1.0",
+     "entries": [{"function": "gp", "arguments": [1054, 62], "result": 63, "count": 120000}, ...]}
+
+`arguments` and `result` are bitmaps over canonical blade indices (bit i set:
+coefficient i was nonzero). Loading validates everything and raises
+ProfileError("file: message") on the first problem; nothing is generated
+from a profile that does not load.
+"""
+
+import json
+import os
+from dataclasses import dataclass
+
+from . import VERSION
+from .errors import UsageError
+from .model import Algebra
+
+FORMAT = "gaphys-profile"
+FORMAT_VERSION = 1
+
+# Recorded functions and how many multivector arguments each takes.
+RECORDED_ARITY = {
+    **{f: 2 for f in ("gp", "op", "lc", "rc", "scp", "add", "sub", "meet", "apply")},
+    **{f: 1 for f in ("neg", "smul", "reverse", "involute", "conjugate", "dual", "undual",
+                      "norm2", "inverse", "general_inverse", "exp", "log")},
+}
+
+
+class ProfileError(UsageError):
+    """A profile that cannot be used, as `file: message`."""
+
+
+@dataclass(frozen=True)
+class Entry:
+    function: str
+    arguments: tuple[int, ...]
+    result: int
+    count: int
+
+    @property
+    def key(self) -> tuple:
+        return (self.function, self.arguments, self.result)
+
+
+@dataclass(frozen=True)
+class Profile:
+    algebra: str
+    spec_hash: str
+    generator_version: str
+    entries: tuple[Entry, ...]  # sorted, one per (function, arguments, result)
+
+    @property
+    def total_calls(self) -> int:
+        return sum(e.count for e in self.entries)
+
+
+def _combine(entries) -> tuple[Entry, ...]:
+    """One entry per key, counts added; sorted for deterministic output."""
+    counts: dict[tuple, int] = {}
+    for e in entries:
+        counts[e.key] = counts.get(e.key, 0) + e.count
+    return tuple(Entry(f, a, r, c) for (f, a, r), c in sorted(counts.items()))
+
+
+def _require(condition: bool, path: str, message: str) -> None:
+    if not condition:
+        raise ProfileError(f"{path}: {message}")
+
+
+def _is_int(value) -> bool:
+    return isinstance(value, int) and not isinstance(value, bool)
+
+
+def parse(text: str, path: str, algebra: Algebra | None = None) -> Profile:
+    try:
+        data = json.loads(text)
+    except json.JSONDecodeError as error:
+        raise ProfileError(f"{path}:{error.lineno}:{error.colno}: malformed JSON: {error.msg}") from error
+    _require(isinstance(data, dict), path, "a profile is a JSON object")
+    _require(data.get("format") == FORMAT, path, f"not a gaphys profile (\"format\" must be \"{FORMAT}\")")
+    _require(data.get("version") == FORMAT_VERSION, path,
+             f"profile format version {data.get('version')!r} is not supported (expected {FORMAT_VERSION})")
+    for key in ("algebra", "spec_hash", "generator_version"):
+        _require(isinstance(data.get(key), str), path, f"\"{key}\" must be a string")
+    _require(isinstance(data.get("entries"), list), path, "\"entries\" must be a list")
+    unknown = set(data) - {"format", "version", "algebra", "spec_hash", "generator_version", "entries"}
+    _require(not unknown, path, f"unknown key(s): {', '.join(sorted(unknown))}")
+    if algebra is not None:
+        _require(data["algebra"] == algebra.name, path,
+                 f"profile is for algebra {data['algebra']!r}, not {algebra.name!r}")
+        _require(data["spec_hash"] == algebra.spec_hash, path,
+                 f"profile was recorded with another version of the spec (spec_hash {data['spec_hash'][:12]}..., "
+                 f"current {algebra.spec_hash[:12]}...): record it again")
+    limit = 1 << (algebra.blade_count if algebra is not None else 32)
+    entries = []
+    for number, raw in enumerate(data["entries"]):
+        where = f"entry {number}"
+        _require(isinstance(raw, dict), path, f"{where}: must be an object")
+        _require(set(raw) == {"function", "arguments", "result", "count"}, path,
+                 f"{where}: needs exactly the keys function, arguments, result, count")
+        function = raw["function"]
+        _require(function in RECORDED_ARITY, path, f"{where}: unknown function {function!r}")
+        arguments = raw["arguments"]
+        _require(isinstance(arguments, list) and len(arguments) == RECORDED_ARITY[function], path,
+                 f"{where}: {function} takes {RECORDED_ARITY[function]} bitmap argument(s)")
+        for bitmap in arguments + [raw["result"]]:
+            _require(_is_int(bitmap) and 0 <= bitmap < limit, path,
+                     f"{where}: bitmap {bitmap!r} has bits outside the algebra's {limit.bit_length() - 1} blades")
+        _require(_is_int(raw["count"]) and raw["count"] >= 0, path,
+                 f"{where}: count must be a non-negative integer, not {raw['count']!r}")
+        entries.append(Entry(function, tuple(arguments), raw["result"], raw["count"]))
+    return Profile(data["algebra"], data["spec_hash"], data["generator_version"], _combine(entries))
+
+
+def load(path: str, algebra: Algebra | None = None) -> Profile:
+    try:
+        with open(path, encoding="utf-8") as handle:
+            text = handle.read()
+    except OSError as error:
+        raise ProfileError(f"{path}: cannot read: {error.strerror}") from error
+    except UnicodeDecodeError as error:
+        raise ProfileError(f"{path}: not UTF-8 text") from error
+    return parse(text, path, algebra)
+
+
+def dumps(profile: Profile) -> str:
+    """Deterministic JSON, one entry a line: same profile, same bytes."""
+    header = {"format": FORMAT, "version": FORMAT_VERSION, "algebra": profile.algebra,
+              "spec_hash": profile.spec_hash, "generator_version": profile.generator_version}
+    lines = [f"  {json.dumps(key)}: {json.dumps(value)}," for key, value in header.items()]
+    entries = [
+        "    " + json.dumps({"function": e.function, "arguments": list(e.arguments),
+                             "result": e.result, "count": e.count})
+        for e in profile.entries
+    ]
+    body = "[\n" + ",\n".join(entries) + "\n  ]" if entries else "[]"
+    return "{\n" + "\n".join(lines) + f'\n  "entries": {body}\n' + "}\n"
+
+
+def merge(profiles: list[tuple[str, Profile]]) -> Profile:
+    """Adds counts; every profile must be for the same algebra and spec."""
+    _, first = profiles[0]
+    for path, other in profiles[1:]:
+        _require(other.algebra == first.algebra and other.spec_hash == first.spec_hash, path,
+                 f"cannot merge: profile is for {other.algebra} (spec {other.spec_hash[:12]}...), "
+                 f"the first for {first.algebra} (spec {first.spec_hash[:12]}...)")
+    return Profile(first.algebra, first.spec_hash, VERSION,
+                   _combine(e for _, p in profiles for e in p.entries))
+
+
+def select(profile: Profile, coverage: float) -> list[tuple[str, tuple[int, ...], int]]:
+    """The hottest (function, argument bitmaps) combinations that together cover
+    at least `coverage` of all calls: [(function, arguments, calls)], hottest first."""
+    calls: dict[tuple, int] = {}
+    for e in profile.entries:
+        calls[(e.function, e.arguments)] = calls.get((e.function, e.arguments), 0) + e.count
+    ranked = sorted(calls.items(), key=lambda item: (-item[1], item[0]))
+    total, covered, chosen = sum(calls.values()), 0, []
+    for (function, arguments), count in ranked:
+        if total == 0 or covered >= coverage * total or count == 0:
+            break
+        chosen.append((function, arguments, count))
+        covered += count
+    return chosen
+
+
+def blade_list(algebra: Algebra, bitmap: int) -> str:
+    names = [b.name for b in algebra.blades if bitmap >> b.index & 1]
+    return "{" + ", ".join(names) + "}" if names else "{}"
+
+
+def report(profile: Profile, algebra: Algebra, coverage: float, top: int = 20) -> str:
+    """A readable table of the hot combinations, and what an optimized build
+    selected at `coverage` would still send to the generic fallback."""
+    total = profile.total_calls
+    chosen = select(profile, coverage)
+    covered = sum(count for _, _, count in chosen)
+    lines = [
+        f"profile of {profile.algebra}: {total} calls, {len(profile.entries)} entries",
+        f"specialized at coverage {coverage}: {len(chosen)} combinations, "
+        f"{covered} calls; generic fallback: {total - covered} calls "
+        f"({100.0 * (total - covered) / total if total else 0.0:.3f}%)",
+        "",
+        "| calls | share | function | arguments |",
+        "|---:|---:|---|---|",
+    ]
+    for function, arguments, count in chosen[:top]:
+        shown = " x ".join(blade_list(algebra, a) for a in arguments)
+        lines.append(f"| {count} | {100.0 * count / total:.2f}% | {function} | {shown} |")
+    if len(chosen) > top:
+        lines.append(f"| ... | | {len(chosen) - top} more | |")
+    return "\n".join(lines) + "\n"
+
+
+def write(path: str, profile: Profile) -> None:
+    """Writes a profile atomically."""
+    from .output import write_all
+
+    write_all(os.path.dirname(os.path.abspath(path)), {os.path.basename(path): dumps(profile)})

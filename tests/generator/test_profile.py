@@ -1,0 +1,159 @@
+"""Profiles: loading validates everything, merge adds counts, report and selection."""
+
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+from gaphys_gen import model, profile
+
+from .support import GENERATOR_DIR, spec_path
+
+E3 = model.load(spec_path("e3ga"))
+C3 = model.load(spec_path("c3ga"))
+VECTOR = 0b1110  # e1, e2, e3 in e3ga's canonical order
+ROTOR = 0b1110001  # 1, e1^e2, e1^e3, e2^e3
+
+
+def document(**changes) -> dict:
+    data = {
+        "format": "gaphys-profile", "version": 1, "algebra": "e3ga", "spec_hash": E3.spec_hash,
+        "generator_version": "0.1.0",
+        "entries": [{"function": "gp", "arguments": [VECTOR, VECTOR], "result": ROTOR, "count": 3}],
+    }
+    data.update(changes)
+    return data
+
+
+def entry(**changes) -> dict:
+    value = {"function": "gp", "arguments": [VECTOR, VECTOR], "result": ROTOR, "count": 3}
+    value.update(changes)
+    return value
+
+
+class Loading(unittest.TestCase):
+    def assertRejected(self, data, fragment, text=None):
+        with self.assertRaises(profile.ProfileError) as caught:
+            profile.parse(text if text is not None else json.dumps(data), "p.json", E3)
+        message = str(caught.exception)
+        self.assertTrue(message.startswith("p.json"), message)
+        self.assertIn(fragment, message)
+        return message
+
+    def test_valid_profile_loads(self):
+        loaded = profile.parse(json.dumps(document()), "p.json", E3)
+        self.assertEqual(loaded.entries, (profile.Entry("gp", (VECTOR, VECTOR), ROTOR, 3),))
+        self.assertEqual(loaded.total_calls, 3)
+
+    def test_malformed_json_names_line_and_column(self):
+        message = self.assertRejected(None, "malformed JSON", text='{\n  "format": \n}')
+        self.assertTrue(message.startswith("p.json:3:1:"), message)
+
+    def test_wrong_algebra(self):
+        self.assertRejected(document(algebra="c3ga"), "algebra 'c3ga', not 'e3ga'")
+
+    def test_wrong_spec_hash(self):
+        self.assertRejected(document(spec_hash="0" * 64), "another version of the spec")
+
+    def test_bits_outside_the_algebra(self):
+        self.assertRejected(document(entries=[entry(arguments=[VECTOR, 1 << 8])]), "outside the algebra's 8 blades")
+        self.assertRejected(document(entries=[entry(result=-1)]), "outside the algebra")
+
+    def test_negative_count(self):
+        self.assertRejected(document(entries=[entry(count=-1)]), "count must be a non-negative integer")
+
+    def test_non_integer_values(self):
+        self.assertRejected(document(entries=[entry(count=1.5)]), "count must be")
+        self.assertRejected(document(entries=[entry(count=True)]), "count must be")
+        self.assertRejected(document(entries=[entry(arguments=[VECTOR, "14"])]), "bitmap '14'")
+
+    def test_unknown_function_and_wrong_arity(self):
+        self.assertRejected(document(entries=[entry(function="cross")]), "unknown function 'cross'")
+        self.assertRejected(document(entries=[entry(function="reverse")]), "reverse takes 1 bitmap")
+
+    def test_structure(self):
+        self.assertRejected([], "a profile is a JSON object")
+        self.assertRejected(document(format="other"), "not a gaphys profile")
+        self.assertRejected(document(version=2), "version 2 is not supported")
+        self.assertRejected(document(entries={}), '"entries" must be a list')
+        self.assertRejected(document(extra=1), "unknown key(s): extra")
+        self.assertRejected(document(entries=[{"function": "gp"}]), "needs exactly the keys")
+
+    def test_huge_counts_are_exact(self):
+        loaded = profile.parse(json.dumps(document(entries=[entry(count=2**70)])), "p.json", E3)
+        self.assertEqual(loaded.total_calls, 2**70)
+
+    def test_duplicate_entries_add_up(self):
+        loaded = profile.parse(json.dumps(document(entries=[entry(count=2), entry(count=5)])), "p.json", E3)
+        self.assertEqual([e.count for e in loaded.entries], [7])
+
+
+class MergeAndWrite(unittest.TestCase):
+    def test_merge_adds_counts(self):
+        a = profile.parse(json.dumps(document()), "a", E3)
+        b = profile.parse(json.dumps(document(entries=[entry(count=4), entry(function="add", result=VECTOR,
+                                                                          count=1)])), "b", E3)
+        merged = profile.merge([("a", a), ("b", b)])
+        self.assertEqual({(e.function, e.count) for e in merged.entries}, {("gp", 7), ("add", 1)})
+
+    def test_merge_refuses_other_specs(self):
+        a = profile.parse(json.dumps(document()), "a", E3)
+        other = profile.Profile("c3ga", C3.spec_hash, "0.1.0", ())
+        with self.assertRaises(profile.ProfileError):
+            profile.merge([("a", a), ("b", other)])
+
+    def test_dumps_round_trips_and_is_deterministic(self):
+        loaded = profile.parse(json.dumps(document(entries=[entry(function="add", result=VECTOR), entry()])), "p", E3)
+        text = profile.dumps(loaded)
+        self.assertEqual(profile.parse(text, "p", E3), loaded)
+        self.assertEqual(profile.dumps(profile.parse(text, "p", E3)), text)
+
+
+class SelectionAndReport(unittest.TestCase):
+    PROFILE = profile.Profile("e3ga", E3.spec_hash, "0.1.0", (
+        profile.Entry("add", (VECTOR, VECTOR), VECTOR, 1),
+        profile.Entry("gp", (ROTOR, ROTOR), ROTOR, 900),
+        profile.Entry("gp", (VECTOR, VECTOR), ROTOR, 99),
+    ))
+
+    def test_select_covers_the_requested_share_hottest_first(self):
+        self.assertEqual([c[:2] for c in profile.select(self.PROFILE, 0.9)], [("gp", (ROTOR, ROTOR))])
+        self.assertEqual(len(profile.select(self.PROFILE, 0.99)), 2)
+        self.assertEqual(len(profile.select(self.PROFILE, 1.0)), 3)
+
+    def test_report_names_blades_and_fallback_share(self):
+        text = profile.report(self.PROFILE, E3, 0.99)
+        self.assertIn("generic fallback: 1 calls (0.100%)", text)
+        self.assertIn("{1, e1^e2, e1^e3, e2^e3} x {1, e1^e2, e1^e3, e2^e3}", text)
+
+
+class CommandLine(unittest.TestCase):
+    def run_cli(self, *args):
+        return subprocess.run([sys.executable, os.path.join(GENERATOR_DIR, "gaphys-gen"), *args],
+                              capture_output=True, text=True)
+
+    def test_merge_writes_nothing_on_a_bad_input(self):
+        with tempfile.TemporaryDirectory() as folder:
+            good, bad = os.path.join(folder, "good.json"), os.path.join(folder, "bad.json")
+            with open(good, "w") as handle:
+                json.dump(document(), handle)
+            with open(bad, "w") as handle:
+                json.dump(document(entries=[entry(count=-3)]), handle)
+            out = os.path.join(folder, "out.json")
+            result = self.run_cli("merge", "--spec", spec_path("e3ga"), "--out", out, good, bad)
+            self.assertEqual(result.returncode, 1)
+            self.assertIn("bad.json: entry 0: count must be", result.stderr)
+            self.assertFalse(os.path.exists(out))
+            result = self.run_cli("merge", "--spec", spec_path("e3ga"), "--out", out, good, good)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            with open(out) as handle:
+                self.assertEqual(json.load(handle)["entries"][0]["count"], 6)
+            report = self.run_cli("report", out, "--spec", spec_path("e3ga"))
+            self.assertEqual(report.returncode, 0, report.stderr)
+            self.assertIn("| 6 | 100.00% | gp | {e1, e2, e3} x {e1, e2, e3} |", report.stdout)
+
+
+if __name__ == "__main__":
+    unittest.main()
