@@ -1,5 +1,5 @@
 # gaphys_add_algebra(TARGET <target> SPEC <file.ga>
-#                    [VARIANT reference|optimized] [NAMESPACE <ns>])
+#                    [VARIANT reference|instrumented|optimized] [NAMESPACE <ns>])
 #
 # Generates a C++ library from a gaphys spec at build time (again whenever the
 # spec or the generator changes) and defines the INTERFACE target <target>:
@@ -32,8 +32,9 @@ function(gaphys_add_algebra)
   if(NOT ARG_VARIANT)
     set(ARG_VARIANT optimized)
   endif()
-  if(NOT ARG_VARIANT MATCHES "^(reference|optimized)$")
-    message(FATAL_ERROR "gaphys_add_algebra: VARIANT must be reference or optimized, not '${ARG_VARIANT}'")
+  if(NOT ARG_VARIANT MATCHES "^(reference|instrumented|optimized)$")
+    message(FATAL_ERROR "gaphys_add_algebra: VARIANT must be reference, instrumented or optimized, "
+                        "not '${ARG_VARIANT}'")
   endif()
   get_filename_component(spec "${ARG_SPEC}" ABSOLUTE)
   if(NOT EXISTS "${spec}")

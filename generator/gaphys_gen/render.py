@@ -14,7 +14,11 @@ from . import VERSION, view
 from .expand import expand
 from .model import Algebra
 
-VARIANTS = ("reference", "optimized")
+VARIANTS = ("reference", "instrumented", "optimized")
+
+# What each variant's named-type functions and call hook are made of.
+_KERNELS = {"reference": "reference", "instrumented": "reference", "optimized": "optimized"}
+_RECORDING = {"reference": "off", "instrumented": "on", "optimized": "off"}
 
 # The generated code's style, fixed here so that output does not depend on
 # whatever .clang-format happens to sit near the output folder.
@@ -39,7 +43,8 @@ def files_for(variant: str) -> list[tuple[str, str]]:
         ("tables.hpp.j2", "tables.hpp"),
         ("types.hpp.j2", "types.hpp"),
         ("mv_functions.hpp.j2", "mv_functions.hpp"),
-        (f"kernels_{variant}.hpp.j2", "kernels.hpp"),
+        (f"kernels_{_KERNELS[variant]}.hpp.j2", "kernels.hpp"),
+        (f"recording_{_RECORDING[variant]}.hpp.j2", "recording.hpp"),
     ]
 
 

@@ -6,7 +6,7 @@ types, expressions, counts, table contents) is made here.
 
 from fractions import Fraction
 
-from . import cpp
+from . import VERSION, cpp, profile
 from .blades import PRODUCTS, conjugate_sign, involute_sign, reverse_sign
 from .expand import Expander, Kernel
 from .model import Algebra, NamedType
@@ -178,4 +178,7 @@ def build(algebra: Algebra, kernels: list[Kernel], variant: str, banner: list[st
         "aliases": [{"name": a, "target": "basic_" + t} for a, t in algebra.aliases.items()],
         "constants": [constant_view(algebra, expander, c) for c in algebra.constants],
         "kernels": [kernel_view(k) for k in kernels],
+        "spec_hash": algebra.spec_hash,
+        "generator_version": VERSION,
+        "recorded_functions": [{"name": f, "arity": n} for f, n in profile.RECORDED_ARITY.items()],
     }

@@ -39,6 +39,31 @@ inline constexpr std::array<std::uint32_t, dimension + 1> grade_masks = {
 
 namespace detail {
 
+// The library functions, as the instrumented variant records them.
+enum class call : int {
+  gp,
+  op,
+  lc,
+  rc,
+  scp,
+  add,
+  sub,
+  meet,
+  apply,
+  neg,
+  smul,
+  reverse,
+  involute,
+  conjugate,
+  dual,
+  undual,
+  norm2,
+  inverse,
+  general_inverse,
+  exp,
+  log,
+};
+
 // gp of canonical blades i, j: terms [offsets[i * blade_count + j], offsets[... + 1]).
 inline constexpr std::uint16_t gp_offsets[] = {
     0,    1,    2,    3,    4,    5,    6,    7,    8,    9,    10,   11,   12,   13,   14,   15,

@@ -9,66 +9,90 @@
 #include <cmath>
 #include <ostream>
 
+#include "e3ga/recording.hpp"
 #include "e3ga/tables.hpp"
 #include "e3ga/types.hpp"
 
 namespace e3ga {
 
 // ---- general multivector ------------------------------------------------------
+// Every function reports itself to detail::on_call, which records the call in
+// the instrumented variant and compiles to nothing in the others.
 template <class T>
 basic_mv<T> gp(const basic_mv<T>& a, const basic_mv<T>& b) {
-  return gaphys::ga::table_product(detail::gp_table, a, b);
+  const basic_mv<T> r = gaphys::ga::table_product(detail::gp_table, a, b);
+  detail::on_call(detail::call::gp, r, a, b);
+  return r;
 }
 template <class T>
 basic_mv<T> op(const basic_mv<T>& a, const basic_mv<T>& b) {
-  return gaphys::ga::table_product(detail::op_table, a, b);
+  const basic_mv<T> r = gaphys::ga::table_product(detail::op_table, a, b);
+  detail::on_call(detail::call::op, r, a, b);
+  return r;
 }
 template <class T>
 basic_mv<T> lc(const basic_mv<T>& a, const basic_mv<T>& b) {
-  return gaphys::ga::table_product(detail::lc_table, a, b);
+  const basic_mv<T> r = gaphys::ga::table_product(detail::lc_table, a, b);
+  detail::on_call(detail::call::lc, r, a, b);
+  return r;
 }
 template <class T>
 basic_mv<T> rc(const basic_mv<T>& a, const basic_mv<T>& b) {
-  return gaphys::ga::table_product(detail::rc_table, a, b);
+  const basic_mv<T> r = gaphys::ga::table_product(detail::rc_table, a, b);
+  detail::on_call(detail::call::rc, r, a, b);
+  return r;
 }
 template <class T>
 T scp(const basic_mv<T>& a, const basic_mv<T>& b) {
-  return gaphys::ga::table_product(detail::scp_table, a, b).c[0];
+  const T r = gaphys::ga::table_product(detail::scp_table, a, b).c[0];
+  detail::on_call(detail::call::scp, r, a, b);
+  return r;
 }
 template <class T>
 basic_mv<T> add(const basic_mv<T>& a, const basic_mv<T>& b) {
-  return gaphys::ga::linear_combination(T(1), a, T(1), b);
+  const basic_mv<T> r = gaphys::ga::linear_combination(T(1), a, T(1), b);
+  detail::on_call(detail::call::add, r, a, b);
+  return r;
 }
 template <class T>
 basic_mv<T> sub(const basic_mv<T>& a, const basic_mv<T>& b) {
-  return gaphys::ga::linear_combination(T(1), a, T(-1), b);
+  const basic_mv<T> r = gaphys::ga::linear_combination(T(1), a, T(-1), b);
+  detail::on_call(detail::call::sub, r, a, b);
+  return r;
 }
 template <class T>
 basic_mv<T> smul(T s, const basic_mv<T>& a) {
   basic_mv<T> r = a;
   for (T& x : r.c) x *= s;
+  detail::on_call(detail::call::smul, r, a);
   return r;
 }
 template <class T>
 basic_mv<T> neg(const basic_mv<T>& a) {
-  return smul(T(-1), a);
+  basic_mv<T> r = a;
+  for (T& x : r.c) x = -x;
+  detail::on_call(detail::call::neg, r, a);
+  return r;
 }
 template <class T>
 basic_mv<T> reverse(const basic_mv<T>& a) {
   basic_mv<T> r = a;
   for (int i = 0; i < blade_count; ++i) r.c[i] *= T(detail::reverse_signs[i]);
+  detail::on_call(detail::call::reverse, r, a);
   return r;
 }
 template <class T>
 basic_mv<T> involute(const basic_mv<T>& a) {
   basic_mv<T> r = a;
   for (int i = 0; i < blade_count; ++i) r.c[i] *= T(detail::involute_signs[i]);
+  detail::on_call(detail::call::involute, r, a);
   return r;
 }
 template <class T>
 basic_mv<T> conjugate(const basic_mv<T>& a) {
   basic_mv<T> r = a;
   for (int i = 0; i < blade_count; ++i) r.c[i] *= T(detail::conjugate_signs[i]);
+  detail::on_call(detail::call::conjugate, r, a);
   return r;
 }
 template <class T>
@@ -77,33 +101,49 @@ basic_mv<T> grade(const basic_mv<T>& a, int k) {
 }
 template <class T>
 basic_mv<T> dual(const basic_mv<T>& a) {
-  return gaphys::ga::table_linear_map(detail::dual_table, a);
+  const basic_mv<T> r = gaphys::ga::table_linear_map(detail::dual_table, a);
+  detail::on_call(detail::call::dual, r, a);
+  return r;
 }
 template <class T>
 basic_mv<T> undual(const basic_mv<T>& a) {
-  return gaphys::ga::table_linear_map(detail::undual_table, a);
+  const basic_mv<T> r = gaphys::ga::table_linear_map(detail::undual_table, a);
+  detail::on_call(detail::call::undual, r, a);
+  return r;
 }
+// The functions below are built from the ones above; in the instrumented
+// variant those inner calls are recorded too.
 template <class T>
 T norm2(const basic_mv<T>& a) {
-  return scp(a, reverse(a));
+  const T r = scp(a, reverse(a));
+  detail::on_call(detail::call::norm2, r, a);
+  return r;
 }
 // Versor inverse ~a / <a ~a>_0: exact for blades and versors.
 template <class T>
 basic_mv<T> inverse(const basic_mv<T>& a) {
-  return smul(T(1) / norm2(a), reverse(a));
+  const basic_mv<T> r = smul(T(1) / norm2(a), reverse(a));
+  detail::on_call(detail::call::inverse, r, a);
+  return r;
 }
 // Inverse of any invertible multivector; throws std::domain_error if singular.
 template <class T>
 basic_mv<T> general_inverse(const basic_mv<T>& a) {
-  return gaphys::ga::general_inverse(a);
+  const basic_mv<T> r = gaphys::ga::general_inverse(a);
+  detail::on_call(detail::call::general_inverse, r, a);
+  return r;
 }
 template <class T>
 basic_mv<T> exp(const basic_mv<T>& a) {
-  return gaphys::ga::exp_general(a);
+  const basic_mv<T> r = gaphys::ga::exp_general(a);
+  detail::on_call(detail::call::exp, r, a);
+  return r;
 }
 template <class T>
 basic_mv<T> log(const basic_mv<T>& a) {
-  return gaphys::ga::log_general(a);
+  const basic_mv<T> r = gaphys::ga::log_general(a);
+  detail::on_call(detail::call::log, r, a);
+  return r;
 }
 // v x v^-1 as v x ~v / <v ~v>_0, keeping the grades x has: a versor preserves grade.
 template <class T>
@@ -112,12 +152,16 @@ basic_mv<T> apply(const basic_mv<T>& v, const basic_mv<T>& x) {
   for (int k = 0; k <= dimension; ++k)
     if (x.bits & grade_masks[k]) mask |= grade_masks[k];
   const basic_mv<T> rv = reverse(v);
-  return smul(T(1) / scp(v, rv), gaphys::ga::keep_grades(gp(gp(v, x), rv), mask));
+  const basic_mv<T> r = smul(T(1) / scp(v, rv), gaphys::ga::keep_grades(gp(gp(v, x), rv), mask));
+  detail::on_call(detail::call::apply, r, v, x);
+  return r;
 }
 // (a* ^ b*)^-*, the dual of the outer product of the duals.
 template <class T>
 basic_mv<T> meet(const basic_mv<T>& a, const basic_mv<T>& b) {
-  return undual(op(dual(a), dual(b)));
+  const basic_mv<T> r = undual(op(dual(a), dual(b)));
+  detail::on_call(detail::call::meet, r, a, b);
+  return r;
 }
 template <class T>
 bool approx_equal(const basic_mv<T>& a, const basic_mv<T>& b, T tolerance) {

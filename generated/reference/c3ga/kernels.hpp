@@ -2,8 +2,8 @@
 // Spec: specs/c3ga.ga (sha256 9cbc22a5f643a4c37fdb6a274eb530a887aeec8230afd9532e0ef9a4c8353aa4)
 // Variant: reference
 // Regenerate: gaphys-gen generate specs/c3ga.ga --variant reference --out generated/reference
-// Functions on named types, reference variant: every call widens its arguments
-// to basic_mv and takes the general table-driven path.
+// Functions on named types, reference variant: every call widens its
+// arguments to basic_mv and takes the general table-driven path.
 #pragma once
 
 #include "c3ga/mv_functions.hpp"

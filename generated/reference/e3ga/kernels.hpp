@@ -2,8 +2,8 @@
 // Spec: specs/e3ga.ga (sha256 9fa7c2a8d2f1f82b8bc2579ebb9454cf168964fd16144115cec10e87530ba715)
 // Variant: reference
 // Regenerate: gaphys-gen generate specs/e3ga.ga --variant reference --out generated/reference
-// Functions on named types, reference variant: every call widens its arguments
-// to basic_mv and takes the general table-driven path.
+// Functions on named types, reference variant: every call widens its
+// arguments to basic_mv and takes the general table-driven path.
 #pragma once
 
 #include "e3ga/mv_functions.hpp"
