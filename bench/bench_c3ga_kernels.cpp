@@ -18,35 +18,6 @@ namespace {
 
 using namespace gaphys_bench;
 
-// p = no + x + x^2/2 ni, x uniform in the cube [-1, 1]^3.
-c3ga::normalized_point random_point(rng& g) {
-  const double x = uniform(g, -1, 1), y = uniform(g, -1, 1), z = uniform(g, -1, 1);
-  return c3ga::normalized_point{x, y, z, 0.5 * (x * x + y * y + z * z)};
-}
-
-// sigma = c - r^2/2 ni: centre c a normalized point, radius r in [0.5, 1.5],
-// so that spheres with centres in the unit cube mostly intersect.
-c3ga::dual_sphere random_dual_sphere(rng& g) {
-  const c3ga::normalized_point c = random_point(g);
-  const double r = uniform(g, 0.5, 1.5);
-  return c3ga::dual_sphere{1.0, c.e1(), c.e2(), c.e3(), c.ni() - 0.5 * r * r};
-}
-
-// M = T R, R = cos(phi/2) - sin(phi/2) B (B a unit Euclidean bivector) and
-// T = 1 - t ni / 2 (t a Euclidean vector).
-c3ga::motor random_motor(rng& g) {
-  double b12 = uniform(g, -1, 1), b13 = uniform(g, -1, 1), b23 = uniform(g, -1, 1);
-  const double len = std::sqrt(b12 * b12 + b13 * b13 + b23 * b23);
-  b12 /= len;
-  b13 /= len;
-  b23 /= len;
-  const double half_angle = uniform(g, -1.5, 1.5);
-  const double s = std::sin(half_angle);
-  const c3ga::rotor r{std::cos(half_angle), -s * b12, -s * b13, -s * b23};
-  const c3ga::translator t{1.0, -0.5 * uniform(g, -1, 1), -0.5 * uniform(g, -1, 1),
-                           -0.5 * uniform(g, -1, 1)};
-  return c3ga::motor(c3ga::mv(gp(t, r)));
-}
 
 template <class T>
 std::vector<c3ga::mv> widen(const std::vector<T>& pool) {

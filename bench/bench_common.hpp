@@ -5,6 +5,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "operands.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <random>
@@ -16,27 +18,6 @@ namespace gaphys_bench {
 
 // The thesis timed 10,000,000 calls of each function (table 5.1).
 inline constexpr double thesis_calls = 1e7;
-
-// Each benchmark iteration makes one call per pool entry. 32 entries of the
-// largest argument (a c3ga mv, 264 bytes) keep two pools inside L1, and
-// varying the inputs keeps the compiler from hoisting a call out of the loop.
-inline constexpr std::size_t pool_size = 32;
-
-// A fixed seed: every run and every variant sees the same inputs.
-using rng = std::mt19937_64;
-inline constexpr rng::result_type seed = 20240521;
-
-inline double uniform(rng& g, double lo, double hi) {
-  return std::uniform_real_distribution<double>(lo, hi)(g);
-}
-
-template <class Make>
-auto make_pool(rng& g, Make make) {
-  std::vector<decltype(make(g))> pool;
-  pool.reserve(pool_size);
-  for (std::size_t i = 0; i < pool_size; ++i) pool.push_back(make(g));
-  return pool;
-}
 
 // Index of the pool entry `step` places after i.
 inline std::size_t next(std::size_t i, std::size_t step) { return (i + step) % pool_size; }

@@ -11,74 +11,11 @@
 #include <vector>
 
 #include "bench_common.hpp"
+#include "operands.hpp"
 
 namespace {
 
 using namespace gaphys_bench;
-
-// An mv whose bits say exactly which coefficients are nonzero, as if the
-// caller had built it from coordinates (products set every reachable bit).
-template <class Mv>
-Mv exact_bits(const Mv& x) {
-  return Mv::from_array(x.to_array());
-}
-
-// Every coefficient uniform in [-1, 1].
-template <class Alg>
-typename Alg::mv random_full(rng& g) {
-  auto a = typename Alg::mv{}.to_array();
-  for (auto& x : a) x = uniform(g, -1, 1);
-  return Alg::mv::from_array(a);
-}
-
-// Every grade-k coefficient uniform in [-1, 1], the others zero.
-template <class Alg>
-typename Alg::mv random_grade(rng& g, int k) {
-  auto a = typename Alg::mv{}.to_array();
-  for (std::size_t i = 0; i < a.size(); ++i)
-    if (Alg::grade(i) == k) a[i] = uniform(g, -1, 1);
-  return Alg::mv::from_array(a);
-}
-
-// A random 2-blade: the outer product of two random vectors.
-template <class Alg>
-typename Alg::mv random_2_blade(rng& g) {
-  const auto u = random_grade<Alg>(g, 1);
-  const auto v = random_grade<Alg>(g, 1);
-  return exact_bits(op(u, v));
-}
-
-struct e3ga_algebra {
-  using mv = e3ga::mv;
-  static constexpr const char* name = "e3ga";
-  static constexpr const char* versor_name = "rotor";
-  static int grade(std::size_t i) { return e3ga::blade_grades[i]; }
-  // A unit rotor: the product of two unit vectors.
-  static mv random_versor(rng& g) {
-    const mv u = unit(random_grade<e3ga_algebra>(g, 1));
-    const mv v = unit(random_grade<e3ga_algebra>(g, 1));
-    return exact_bits(gp(u, v));
-  }
-};
-
-struct c3ga_algebra {
-  using mv = c3ga::mv;
-  static constexpr const char* name = "c3ga";
-  static constexpr const char* versor_name = "motor";
-  static int grade(std::size_t i) { return c3ga::blade_grades[i]; }
-  // A dual plane n + d ni with unit normal n: a reflection, squares to 1.
-  static mv random_reflection(rng& g) {
-    const c3ga::euclidean_vector n{uniform(g, -1, 1), uniform(g, -1, 1), uniform(g, -1, 1)};
-    const double len = norm(n);
-    return mv(c3ga::dual_plane{n.e1() / len, n.e2() / len, n.e3() / len, uniform(g, -1, 1)});
-  }
-  // A unit motor (screw motion): the product of four reflections.
-  static mv random_versor(rng& g) {
-    const mv a = gp(random_reflection(g), random_reflection(g));
-    const mv b = gp(random_reflection(g), random_reflection(g));
-    return exact_bits(gp(a, b));
-  }
-};
 
 // The five functions of table 5.1. Unqualified calls find the algebra's
 // functions by argument-dependent lookup.

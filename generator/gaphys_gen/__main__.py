@@ -1,8 +1,10 @@
 """Command line: python3 -m gaphys_gen (or generator/gaphys-gen) <command> ...
 
-  generate SPEC --variant reference|optimized --out DIR [--namespace NS] [--no-format]
+  generate SPEC --variant reference|instrumented|optimized --out DIR [--namespace NS]
+           [--profile PROFILE [--coverage 0.999]] [--no-format]
       Parse SPEC, expand it and write DIR/<ns>/<ns>.hpp and its companions
-      (all or none). NS defaults to the spec's algebra name.
+      (all or none). NS defaults to the spec's algebra name. With a profile the
+      optimized variant gets straight-line mv code for its hot bitmaps.
   check SPEC --variant V --out DIR [--namespace NS]
       Exit 1, listing the files, if generating would change anything in DIR.
   merge --spec SPEC --out PROFILE INPUT...
@@ -31,6 +33,9 @@ def parse_arguments(argv: list[str]) -> argparse.Namespace:
         command.add_argument("--out", required=True, help="output folder (the include root)")
         command.add_argument("--namespace", help="C++ namespace and header folder (default: the algebra name)")
         command.add_argument("--no-format", action="store_true", help="skip clang-format")
+        command.add_argument("--profile", help="a profile of this spec: specialize mv calls (optimized only)")
+        command.add_argument("--coverage", type=float, default=0.999,
+                             help="share of the profile's calls to specialize (default 0.999)")
     merge = commands.add_parser("merge", help="add the counts of several profiles")
     merge.add_argument("inputs", nargs="+", help="profiles to merge")
     merge.add_argument("--spec", required=True, help="the spec the profiles were recorded with")
@@ -60,6 +65,8 @@ def regenerate_command(arguments: argparse.Namespace) -> str:
     words = ["gaphys-gen", "generate", arguments.spec, "--variant", arguments.variant, "--out", arguments.out]
     if arguments.namespace:
         words += ["--namespace", arguments.namespace]
+    if arguments.profile:
+        words += ["--profile", arguments.profile, "--coverage", str(arguments.coverage)]
     return " ".join(shlex.quote(w) for w in words)
 
 
@@ -82,7 +89,10 @@ def main(argv: list[str] | None = None) -> int:
         formatter = None if arguments.no_format else render.find_clang_format()
         if formatter is None and not arguments.no_format:
             print("gaphys-gen: warning: clang-format not found, output is unformatted", file=sys.stderr)
-        files = render.render(algebra, arguments.variant, namespace, regenerate_command(arguments), formatter)
+        if not 0 < arguments.coverage <= 1:
+            raise UsageError(f"--coverage must be in (0, 1], not {arguments.coverage}")
+        files = render.render(algebra, arguments.variant, namespace, regenerate_command(arguments), formatter,
+                              arguments.profile, arguments.coverage)
     except (SpecError, UsageError) as error:
         print(error, file=sys.stderr)
         return 1

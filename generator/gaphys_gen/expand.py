@@ -282,3 +282,58 @@ def expand(algebra: Algebra) -> list[Kernel]:
             raise SpecError(request.location, f"{request.name} needs a non-degenerate metric (the pseudoscalar squares to 0)")
         add(request.name, request.arguments, request.location)
     return list(kernels.values())
+
+
+# Functions on `mv` that the optimized variant can specialize for the argument
+# bitmaps a profile saw (the rest always take the generic path).
+SPECIALIZABLE = ("gp", "op", "lc", "rc", "scp", "add", "sub", "apply", "meet",
+                 "neg", "reverse", "involute", "conjugate", "dual", "undual")
+
+
+@dataclass
+class MvKernel:
+    """Straight-line code for one function on mv arguments with given bitmaps."""
+
+    function: str
+    argument_bits: tuple[int, ...]  # canonical-index bitmaps the kernel reads
+    kernel: Kernel  # outputs indexed by canonical blade index (or 0 for a scalar)
+    calls: int  # how many profiled calls it covers
+
+    @property
+    def name(self) -> str:
+        return self.function + "".join(f"_{bits:x}" for bits in self.argument_bits)
+
+
+def mv_kernel(expander: Expander, function: str, argument_bits: tuple[int, ...], calls: int) -> MvKernel:
+    """Expands `function` on mv arguments whose nonzero coefficients are exactly
+    the set bits; variables are named by canonical index (a5 reads a.c[5])."""
+    algebra = expander.algebra
+    args = [
+        {algebra.blades[i].bitmap: Poly.variable(f"{letter}{i}") for i in range(algebra.blade_count) if bits >> i & 1}
+        for bits, letter in zip(argument_bits, ARGUMENT_NAMES)
+    ]
+    result, divisor = expander.recipe(function, args)
+    temporaries: list[tuple[str, Poly]] = []
+    if function == "apply":
+        result, temporaries = expander.staged_sandwich(args[0], args[1])
+    rtype = ResultType("scalar") if function == "scp" else ResultType("mv")
+    outputs, bits = expander.outputs(result, rtype)
+    used = {v for _, poly in outputs for monomial in poly.terms for v in monomial}
+    temporaries = [(name, poly) for name, poly in temporaries if name in used]
+    kernel = Kernel(function, (), rtype, outputs, divisor, mv_bits=bits, temporaries=temporaries)
+    return MvKernel(function, argument_bits, kernel, calls)
+
+
+def expand_profile(algebra: Algebra, chosen: list[tuple[str, tuple[int, ...], int]]) -> list[MvKernel]:
+    """Kernels for the profiled combinations `chosen` (from profile.select) that
+    can be specialized; a divisor that vanishes structurally stays generic."""
+    expander = Expander(algebra)
+    kernels = []
+    for function, argument_bits, calls in chosen:
+        if function not in SPECIALIZABLE or (function in ("dual", "undual", "meet") and not expander.has_dual):
+            continue
+        kernel = mv_kernel(expander, function, argument_bits, calls)
+        if kernel.kernel.divisor is not None and kernel.kernel.divisor.is_zero():
+            continue
+        kernels.append(kernel)
+    return sorted(kernels, key=lambda k: (k.function, k.argument_bits))

@@ -139,6 +139,65 @@ def kernel_view(kernel: Kernel) -> dict:
     }
 
 
+def mv_kernel_view(algebra: Algebra, mk) -> dict:
+    """A profiled mv kernel: reads a.c[i] for the bits it was made for."""
+    kernel = mk.kernel
+    letters = "ab"[: len(mk.argument_bits)]
+    polys = [p for _, p in kernel.outputs] + [p for _, p in kernel.temporaries]
+    polys += [kernel.divisor] if kernel.divisor is not None else []
+    muls, adds = cpp.count(polys)
+    scale = " * inv" if kernel.divisor is not None else ""
+    if kernel.divisor is not None:
+        muls += len(kernel.outputs)
+    shown = " x ".join(
+        "{" + ", ".join(b.name for b in algebra.blades if bits >> b.index & 1) + "}" for bits in mk.argument_bits
+    )
+    prologue = [f"const T inv = T(1) / ({cpp.expression(kernel.divisor)});"] if kernel.divisor is not None else []
+    read = {v[0] for poly in polys for monomial in poly.terms for v in monomial}  # argument letters used
+    if kernel.result.kind == "scalar":
+        body = [f"return ({cpp.expression(kernel.outputs[0][1])}){scale};"]
+    else:
+        body = ["basic_mv<T> r;"]
+        body += [f"r.c[{i}] = ({cpp.expression(p)}){scale};" for i, p in kernel.outputs]
+        body += [f"r.bits = {hex(kernel.mv_bits)}u;", "return r;"]
+    return {
+        "name": mk.name,
+        "comment": f"{mk.function} on mv {shown}: {muls} mul, {adds} add"
+        + (", 1 div" if kernel.divisor is not None else "") + f" ({mk.calls} profiled calls)",
+        "return_type": "T" if kernel.result.kind == "scalar" else "basic_mv<T>",
+        "params": ", ".join(
+            ("" if letter in read else "[[maybe_unused]] ") + f"const basic_mv<T>& {letter}" for letter in letters
+        ),
+        "temporaries": [{"name": n, "expr": cpp.expression(p)} for n, p in kernel.temporaries],
+        "prologue": prologue,
+        "body": body,
+    }
+
+
+def dispatchers(mv_kernels) -> list[dict]:
+    """One dispatcher per specializable function, with a case per profiled kernel."""
+    from .expand import SPECIALIZABLE
+    from .profile import RECORDED_ARITY
+
+    result = []
+    for function in SPECIALIZABLE:
+        binary = RECORDED_ARITY[function] == 2
+        cases = [
+            {"key": (f"0x{mk.argument_bits[0]:x}{mk.argument_bits[1]:08x}ull" if binary
+                     else f"0x{mk.argument_bits[0]:x}u"), "kernel": mk.name}
+            for mk in mv_kernels if mk.function == function
+        ]
+        result.append({
+            "function": function,
+            "params": "const basic_mv<T>& a, const basic_mv<T>& b" if binary else "const basic_mv<T>& a",
+            "arguments": "a, b" if binary else "a",
+            "key": "pair_key(a.bits, b.bits)" if binary else "a.bits",
+            "result_type": "T" if function == "scp" else "basic_mv<T>",
+            "cases": cases,
+        })
+    return result
+
+
 def constant_view(algebra: Algebra, expander: Expander, constant) -> dict:
     value = {b: v for b, v in constant.value.items()}
     from .symbolic import from_constant
@@ -154,9 +213,17 @@ def constant_view(algebra: Algebra, expander: Expander, constant) -> dict:
     return {"name": constant.name, "type": "basic_mv<T>", "init": f"(basic_mv<T>::from_terms({{{entries}}}))"}
 
 
-def build(algebra: Algebra, kernels: list[Kernel], variant: str, banner: list[str], namespace: str) -> dict:
+def build(algebra: Algebra, kernels: list[Kernel], variant: str, banner: list[str], namespace: str,
+          mv_kernels=()) -> dict:
     expander = Expander(algebra)
     return {
+        "mv_kernels": [mv_kernel_view(algebra, mk) for mk in mv_kernels],
+        "combinations": [
+            {"function": mk.function, "a": hex(mk.argument_bits[0]) + "u",
+             "b": hex(mk.argument_bits[1] if len(mk.argument_bits) > 1 else 0) + "u"}
+            for mk in mv_kernels
+        ],
+        "dispatchers": dispatchers(mv_kernels),
         "banner": banner,
         "namespace": namespace,
         "variant": variant,

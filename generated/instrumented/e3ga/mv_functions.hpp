@@ -10,53 +10,64 @@
 #include <ostream>
 
 #include "e3ga/recording.hpp"
+#include "e3ga/specialized.hpp"
 #include "e3ga/tables.hpp"
 #include "e3ga/types.hpp"
 
 namespace e3ga {
 
 // ---- general multivector ------------------------------------------------------
-// Every function reports itself to detail::on_call, which records the call in
-// the instrumented variant and compiles to nothing in the others.
+// Every function first asks detail::specialized_<f> for straight-line code for
+// its arguments' bitmaps (profile-guided, optimized variant only), and reports
+// itself to detail::on_call, which records the call in the instrumented
+// variant; both compile to nothing where they have nothing to do.
 template <class T>
 basic_mv<T> gp(const basic_mv<T>& a, const basic_mv<T>& b) {
-  const basic_mv<T> r = gaphys::ga::table_product(detail::gp_table, a, b);
+  basic_mv<T> r;
+  if (!detail::specialized_gp(a, b, r)) r = gaphys::ga::table_product(detail::gp_table, a, b);
   detail::on_call(detail::call::gp, r, a, b);
   return r;
 }
 template <class T>
 basic_mv<T> op(const basic_mv<T>& a, const basic_mv<T>& b) {
-  const basic_mv<T> r = gaphys::ga::table_product(detail::op_table, a, b);
+  basic_mv<T> r;
+  if (!detail::specialized_op(a, b, r)) r = gaphys::ga::table_product(detail::op_table, a, b);
   detail::on_call(detail::call::op, r, a, b);
   return r;
 }
 template <class T>
 basic_mv<T> lc(const basic_mv<T>& a, const basic_mv<T>& b) {
-  const basic_mv<T> r = gaphys::ga::table_product(detail::lc_table, a, b);
+  basic_mv<T> r;
+  if (!detail::specialized_lc(a, b, r)) r = gaphys::ga::table_product(detail::lc_table, a, b);
   detail::on_call(detail::call::lc, r, a, b);
   return r;
 }
 template <class T>
 basic_mv<T> rc(const basic_mv<T>& a, const basic_mv<T>& b) {
-  const basic_mv<T> r = gaphys::ga::table_product(detail::rc_table, a, b);
+  basic_mv<T> r;
+  if (!detail::specialized_rc(a, b, r)) r = gaphys::ga::table_product(detail::rc_table, a, b);
   detail::on_call(detail::call::rc, r, a, b);
   return r;
 }
 template <class T>
 T scp(const basic_mv<T>& a, const basic_mv<T>& b) {
-  const T r = gaphys::ga::table_product(detail::scp_table, a, b).c[0];
+  T r;
+  if (!detail::specialized_scp(a, b, r))
+    r = gaphys::ga::table_product(detail::scp_table, a, b).c[0];
   detail::on_call(detail::call::scp, r, a, b);
   return r;
 }
 template <class T>
 basic_mv<T> add(const basic_mv<T>& a, const basic_mv<T>& b) {
-  const basic_mv<T> r = gaphys::ga::linear_combination(T(1), a, T(1), b);
+  basic_mv<T> r;
+  if (!detail::specialized_add(a, b, r)) r = gaphys::ga::linear_combination(T(1), a, T(1), b);
   detail::on_call(detail::call::add, r, a, b);
   return r;
 }
 template <class T>
 basic_mv<T> sub(const basic_mv<T>& a, const basic_mv<T>& b) {
-  const basic_mv<T> r = gaphys::ga::linear_combination(T(1), a, T(-1), b);
+  basic_mv<T> r;
+  if (!detail::specialized_sub(a, b, r)) r = gaphys::ga::linear_combination(T(1), a, T(-1), b);
   detail::on_call(detail::call::sub, r, a, b);
   return r;
 }
@@ -69,28 +80,36 @@ basic_mv<T> smul(T s, const basic_mv<T>& a) {
 }
 template <class T>
 basic_mv<T> neg(const basic_mv<T>& a) {
-  basic_mv<T> r = a;
+  basic_mv<T> r;
+  if (detail::specialized_neg(a, r)) return r;
+  r = a;
   for (T& x : r.c) x = -x;
   detail::on_call(detail::call::neg, r, a);
   return r;
 }
 template <class T>
 basic_mv<T> reverse(const basic_mv<T>& a) {
-  basic_mv<T> r = a;
+  basic_mv<T> r;
+  if (detail::specialized_reverse(a, r)) return r;
+  r = a;
   for (int i = 0; i < blade_count; ++i) r.c[i] *= T(detail::reverse_signs[i]);
   detail::on_call(detail::call::reverse, r, a);
   return r;
 }
 template <class T>
 basic_mv<T> involute(const basic_mv<T>& a) {
-  basic_mv<T> r = a;
+  basic_mv<T> r;
+  if (detail::specialized_involute(a, r)) return r;
+  r = a;
   for (int i = 0; i < blade_count; ++i) r.c[i] *= T(detail::involute_signs[i]);
   detail::on_call(detail::call::involute, r, a);
   return r;
 }
 template <class T>
 basic_mv<T> conjugate(const basic_mv<T>& a) {
-  basic_mv<T> r = a;
+  basic_mv<T> r;
+  if (detail::specialized_conjugate(a, r)) return r;
+  r = a;
   for (int i = 0; i < blade_count; ++i) r.c[i] *= T(detail::conjugate_signs[i]);
   detail::on_call(detail::call::conjugate, r, a);
   return r;
@@ -101,13 +120,15 @@ basic_mv<T> grade(const basic_mv<T>& a, int k) {
 }
 template <class T>
 basic_mv<T> dual(const basic_mv<T>& a) {
-  const basic_mv<T> r = gaphys::ga::table_linear_map(detail::dual_table, a);
+  basic_mv<T> r;
+  if (!detail::specialized_dual(a, r)) r = gaphys::ga::table_linear_map(detail::dual_table, a);
   detail::on_call(detail::call::dual, r, a);
   return r;
 }
 template <class T>
 basic_mv<T> undual(const basic_mv<T>& a) {
-  const basic_mv<T> r = gaphys::ga::table_linear_map(detail::undual_table, a);
+  basic_mv<T> r;
+  if (!detail::specialized_undual(a, r)) r = gaphys::ga::table_linear_map(detail::undual_table, a);
   detail::on_call(detail::call::undual, r, a);
   return r;
 }
@@ -148,6 +169,8 @@ basic_mv<T> log(const basic_mv<T>& a) {
 // v x v^-1 as v x ~v / <v ~v>_0, keeping the grades x has: a versor preserves grade.
 template <class T>
 basic_mv<T> apply(const basic_mv<T>& v, const basic_mv<T>& x) {
+  basic_mv<T> specialized;
+  if (detail::specialized_apply(v, x, specialized)) return specialized;
   std::uint32_t mask = 0;
   for (int k = 0; k <= dimension; ++k)
     if (x.bits & grade_masks[k]) mask |= grade_masks[k];
@@ -159,7 +182,8 @@ basic_mv<T> apply(const basic_mv<T>& v, const basic_mv<T>& x) {
 // (a* ^ b*)^-*, the dual of the outer product of the duals.
 template <class T>
 basic_mv<T> meet(const basic_mv<T>& a, const basic_mv<T>& b) {
-  const basic_mv<T> r = undual(op(dual(a), dual(b)));
+  basic_mv<T> r;
+  if (!detail::specialized_meet(a, b, r)) r = undual(op(dual(a), dual(b)));
   detail::on_call(detail::call::meet, r, a, b);
   return r;
 }

@@ -383,8 +383,7 @@ struct basic_line {
 };
 using line = basic_line<real>;
 
-// circle: no^e1^e2, no^e1^e3, no^e2^e3, no^e1^ni, no^e2^ni, no^e3^ni, e1^e2^e3, e1^e2^ni, e1^e3^ni,
-// e2^e3^ni
+// circle: no^e1^e2, no^e1^e3, no^e2^e3, no^e1^ni, no^e2^ni, no^e3^ni, e1^e2^e3, e1^e2^ni, e1^e3^ni, e2^e3^ni
 template <class T>
 struct basic_circle {
   using scalar_type = T;
