@@ -7,10 +7,10 @@ From the repository root:
     cmake --build build-bench -j 2
     python3 bench/print_table.py --build-dir build-bench --repetitions 5 --json-dir build-bench/bench-json
 
-It runs bench_table_5_1_{reference,optimized} and bench_c3ga_kernels_{reference,optimized}
+It runs bench_table_5_1_{reference,instrumented,optimized} and bench_c3ga_kernels_{...}
 (found under --build-dir) with --benchmark_repetitions=N --benchmark_format=json and prints
 Markdown tables: CPU seconds per 10,000,000 calls (median over the repetitions), the
-reference / optimized ratio, and the thesis's figures (seconds of user time for 10,000,000
+reference / optimized ratio, the instrumented / reference overhead, and the thesis's figures (seconds of user time for 10,000,000
 calls). --json-dir keeps the raw JSON; --from-json DIR prints the tables from a kept run
 without running anything. Python 3 standard library only.
 """
@@ -21,7 +21,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-VARIANTS = ("reference", "optimized")
+VARIANTS = ("reference", "instrumented", "optimized")
 EXECUTABLES = ("bench_table_5_1", "bench_c3ga_kernels")
 
 # Table 5.1 of the thesis: user seconds for 10,000,000 calls.
@@ -121,23 +121,25 @@ def table_5_1(results, algebra, repetitions):
     lines = [
         f"#### {algebra}: `mv` arguments, CPU seconds per 10,000,000 calls (median of {repetitions}, ±cv)",
         "",
-        "| function | arguments | reference | optimized | ref / opt | "
+        "| function | arguments | reference | instrumented | optimized | ref / opt | instr / ref | "
         + " | ".join(f"thesis: {c}" for c in THESIS_COLUMNS)
         + " |",
-        "|---|---|---:|---:|---:|" + "---:|" * len(THESIS_COLUMNS),
+        "|---|---|---:|---:|---:|---:|---:|" + "---:|" * len(THESIS_COLUMNS),
     ]
     for function in FUNCTIONS:
         first = True
         for argument in ARGUMENTS:
             name = f"{algebra}/{function}/{argument}"
             ref, opt = results.get(("reference", name)), results.get(("optimized", name))
+            ins = results.get(("instrumented", name))
             if ref is None and opt is None:
                 continue
             label = function
             if function in THESIS_NAMES:
                 label += f" ({THESIS_NAMES[function]})"
             thesis = [f"{t:.2f}" for t in THESIS[function]] if first else [""] * len(THESIS_COLUMNS)
-            cells = [label if first else "", ARGUMENT_LABELS[argument], seconds(ref), seconds(opt), ratio(ref, opt)]
+            cells = [label if first else "", ARGUMENT_LABELS[argument], seconds(ref), seconds(ins), seconds(opt),
+                     ratio(ref, opt), ratio(ins, ref)]
             lines.append("| " + " | ".join(cells + thesis) + " |")
             first = False
     return lines
@@ -147,16 +149,18 @@ def kernel_table(results, repetitions):
     lines = [
         f"#### c3ga kernels: CPU seconds per 10,000,000 calls (median of {repetitions}, ±cv)",
         "",
-        "| kernel | arguments | reference | optimized | ref / opt |",
-        "|---|---|---:|---:|---:|",
+        "| kernel | arguments | reference | instrumented | optimized | ref / opt | instr / ref |",
+        "|---|---|---:|---:|---:|---:|---:|",
     ]
     for kernel, label in KERNELS.items():
         for form, form_label in (("named", "named types"), ("mv", "same values in `mv`")):
             name = f"c3ga/{kernel}/{form}"
             ref, opt = results.get(("reference", name)), results.get(("optimized", name))
+            ins = results.get(("instrumented", name))
             if ref is None and opt is None:
                 continue
-            cells = [label if form == "named" else "", form_label, seconds(ref), seconds(opt), ratio(ref, opt)]
+            cells = [label if form == "named" else "", form_label, seconds(ref), seconds(ins), seconds(opt),
+                     ratio(ref, opt), ratio(ins, ref)]
             lines.append("| " + " | ".join(cells) + " |")
     return lines
 

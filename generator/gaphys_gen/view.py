@@ -154,20 +154,19 @@ def mv_kernel_view(algebra: Algebra, mk) -> dict:
     )
     prologue = [f"const T inv = T(1) / ({cpp.expression(kernel.divisor)});"] if kernel.divisor is not None else []
     read = {v[0] for poly in polys for monomial in poly.terms for v in monomial}  # argument letters used
+    # Kernels write into the caller's result, which starts as a zero mv: no copies.
     if kernel.result.kind == "scalar":
-        body = [f"return ({cpp.expression(kernel.outputs[0][1])}){scale};"]
+        body = [f"r = ({cpp.expression(kernel.outputs[0][1])}){scale};"]
     else:
-        body = ["basic_mv<T> r;"]
-        body += [f"r.c[{i}] = ({cpp.expression(p)}){scale};" for i, p in kernel.outputs]
-        body += [f"r.bits = {hex(kernel.mv_bits)}u;", "return r;"]
+        body = [f"r.c[{i}] = ({cpp.expression(p)}){scale};" for i, p in kernel.outputs]
+        body += [f"r.bits = {hex(kernel.mv_bits)}u;"]
     return {
         "name": mk.name,
         "comment": f"{mk.function} on mv {shown}: {muls} mul, {adds} add"
         + (", 1 div" if kernel.divisor is not None else "") + f" ({mk.calls} profiled calls)",
-        "return_type": "T" if kernel.result.kind == "scalar" else "basic_mv<T>",
         "params": ", ".join(
             ("" if letter in read else "[[maybe_unused]] ") + f"const basic_mv<T>& {letter}" for letter in letters
-        ),
+        ) + (", T& r" if kernel.result.kind == "scalar" else ", basic_mv<T>& r"),
         "temporaries": [{"name": n, "expr": cpp.expression(p)} for n, p in kernel.temporaries],
         "prologue": prologue,
         "body": body,

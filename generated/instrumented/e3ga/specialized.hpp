@@ -5,7 +5,8 @@
 // Straight-line code for functions on mv whose argument bitmaps a profile
 // showed to be common, and the dispatchers the mv functions ask first. A
 // dispatcher returns false for every other bitmap (and always, without a
-// profile), and the caller takes the generic table-driven path.
+// profile), and the caller takes the generic table-driven path. Kernels write
+// into the caller's result r, which must be a zero (default) mv.
 #pragma once
 
 #include <cstdint>

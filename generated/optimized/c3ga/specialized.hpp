@@ -6,7 +6,8 @@
 // Straight-line code for functions on mv whose argument bitmaps a profile
 // showed to be common, and the dispatchers the mv functions ask first. A
 // dispatcher returns false for every other bitmap (and always, without a
-// profile), and the caller takes the generic table-driven path.
+// profile), and the caller takes the generic table-driven path. Kernels write
+// into the caller's result r, which must be a zero (default) mv.
 #pragma once
 
 #include <cstdint>
@@ -67,21 +68,18 @@ inline constexpr specialized_combination specialized_combinations[] = {
 
 // add on mv {no, e1, e2, e3, ni} x {no, e1, e2, e3, ni}: 0 mul, 5 add (320 profiled calls)
 template <class T>
-basic_mv<T> add_3e_3e(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void add_3e_3e(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[1] = (a.c[1] + b.c[1]);
   r.c[2] = (a.c[2] + b.c[2]);
   r.c[3] = (a.c[3] + b.c[3]);
   r.c[4] = (a.c[4] + b.c[4]);
   r.c[5] = (a.c[5] + b.c[5]);
   r.bits = 0x3eu;
-  return r;
 }
 
 // add on mv {no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni} x {no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni}: 0 mul, 10 add (320 profiled calls)
 template <class T>
-basic_mv<T> add_ffc0_ffc0(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void add_ffc0_ffc0(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[6] = (a.c[6] + b.c[6]);
   r.c[7] = (a.c[7] + b.c[7]);
   r.c[8] = (a.c[8] + b.c[8]);
@@ -93,13 +91,11 @@ basic_mv<T> add_ffc0_ffc0(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[14] = (a.c[14] + b.c[14]);
   r.c[15] = (a.c[15] + b.c[15]);
   r.bits = 0xffc0u;
-  return r;
 }
 
 // add on mv {1, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, e1^e2^e3^ni} x {1, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, e1^e2^e3^ni}: 0 mul, 8 add (320 profiled calls)
 template <class T>
-basic_mv<T> add_4000fc01_4000fc01(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void add_4000fc01_4000fc01(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (a.c[0] + b.c[0]);
   r.c[10] = (a.c[10] + b.c[10]);
   r.c[11] = (a.c[11] + b.c[11]);
@@ -109,13 +105,11 @@ basic_mv<T> add_4000fc01_4000fc01(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[15] = (a.c[15] + b.c[15]);
   r.c[30] = (a.c[30] + b.c[30]);
   r.bits = 0x4000fc01u;
-  return r;
 }
 
 // add on mv {1, no, e1, e2, e3, ni, no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, no^e1^e2, no^e1^e3, no^e1^ni, no^e2^e3, no^e2^ni, no^e3^ni, e1^e2^e3, e1^e2^ni, e1^e3^ni, e2^e3^ni, no^e1^e2^e3, no^e1^e2^ni, no^e1^e3^ni, no^e2^e3^ni, e1^e2^e3^ni, no^e1^e2^e3^ni} x {1, no, e1, e2, e3, ni, no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, no^e1^e2, no^e1^e3, no^e1^ni, no^e2^e3, no^e2^ni, no^e3^ni, e1^e2^e3, e1^e2^ni, e1^e3^ni, e2^e3^ni, no^e1^e2^e3, no^e1^e2^ni, no^e1^e3^ni, no^e2^e3^ni, e1^e2^e3^ni, no^e1^e2^e3^ni}: 0 mul, 32 add (320 profiled calls)
 template <class T>
-basic_mv<T> add_ffffffff_ffffffff(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void add_ffffffff_ffffffff(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (a.c[0] + b.c[0]);
   r.c[1] = (a.c[1] + b.c[1]);
   r.c[2] = (a.c[2] + b.c[2]);
@@ -149,12 +143,11 @@ basic_mv<T> add_ffffffff_ffffffff(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[30] = (a.c[30] + b.c[30]);
   r.c[31] = (a.c[31] + b.c[31]);
   r.bits = 0xffffffffu;
-  return r;
 }
 
 // apply on mv {1, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, e1^e2^e3^ni} x {no, e1, e2, e3, ni}: 89 mul, 62 add, 1 div (320 profiled calls)
 template <class T>
-basic_mv<T> apply_4000fc01_3e(const basic_mv<T>& a, const basic_mv<T>& b) {
+void apply_4000fc01_3e(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   const T t0 = a.c[0] * b.c[1];
   const T t1 = a.c[0] * b.c[2] + a.c[10] * b.c[3] + a.c[11] * b.c[4] - a.c[12] * b.c[1];
   const T t2 = a.c[0] * b.c[3] - a.c[10] * b.c[2] + a.c[13] * b.c[4] - a.c[14] * b.c[1];
@@ -173,7 +166,6 @@ basic_mv<T> apply_4000fc01_3e(const basic_mv<T>& a, const basic_mv<T>& b) {
   const T t15 = a.c[30] * b.c[1];
   const T inv =
       T(1) / (a.c[0] * a.c[0] + a.c[10] * a.c[10] + a.c[11] * a.c[11] + a.c[13] * a.c[13]);
-  basic_mv<T> r;
   r.c[1] = (a.c[0] * t0 + a.c[10] * t3 + a.c[11] * t5 + a.c[13] * t6) * inv;
   r.c[2] = (a.c[0] * t1 + a.c[10] * t2 + a.c[11] * t4 - a.c[12] * t0 + a.c[13] * t7 - a.c[14] * t3 -
             a.c[15] * t5 - a.c[30] * t6) *
@@ -189,39 +181,33 @@ basic_mv<T> apply_4000fc01_3e(const basic_mv<T>& a, const basic_mv<T>& b) {
        a.c[14] * t10 - a.c[14] * t2 + a.c[15] * t12 - a.c[15] * t4 + a.c[30] * t15 - a.c[30] * t7) *
       inv;
   r.bits = 0x3eu;
-  return r;
 }
 
 // dual on mv {no, e1, e2, e3, ni}: 0 mul, 0 add (640 profiled calls)
 template <class T>
-basic_mv<T> dual_3e(const basic_mv<T>& a) {
-  basic_mv<T> r;
+void dual_3e(const basic_mv<T>& a, basic_mv<T>& r) {
   r.c[26] = (a.c[1]);
   r.c[27] = (a.c[4]);
   r.c[28] = (-a.c[3]);
   r.c[29] = (a.c[2]);
   r.c[30] = (a.c[5]);
   r.bits = 0x7c000000u;
-  return r;
 }
 
 // dual on mv {no^e1^e2^e3, no^e1^e2^ni, no^e1^e3^ni, no^e2^e3^ni, e1^e2^e3^ni}: 0 mul, 0 add (640 profiled calls)
 template <class T>
-basic_mv<T> dual_7c000000(const basic_mv<T>& a) {
-  basic_mv<T> r;
+void dual_7c000000(const basic_mv<T>& a, basic_mv<T>& r) {
   r.c[1] = (-a.c[26]);
   r.c[2] = (-a.c[29]);
   r.c[3] = (a.c[28]);
   r.c[4] = (-a.c[27]);
   r.c[5] = (-a.c[30]);
   r.bits = 0x3eu;
-  return r;
 }
 
 // gp on mv {e1, e2, e3, ni} x {e1, e2, e3, ni}: 15 mul, 8 add (128 profiled calls)
 template <class T>
-basic_mv<T> gp_3c_3c(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void gp_3c_3c(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (a.c[2] * b.c[2] + a.c[3] * b.c[3] + a.c[4] * b.c[4]);
   r.c[10] = (a.c[2] * b.c[3] - a.c[3] * b.c[2]);
   r.c[11] = (a.c[2] * b.c[4] - a.c[4] * b.c[2]);
@@ -230,13 +216,11 @@ basic_mv<T> gp_3c_3c(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[14] = (a.c[3] * b.c[5] - a.c[5] * b.c[3]);
   r.c[15] = (a.c[4] * b.c[5] - a.c[5] * b.c[4]);
   r.bits = 0xfc01u;
-  return r;
 }
 
 // gp on mv {no, e1, e2, e3, ni} x {no, e1, e2, e3, ni}: 25 mul, 14 add (320 profiled calls)
 template <class T>
-basic_mv<T> gp_3e_3e(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void gp_3e_3e(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] =
       (-a.c[1] * b.c[5] + a.c[2] * b.c[2] + a.c[3] * b.c[3] + a.c[4] * b.c[4] - a.c[5] * b.c[1]);
   r.c[6] = (a.c[1] * b.c[2] - a.c[2] * b.c[1]);
@@ -250,13 +234,11 @@ basic_mv<T> gp_3e_3e(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[14] = (a.c[3] * b.c[5] - a.c[5] * b.c[3]);
   r.c[15] = (a.c[4] * b.c[5] - a.c[5] * b.c[4]);
   r.bits = 0xffc1u;
-  return r;
 }
 
 // gp on mv {1, e1^ni, e2^ni, e3^ni} x {1, e1^e2, e1^e3, e2^e3}: 16 mul, 8 add (32 profiled calls)
 template <class T>
-basic_mv<T> gp_d001_2c01(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void gp_d001_2c01(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (a.c[0] * b.c[0]);
   r.c[10] = (a.c[0] * b.c[10]);
   r.c[11] = (a.c[0] * b.c[11]);
@@ -266,13 +248,11 @@ basic_mv<T> gp_d001_2c01(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[15] = (a.c[12] * b.c[11] + a.c[14] * b.c[13] + a.c[15] * b.c[0]);
   r.c[30] = (a.c[12] * b.c[13] - a.c[14] * b.c[11] + a.c[15] * b.c[10]);
   r.bits = 0x4000fc01u;
-  return r;
 }
 
 // gp on mv {1, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni} x {1, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni}: 40 mul, 32 add (64 profiled calls)
 template <class T>
-basic_mv<T> gp_fc01_fc01(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void gp_fc01_fc01(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (a.c[0] * b.c[0] - a.c[10] * b.c[10] - a.c[11] * b.c[11] - a.c[13] * b.c[13]);
   r.c[10] = (a.c[0] * b.c[10] + a.c[10] * b.c[0] - a.c[11] * b.c[13] + a.c[13] * b.c[11]);
   r.c[11] = (a.c[0] * b.c[11] + a.c[10] * b.c[13] + a.c[11] * b.c[0] - a.c[13] * b.c[10]);
@@ -286,13 +266,11 @@ basic_mv<T> gp_fc01_fc01(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[30] = (a.c[10] * b.c[15] - a.c[11] * b.c[14] + a.c[12] * b.c[13] + a.c[13] * b.c[12] -
              a.c[14] * b.c[11] + a.c[15] * b.c[10]);
   r.bits = 0x4000fc01u;
-  return r;
 }
 
 // gp on mv {no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni} x {no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni}: 100 mul, 84 add (320 profiled calls)
 template <class T>
-basic_mv<T> gp_ffc0_ffc0(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void gp_ffc0_ffc0(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (-a.c[10] * b.c[10] - a.c[11] * b.c[11] - a.c[12] * b.c[6] - a.c[13] * b.c[13] -
             a.c[14] * b.c[7] - a.c[15] * b.c[8] - a.c[6] * b.c[12] - a.c[7] * b.c[14] -
             a.c[8] * b.c[15] + a.c[9] * b.c[9]);
@@ -327,13 +305,11 @@ basic_mv<T> gp_ffc0_ffc0(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[30] = (a.c[10] * b.c[15] - a.c[11] * b.c[14] + a.c[12] * b.c[13] + a.c[13] * b.c[12] -
              a.c[14] * b.c[11] + a.c[15] * b.c[10]);
   r.bits = 0x7c00ffc1u;
-  return r;
 }
 
 // gp on mv {1, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, e1^e2^e3^ni} x {no, e1, e2, e3, ni}: 40 mul, 24 add (320 profiled calls)
 template <class T>
-basic_mv<T> gp_4000fc01_3e(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void gp_4000fc01_3e(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[1] = (a.c[0] * b.c[1]);
   r.c[2] = (a.c[0] * b.c[2] + a.c[10] * b.c[3] + a.c[11] * b.c[4] - a.c[12] * b.c[1]);
   r.c[3] = (a.c[0] * b.c[3] - a.c[10] * b.c[2] + a.c[13] * b.c[4] - a.c[14] * b.c[1]);
@@ -351,13 +327,11 @@ basic_mv<T> gp_4000fc01_3e(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[25] = (a.c[13] * b.c[5] - a.c[14] * b.c[4] + a.c[15] * b.c[3] - a.c[30] * b.c[2]);
   r.c[31] = (a.c[30] * b.c[1]);
   r.bits = 0x83ff003eu;
-  return r;
 }
 
 // gp on mv {1, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, e1^e2^e3^ni} x {1, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, e1^e2^e3^ni}: 48 mul, 40 add (320 profiled calls)
 template <class T>
-basic_mv<T> gp_4000fc01_4000fc01(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void gp_4000fc01_4000fc01(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (a.c[0] * b.c[0] - a.c[10] * b.c[10] - a.c[11] * b.c[11] - a.c[13] * b.c[13]);
   r.c[10] = (a.c[0] * b.c[10] + a.c[10] * b.c[0] - a.c[11] * b.c[13] + a.c[13] * b.c[11]);
   r.c[11] = (a.c[0] * b.c[11] + a.c[10] * b.c[13] + a.c[11] * b.c[0] - a.c[13] * b.c[10]);
@@ -371,13 +345,11 @@ basic_mv<T> gp_4000fc01_4000fc01(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[30] = (a.c[0] * b.c[30] + a.c[10] * b.c[15] - a.c[11] * b.c[14] + a.c[12] * b.c[13] +
              a.c[13] * b.c[12] - a.c[14] * b.c[11] + a.c[15] * b.c[10] + a.c[30] * b.c[0]);
   r.bits = 0x4000fc01u;
-  return r;
 }
 
 // gp on mv {no, e1, e2, e3, ni, no^e1^e2, no^e1^e3, no^e1^ni, no^e2^e3, no^e2^ni, no^e3^ni, e1^e2^e3, e1^e2^ni, e1^e3^ni, e2^e3^ni, no^e1^e2^e3^ni} x {1, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, e1^e2^e3^ni}: 128 mul, 112 add (320 profiled calls)
 template <class T>
-basic_mv<T> gp_83ff003e_4000fc01(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void gp_83ff003e_4000fc01(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[1] = (a.c[1] * b.c[0] - a.c[16] * b.c[10] - a.c[17] * b.c[11] - a.c[19] * b.c[13]);
   r.c[2] = (a.c[1] * b.c[12] + a.c[16] * b.c[14] + a.c[17] * b.c[15] - a.c[19] * b.c[30] +
             a.c[2] * b.c[0] - a.c[22] * b.c[13] - a.c[3] * b.c[10] - a.c[4] * b.c[11]);
@@ -411,13 +383,11 @@ basic_mv<T> gp_83ff003e_4000fc01(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[31] = (a.c[1] * b.c[30] + a.c[16] * b.c[15] - a.c[17] * b.c[14] + a.c[18] * b.c[13] +
              a.c[19] * b.c[12] - a.c[20] * b.c[11] + a.c[21] * b.c[10] + a.c[31] * b.c[0]);
   r.bits = 0x83ff003eu;
-  return r;
 }
 
 // gp on mv {1, no, e1, e2, e3, ni, no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, no^e1^e2, no^e1^e3, no^e1^ni, no^e2^e3, no^e2^ni, no^e3^ni, e1^e2^e3, e1^e2^ni, e1^e3^ni, e2^e3^ni, no^e1^e2^e3, no^e1^e2^ni, no^e1^e3^ni, no^e2^e3^ni, e1^e2^e3^ni, no^e1^e2^e3^ni} x {1, no, e1, e2, e3, ni, no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, no^e1^e2, no^e1^e3, no^e1^ni, no^e2^e3, no^e2^ni, no^e3^ni, e1^e2^e3, e1^e2^ni, e1^e3^ni, e2^e3^ni, no^e1^e2^e3, no^e1^e2^ni, no^e1^e3^ni, no^e2^e3^ni, e1^e2^e3^ni, no^e1^e2^e3^ni}: 1024 mul, 992 add (320 profiled calls)
 template <class T>
-basic_mv<T> gp_ffffffff_ffffffff(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void gp_ffffffff_ffffffff(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (a.c[0] * b.c[0] - a.c[1] * b.c[5] - a.c[10] * b.c[10] - a.c[11] * b.c[11] -
             a.c[12] * b.c[6] - a.c[13] * b.c[13] - a.c[14] * b.c[7] - a.c[15] * b.c[8] +
             a.c[16] * b.c[23] + a.c[17] * b.c[24] + a.c[18] * b.c[18] + a.c[19] * b.c[25] +
@@ -675,34 +645,28 @@ basic_mv<T> gp_ffffffff_ffffffff(const basic_mv<T>& a, const basic_mv<T>& b) {
              a.c[30] * b.c[1] + a.c[31] * b.c[0] - a.c[4] * b.c[27] + a.c[5] * b.c[26] +
              a.c[6] * b.c[25] - a.c[7] * b.c[24] + a.c[8] * b.c[23] - a.c[9] * b.c[22]);
   r.bits = 0xffffffffu;
-  return r;
 }
 
 // lc on mv {no, e1, e2, e3, ni} x {no, e1, e2, e3, ni}: 5 mul, 4 add (320 profiled calls)
 template <class T>
-basic_mv<T> lc_3e_3e(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void lc_3e_3e(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] =
       (-a.c[1] * b.c[5] + a.c[2] * b.c[2] + a.c[3] * b.c[3] + a.c[4] * b.c[4] - a.c[5] * b.c[1]);
   r.bits = 0x1u;
-  return r;
 }
 
 // lc on mv {no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni} x {no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni}: 10 mul, 9 add (320 profiled calls)
 template <class T>
-basic_mv<T> lc_ffc0_ffc0(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void lc_ffc0_ffc0(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (-a.c[10] * b.c[10] - a.c[11] * b.c[11] - a.c[12] * b.c[6] - a.c[13] * b.c[13] -
             a.c[14] * b.c[7] - a.c[15] * b.c[8] - a.c[6] * b.c[12] - a.c[7] * b.c[14] -
             a.c[8] * b.c[15] + a.c[9] * b.c[9]);
   r.bits = 0x1u;
-  return r;
 }
 
 // lc on mv {1, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, e1^e2^e3^ni} x {1, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, e1^e2^e3^ni}: 14 mul, 6 add (320 profiled calls)
 template <class T>
-basic_mv<T> lc_4000fc01_4000fc01(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void lc_4000fc01_4000fc01(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (a.c[0] * b.c[0] - a.c[10] * b.c[10] - a.c[11] * b.c[11] - a.c[13] * b.c[13]);
   r.c[10] = (a.c[0] * b.c[10]);
   r.c[11] = (a.c[0] * b.c[11]);
@@ -712,13 +676,11 @@ basic_mv<T> lc_4000fc01_4000fc01(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[15] = (a.c[0] * b.c[15] - a.c[10] * b.c[30]);
   r.c[30] = (a.c[0] * b.c[30]);
   r.bits = 0x4000fc01u;
-  return r;
 }
 
 // lc on mv {1, no, e1, e2, e3, ni, no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, no^e1^e2, no^e1^e3, no^e1^ni, no^e2^e3, no^e2^ni, no^e3^ni, e1^e2^e3, e1^e2^ni, e1^e3^ni, e2^e3^ni, no^e1^e2^e3, no^e1^e2^ni, no^e1^e3^ni, no^e2^e3^ni, e1^e2^e3^ni, no^e1^e2^e3^ni} x {1, no, e1, e2, e3, ni, no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, no^e1^e2, no^e1^e3, no^e1^ni, no^e2^e3, no^e2^ni, no^e3^ni, e1^e2^e3, e1^e2^ni, e1^e3^ni, e2^e3^ni, no^e1^e2^e3, no^e1^e2^ni, no^e1^e3^ni, no^e2^e3^ni, e1^e2^e3^ni, no^e1^e2^e3^ni}: 243 mul, 211 add (320 profiled calls)
 template <class T>
-basic_mv<T> lc_ffffffff_ffffffff(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void lc_ffffffff_ffffffff(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (a.c[0] * b.c[0] - a.c[1] * b.c[5] - a.c[10] * b.c[10] - a.c[11] * b.c[11] -
             a.c[12] * b.c[6] - a.c[13] * b.c[13] - a.c[14] * b.c[7] - a.c[15] * b.c[8] +
             a.c[16] * b.c[23] + a.c[17] * b.c[24] + a.c[18] * b.c[18] + a.c[19] * b.c[25] +
@@ -784,13 +746,11 @@ basic_mv<T> lc_ffffffff_ffffffff(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[30] = (a.c[0] * b.c[30] - a.c[5] * b.c[31]);
   r.c[31] = (a.c[0] * b.c[31]);
   r.bits = 0xffffffffu;
-  return r;
 }
 
 // meet on mv {no^e1^e2^e3, no^e1^e2^ni, no^e1^e3^ni, no^e2^e3^ni, e1^e2^e3^ni} x {no^e1^e2^e3, no^e1^e2^ni, no^e1^e3^ni, no^e2^e3^ni, e1^e2^e3^ni}: 20 mul, 10 add (320 profiled calls)
 template <class T>
-basic_mv<T> meet_7c000000_7c000000(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void meet_7c000000_7c000000(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[16] = (-a.c[26] * b.c[27] + a.c[27] * b.c[26]);
   r.c[17] = (-a.c[26] * b.c[28] + a.c[28] * b.c[26]);
   r.c[18] = (-a.c[27] * b.c[28] + a.c[28] * b.c[27]);
@@ -802,13 +762,11 @@ basic_mv<T> meet_7c000000_7c000000(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[24] = (-a.c[28] * b.c[30] + a.c[30] * b.c[28]);
   r.c[25] = (-a.c[29] * b.c[30] + a.c[30] * b.c[29]);
   r.bits = 0x3ff0000u;
-  return r;
 }
 
 // op on mv {no, e1, e2, e3, ni} x {no, e1, e2, e3, ni}: 20 mul, 10 add (1024 profiled calls)
 template <class T>
-basic_mv<T> op_3e_3e(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void op_3e_3e(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[6] = (a.c[1] * b.c[2] - a.c[2] * b.c[1]);
   r.c[7] = (a.c[1] * b.c[3] - a.c[3] * b.c[1]);
   r.c[8] = (a.c[1] * b.c[4] - a.c[4] * b.c[1]);
@@ -820,13 +778,11 @@ basic_mv<T> op_3e_3e(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[14] = (a.c[3] * b.c[5] - a.c[5] * b.c[3]);
   r.c[15] = (a.c[4] * b.c[5] - a.c[5] * b.c[4]);
   r.bits = 0xffc0u;
-  return r;
 }
 
 // op on mv {no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni} x {no, e1, e2, e3, ni}: 30 mul, 20 add (320 profiled calls)
 template <class T>
-basic_mv<T> op_ffc0_3e(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void op_ffc0_3e(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[16] = (a.c[10] * b.c[1] + a.c[6] * b.c[3] - a.c[7] * b.c[2]);
   r.c[17] = (a.c[11] * b.c[1] + a.c[6] * b.c[4] - a.c[8] * b.c[2]);
   r.c[18] = (a.c[12] * b.c[1] + a.c[6] * b.c[5] - a.c[9] * b.c[2]);
@@ -838,13 +794,11 @@ basic_mv<T> op_ffc0_3e(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[24] = (a.c[11] * b.c[5] - a.c[12] * b.c[4] + a.c[15] * b.c[2]);
   r.c[25] = (a.c[13] * b.c[5] - a.c[14] * b.c[4] + a.c[15] * b.c[3]);
   r.bits = 0x3ff0000u;
-  return r;
 }
 
 // op on mv {no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni} x {no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni}: 30 mul, 25 add (320 profiled calls)
 template <class T>
-basic_mv<T> op_ffc0_ffc0(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void op_ffc0_ffc0(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[26] = (a.c[10] * b.c[8] - a.c[11] * b.c[7] + a.c[13] * b.c[6] + a.c[6] * b.c[13] -
              a.c[7] * b.c[11] + a.c[8] * b.c[10]);
   r.c[27] = (a.c[10] * b.c[9] - a.c[12] * b.c[7] + a.c[14] * b.c[6] + a.c[6] * b.c[14] -
@@ -856,26 +810,22 @@ basic_mv<T> op_ffc0_ffc0(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[30] = (a.c[10] * b.c[15] - a.c[11] * b.c[14] + a.c[12] * b.c[13] + a.c[13] * b.c[12] -
              a.c[14] * b.c[11] + a.c[15] * b.c[10]);
   r.bits = 0x7c000000u;
-  return r;
 }
 
 // op on mv {no^e1^e2, no^e1^e3, no^e1^ni, no^e2^e3, no^e2^ni, no^e3^ni, e1^e2^e3, e1^e2^ni, e1^e3^ni, e2^e3^ni} x {no, e1, e2, e3, ni}: 20 mul, 15 add (320 profiled calls)
 template <class T>
-basic_mv<T> op_3ff0000_3e(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void op_3ff0000_3e(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[26] = (a.c[16] * b.c[4] - a.c[17] * b.c[3] + a.c[19] * b.c[2] - a.c[22] * b.c[1]);
   r.c[27] = (a.c[16] * b.c[5] - a.c[18] * b.c[3] + a.c[20] * b.c[2] - a.c[23] * b.c[1]);
   r.c[28] = (a.c[17] * b.c[5] - a.c[18] * b.c[4] + a.c[21] * b.c[2] - a.c[24] * b.c[1]);
   r.c[29] = (a.c[19] * b.c[5] - a.c[20] * b.c[4] + a.c[21] * b.c[3] - a.c[25] * b.c[1]);
   r.c[30] = (a.c[22] * b.c[5] - a.c[23] * b.c[4] + a.c[24] * b.c[3] - a.c[25] * b.c[2]);
   r.bits = 0x7c000000u;
-  return r;
 }
 
 // op on mv {1, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, e1^e2^e3^ni} x {1, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, e1^e2^e3^ni}: 21 mul, 13 add (320 profiled calls)
 template <class T>
-basic_mv<T> op_4000fc01_4000fc01(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void op_4000fc01_4000fc01(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (a.c[0] * b.c[0]);
   r.c[10] = (a.c[0] * b.c[10] + a.c[10] * b.c[0]);
   r.c[11] = (a.c[0] * b.c[11] + a.c[11] * b.c[0]);
@@ -886,13 +836,11 @@ basic_mv<T> op_4000fc01_4000fc01(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[30] = (a.c[0] * b.c[30] + a.c[10] * b.c[15] - a.c[11] * b.c[14] + a.c[12] * b.c[13] +
              a.c[13] * b.c[12] - a.c[14] * b.c[11] + a.c[15] * b.c[10] + a.c[30] * b.c[0]);
   r.bits = 0x4000fc01u;
-  return r;
 }
 
 // op on mv {1, no, e1, e2, e3, ni, no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, no^e1^e2, no^e1^e3, no^e1^ni, no^e2^e3, no^e2^ni, no^e3^ni, e1^e2^e3, e1^e2^ni, e1^e3^ni, e2^e3^ni, no^e1^e2^e3, no^e1^e2^ni, no^e1^e3^ni, no^e2^e3^ni, e1^e2^e3^ni, no^e1^e2^e3^ni} x {1, no, e1, e2, e3, ni, no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, no^e1^e2, no^e1^e3, no^e1^ni, no^e2^e3, no^e2^ni, no^e3^ni, e1^e2^e3, e1^e2^ni, e1^e3^ni, e2^e3^ni, no^e1^e2^e3, no^e1^e2^ni, no^e1^e3^ni, no^e2^e3^ni, e1^e2^e3^ni, no^e1^e2^e3^ni}: 243 mul, 211 add (320 profiled calls)
 template <class T>
-basic_mv<T> op_ffffffff_ffffffff(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void op_ffffffff_ffffffff(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (a.c[0] * b.c[0]);
   r.c[1] = (a.c[0] * b.c[1] + a.c[1] * b.c[0]);
   r.c[2] = (a.c[0] * b.c[2] + a.c[2] * b.c[0]);
@@ -958,24 +906,20 @@ basic_mv<T> op_ffffffff_ffffffff(const basic_mv<T>& a, const basic_mv<T>& b) {
              a.c[30] * b.c[1] + a.c[31] * b.c[0] - a.c[4] * b.c[27] + a.c[5] * b.c[26] +
              a.c[6] * b.c[25] - a.c[7] * b.c[24] + a.c[8] * b.c[23] - a.c[9] * b.c[22]);
   r.bits = 0xffffffffu;
-  return r;
 }
 
 // reverse on mv {e1, e2, e3}: 0 mul, 0 add (256 profiled calls)
 template <class T>
-basic_mv<T> reverse_1c(const basic_mv<T>& a) {
-  basic_mv<T> r;
+void reverse_1c(const basic_mv<T>& a, basic_mv<T>& r) {
   r.c[2] = (a.c[2]);
   r.c[3] = (a.c[3]);
   r.c[4] = (a.c[4]);
   r.bits = 0x1cu;
-  return r;
 }
 
 // reverse on mv {1, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, e1^e2^e3^ni}: 0 mul, 0 add (320 profiled calls)
 template <class T>
-basic_mv<T> reverse_4000fc01(const basic_mv<T>& a) {
-  basic_mv<T> r;
+void reverse_4000fc01(const basic_mv<T>& a, basic_mv<T>& r) {
   r.c[0] = (a.c[0]);
   r.c[10] = (-a.c[10]);
   r.c[11] = (-a.c[11]);
@@ -985,52 +929,50 @@ basic_mv<T> reverse_4000fc01(const basic_mv<T>& a) {
   r.c[15] = (-a.c[15]);
   r.c[30] = (a.c[30]);
   r.bits = 0x4000fc01u;
-  return r;
 }
 
 // scp on mv {e1, e2, e3} x {e1, e2, e3}: 3 mul, 2 add (256 profiled calls)
 template <class T>
-T scp_1c_1c(const basic_mv<T>& a, const basic_mv<T>& b) {
-  return (a.c[2] * b.c[2] + a.c[3] * b.c[3] + a.c[4] * b.c[4]);
+void scp_1c_1c(const basic_mv<T>& a, const basic_mv<T>& b, T& r) {
+  r = (a.c[2] * b.c[2] + a.c[3] * b.c[3] + a.c[4] * b.c[4]);
 }
 
 // scp on mv {no, e1, e2, e3, ni} x {no, e1, e2, e3, ni}: 5 mul, 4 add (320 profiled calls)
 template <class T>
-T scp_3e_3e(const basic_mv<T>& a, const basic_mv<T>& b) {
-  return (-a.c[1] * b.c[5] + a.c[2] * b.c[2] + a.c[3] * b.c[3] + a.c[4] * b.c[4] - a.c[5] * b.c[1]);
+void scp_3e_3e(const basic_mv<T>& a, const basic_mv<T>& b, T& r) {
+  r = (-a.c[1] * b.c[5] + a.c[2] * b.c[2] + a.c[3] * b.c[3] + a.c[4] * b.c[4] - a.c[5] * b.c[1]);
 }
 
 // scp on mv {no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni} x {no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni}: 10 mul, 9 add (320 profiled calls)
 template <class T>
-T scp_ffc0_ffc0(const basic_mv<T>& a, const basic_mv<T>& b) {
-  return (-a.c[10] * b.c[10] - a.c[11] * b.c[11] - a.c[12] * b.c[6] - a.c[13] * b.c[13] -
-          a.c[14] * b.c[7] - a.c[15] * b.c[8] - a.c[6] * b.c[12] - a.c[7] * b.c[14] -
-          a.c[8] * b.c[15] + a.c[9] * b.c[9]);
+void scp_ffc0_ffc0(const basic_mv<T>& a, const basic_mv<T>& b, T& r) {
+  r = (-a.c[10] * b.c[10] - a.c[11] * b.c[11] - a.c[12] * b.c[6] - a.c[13] * b.c[13] -
+       a.c[14] * b.c[7] - a.c[15] * b.c[8] - a.c[6] * b.c[12] - a.c[7] * b.c[14] -
+       a.c[8] * b.c[15] + a.c[9] * b.c[9]);
 }
 
 // scp on mv {1, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, e1^e2^e3^ni} x {1, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, e1^e2^e3^ni}: 4 mul, 3 add (640 profiled calls)
 template <class T>
-T scp_4000fc01_4000fc01(const basic_mv<T>& a, const basic_mv<T>& b) {
-  return (a.c[0] * b.c[0] - a.c[10] * b.c[10] - a.c[11] * b.c[11] - a.c[13] * b.c[13]);
+void scp_4000fc01_4000fc01(const basic_mv<T>& a, const basic_mv<T>& b, T& r) {
+  r = (a.c[0] * b.c[0] - a.c[10] * b.c[10] - a.c[11] * b.c[11] - a.c[13] * b.c[13]);
 }
 
 // scp on mv {1, no, e1, e2, e3, ni, no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, no^e1^e2, no^e1^e3, no^e1^ni, no^e2^e3, no^e2^ni, no^e3^ni, e1^e2^e3, e1^e2^ni, e1^e3^ni, e2^e3^ni, no^e1^e2^e3, no^e1^e2^ni, no^e1^e3^ni, no^e2^e3^ni, e1^e2^e3^ni, no^e1^e2^e3^ni} x {1, no, e1, e2, e3, ni, no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni, no^e1^e2, no^e1^e3, no^e1^ni, no^e2^e3, no^e2^ni, no^e3^ni, e1^e2^e3, e1^e2^ni, e1^e3^ni, e2^e3^ni, no^e1^e2^e3, no^e1^e2^ni, no^e1^e3^ni, no^e2^e3^ni, e1^e2^e3^ni, no^e1^e2^e3^ni}: 32 mul, 31 add (320 profiled calls)
 template <class T>
-T scp_ffffffff_ffffffff(const basic_mv<T>& a, const basic_mv<T>& b) {
-  return (a.c[0] * b.c[0] - a.c[1] * b.c[5] - a.c[10] * b.c[10] - a.c[11] * b.c[11] -
-          a.c[12] * b.c[6] - a.c[13] * b.c[13] - a.c[14] * b.c[7] - a.c[15] * b.c[8] +
-          a.c[16] * b.c[23] + a.c[17] * b.c[24] + a.c[18] * b.c[18] + a.c[19] * b.c[25] +
-          a.c[2] * b.c[2] + a.c[20] * b.c[20] + a.c[21] * b.c[21] - a.c[22] * b.c[22] +
-          a.c[23] * b.c[16] + a.c[24] * b.c[17] + a.c[25] * b.c[19] + a.c[26] * b.c[30] -
-          a.c[27] * b.c[27] - a.c[28] * b.c[28] - a.c[29] * b.c[29] + a.c[3] * b.c[3] +
-          a.c[30] * b.c[26] - a.c[31] * b.c[31] + a.c[4] * b.c[4] - a.c[5] * b.c[1] -
-          a.c[6] * b.c[12] - a.c[7] * b.c[14] - a.c[8] * b.c[15] + a.c[9] * b.c[9]);
+void scp_ffffffff_ffffffff(const basic_mv<T>& a, const basic_mv<T>& b, T& r) {
+  r = (a.c[0] * b.c[0] - a.c[1] * b.c[5] - a.c[10] * b.c[10] - a.c[11] * b.c[11] -
+       a.c[12] * b.c[6] - a.c[13] * b.c[13] - a.c[14] * b.c[7] - a.c[15] * b.c[8] +
+       a.c[16] * b.c[23] + a.c[17] * b.c[24] + a.c[18] * b.c[18] + a.c[19] * b.c[25] +
+       a.c[2] * b.c[2] + a.c[20] * b.c[20] + a.c[21] * b.c[21] - a.c[22] * b.c[22] +
+       a.c[23] * b.c[16] + a.c[24] * b.c[17] + a.c[25] * b.c[19] + a.c[26] * b.c[30] -
+       a.c[27] * b.c[27] - a.c[28] * b.c[28] - a.c[29] * b.c[29] + a.c[3] * b.c[3] +
+       a.c[30] * b.c[26] - a.c[31] * b.c[31] + a.c[4] * b.c[4] - a.c[5] * b.c[1] -
+       a.c[6] * b.c[12] - a.c[7] * b.c[14] - a.c[8] * b.c[15] + a.c[9] * b.c[9]);
 }
 
 // undual on mv {no^e1, no^e2, no^e3, no^ni, e1^e2, e1^e3, e1^ni, e2^e3, e2^ni, e3^ni}: 0 mul, 0 add (320 profiled calls)
 template <class T>
-basic_mv<T> undual_ffc0(const basic_mv<T>& a) {
-  basic_mv<T> r;
+void undual_ffc0(const basic_mv<T>& a, basic_mv<T>& r) {
   r.c[16] = (-a.c[8]);
   r.c[17] = (a.c[7]);
   r.c[18] = (-a.c[13]);
@@ -1042,38 +984,37 @@ basic_mv<T> undual_ffc0(const basic_mv<T>& a) {
   r.c[24] = (a.c[14]);
   r.c[25] = (-a.c[12]);
   r.bits = 0x3ff0000u;
-  return r;
 }
 
 template <class T>
 bool specialized_gp(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
   switch (pair_key(a.bits, b.bits)) {
     case 0x3c0000003cull:
-      r = gp_3c_3c(a, b);
+      gp_3c_3c(a, b, r);
       return true;
     case 0x3e0000003eull:
-      r = gp_3e_3e(a, b);
+      gp_3e_3e(a, b, r);
       return true;
     case 0xd00100002c01ull:
-      r = gp_d001_2c01(a, b);
+      gp_d001_2c01(a, b, r);
       return true;
     case 0xfc010000fc01ull:
-      r = gp_fc01_fc01(a, b);
+      gp_fc01_fc01(a, b, r);
       return true;
     case 0xffc00000ffc0ull:
-      r = gp_ffc0_ffc0(a, b);
+      gp_ffc0_ffc0(a, b, r);
       return true;
     case 0x4000fc010000003eull:
-      r = gp_4000fc01_3e(a, b);
+      gp_4000fc01_3e(a, b, r);
       return true;
     case 0x4000fc014000fc01ull:
-      r = gp_4000fc01_4000fc01(a, b);
+      gp_4000fc01_4000fc01(a, b, r);
       return true;
     case 0x83ff003e4000fc01ull:
-      r = gp_83ff003e_4000fc01(a, b);
+      gp_83ff003e_4000fc01(a, b, r);
       return true;
     case 0xffffffffffffffffull:
-      r = gp_ffffffff_ffffffff(a, b);
+      gp_ffffffff_ffffffff(a, b, r);
       return true;
     default:
       return false;
@@ -1084,22 +1025,22 @@ template <class T>
 bool specialized_op(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
   switch (pair_key(a.bits, b.bits)) {
     case 0x3e0000003eull:
-      r = op_3e_3e(a, b);
+      op_3e_3e(a, b, r);
       return true;
     case 0xffc00000003eull:
-      r = op_ffc0_3e(a, b);
+      op_ffc0_3e(a, b, r);
       return true;
     case 0xffc00000ffc0ull:
-      r = op_ffc0_ffc0(a, b);
+      op_ffc0_ffc0(a, b, r);
       return true;
     case 0x3ff00000000003eull:
-      r = op_3ff0000_3e(a, b);
+      op_3ff0000_3e(a, b, r);
       return true;
     case 0x4000fc014000fc01ull:
-      r = op_4000fc01_4000fc01(a, b);
+      op_4000fc01_4000fc01(a, b, r);
       return true;
     case 0xffffffffffffffffull:
-      r = op_ffffffff_ffffffff(a, b);
+      op_ffffffff_ffffffff(a, b, r);
       return true;
     default:
       return false;
@@ -1110,16 +1051,16 @@ template <class T>
 bool specialized_lc(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
   switch (pair_key(a.bits, b.bits)) {
     case 0x3e0000003eull:
-      r = lc_3e_3e(a, b);
+      lc_3e_3e(a, b, r);
       return true;
     case 0xffc00000ffc0ull:
-      r = lc_ffc0_ffc0(a, b);
+      lc_ffc0_ffc0(a, b, r);
       return true;
     case 0x4000fc014000fc01ull:
-      r = lc_4000fc01_4000fc01(a, b);
+      lc_4000fc01_4000fc01(a, b, r);
       return true;
     case 0xffffffffffffffffull:
-      r = lc_ffffffff_ffffffff(a, b);
+      lc_ffffffff_ffffffff(a, b, r);
       return true;
     default:
       return false;
@@ -1138,19 +1079,19 @@ template <class T>
 bool specialized_scp(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] T& r) {
   switch (pair_key(a.bits, b.bits)) {
     case 0x1c0000001cull:
-      r = scp_1c_1c(a, b);
+      scp_1c_1c(a, b, r);
       return true;
     case 0x3e0000003eull:
-      r = scp_3e_3e(a, b);
+      scp_3e_3e(a, b, r);
       return true;
     case 0xffc00000ffc0ull:
-      r = scp_ffc0_ffc0(a, b);
+      scp_ffc0_ffc0(a, b, r);
       return true;
     case 0x4000fc014000fc01ull:
-      r = scp_4000fc01_4000fc01(a, b);
+      scp_4000fc01_4000fc01(a, b, r);
       return true;
     case 0xffffffffffffffffull:
-      r = scp_ffffffff_ffffffff(a, b);
+      scp_ffffffff_ffffffff(a, b, r);
       return true;
     default:
       return false;
@@ -1161,16 +1102,16 @@ template <class T>
 bool specialized_add(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
   switch (pair_key(a.bits, b.bits)) {
     case 0x3e0000003eull:
-      r = add_3e_3e(a, b);
+      add_3e_3e(a, b, r);
       return true;
     case 0xffc00000ffc0ull:
-      r = add_ffc0_ffc0(a, b);
+      add_ffc0_ffc0(a, b, r);
       return true;
     case 0x4000fc014000fc01ull:
-      r = add_4000fc01_4000fc01(a, b);
+      add_4000fc01_4000fc01(a, b, r);
       return true;
     case 0xffffffffffffffffull:
-      r = add_ffffffff_ffffffff(a, b);
+      add_ffffffff_ffffffff(a, b, r);
       return true;
     default:
       return false;
@@ -1190,7 +1131,7 @@ bool specialized_apply(const basic_mv<T>& a, const basic_mv<T>& b,
                        [[maybe_unused]] basic_mv<T>& r) {
   switch (pair_key(a.bits, b.bits)) {
     case 0x4000fc010000003eull:
-      r = apply_4000fc01_3e(a, b);
+      apply_4000fc01_3e(a, b, r);
       return true;
     default:
       return false;
@@ -1201,7 +1142,7 @@ template <class T>
 bool specialized_meet(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
   switch (pair_key(a.bits, b.bits)) {
     case 0x7c0000007c000000ull:
-      r = meet_7c000000_7c000000(a, b);
+      meet_7c000000_7c000000(a, b, r);
       return true;
     default:
       return false;
@@ -1220,10 +1161,10 @@ template <class T>
 bool specialized_reverse(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
   switch (a.bits) {
     case 0x1cu:
-      r = reverse_1c(a);
+      reverse_1c(a, r);
       return true;
     case 0x4000fc01u:
-      r = reverse_4000fc01(a);
+      reverse_4000fc01(a, r);
       return true;
     default:
       return false;
@@ -1250,10 +1191,10 @@ template <class T>
 bool specialized_dual(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
   switch (a.bits) {
     case 0x3eu:
-      r = dual_3e(a);
+      dual_3e(a, r);
       return true;
     case 0x7c000000u:
-      r = dual_7c000000(a);
+      dual_7c000000(a, r);
       return true;
     default:
       return false;
@@ -1264,7 +1205,7 @@ template <class T>
 bool specialized_undual(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
   switch (a.bits) {
     case 0xffc0u:
-      r = undual_ffc0(a);
+      undual_ffc0(a, r);
       return true;
     default:
       return false;

@@ -6,7 +6,8 @@
 // Straight-line code for functions on mv whose argument bitmaps a profile
 // showed to be common, and the dispatchers the mv functions ask first. A
 // dispatcher returns false for every other bitmap (and always, without a
-// profile), and the caller takes the generic table-driven path.
+// profile), and the caller takes the generic table-driven path. Kernels write
+// into the caller's result r, which must be a zero (default) mv.
 #pragma once
 
 #include <cstdint>
@@ -37,42 +38,35 @@ inline constexpr specialized_combination specialized_combinations[] = {
 
 // add on mv {e1, e2, e3} x {e1, e2, e3}: 0 mul, 3 add (320 profiled calls)
 template <class T>
-basic_mv<T> add_e_e(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void add_e_e(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[1] = (a.c[1] + b.c[1]);
   r.c[2] = (a.c[2] + b.c[2]);
   r.c[3] = (a.c[3] + b.c[3]);
   r.bits = 0xeu;
-  return r;
 }
 
 // add on mv {e1^e2, e1^e3, e2^e3} x {e1^e2, e1^e3, e2^e3}: 0 mul, 3 add (320 profiled calls)
 template <class T>
-basic_mv<T> add_70_70(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void add_70_70(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[4] = (a.c[4] + b.c[4]);
   r.c[5] = (a.c[5] + b.c[5]);
   r.c[6] = (a.c[6] + b.c[6]);
   r.bits = 0x70u;
-  return r;
 }
 
 // add on mv {1, e1^e2, e1^e3, e2^e3} x {1, e1^e2, e1^e3, e2^e3}: 0 mul, 4 add (320 profiled calls)
 template <class T>
-basic_mv<T> add_71_71(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void add_71_71(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (a.c[0] + b.c[0]);
   r.c[4] = (a.c[4] + b.c[4]);
   r.c[5] = (a.c[5] + b.c[5]);
   r.c[6] = (a.c[6] + b.c[6]);
   r.bits = 0x71u;
-  return r;
 }
 
 // add on mv {1, e1, e2, e3, e1^e2, e1^e3, e2^e3, e1^e2^e3} x {1, e1, e2, e3, e1^e2, e1^e3, e2^e3, e1^e2^e3}: 0 mul, 8 add (320 profiled calls)
 template <class T>
-basic_mv<T> add_ff_ff(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void add_ff_ff(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (a.c[0] + b.c[0]);
   r.c[1] = (a.c[1] + b.c[1]);
   r.c[2] = (a.c[2] + b.c[2]);
@@ -82,49 +76,41 @@ basic_mv<T> add_ff_ff(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[6] = (a.c[6] + b.c[6]);
   r.c[7] = (a.c[7] + b.c[7]);
   r.bits = 0xffu;
-  return r;
 }
 
 // gp on mv {e1, e2, e3} x {e1, e2, e3}: 9 mul, 5 add (384 profiled calls)
 template <class T>
-basic_mv<T> gp_e_e(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void gp_e_e(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3]);
   r.c[4] = (a.c[1] * b.c[2] - a.c[2] * b.c[1]);
   r.c[5] = (a.c[1] * b.c[3] - a.c[3] * b.c[1]);
   r.c[6] = (a.c[2] * b.c[3] - a.c[3] * b.c[2]);
   r.bits = 0x71u;
-  return r;
 }
 
 // gp on mv {e1^e2, e1^e3, e2^e3} x {e1^e2, e1^e3, e2^e3}: 9 mul, 5 add (320 profiled calls)
 template <class T>
-basic_mv<T> gp_70_70(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void gp_70_70(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (-a.c[4] * b.c[4] - a.c[5] * b.c[5] - a.c[6] * b.c[6]);
   r.c[4] = (-a.c[5] * b.c[6] + a.c[6] * b.c[5]);
   r.c[5] = (a.c[4] * b.c[6] - a.c[6] * b.c[4]);
   r.c[6] = (-a.c[4] * b.c[5] + a.c[5] * b.c[4]);
   r.bits = 0x71u;
-  return r;
 }
 
 // gp on mv {1, e1^e2, e1^e3, e2^e3} x {1, e1^e2, e1^e3, e2^e3}: 16 mul, 12 add (320 profiled calls)
 template <class T>
-basic_mv<T> gp_71_71(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void gp_71_71(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (a.c[0] * b.c[0] - a.c[4] * b.c[4] - a.c[5] * b.c[5] - a.c[6] * b.c[6]);
   r.c[4] = (a.c[0] * b.c[4] + a.c[4] * b.c[0] - a.c[5] * b.c[6] + a.c[6] * b.c[5]);
   r.c[5] = (a.c[0] * b.c[5] + a.c[4] * b.c[6] + a.c[5] * b.c[0] - a.c[6] * b.c[4]);
   r.c[6] = (a.c[0] * b.c[6] - a.c[4] * b.c[5] + a.c[5] * b.c[4] + a.c[6] * b.c[0]);
   r.bits = 0x71u;
-  return r;
 }
 
 // gp on mv {1, e1, e2, e3, e1^e2, e1^e3, e2^e3, e1^e2^e3} x {1, e1, e2, e3, e1^e2, e1^e3, e2^e3, e1^e2^e3}: 64 mul, 56 add (320 profiled calls)
 template <class T>
-basic_mv<T> gp_ff_ff(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void gp_ff_ff(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] -
             a.c[4] * b.c[4] - a.c[5] * b.c[5] - a.c[6] * b.c[6] - a.c[7] * b.c[7]);
   r.c[1] = (a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[4] - a.c[3] * b.c[5] +
@@ -142,43 +128,35 @@ basic_mv<T> gp_ff_ff(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[7] = (a.c[0] * b.c[7] + a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[4] +
             a.c[4] * b.c[3] - a.c[5] * b.c[2] + a.c[6] * b.c[1] + a.c[7] * b.c[0]);
   r.bits = 0xffu;
-  return r;
 }
 
 // lc on mv {e1, e2, e3} x {e1, e2, e3}: 3 mul, 2 add (320 profiled calls)
 template <class T>
-basic_mv<T> lc_e_e(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void lc_e_e(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3]);
   r.bits = 0x1u;
-  return r;
 }
 
 // lc on mv {e1^e2, e1^e3, e2^e3} x {e1^e2, e1^e3, e2^e3}: 3 mul, 2 add (320 profiled calls)
 template <class T>
-basic_mv<T> lc_70_70(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void lc_70_70(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (-a.c[4] * b.c[4] - a.c[5] * b.c[5] - a.c[6] * b.c[6]);
   r.bits = 0x1u;
-  return r;
 }
 
 // lc on mv {1, e1^e2, e1^e3, e2^e3} x {1, e1^e2, e1^e3, e2^e3}: 7 mul, 3 add (320 profiled calls)
 template <class T>
-basic_mv<T> lc_71_71(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void lc_71_71(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (a.c[0] * b.c[0] - a.c[4] * b.c[4] - a.c[5] * b.c[5] - a.c[6] * b.c[6]);
   r.c[4] = (a.c[0] * b.c[4]);
   r.c[5] = (a.c[0] * b.c[5]);
   r.c[6] = (a.c[0] * b.c[6]);
   r.bits = 0x71u;
-  return r;
 }
 
 // lc on mv {1, e1, e2, e3, e1^e2, e1^e3, e2^e3, e1^e2^e3} x {1, e1, e2, e3, e1^e2, e1^e3, e2^e3, e1^e2^e3}: 27 mul, 19 add (320 profiled calls)
 template <class T>
-basic_mv<T> lc_ff_ff(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void lc_ff_ff(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] -
             a.c[4] * b.c[4] - a.c[5] * b.c[5] - a.c[6] * b.c[6] - a.c[7] * b.c[7]);
   r.c[1] = (a.c[0] * b.c[1] - a.c[2] * b.c[4] - a.c[3] * b.c[5] - a.c[6] * b.c[7]);
@@ -189,44 +167,37 @@ basic_mv<T> lc_ff_ff(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[6] = (a.c[0] * b.c[6] + a.c[1] * b.c[7]);
   r.c[7] = (a.c[0] * b.c[7]);
   r.bits = 0xffu;
-  return r;
 }
 
 // op on mv {e1, e2, e3} x {e1, e2, e3}: 6 mul, 3 add (384 profiled calls)
 template <class T>
-basic_mv<T> op_e_e(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void op_e_e(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[4] = (a.c[1] * b.c[2] - a.c[2] * b.c[1]);
   r.c[5] = (a.c[1] * b.c[3] - a.c[3] * b.c[1]);
   r.c[6] = (a.c[2] * b.c[3] - a.c[3] * b.c[2]);
   r.bits = 0x70u;
-  return r;
 }
 
 // op on mv {e1^e2, e1^e3, e2^e3} x {e1^e2, e1^e3, e2^e3}: 0 mul, 0 add (320 profiled calls)
 template <class T>
-basic_mv<T> op_70_70([[maybe_unused]] const basic_mv<T>& a, [[maybe_unused]] const basic_mv<T>& b) {
-  basic_mv<T> r;
+void op_70_70([[maybe_unused]] const basic_mv<T>& a, [[maybe_unused]] const basic_mv<T>& b,
+              basic_mv<T>& r) {
   r.bits = 0x0u;
-  return r;
 }
 
 // op on mv {1, e1^e2, e1^e3, e2^e3} x {1, e1^e2, e1^e3, e2^e3}: 7 mul, 3 add (320 profiled calls)
 template <class T>
-basic_mv<T> op_71_71(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void op_71_71(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (a.c[0] * b.c[0]);
   r.c[4] = (a.c[0] * b.c[4] + a.c[4] * b.c[0]);
   r.c[5] = (a.c[0] * b.c[5] + a.c[5] * b.c[0]);
   r.c[6] = (a.c[0] * b.c[6] + a.c[6] * b.c[0]);
   r.bits = 0x71u;
-  return r;
 }
 
 // op on mv {1, e1, e2, e3, e1^e2, e1^e3, e2^e3, e1^e2^e3} x {1, e1, e2, e3, e1^e2, e1^e3, e2^e3, e1^e2^e3}: 27 mul, 19 add (320 profiled calls)
 template <class T>
-basic_mv<T> op_ff_ff(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r;
+void op_ff_ff(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   r.c[0] = (a.c[0] * b.c[0]);
   r.c[1] = (a.c[0] * b.c[1] + a.c[1] * b.c[0]);
   r.c[2] = (a.c[0] * b.c[2] + a.c[2] * b.c[0]);
@@ -237,59 +208,56 @@ basic_mv<T> op_ff_ff(const basic_mv<T>& a, const basic_mv<T>& b) {
   r.c[7] = (a.c[0] * b.c[7] + a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[4] +
             a.c[4] * b.c[3] - a.c[5] * b.c[2] + a.c[6] * b.c[1] + a.c[7] * b.c[0]);
   r.bits = 0xffu;
-  return r;
 }
 
 // reverse on mv {e1, e2, e3}: 0 mul, 0 add (128 profiled calls)
 template <class T>
-basic_mv<T> reverse_e(const basic_mv<T>& a) {
-  basic_mv<T> r;
+void reverse_e(const basic_mv<T>& a, basic_mv<T>& r) {
   r.c[1] = (a.c[1]);
   r.c[2] = (a.c[2]);
   r.c[3] = (a.c[3]);
   r.bits = 0xeu;
-  return r;
 }
 
 // scp on mv {e1, e2, e3} x {e1, e2, e3}: 3 mul, 2 add (448 profiled calls)
 template <class T>
-T scp_e_e(const basic_mv<T>& a, const basic_mv<T>& b) {
-  return (a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3]);
+void scp_e_e(const basic_mv<T>& a, const basic_mv<T>& b, T& r) {
+  r = (a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3]);
 }
 
 // scp on mv {e1^e2, e1^e3, e2^e3} x {e1^e2, e1^e3, e2^e3}: 3 mul, 2 add (320 profiled calls)
 template <class T>
-T scp_70_70(const basic_mv<T>& a, const basic_mv<T>& b) {
-  return (-a.c[4] * b.c[4] - a.c[5] * b.c[5] - a.c[6] * b.c[6]);
+void scp_70_70(const basic_mv<T>& a, const basic_mv<T>& b, T& r) {
+  r = (-a.c[4] * b.c[4] - a.c[5] * b.c[5] - a.c[6] * b.c[6]);
 }
 
 // scp on mv {1, e1^e2, e1^e3, e2^e3} x {1, e1^e2, e1^e3, e2^e3}: 4 mul, 3 add (320 profiled calls)
 template <class T>
-T scp_71_71(const basic_mv<T>& a, const basic_mv<T>& b) {
-  return (a.c[0] * b.c[0] - a.c[4] * b.c[4] - a.c[5] * b.c[5] - a.c[6] * b.c[6]);
+void scp_71_71(const basic_mv<T>& a, const basic_mv<T>& b, T& r) {
+  r = (a.c[0] * b.c[0] - a.c[4] * b.c[4] - a.c[5] * b.c[5] - a.c[6] * b.c[6]);
 }
 
 // scp on mv {1, e1, e2, e3, e1^e2, e1^e3, e2^e3, e1^e2^e3} x {1, e1, e2, e3, e1^e2, e1^e3, e2^e3, e1^e2^e3}: 8 mul, 7 add (320 profiled calls)
 template <class T>
-T scp_ff_ff(const basic_mv<T>& a, const basic_mv<T>& b) {
-  return (a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] - a.c[4] * b.c[4] -
-          a.c[5] * b.c[5] - a.c[6] * b.c[6] - a.c[7] * b.c[7]);
+void scp_ff_ff(const basic_mv<T>& a, const basic_mv<T>& b, T& r) {
+  r = (a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] - a.c[4] * b.c[4] -
+       a.c[5] * b.c[5] - a.c[6] * b.c[6] - a.c[7] * b.c[7]);
 }
 
 template <class T>
 bool specialized_gp(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
   switch (pair_key(a.bits, b.bits)) {
     case 0xe0000000eull:
-      r = gp_e_e(a, b);
+      gp_e_e(a, b, r);
       return true;
     case 0x7000000070ull:
-      r = gp_70_70(a, b);
+      gp_70_70(a, b, r);
       return true;
     case 0x7100000071ull:
-      r = gp_71_71(a, b);
+      gp_71_71(a, b, r);
       return true;
     case 0xff000000ffull:
-      r = gp_ff_ff(a, b);
+      gp_ff_ff(a, b, r);
       return true;
     default:
       return false;
@@ -300,16 +268,16 @@ template <class T>
 bool specialized_op(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
   switch (pair_key(a.bits, b.bits)) {
     case 0xe0000000eull:
-      r = op_e_e(a, b);
+      op_e_e(a, b, r);
       return true;
     case 0x7000000070ull:
-      r = op_70_70(a, b);
+      op_70_70(a, b, r);
       return true;
     case 0x7100000071ull:
-      r = op_71_71(a, b);
+      op_71_71(a, b, r);
       return true;
     case 0xff000000ffull:
-      r = op_ff_ff(a, b);
+      op_ff_ff(a, b, r);
       return true;
     default:
       return false;
@@ -320,16 +288,16 @@ template <class T>
 bool specialized_lc(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
   switch (pair_key(a.bits, b.bits)) {
     case 0xe0000000eull:
-      r = lc_e_e(a, b);
+      lc_e_e(a, b, r);
       return true;
     case 0x7000000070ull:
-      r = lc_70_70(a, b);
+      lc_70_70(a, b, r);
       return true;
     case 0x7100000071ull:
-      r = lc_71_71(a, b);
+      lc_71_71(a, b, r);
       return true;
     case 0xff000000ffull:
-      r = lc_ff_ff(a, b);
+      lc_ff_ff(a, b, r);
       return true;
     default:
       return false;
@@ -348,16 +316,16 @@ template <class T>
 bool specialized_scp(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] T& r) {
   switch (pair_key(a.bits, b.bits)) {
     case 0xe0000000eull:
-      r = scp_e_e(a, b);
+      scp_e_e(a, b, r);
       return true;
     case 0x7000000070ull:
-      r = scp_70_70(a, b);
+      scp_70_70(a, b, r);
       return true;
     case 0x7100000071ull:
-      r = scp_71_71(a, b);
+      scp_71_71(a, b, r);
       return true;
     case 0xff000000ffull:
-      r = scp_ff_ff(a, b);
+      scp_ff_ff(a, b, r);
       return true;
     default:
       return false;
@@ -368,16 +336,16 @@ template <class T>
 bool specialized_add(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
   switch (pair_key(a.bits, b.bits)) {
     case 0xe0000000eull:
-      r = add_e_e(a, b);
+      add_e_e(a, b, r);
       return true;
     case 0x7000000070ull:
-      r = add_70_70(a, b);
+      add_70_70(a, b, r);
       return true;
     case 0x7100000071ull:
-      r = add_71_71(a, b);
+      add_71_71(a, b, r);
       return true;
     case 0xff000000ffull:
-      r = add_ff_ff(a, b);
+      add_ff_ff(a, b, r);
       return true;
     default:
       return false;
@@ -421,7 +389,7 @@ template <class T>
 bool specialized_reverse(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
   switch (a.bits) {
     case 0xeu:
-      r = reverse_e(a);
+      reverse_e(a, r);
       return true;
     default:
       return false;

@@ -51,7 +51,7 @@ basic_mv<T> rc(const basic_mv<T>& a, const basic_mv<T>& b) {
 }
 template <class T>
 T scp(const basic_mv<T>& a, const basic_mv<T>& b) {
-  T r;
+  T r = 0;
   if (!detail::specialized_scp(a, b, r))
     r = gaphys::ga::table_product(detail::scp_table, a, b).c[0];
   detail::on_call(detail::call::scp, r, a, b);
