@@ -9,6 +9,7 @@
 #include <c3ga/c3ga.hpp>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,27 @@ void register_meet(const std::string& name, std::vector<S> s) {
   });
 }
 
+// The cost of dispatch when it misses: gp on bitmaps no profile contains
+// (a flat point times a translation-like bivector plus a scalar), so the
+// optimized variant searches its switch and then takes the generic path.
+// Optimized minus reference is the dispatch cost.
+c3ga::mv unprofiled_operand(rng& g, std::uint32_t bits) {
+  auto c = c3ga::mv{}.to_array();
+  for (std::size_t i = 0; i < c.size(); ++i)
+    if (bits >> i & 1) c[i] = uniform(g, -1, 1);
+  return c3ga::mv::from_array(c);
+}
+
+void register_unprofiled_gp(const std::string& name, rng& g) {
+  constexpr std::uint32_t flat_point = (1u << 12) | (1u << 14) | (1u << 15) | (1u << 9);  // e_i^ni, no^ni
+  constexpr std::uint32_t scalar_and_e1 = 1u | (1u << 2);
+  const auto a = make_pool(g, [&](rng& r) { return unprofiled_operand(r, flat_point); });
+  const auto b = make_pool(g, [&](rng& r) { return unprofiled_operand(r, scalar_and_e1); });
+  register_benchmark(name, [a, b](benchmark::State& state) {
+    run_over_pool(state, [&](std::size_t i) { return gp(a[i], b[next(i, 1)]); });
+  });
+}
+
 void register_all() {
   rng g(seed);
   const auto points = make_pool(g, random_point);
@@ -58,6 +80,7 @@ void register_all() {
   register_apply("c3ga/apply_motor_point/mv", widen(motors), widen(points));
   register_meet("c3ga/meet_dual_spheres/named", spheres);
   register_meet("c3ga/meet_dual_spheres/mv", widen(spheres));
+  register_unprofiled_gp("c3ga/gp_unprofiled/mv", g);
 }
 
 }  // namespace
