@@ -169,13 +169,14 @@ basic_mv<T> log(const basic_mv<T>& a) {
 // v x v^-1 as v x ~v / <v ~v>_0, keeping the grades x has: a versor preserves grade.
 template <class T>
 basic_mv<T> apply(const basic_mv<T>& v, const basic_mv<T>& x) {
-  basic_mv<T> specialized;
-  if (detail::specialized_apply(v, x, specialized)) return specialized;
-  std::uint32_t mask = 0;
-  for (int k = 0; k <= dimension; ++k)
-    if (x.bits & grade_masks[k]) mask |= grade_masks[k];
-  const basic_mv<T> rv = reverse(v);
-  const basic_mv<T> r = smul(T(1) / scp(v, rv), gaphys::ga::keep_grades(gp(gp(v, x), rv), mask));
+  basic_mv<T> r;  // one result variable on every path, so it is built in place
+  if (!detail::specialized_apply(v, x, r)) {
+    std::uint32_t mask = 0;
+    for (int k = 0; k <= dimension; ++k)
+      if (x.bits & grade_masks[k]) mask |= grade_masks[k];
+    const basic_mv<T> rv = reverse(v);
+    r = smul(T(1) / scp(v, rv), gaphys::ga::keep_grades(gp(gp(v, x), rv), mask));
+  }
   detail::on_call(detail::call::apply, r, v, x);
   return r;
 }
