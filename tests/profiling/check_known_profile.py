@@ -1,6 +1,8 @@
-"""Runs record_known_calls twice with GAPHYS_PROFILE_DIR set and checks the
-profile it writes, through the generator's own validating loader: exact
-entries, and counts doubled by the second run (merge into the existing file).
+"""Runs record_known_calls three times with GAPHYS_PROFILE_DIR set and checks
+the profile it writes, through the generator's own validating loader: exact
+entries, and counts that grow with each run (merge into the existing file).
+Before the third run the file is rewritten by the generator's own writer (as
+`gaphys-gen merge` leaves it), so the recorder must read that format too.
 
 Usage: check_known_profile.py <record_known_calls> <specs/e3ga.ga>
 """
@@ -27,9 +29,12 @@ def main() -> int:
     algebra = model.load(spec)
     with tempfile.TemporaryDirectory() as folder:
         environment = dict(os.environ, GAPHYS_PROFILE_DIR=folder)
-        for run in (1, 2):
+        path = os.path.join(folder, "e3ga.json")
+        for run in (1, 2, 3):
+            if run == 3:
+                profile.write(path, profile.load(path, algebra))
             subprocess.run([program], env=environment, check=True)
-            loaded = profile.load(os.path.join(folder, "e3ga.json"), algebra)
+            loaded = profile.load(path, algebra)
             got = {e.key: e.count for e in loaded.entries}
             want = {key: count * run for key, count in EXPECTED.items()}
             if got != want:
