@@ -23,6 +23,14 @@ from . import model, output, profile, render
 from .errors import SpecError, UsageError
 
 
+def coverage(text: str) -> float:
+    """--coverage: a share of calls in (0, 1]."""
+    value = float(text)
+    if not 0 < value <= 1:
+        raise argparse.ArgumentTypeError(f"must be in (0, 1], not {text}")
+    return value
+
+
 def parse_arguments(argv: list[str]) -> argparse.Namespace:
     parser = argparse.ArgumentParser(prog="gaphys-gen", description="Geometric-algebra C++ generator.")
     commands = parser.add_subparsers(dest="command", required=True)
@@ -34,7 +42,7 @@ def parse_arguments(argv: list[str]) -> argparse.Namespace:
         command.add_argument("--namespace", help="C++ namespace and header folder (default: the algebra name)")
         command.add_argument("--no-format", action="store_true", help="skip clang-format")
         command.add_argument("--profile", help="a profile of this spec: specialize mv calls (optimized only)")
-        command.add_argument("--coverage", type=float, default=0.999,
+        command.add_argument("--coverage", type=coverage, default=0.999,
                              help="share of the profile's calls to specialize (default 0.999)")
     merge = commands.add_parser("merge", help="add the counts of several profiles")
     merge.add_argument("inputs", nargs="+", help="profiles to merge")
@@ -43,7 +51,7 @@ def parse_arguments(argv: list[str]) -> argparse.Namespace:
     report = commands.add_parser("report", help="show the hot combinations of a profile")
     report.add_argument("profile")
     report.add_argument("--spec", required=True)
-    report.add_argument("--coverage", type=float, default=0.999, help="share of calls to specialize")
+    report.add_argument("--coverage", type=coverage, default=0.999, help="share of calls to specialize")
     report.add_argument("--top", type=int, default=20, help="rows to show")
     return parser.parse_args(argv)
 
@@ -54,8 +62,6 @@ def profile_command(arguments: argparse.Namespace) -> int:
         loaded = [(path, profile.load(path, algebra)) for path in arguments.inputs]
         profile.write(arguments.out, profile.merge(loaded))
     else:
-        if not 0 < arguments.coverage <= 1:
-            raise UsageError(f"--coverage must be in (0, 1], not {arguments.coverage}")
         print(profile.report(profile.load(arguments.profile, algebra), algebra, arguments.coverage, arguments.top),
               end="")
     return 0
@@ -89,8 +95,6 @@ def main(argv: list[str] | None = None) -> int:
         formatter = None if arguments.no_format else render.find_clang_format()
         if formatter is None and not arguments.no_format:
             print("gaphys-gen: warning: clang-format not found, output is unformatted", file=sys.stderr)
-        if not 0 < arguments.coverage <= 1:
-            raise UsageError(f"--coverage must be in (0, 1], not {arguments.coverage}")
         files = render.render(algebra, arguments.variant, namespace, regenerate_command(arguments), formatter,
                               arguments.profile, arguments.coverage)
     except (SpecError, UsageError) as error:

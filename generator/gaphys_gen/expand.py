@@ -196,15 +196,20 @@ class Expander:
         rtype = self.result_type(result, divisor)
         if function == "norm2":
             rtype = ResultType("scalar")
+        outputs, bits, temporaries = self.code_for(function, args, result, rtype)
+        return Kernel(function, arguments, rtype, outputs, divisor, mv_bits=bits, temporaries=temporaries)
+
+    def code_for(self, function: str, args: list[SymMV], result: SymMV, rtype: ResultType):
+        """(outputs, mv bits, temporaries) of a kernel whose fully expanded
+        result is `result` (which decided its type). A sandwich is computed as
+        t = v x first and then t ~v, far fewer multiplications; temporaries no
+        stored output uses are dropped."""
         temporaries: list[tuple[str, Poly]] = []
         if function == "apply":
-            # The type comes from the full expansion; the code computes t = v x
-            # first and then t ~v, which takes far fewer multiplications.
             result, temporaries = self.staged_sandwich(args[0], args[1])
         outputs, bits = self.outputs(result, rtype)
         used = {v for _, poly in outputs for monomial in poly.terms for v in monomial}
-        temporaries = [(name, poly) for name, poly in temporaries if name in used]
-        return Kernel(function, arguments, rtype, outputs, divisor, mv_bits=bits, temporaries=temporaries)
+        return outputs, bits, [(name, poly) for name, poly in temporaries if name in used]
 
     def staged_sandwich(self, v: SymMV, x: SymMV) -> tuple[SymMV, list[tuple[str, Poly]]]:
         first = self.prod("gp", v, x)
@@ -313,13 +318,8 @@ def mv_kernel(expander: Expander, function: str, argument_bits: tuple[int, ...],
         for bits, letter in zip(argument_bits, ARGUMENT_NAMES)
     ]
     result, divisor = expander.recipe(function, args)
-    temporaries: list[tuple[str, Poly]] = []
-    if function == "apply":
-        result, temporaries = expander.staged_sandwich(args[0], args[1])
     rtype = ResultType("scalar") if function == "scp" else ResultType("mv")
-    outputs, bits = expander.outputs(result, rtype)
-    used = {v for _, poly in outputs for monomial in poly.terms for v in monomial}
-    temporaries = [(name, poly) for name, poly in temporaries if name in used]
+    outputs, bits, temporaries = expander.code_for(function, args, result, rtype)
     kernel = Kernel(function, (), rtype, outputs, divisor, mv_bits=bits, temporaries=temporaries)
     return MvKernel(function, argument_bits, kernel, calls)
 
