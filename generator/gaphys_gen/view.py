@@ -88,6 +88,20 @@ def return_type(kernel: Kernel) -> str:
     return type_cpp(kernel.result.named) + "<T>"
 
 
+def kernel_polys(kernel: Kernel) -> list:
+    """Every polynomial a kernel evaluates."""
+    polys = [p for _, p in kernel.outputs] + [p for _, p in kernel.temporaries]
+    return polys + [p for p in (kernel.divisor, kernel.square, kernel.cosine) if p is not None]
+
+
+def cost_text(kernel: Kernel) -> str:
+    """': 16 mul, 12 add' (', 1 div'): what the kernel's comment states."""
+    muls, adds = cpp.count(kernel_polys(kernel))
+    if kernel.divisor is None:
+        return f": {muls} mul, {adds} add"
+    return f": {muls + len(kernel.outputs)} mul, {adds} add, 1 div"  # each output times 1/divisor
+
+
 def kernel_view(kernel: Kernel) -> dict:
     names = [a.name for a in kernel.arguments]
     params = [f"const {type_cpp(a)}<T>& {letter}" for a, letter in zip(kernel.arguments, "ab")]
@@ -105,22 +119,14 @@ def kernel_view(kernel: Kernel) -> dict:
         via_mv = f"{call}.c[0]"
     else:
         via_mv = call
-    polys = [p for _, p in kernel.outputs] + [p for _, p in kernel.temporaries]
-    polys += [p for p in (kernel.divisor, kernel.square, kernel.cosine) if p]
-    muls, adds = cpp.count(polys)
-    if kernel.divisor is not None:
-        muls += len(kernel.outputs)
     extra = {"exp_closed": ", 1 exp_of_square", "log_closed": ", 1 log_factor", "via_mv": " (general mv path)"}
     result_name = kernel.result.named.name if kernel.result.named else ("scalar" if kernel.result.kind == "scalar" else "mv")
-    cost_text = "" if kernel.form == "via_mv" else f": {muls} mul, {adds} add" + (", 1 div" if kernel.divisor else "")
-    fallback = None
-    if kernel.log_fallback_output is not None:
-        fallback = kernel.log_fallback_output
+    cost = "" if kernel.form == "via_mv" else cost_text(kernel)
     return {
         "form": kernel.form,
         "name": kernel.function,
         "summary": f"{kernel.function}({', '.join(shown)}) -> {result_name}",
-        "comment": f"{kernel.function}({', '.join(shown)}) -> {result_name}{cost_text}{extra.get(kernel.form, '')}",
+        "comment": f"{kernel.function}({', '.join(shown)}) -> {result_name}{cost}{extra.get(kernel.form, '')}",
         "return_type": rtype,
         "params": ", ".join(params),
         "result_kind": kernel.result.kind,
@@ -133,7 +139,7 @@ def kernel_view(kernel: Kernel) -> dict:
         "divisor": cpp.expression(kernel.divisor) if kernel.divisor is not None else None,
         "square": cpp.expression(kernel.square) if kernel.square is not None else None,
         "cosine": cpp.expression(kernel.cosine) if kernel.cosine is not None else None,
-        "fallback_index": fallback,
+        "fallback_index": kernel.log_fallback_output,
         "mv_bits": hex(kernel.mv_bits) + "u",
         "via_mv": via_mv,
     }
@@ -143,17 +149,12 @@ def mv_kernel_view(algebra: Algebra, mk) -> dict:
     """A profiled mv kernel: reads a.c[i] for the bits it was made for."""
     kernel = mk.kernel
     letters = "ab"[: len(mk.argument_bits)]
-    polys = [p for _, p in kernel.outputs] + [p for _, p in kernel.temporaries]
-    polys += [kernel.divisor] if kernel.divisor is not None else []
-    muls, adds = cpp.count(polys)
     scale = " * inv" if kernel.divisor is not None else ""
-    if kernel.divisor is not None:
-        muls += len(kernel.outputs)
     shown = " x ".join(
         "{" + ", ".join(b.name for b in algebra.blades if bits >> b.index & 1) + "}" for bits in mk.argument_bits
     )
     prologue = [f"const T inv = T(1) / ({cpp.expression(kernel.divisor)});"] if kernel.divisor is not None else []
-    read = {v[0] for poly in polys for monomial in poly.terms for v in monomial}  # argument letters used
+    read = {v[0] for poly in kernel_polys(kernel) for monomial in poly.terms for v in monomial}  # letters used
     # Kernels write into the caller's result, which starts as a zero mv: no copies.
     if kernel.result.kind == "scalar":
         body = [f"r = ({cpp.expression(kernel.outputs[0][1])}){scale};"]
@@ -162,8 +163,7 @@ def mv_kernel_view(algebra: Algebra, mk) -> dict:
         body += [f"r.bits = {hex(kernel.mv_bits)}u;"]
     return {
         "name": mk.name,
-        "comment": f"{mk.function} on mv {shown}: {muls} mul, {adds} add"
-        + (", 1 div" if kernel.divisor is not None else "") + f" ({mk.calls} profiled calls)",
+        "comment": f"{mk.function} on mv {shown}{cost_text(kernel)} ({mk.calls} profiled calls)",
         "params": ", ".join(
             ("" if letter in read else "[[maybe_unused]] ") + f"const basic_mv<T>& {letter}" for letter in letters
         ) + (", T& r" if kernel.result.kind == "scalar" else ", basic_mv<T>& r"),
