@@ -26,15 +26,15 @@
 
 #include <unistd.h>
 
+#include "mv_algorithms.hpp"
+
 namespace gaphys::ga {
 
 // Bit i set when coefficient i is nonzero beyond rounding (see above).
 template <class MV>
 std::uint32_t nonzero_bits(const MV& x) {
   using T = typename MV::scalar_type;
-  T largest = 0;
-  for (int i = 0; i < MV::size; ++i) largest = std::max(largest, std::abs(x.c[i]));
-  const T floor = T(8) * std::numeric_limits<T>::epsilon() * largest;
+  const T floor = T(8) * std::numeric_limits<T>::epsilon() * max_abs(x);
   std::uint32_t bits = 0;
   for (int i = 0; i < MV::size; ++i)
     if (std::abs(x.c[i]) > floor) bits |= std::uint32_t(1) << i;
