@@ -23,6 +23,14 @@ typename MV::scalar_type max_abs(const MV& x) {
   return m;
 }
 
+// Sum of c_i d_i over the coefficients (the blade basis's Euclidean product).
+template <class MV>
+typename MV::scalar_type coefficient_dot(const MV& x, const MV& y) {
+  typename MV::scalar_type sum = 0;
+  for (int i = 0; i < MV::size; ++i) sum += x.c[i] * y.c[i];
+  return sum;
+}
+
 template <class MV>
 MV keep_grades(const MV& x, std::uint32_t mask) {
   MV r = x;
@@ -193,11 +201,7 @@ MV log_general(const MV& r) {
   // in the blade basis, as in the conformal model.)
   const T sin2 = -s0;
   const MV d = keep_grades(gp(b, q), MV::grade_mask(2));
-  T d_norm2 = 0, b_along = 0;
-  for (int i = 0; i < MV::size; ++i) {
-    d_norm2 += d.c[i] * d.c[i];
-    b_along += b.c[i] * d.c[i];
-  }
+  const T d_norm2 = coefficient_dot(d, d), b_along = coefficient_dot(b, d);
   if (!(sin2 > 0) || !(d_norm2 > 0) || max_abs(gp(d, d)) > tolerance(d_norm2))
     throw std::domain_error("log: only rotations, boosts, translations and screw motions are supported");
   const T d_norm = std::sqrt(d_norm2);
@@ -207,9 +211,7 @@ MV log_general(const MV& r) {
   // s u1 has no part along d, but computing it cancels O(1) numbers; what is
   // left along d would be amplified by angle/s into the translation, to which
   // exp is fully sensitive. Project it out (exact in exact arithmetic).
-  T along = 0;
-  for (int i = 0; i < MV::size; ++i) along += rotation.c[i] * d.c[i];
-  rotation = linear_combination(T(1), rotation, -along / d_norm2, d);
+  rotation = linear_combination(T(1), rotation, -coefficient_dot(rotation, d) / d_norm2, d);
   const T s = std::sqrt(sin2);
   return linear_combination(std::atan2(s, c) / s, rotation, T(1), b2);
 }
