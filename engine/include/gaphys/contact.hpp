@@ -1,0 +1,46 @@
+// Contact generation through the conformal meet (thesis 4.2.1), one code path
+// for every pair of shapes.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+
+#include "gaphys/algebra.hpp"
+#include "gaphys/shape.hpp"
+
+namespace gaphys {
+
+// A shape at its body's pose, in the form the contact test needs.
+struct placed_shape {
+  // The shape's dual in c3ga: a sphere is c - r^2/2 ni (c the conformal centre),
+  // a plane -(n + d ni) (the limit of a sphere containing its solid side, so
+  // spheres and planes orient alike), a point the dual of the flat point x ^ ni.
+  c3ga::mv dual;
+  shape_kind kind;
+  vector center{};  // body position (spheres and points)
+  vector normal{};  // world-frame outward normal (planes)
+  real radius = 0;
+  real offset = 0;  // world-frame: the plane is normal . x = offset
+};
+
+placed_shape place(const shape& s, const vector& position, const rotor& attitude);
+
+struct contact_geometry {
+  vector point;   // thesis eq. 4.10: C ni C, normalized
+  vector normal;  // unit, from B towards A
+  real depth;     // overlap along the normal (>= 0 when in contact)
+  real squared_radius;  // of the meet's round: > 0 overlapping, 0 touching
+};
+
+// The contact between A and B, or nothing when they are apart.
+std::optional<contact_geometry> find_contact(const placed_shape& a, const placed_shape& b);
+
+// A contact between two bodies, as the solver uses it.
+struct contact {
+  std::size_t body_a;
+  std::size_t body_b;
+  contact_geometry geometry;
+  real restitution;
+};
+
+}  // namespace gaphys

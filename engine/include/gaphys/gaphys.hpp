@@ -1,0 +1,11 @@
+// libgaphys: everything an application needs.
+#pragma once
+
+#include "gaphys/algebra.hpp"
+#include "gaphys/body.hpp"
+#include "gaphys/contact.hpp"
+#include "gaphys/error.hpp"
+#include "gaphys/inertia.hpp"
+#include "gaphys/shape.hpp"
+#include "gaphys/space.hpp"
+#include "gaphys/world.hpp"

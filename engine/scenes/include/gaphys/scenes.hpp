@@ -1,0 +1,45 @@
+// The standard scenes, written once and shared by the tests, the benchmarks,
+// the profiling workload (profiling/train_workload.cpp) and the demo.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "gaphys/world.hpp"
+
+namespace gaphys::scenes {
+
+// The time step every scene is meant to run at: 1/240 s.
+inline constexpr real time_step = real(1) / 240;
+
+// count spheres (radius 0.1 m, 1 kg, e = 0.3) on a jittered grid above an
+// open box of five static planes sized to hold them, falling under gravity.
+world falling_spheres_in_box(int count, std::uint64_t seed = 1);
+
+// count spheres (radius, 1 kg, e = 0) stacked in a square tube of static
+// planes 2% wider than a sphere, each dropped from 1 cm above the one below.
+world sphere_column(int count = 5, real radius = real(0.5));
+
+// Two spheres without gravity, e = 1: 1 kg at (-2, 0, 0) moving at 3 m/s
+// along e1 and 2 kg at (2, offset, 0) moving at -1 m/s; offset 0 is head-on.
+world elastic_collision(real offset = real(0.3));
+
+// One body without shape or gravity, principal inertia (1, 2, 3) kg m^2,
+// spun at (1, 2, 3) rad/s about its body axes x, y, z.
+world spinning_body();
+
+// A sphere (radius 0.5, 1 kg) whose bottom is drop_height above a static
+// floor at z = 0, both with the given restitution.
+world bouncing_sphere(real restitution, real drop_height = 2);
+
+// The scenes by name, with their default sizes, for programs that pick one.
+struct entry {
+  std::string name;
+  std::string description;
+  std::function<world()> build;
+};
+const std::vector<entry>& catalogue();
+
+}  // namespace gaphys::scenes

@@ -1,0 +1,98 @@
+#include "gaphys/contact.hpp"
+
+#include <cmath>
+
+namespace gaphys {
+
+namespace {
+
+using c3ga::mv;
+
+vector to_e3ga(const c3ga::euclidean_vector& v) { return {v.e1(), v.e2(), v.e3()}; }
+
+// The largest value of x . direction over the shape's solid. A plane's solid
+// is unbounded except along its own normal, the only direction a contact with
+// a plane has.
+real support_height(const placed_shape& s, const vector& direction) {
+  switch (s.kind) {
+    case shape_kind::sphere:
+      return e3ga::scp(s.center, direction) + s.radius;
+    case shape_kind::point:
+      return e3ga::scp(s.center, direction);
+    case shape_kind::plane:
+      return s.offset;
+  }
+  return 0;
+}
+
+}  // namespace
+
+placed_shape place(const shape& s, const vector& position, const rotor& attitude) {
+  placed_shape placed{mv{}, s.kind(), position, vector{}, s.radius(), 0};
+  const real half_square = real(0.5) * e3ga::scp(position, position);
+  switch (s.kind()) {
+    case shape_kind::sphere:  // σ = c - r^2/2 ni, c = no + x + x^2/2 ni
+      placed.dual = c3ga::dual_sphere{1, position.e1(), position.e2(), position.e3(),
+                                      half_square - real(0.5) * s.radius() * s.radius()};
+      break;
+    case shape_kind::plane: {  // -(n + d ni), n and d in the world frame
+      placed.normal = e3ga::apply(attitude, s.normal());
+      placed.offset = s.offset() + e3ga::scp(placed.normal, position);
+      placed.dual = -c3ga::dual_plane{placed.normal.e1(), placed.normal.e2(), placed.normal.e3(),
+                                      placed.offset};
+      break;
+    }
+    case shape_kind::point: {  // the dual of the flat point x ^ ni
+      const c3ga::normalized_point x{position.e1(), position.e2(), position.e3(), half_square};
+      placed.dual = c3ga::dual(c3ga::op(x, c3ga::ni()));
+      break;
+    }
+  }
+  return placed;
+}
+
+std::optional<contact_geometry> find_contact(const placed_shape& a, const placed_shape& b) {
+  const mv ni = c3ga::ni();
+  const mv no = c3ga::no();
+
+  // Thesis eq. 4.8 on dual shapes: C = A ∩ B = (A* ∧ B*)^-*. Two spheres, or a
+  // sphere and a plane, meet in a circle; a sphere and a flat point in a round
+  // point (a dual sphere centred on the point).
+  const mv meet = c3ga::undual(c3ga::op(a.dual, b.dual));
+
+  // Thesis test t = C^2 (eq. 4.9), made independent of C's grade and weight:
+  // the squared radius of a round is C Ĉ / (ni ⌋ C)^2 (Dorst et al. 2007,
+  // table 14.1). > 0: interpenetrating, 0: touching, < 0: apart. A zero
+  // weight means no finite intersection (parallel planes, a point and a plane).
+  const mv weight = c3ga::lc(ni, meet);
+  const real weight_square = c3ga::scp(weight, weight);
+  if (!(std::fabs(weight_square) > 0)) return std::nullopt;
+  const real squared_radius = c3ga::scp(meet, c3ga::involute(meet)) / weight_square;
+  if (!(squared_radius >= 0)) return std::nullopt;
+
+  // Thesis eq. 4.10: reflecting infinity in the round gives its centre.
+  const mv centre = c3ga::gp(c3ga::gp(meet, ni), meet);
+  const real centre_weight = -c3ga::scp(ni, centre);
+  const vector point = to_e3ga(c3ga::euclidean_vector(centre)) / centre_weight;
+
+  // Thesis eq. 4.11: (-ni ⌋ C) ∧ ni is the direction of the round's carrier,
+  // n ∧ ni; undualized and read out by no ⌋ it is a vector along the normal,
+  // oriented from B to A. A round point has no carrier direction: for a flat
+  // point the normal is the line of the two centres instead.
+  const mv direction = c3ga::lc(no, c3ga::undual(c3ga::op(c3ga::lc(-ni, meet), ni)));
+  vector normal = to_e3ga(c3ga::euclidean_vector(direction));
+  real length = e3ga::norm(normal);
+  if (!(length > 1e-9 * std::sqrt(std::fabs(weight_square)))) {
+    if (a.kind == shape_kind::plane || b.kind == shape_kind::plane) return std::nullopt;
+    normal = a.center - b.center;
+    length = e3ga::norm(normal);
+    if (!(length > 0)) normal = vector{0, 0, 1}, length = 1;  // coincident centres: any direction
+  }
+  normal = normal / length;
+
+  // Depth: how far the solids overlap along the normal.
+  const real depth = support_height(a, -normal) + support_height(b, normal);
+  return contact_geometry{point, normal, depth, squared_radius};
+}
+
+}  // namespace gaphys

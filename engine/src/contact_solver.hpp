@@ -1,0 +1,39 @@
+// Collision response: the thesis's impulse (eq. 3.20, in GA eq. 4.7) with the
+// full inertia, solved by sequential impulses over all contacts, then a
+// position correction that removes penetration without adding velocity.
+#pragma once
+
+#include <vector>
+
+#include "gaphys/body.hpp"
+#include "gaphys/contact.hpp"
+#include "gaphys/world.hpp"
+
+namespace gaphys {
+
+class contact_solver {
+ public:
+  explicit contact_solver(const world_settings& settings) : settings_(settings) {}
+
+  // Changes velocities so that no contact still approaches and each
+  // bouncing contact separates at e times its approach speed.
+  void solve_velocities(std::vector<body>& bodies, const std::vector<contact>& contacts);
+
+  // After the positions moved by h v: pushes overlapping bodies apart along
+  // the normal by a share of the depth left beyond the slop.
+  void correct_positions(std::vector<body>& bodies, const std::vector<contact>& contacts,
+                         real h) const;
+
+ private:
+  struct constraint {
+    vector offset_a, offset_b;  // contact point minus each centre of mass
+    real effective_mass_inverse;
+    real target_speed;  // normal separation speed wanted after the impulses
+    real accumulated = 0;
+  };
+
+  const world_settings& settings_;
+  std::vector<constraint> constraints_;
+};
+
+}  // namespace gaphys

@@ -1,0 +1,77 @@
+#include "gaphys/inertia.hpp"
+
+#include <cmath>
+
+#include "validate.hpp"
+
+namespace gaphys {
+
+namespace {
+
+using matrix = std::array<real, 9>;
+
+real determinant(const matrix& m) {
+  return m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) +
+         m[2] * (m[3] * m[7] - m[4] * m[6]);
+}
+
+// The inverse of a symmetric positive definite 3x3 matrix, by its adjugate.
+matrix inverse_of(const matrix& m) {
+  const real inv_det = 1 / determinant(m);
+  return {(m[4] * m[8] - m[5] * m[7]) * inv_det, (m[2] * m[7] - m[1] * m[8]) * inv_det,
+          (m[1] * m[5] - m[2] * m[4]) * inv_det, (m[5] * m[6] - m[3] * m[8]) * inv_det,
+          (m[0] * m[8] - m[2] * m[6]) * inv_det, (m[2] * m[3] - m[0] * m[5]) * inv_det,
+          (m[3] * m[7] - m[4] * m[6]) * inv_det, (m[1] * m[6] - m[0] * m[7]) * inv_det,
+          (m[0] * m[4] - m[1] * m[3]) * inv_det};
+}
+
+}  // namespace
+
+inertia inertia::tensor(const matrix& m) {
+  for (real x : m) detail::require_finite(x, "inertia tensor entry");
+  const real scale = std::fabs(m[0]) + std::fabs(m[4]) + std::fabs(m[8]);
+  const real tolerance = 1e-12 * scale;
+  if (std::fabs(m[1] - m[3]) > tolerance || std::fabs(m[2] - m[6]) > tolerance ||
+      std::fabs(m[5] - m[7]) > tolerance) {
+    detail::reject("inertia tensor must be symmetric");
+  }
+  // Sylvester's criterion: all leading principal minors positive.
+  if (!(m[0] > 0) || !(m[0] * m[4] - m[1] * m[3] > 0) || !(determinant(m) > 0)) {
+    detail::reject("inertia tensor must be positive definite");
+  }
+  return inertia(m, inverse_of(m));
+}
+
+inertia inertia::principal(real about_x, real about_y, real about_z) {
+  detail::require_positive(about_x, "inertia about x");
+  detail::require_positive(about_y, "inertia about y");
+  detail::require_positive(about_z, "inertia about z");
+  return tensor({about_x, 0, 0, 0, about_y, 0, 0, 0, about_z});
+}
+
+inertia inertia::solid_sphere(real mass, real radius) {
+  detail::require_positive(mass, "mass");
+  detail::require_positive(radius, "radius");
+  const real moment = real(0.4) * mass * radius * radius;
+  return principal(moment, moment, moment);
+}
+
+inertia inertia::solid_box(real mass, real half_x, real half_y, real half_z) {
+  detail::require_positive(mass, "mass");
+  detail::require_positive(half_x, "box half extent x");
+  detail::require_positive(half_y, "box half extent y");
+  detail::require_positive(half_z, "box half extent z");
+  const real x2 = half_x * half_x, y2 = half_y * half_y, z2 = half_z * half_z;
+  return principal(mass * (y2 + z2) / 3, mass * (x2 + z2) / 3, mass * (x2 + y2) / 3);
+}
+
+// The rotation in plane e23 is about x, in e31 = -e13 about y, in e12 about z.
+bivector inertia::apply(const matrix& m, const bivector& b) {
+  const real x = b.e23(), y = -b.e13(), z = b.e12();
+  const real lx = m[0] * x + m[1] * y + m[2] * z;
+  const real ly = m[3] * x + m[4] * y + m[5] * z;
+  const real lz = m[6] * x + m[7] * y + m[8] * z;
+  return bivector{lz, -ly, lx};
+}
+
+}  // namespace gaphys

@@ -1,0 +1,36 @@
+#include "gaphys/space.hpp"
+
+#include <algorithm>
+
+namespace gaphys {
+
+void space::candidate_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs) const {
+  pairs.clear();
+  for (std::size_t i = 0; i < shaped_bodies_.size(); ++i) {
+    const std::size_t a = shaped_bodies_[i];
+    for (std::size_t j = i + 1; j < shaped_bodies_.size(); ++j) {
+      const std::size_t b = shaped_bodies_[j];
+      if (bodies[a].is_static() && bodies[b].is_static()) continue;
+      pairs.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  }
+}
+
+void space::find_contacts(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
+                          std::vector<contact>& contacts) {
+  placed_.resize(bodies.size());
+  for (std::size_t index : shaped_bodies_) {
+    const body& b = bodies[index];
+    placed_[index] = place(*b.shape(), b.position(), b.attitude());
+  }
+  contacts.clear();
+  for (const auto& [a, b] : pairs) {
+    if (auto geometry = find_contact(placed_[a], placed_[b])) {
+      const real restitution =
+          std::max(bodies[a].shape()->restitution(), bodies[b].shape()->restitution());
+      contacts.push_back(contact{a, b, *geometry, restitution});
+    }
+  }
+}
+
+}  // namespace gaphys

@@ -1,0 +1,41 @@
+// Input checks shared by the engine's public entry points. Each throws
+// invalid_input with a message naming the field, before any state changes.
+#pragma once
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "gaphys/algebra.hpp"
+#include "gaphys/error.hpp"
+
+namespace gaphys::detail {
+
+template <class... Parts>
+[[noreturn]] void reject(const Parts&... parts) {
+  std::ostringstream message;
+  message << "gaphys: ";
+  (message << ... << parts);
+  throw invalid_input(message.str());
+}
+
+inline void require_finite(real value, const char* what) {
+  if (!std::isfinite(value)) reject(what, " must be finite (got ", value, ")");
+}
+
+inline void require_positive(real value, const char* what) {
+  if (!std::isfinite(value) || !(value > 0)) reject(what, " must be finite and > 0 (got ", value, ")");
+}
+
+inline void require_non_negative(real value, const char* what) {
+  if (!std::isfinite(value) || !(value >= 0)) reject(what, " must be finite and >= 0 (got ", value, ")");
+}
+
+template <class Named>
+void require_finite(const Named& value, const char* what) {
+  for (real x : value.c) {
+    if (!std::isfinite(x)) reject(what, " must be finite (got ", e3ga::mv(value), ")");
+  }
+}
+
+}  // namespace gaphys::detail

@@ -1,0 +1,152 @@
+#include "gaphys/world.hpp"
+
+#include <chrono>
+#include <cstring>
+
+#include "contact_solver.hpp"
+#include "validate.hpp"
+
+namespace gaphys {
+
+namespace {
+
+const world_settings& validated(const world_settings& s) {
+  detail::require_finite(s.gravity, "gravity");
+  detail::require_non_negative(s.linear_damping, "linear damping");
+  detail::require_non_negative(s.angular_damping, "angular damping");
+  if (s.solver_iterations < 1) detail::reject("solver iterations must be >= 1");
+  detail::require_non_negative(s.restitution_threshold, "restitution threshold");
+  if (!(s.position_correction >= 0 && s.position_correction <= 1)) {
+    detail::reject("position correction must be in [0, 1] (got ", s.position_correction, ")");
+  }
+  detail::require_non_negative(s.linear_slop, "linear slop");
+  return s;
+}
+
+using clock = std::chrono::steady_clock;
+
+double seconds(clock::time_point from, clock::time_point to) {
+  return std::chrono::duration<double>(to - from).count();
+}
+
+}  // namespace
+
+world::world(const world_settings& settings) : settings_(validated(settings)) {}
+
+body_id world::create_body(const body_definition& definition) {
+  bodies_.emplace_back(definition);  // body's constructor validates, then nothing is added
+  if (bodies_.back().shape()) space_.add(bodies_.size() - 1);
+  return bodies_.size() - 1;
+}
+
+body& world::at(body_id id) {
+  if (id >= bodies_.size()) detail::reject("no body with id ", id);
+  return bodies_[id];
+}
+
+const body& world::at(body_id id) const {
+  if (id >= bodies_.size()) detail::reject("no body with id ", id);
+  return bodies_[id];
+}
+
+void world::set_gravity(const vector& gravity) {
+  detail::require_finite(gravity, "gravity");
+  settings_.gravity = gravity;
+}
+
+void world::set_damping(real linear, real angular) {
+  detail::require_non_negative(linear, "linear damping");
+  detail::require_non_negative(angular, "angular damping");
+  settings_.linear_damping = linear;
+  settings_.angular_damping = angular;
+}
+
+void world::step(real h) {
+  detail::require_positive(h, "time step");
+  const auto start = clock::now();
+  integrate_velocities(h);
+  const auto integrated = clock::now();
+  space_.candidate_pairs(bodies_, pairs_);
+  const auto paired = clock::now();
+  space_.find_contacts(bodies_, pairs_, contacts_);
+  const auto met = clock::now();
+  contact_solver solver(settings_);
+  solver.solve_velocities(bodies_, contacts_);
+  const auto solved = clock::now();
+  integrate_positions(h);
+  const auto moved = clock::now();
+  solver.correct_positions(bodies_, contacts_, h);
+  const auto corrected = clock::now();
+
+  timings_.integration = seconds(start, integrated) + seconds(solved, moved);
+  timings_.pairs = seconds(integrated, paired);
+  timings_.narrow_phase = seconds(paired, met);
+  timings_.response = seconds(met, solved) + seconds(moved, corrected);
+  time_ += h;
+}
+
+// Semi-implicit Euler, velocity half (thesis eqs. 3.12 and 4.4). The angular
+// part integrates the world-frame angular momentum, L' = L + h τ, and reads Ω
+// back through the inertia; the gyroscopic term is in integrate_positions.
+void world::integrate_velocities(real h) {
+  const real linear_decay = 1 / (1 + h * settings_.linear_damping);
+  const real angular_decay = 1 / (1 + h * settings_.angular_damping);
+  for (body& b : bodies_) {
+    if (!b.is_static_) {
+      b.velocity_ = linear_decay * (b.velocity_ + h * (settings_.gravity + b.inverse_mass_ * b.force_));
+      const bivector momentum = b.world_inertia(b.angular_velocity_) + h * b.torque_;
+      b.angular_velocity_ = angular_decay * b.world_inverse_inertia(momentum);
+    }
+    b.force_ = vector{};
+    b.torque_ = bivector{};
+  }
+}
+
+// Position half (thesis eqs. 3.13, 4.5, 4.6): x' = x + h v and
+// R' = exp(-h Ω / 2) R, renormalized.
+//
+// Without torque the world-frame angular momentum L = I_w(Ω) is constant, but
+// I_w turns with the body, so Ω does not: that is the gyroscopic term of
+// Euler's equations (I Ω̇ = τ - Ω × I Ω). We keep L fixed over the turn and
+// read Ω from it through the inertia at the turn's midpoint, found by a few
+// fixed-point sweeps (the implicit midpoint rule on the rotation). Taking Ω
+// at the start of the turn instead (explicit Euler) conserves L as well but
+// pumps energy in: +93% over 10,000 steps of 1/240 s for the 1:2:3 body.
+void world::integrate_positions(real h) {
+  constexpr int midpoint_sweeps = 4;
+  for (body& b : bodies_) {
+    if (b.is_static_) continue;
+    b.position_ = b.position_ + h * b.velocity_;
+    const bivector momentum = b.world_inertia(b.angular_velocity_);
+    const rotor start = b.attitude_;
+    bivector omega = b.angular_velocity_;
+    for (int sweep = 0; sweep < midpoint_sweeps; ++sweep) {
+      const rotor midpoint = e3ga::gp(e3ga::exp((-h / 4) * omega), start);
+      b.attitude_ = midpoint / e3ga::norm(midpoint);
+      omega = b.world_inverse_inertia(momentum);
+    }
+    const rotor attitude = e3ga::gp(e3ga::exp((-h / 2) * omega), start);
+    b.attitude_ = attitude / e3ga::norm(attitude);
+    b.angular_velocity_ = b.world_inverse_inertia(momentum);
+  }
+}
+
+std::uint64_t world::state_hash() const {
+  std::uint64_t hash = 14695981039346656037ull;
+  const auto mix = [&hash](const auto& coordinates) {
+    for (real x : coordinates) {
+      unsigned char bytes[sizeof(real)];
+      std::memcpy(bytes, &x, sizeof(real));
+      for (unsigned char byte : bytes) hash = (hash ^ byte) * 1099511628211ull;
+    }
+  };
+  for (const body& b : bodies_) {
+    mix(b.position_.c);
+    mix(b.velocity_.c);
+    mix(b.attitude_.c);
+    mix(b.angular_velocity_.c);
+  }
+  return hash;
+}
+
+}  // namespace gaphys
