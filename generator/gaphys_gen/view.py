@@ -149,12 +149,16 @@ def mv_kernel_view(algebra: Algebra, mk) -> dict:
     """A profiled mv kernel: reads a.c[i] for the bits it was made for."""
     kernel = mk.kernel
     letters = "ab"[: len(mk.argument_bits)]
-    scale = " * inv" if kernel.divisor is not None else ""
+    # A kernel whose result is structurally zero (e.g. apply(v, 0)) divides nothing.
+    divides = kernel.divisor is not None and (kernel.result.kind == "scalar" or bool(kernel.outputs))
+    scale = " * inv" if divides else ""
     shown = " x ".join(
         "{" + ", ".join(b.name for b in algebra.blades if bits >> b.index & 1) + "}" for bits in mk.argument_bits
     )
-    prologue = [f"const T inv = T(1) / ({cpp.expression(kernel.divisor)});"] if kernel.divisor is not None else []
-    read = {v[0] for poly in kernel_polys(kernel) for monomial in poly.terms for v in monomial}  # letters used
+    prologue = [f"const T inv = T(1) / ({cpp.expression(kernel.divisor)});"] if divides else []
+    evaluated = [p for _, p in kernel.outputs] + [p for _, p in kernel.temporaries]
+    evaluated += [kernel.divisor] if divides else []
+    read = {v[0] for poly in evaluated for monomial in poly.terms for v in monomial}  # letters used
     # Kernels write into the caller's result, which starts as a zero mv: no copies.
     if kernel.result.kind == "scalar":
         body = [f"r = ({cpp.expression(kernel.outputs[0][1])}){scale};"]
@@ -190,7 +194,10 @@ def dispatchers(mv_kernels) -> list[dict]:
             "function": function,
             "params": "const basic_mv<T>& a, const basic_mv<T>& b" if binary else "const basic_mv<T>& a",
             "arguments": "a, b" if binary else "a",
+            "key_type": "std::uint64_t" if binary else "std::uint32_t",
             "key": "pair_key(a.bits, b.bits)" if binary else "a.bits",
+            "exact_key": ("pair_key(gaphys::ga::exact_bits(a), gaphys::ga::exact_bits(b))" if binary
+                          else "gaphys::ga::exact_bits(a)"),
             "result_type": "T" if function == "scp" else "basic_mv<T>",
             "cases": cases,
         })

@@ -11,6 +11,8 @@
 
 #include <cstdint>
 
+#include <gaphys/ga/runtime.hpp>
+
 #include "c3ga/types.hpp"
 
 namespace c3ga {
@@ -30,6 +32,7 @@ inline constexpr specialized_combination specialized_combinations[] = {
     {nullptr, 0, 0},
 };
 
+// No profiled combination: always the generic path.
 template <class T>
 bool specialized_gp(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
   switch (pair_key(a.bits, b.bits)) {
@@ -38,6 +41,7 @@ bool specialized_gp(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]]
   }
 }
 
+// No profiled combination: always the generic path.
 template <class T>
 bool specialized_op(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
   switch (pair_key(a.bits, b.bits)) {
@@ -46,6 +50,7 @@ bool specialized_op(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]]
   }
 }
 
+// No profiled combination: always the generic path.
 template <class T>
 bool specialized_lc(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
   switch (pair_key(a.bits, b.bits)) {
@@ -54,6 +59,7 @@ bool specialized_lc(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]]
   }
 }
 
+// No profiled combination: always the generic path.
 template <class T>
 bool specialized_rc(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
   switch (pair_key(a.bits, b.bits)) {
@@ -62,6 +68,7 @@ bool specialized_rc(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]]
   }
 }
 
+// No profiled combination: always the generic path.
 template <class T>
 bool specialized_scp(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] T& r) {
   switch (pair_key(a.bits, b.bits)) {
@@ -70,6 +77,7 @@ bool specialized_scp(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]
   }
 }
 
+// No profiled combination: always the generic path.
 template <class T>
 bool specialized_add(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
   switch (pair_key(a.bits, b.bits)) {
@@ -78,6 +86,7 @@ bool specialized_add(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]
   }
 }
 
+// No profiled combination: always the generic path.
 template <class T>
 bool specialized_sub(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
   switch (pair_key(a.bits, b.bits)) {
@@ -86,6 +95,7 @@ bool specialized_sub(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]
   }
 }
 
+// No profiled combination: always the generic path.
 template <class T>
 bool specialized_apply(const basic_mv<T>& a, const basic_mv<T>& b,
                        [[maybe_unused]] basic_mv<T>& r) {
@@ -95,6 +105,7 @@ bool specialized_apply(const basic_mv<T>& a, const basic_mv<T>& b,
   }
 }
 
+// No profiled combination: always the generic path.
 template <class T>
 bool specialized_meet(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
   switch (pair_key(a.bits, b.bits)) {
@@ -103,6 +114,7 @@ bool specialized_meet(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused
   }
 }
 
+// No profiled combination: always the generic path.
 template <class T>
 bool specialized_neg(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
   switch (a.bits) {
@@ -111,6 +123,7 @@ bool specialized_neg(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
   }
 }
 
+// No profiled combination: always the generic path.
 template <class T>
 bool specialized_reverse(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
   switch (a.bits) {
@@ -119,6 +132,7 @@ bool specialized_reverse(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) 
   }
 }
 
+// No profiled combination: always the generic path.
 template <class T>
 bool specialized_involute(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
   switch (a.bits) {
@@ -127,6 +141,7 @@ bool specialized_involute(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r)
   }
 }
 
+// No profiled combination: always the generic path.
 template <class T>
 bool specialized_conjugate(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
   switch (a.bits) {
@@ -135,6 +150,7 @@ bool specialized_conjugate(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r
   }
 }
 
+// No profiled combination: always the generic path.
 template <class T>
 bool specialized_dual(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
   switch (a.bits) {
@@ -143,6 +159,7 @@ bool specialized_dual(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
   }
 }
 
+// No profiled combination: always the generic path.
 template <class T>
 bool specialized_undual(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
   switch (a.bits) {

@@ -16,6 +16,17 @@
 
 namespace gaphys::ga {
 
+// x.bits without the bits of coefficients that are exactly zero: the bitmap
+// a profile would key x on (the profile's recorder also drops rounding
+// residues; this exact test never changes a result).
+template <class MV>
+std::uint32_t exact_bits(const MV& x) {
+  std::uint32_t bits = x.bits;
+  for (int i = 0; i < MV::size; ++i)
+    if (x.c[i] == 0) bits &= ~(std::uint32_t(1) << i);
+  return bits;
+}
+
 template <class MV>
 typename MV::scalar_type max_abs(const MV& x) {
   typename MV::scalar_type m = 0;
