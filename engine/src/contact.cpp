@@ -62,13 +62,19 @@ std::optional<contact_geometry> find_contact(const placed_shape& a, const placed
 
   // Thesis test t = C^2 (eq. 4.9), made independent of C's grade and weight:
   // the squared radius of a round is C Ĉ / (ni ⌋ C)^2 (Dorst et al. 2007,
-  // table 14.1). > 0: interpenetrating, 0: touching, < 0: apart. A zero
-  // weight means no finite intersection (parallel planes, a point and a plane).
+  // table 14.1). > 0: interpenetrating, 0: touching, < 0: the surfaces do not
+  // meet. A zero weight means no finite intersection (parallel planes, a
+  // point and a plane).
   const mv weight = c3ga::lc(ni, meet);
   const real weight_square = c3ga::scp(weight, weight);
   if (!(std::fabs(weight_square) > 0)) return std::nullopt;
   const real squared_radius = c3ga::scp(meet, c3ga::involute(meet)) / weight_square;
-  if (!(squared_radius >= 0)) return std::nullopt;
+  // Surfaces that do not meet are apart, or one solid holds the other whole
+  // (a sphere sunk below a plane, or inside a bigger sphere). The inner
+  // product of the duals tells which: for spheres σA . σB = (rA^2 + rB^2 -
+  // d^2) / 2, below -rA rB when apart and above rA rB when nested; for a
+  // sphere and a plane it is the centre's depth below the plane.
+  if (!(squared_radius >= 0) && !(c3ga::scp(a.dual, b.dual) > 0)) return std::nullopt;
 
   // Thesis eq. 4.10: reflecting infinity in the round gives its centre.
   const mv centre = c3ga::gp(c3ga::gp(meet, ni), meet);

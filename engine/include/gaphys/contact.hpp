@@ -26,10 +26,17 @@ struct placed_shape {
 placed_shape place(const shape& s, const vector& position, const rotor& attitude);
 
 struct contact_geometry {
-  vector point;   // thesis eq. 4.10: C ni C, normalized
+  // Thesis eq. 4.10: C ni C, normalized: the centre of the meet's round. Two
+  // spheres: the centre of their intersection circle; a sphere and a plane:
+  // the sphere's centre projected on the plane; a point: the point. When one
+  // solid holds the other whole the circle is imaginary and its centre is on
+  // the radical plane (for a plane, still the projected centre).
+  vector point;
   vector normal;  // unit, from B towards A
   real depth;     // overlap along the normal (>= 0 when in contact)
-  real squared_radius;  // of the meet's round: > 0 overlapping, 0 touching
+  // Of the meet's round: > 0 the surfaces cross, 0 they touch, < 0 one solid
+  // holds the other whole (a sphere inside a sphere or below a plane).
+  real squared_radius;
 };
 
 // The contact between A and B, or nothing when they are apart.
