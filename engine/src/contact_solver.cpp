@@ -1,6 +1,7 @@
 #include "contact_solver.hpp"
 
 #include <algorithm>
+#include <utility>
 
 namespace gaphys {
 
@@ -20,8 +21,17 @@ real angular_term(const body& x, const vector& r, const vector& n) {
 
 }  // namespace
 
-void contact_solver::solve_velocities(std::vector<body>& bodies,
-                                      const std::vector<contact>& contacts) {
+void contact_solver::apply_impulse(body& a, body& b, const vector& normal, const constraint& k,
+                                   real j) {
+  const vector impulse = j * normal;
+  a.velocity_ = a.velocity_ + a.inverse_mass_ * impulse;
+  a.angular_velocity_ = a.angular_velocity_ + a.world_inverse_inertia(e3ga::op(k.offset_a, impulse));
+  b.velocity_ = b.velocity_ - b.inverse_mass_ * impulse;
+  b.angular_velocity_ = b.angular_velocity_ - b.world_inverse_inertia(e3ga::op(k.offset_b, impulse));
+}
+
+void contact_solver::solve_velocities(std::vector<body>& bodies, std::vector<contact>& contacts,
+                                      const std::vector<contact>& previous) {
   constraints_.clear();
   for (const contact& c : contacts) {
     const body& a = bodies[c.body_a];
@@ -39,6 +49,22 @@ void contact_solver::solve_velocities(std::vector<body>& bodies,
     constraints_.push_back(k);
   }
 
+  // Warm start: both lists are sorted by body pair, so one merge finds the
+  // contacts that persist. The sweeps below correct the old impulse as
+  // needed (down to zero), so the result does not depend on it, only how
+  // fast the sweeps get there.
+  auto old = previous.begin();
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const contact& c = contacts[i];
+    const auto key = std::make_pair(c.body_a, c.body_b);
+    while (old != previous.end() && std::make_pair(old->body_a, old->body_b) < key) ++old;
+    if (old == previous.end() || std::make_pair(old->body_a, old->body_b) != key) continue;
+    constraint& k = constraints_[i];
+    if (!(k.effective_mass_inverse > 0)) continue;
+    k.accumulated = old->impulse;
+    apply_impulse(bodies[c.body_a], bodies[c.body_b], c.geometry.normal, k, k.accumulated);
+  }
+
   // Sequential impulses: each sweep drives every contact to its target with
   // the impulse j n on A and -j n on B; the total per contact stays >= 0
   // (contacts push, never pull).
@@ -51,17 +77,11 @@ void contact_solver::solve_velocities(std::vector<body>& bodies,
       body& b = bodies[c.body_b];
       const real wanted = (k.target_speed - normal_speed(a, b, c)) / k.effective_mass_inverse;
       const real total = std::max(k.accumulated + wanted, real(0));
-      const real j = total - k.accumulated;
+      apply_impulse(a, b, c.geometry.normal, k, total - k.accumulated);
       k.accumulated = total;
-      const vector impulse = j * c.geometry.normal;
-      a.velocity_ = a.velocity_ + a.inverse_mass_ * impulse;
-      a.angular_velocity_ =
-          a.angular_velocity_ + a.world_inverse_inertia(e3ga::op(k.offset_a, impulse));
-      b.velocity_ = b.velocity_ - b.inverse_mass_ * impulse;
-      b.angular_velocity_ =
-          b.angular_velocity_ - b.world_inverse_inertia(e3ga::op(k.offset_b, impulse));
     }
   }
+  for (std::size_t i = 0; i < contacts.size(); ++i) contacts[i].impulse = constraints_[i].accumulated;
 }
 
 void contact_solver::correct_positions(std::vector<body>& bodies,

@@ -16,8 +16,12 @@ class contact_solver {
   explicit contact_solver(const world_settings& settings) : settings_(settings) {}
 
   // Changes velocities so that no contact still approaches and each
-  // bouncing contact separates at e times its approach speed.
-  void solve_velocities(std::vector<body>& bodies, const std::vector<contact>& contacts);
+  // bouncing contact separates at e times its approach speed, and stores
+  // each contact's total impulse in it. Contacts between the same two bodies
+  // in `previous` (the last step's, sorted by body pair like `contacts`)
+  // start from their old impulse.
+  void solve_velocities(std::vector<body>& bodies, std::vector<contact>& contacts,
+                        const std::vector<contact>& previous);
 
   // After the positions moved by h v: pushes overlapping bodies apart along
   // the normal by a share of the depth left beyond the slop.
@@ -31,6 +35,9 @@ class contact_solver {
     real target_speed;  // normal separation speed wanted after the impulses
     real accumulated = 0;
   };
+
+  // j n on A and -j n on B at the contact point.
+  static void apply_impulse(body& a, body& b, const vector& normal, const constraint& k, real j);
 
   const world_settings& settings_;
   std::vector<constraint> constraints_;

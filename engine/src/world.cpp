@@ -1,5 +1,6 @@
 #include "gaphys/world.hpp"
 
+#include <array>
 #include <chrono>
 #include <cstring>
 
@@ -68,10 +69,11 @@ void world::step(real h) {
   const auto integrated = clock::now();
   space_.candidate_pairs(bodies_, pairs_);
   const auto paired = clock::now();
+  previous_contacts_.swap(contacts_);
   space_.find_contacts(bodies_, pairs_, contacts_);
   const auto met = clock::now();
   contact_solver solver(settings_);
-  solver.solve_velocities(bodies_, contacts_);
+  solver.solve_velocities(bodies_, contacts_, previous_contacts_);
   const auto solved = clock::now();
   integrate_positions(h);
   const auto moved = clock::now();
@@ -146,6 +148,8 @@ std::uint64_t world::state_hash() const {
     mix(b.attitude_.c);
     mix(b.angular_velocity_.c);
   }
+  // The last impulses too: the next step starts from them.
+  for (const contact& c : contacts_) mix(std::array<real, 1>{c.impulse});
   return hash;
 }
 

@@ -48,6 +48,11 @@ struct contact {
   std::size_t body_b;
   contact_geometry geometry;
   real restitution;
+  // The normal impulse (N s, >= 0) the solver gave this contact in its step;
+  // impulse / h is the mean contact force. The next step starts from it when
+  // the two bodies still touch (warm starting), so a resting stack is held
+  // up at once instead of sinking while the sweeps converge.
+  real impulse = 0;
 };
 
 }  // namespace gaphys

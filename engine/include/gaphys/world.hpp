@@ -57,8 +57,9 @@ class world {
   const std::vector<contact>& contacts() const { return contacts_; }
   const step_timings& last_step_timings() const { return timings_; }
 
-  // FNV-1a over every body's position, velocity, attitude and angular
-  // velocity bits: equal states hash equal, on any run of the same build.
+  // FNV-1a over the bits of every body's position, velocity, attitude and
+  // angular velocity, and of the last step's contact impulses (the next step
+  // starts from them): equal states hash equal, on any run of the same build.
   std::uint64_t state_hash() const;
 
  private:
@@ -70,6 +71,7 @@ class world {
   gaphys::space space_;
   std::vector<body_pair> pairs_;
   std::vector<contact> contacts_;
+  std::vector<contact> previous_contacts_;  // the last step's, for warm starting
   step_timings timings_;
   real time_ = 0;
 };

@@ -1,0 +1,86 @@
+// The one fixture every engine test uses: a small world builder with the
+// shapes the tests need, a simulate() loop, and the closed-form helpers.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <random>
+
+#include "gaphys/gaphys.hpp"
+#include "gaphys/scenes.hpp"
+
+namespace gaphys::testing {
+
+// Components of vectors and bivectors, for readable assertions.
+inline real x(const vector& v) { return v.e1(); }
+inline real y(const vector& v) { return v.e2(); }
+inline real z(const vector& v) { return v.e3(); }
+inline real length(const vector& v) { return e3ga::norm(v); }
+inline real length(const bivector& b) { return e3ga::norm(b); }
+inline real dot(const vector& a, const vector& b) { return e3ga::scp(a, b); }
+
+inline ::testing::AssertionResult near(const vector& actual, const vector& expected, real tolerance) {
+  const real error = length(actual - expected);
+  if (error <= tolerance) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "|" << e3ga::mv(actual) << " - " << e3ga::mv(expected)
+                                       << "| = " << error << " > " << tolerance;
+}
+
+inline ::testing::AssertionResult near(const bivector& actual, const bivector& expected, real tolerance) {
+  const real error = length(actual - expected);
+  if (error <= tolerance) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "|" << e3ga::mv(actual) << " - " << e3ga::mv(expected)
+                                       << "| = " << error << " > " << tolerance;
+}
+
+class engine_test : public ::testing::Test {
+ protected:
+  static constexpr real h = scenes::time_step;
+
+  world make_world(const vector& gravity = vector{0, 0, -9.81}) {
+    world_settings settings;
+    settings.gravity = gravity;
+    return world(settings);
+  }
+
+  // A static floor: the half-space z <= height.
+  static body_id add_floor(world& w, real height = 0, real restitution = 0) {
+    body_definition floor;
+    floor.is_static = true;
+    floor.shape = shape::plane(vector{0, 0, 1}, height).with_restitution(restitution);
+    return w.create_body(floor);
+  }
+
+  static body_id add_sphere(world& w, const vector& position, real radius, real mass = 1,
+                            const vector& velocity = vector{}, real restitution = 0) {
+    body_definition ball;
+    ball.mass = mass;
+    ball.position = position;
+    ball.velocity = velocity;
+    ball.shape = shape::sphere(radius).with_restitution(restitution);
+    return w.create_body(ball);
+  }
+
+  // Steps the world `steps` times, calling after_step(step index) after each.
+  static void simulate(world& w, int steps, const std::function<void(int)>& after_step = {}) {
+    for (int i = 0; i < steps; ++i) {
+      w.step(h);
+      if (after_step) after_step(i);
+    }
+  }
+
+  std::mt19937_64 random{20261122};
+  real uniform(real low, real high) { return std::uniform_real_distribution<real>(low, high)(random); }
+  vector random_unit_vector() {
+    for (;;) {
+      const vector v{uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
+      const real l = length(v);
+      if (l > real(0.1) && l <= 1) return v / l;
+    }
+  }
+};
+
+}  // namespace gaphys::testing

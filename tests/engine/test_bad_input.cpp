@@ -1,0 +1,183 @@
+// Bad input: every public entry point rejects NaN, infinity, non-positive
+// masses and radii, zero normals and the like with gaphys::invalid_input and
+// a message naming what was wrong, and the world is exactly as before.
+#include <limits>
+#include <string>
+
+#include "engine_test_support.hpp"
+
+namespace gaphys::testing {
+namespace {
+
+constexpr real nan = std::numeric_limits<real>::quiet_NaN();
+constexpr real inf = std::numeric_limits<real>::infinity();
+
+// Runs `bad`, which must throw invalid_input whose message mentions `what`.
+template <class Action>
+::testing::AssertionResult rejects(Action&& bad, const std::string& what) {
+  try {
+    bad();
+  } catch (const invalid_input& e) {
+    const std::string message = e.what();
+    if (message.find(what) == std::string::npos) {
+      return ::testing::AssertionFailure() << "message \"" << message << "\" does not mention \"" << what << "\"";
+    }
+    return ::testing::AssertionSuccess();
+  } catch (const std::exception& e) {
+    return ::testing::AssertionFailure() << "threw something else: " << e.what();
+  }
+  return ::testing::AssertionFailure() << "accepted input that should be rejected (" << what << ")";
+}
+
+class bad_input_test : public engine_test {
+ protected:
+  // A world with some history, whose state the bad calls must not touch.
+  void SetUp() override {
+    add_floor(w);
+    ball = add_sphere(w, vector{0, 0, 1}, 0.5, 1, vector{0.1, 0, 0});
+    simulate(w, 30);
+    hash = w.state_hash();
+    count = w.body_count();
+    time = w.time();
+  }
+  void expect_unchanged() {
+    EXPECT_EQ(w.state_hash(), hash);
+    EXPECT_EQ(w.body_count(), count);
+    EXPECT_EQ(w.time(), time);
+    EXPECT_TRUE(near(w.at(ball).accumulated_force(), vector{}, 0));
+    EXPECT_TRUE(near(w.at(ball).accumulated_torque(), bivector{}, 0));
+    // And it still runs.
+    world copy = w;
+    simulate(copy, 10);
+    EXPECT_TRUE(std::isfinite(z(copy.at(ball).position())));
+  }
+  body_definition valid_sphere() const {
+    body_definition d;
+    d.position = vector{2, 0, 1};
+    d.shape = shape::sphere(0.5);
+    return d;
+  }
+
+  world w = make_world();
+  body_id ball = 0;
+  std::uint64_t hash = 0;
+  std::size_t count = 0;
+  real time = 0;
+};
+
+TEST_F(bad_input_test, shapes_reject_bad_radii_normals_and_restitutions) {
+  for (real r : {real(0), real(-1), nan, inf}) {
+    EXPECT_TRUE(rejects([&] { shape::sphere(r); }, "sphere radius")) << r;
+  }
+  EXPECT_TRUE(rejects([] { shape::plane(vector{0, 0, 0}, 1); }, "plane normal"));
+  EXPECT_TRUE(rejects([] { shape::plane(vector{0, nan, 1}, 1); }, "plane normal"));
+  EXPECT_TRUE(rejects([] { shape::plane(vector{0, 0, 1}, inf); }, "plane offset"));
+  for (real e : {real(-0.1), real(1.5), nan}) {
+    EXPECT_TRUE(rejects([&] { shape::sphere(1).with_restitution(e); }, "restitution")) << e;
+  }
+}
+
+TEST_F(bad_input_test, inertia_rejects_non_positive_and_asymmetric_tensors) {
+  EXPECT_TRUE(rejects([] { inertia::principal(1, 0, 1); }, "inertia about y"));
+  EXPECT_TRUE(rejects([] { inertia::principal(-1, 1, 1); }, "inertia about x"));
+  EXPECT_TRUE(rejects([] { inertia::principal(1, 1, nan); }, "inertia about z"));
+  EXPECT_TRUE(rejects([] { inertia::solid_sphere(0, 1); }, "mass"));
+  EXPECT_TRUE(rejects([] { inertia::solid_box(1, 1, -1, 1); }, "half extent y"));
+  EXPECT_TRUE(rejects([] { inertia::tensor({1, 0.5, 0, 0, 1, 0, 0, 0, 1}); }, "symmetric"));
+  EXPECT_TRUE(rejects([] { inertia::tensor({1, 2, 0, 2, 1, 0, 0, 0, 1}); }, "positive definite"));
+  EXPECT_TRUE(rejects([] { inertia::tensor({1, 0, 0, 0, 1, 0, 0, 0, inf}); }, "inertia tensor entry"));
+}
+
+TEST_F(bad_input_test, create_body_rejects_bad_definitions_and_adds_nothing) {
+  const auto rejects_definition = [&](const body_definition& d, const std::string& what) {
+    const auto result = rejects([&] { w.create_body(d); }, what);
+    expect_unchanged();
+    return result;
+  };
+  for (real m : {real(0), real(-2), nan, inf}) {
+    body_definition d = valid_sphere();
+    d.mass = m;
+    EXPECT_TRUE(rejects_definition(d, "body mass")) << m;
+  }
+  body_definition d = valid_sphere();
+  d.position = vector{nan, 0, 0};
+  EXPECT_TRUE(rejects_definition(d, "body position"));
+  d = valid_sphere();
+  d.velocity = vector{0, -inf, 0};
+  EXPECT_TRUE(rejects_definition(d, "body velocity"));
+  d = valid_sphere();
+  d.angular_velocity = bivector{0, 0, nan};
+  EXPECT_TRUE(rejects_definition(d, "body angular velocity"));
+  d = valid_sphere();
+  d.attitude = rotor{0, 0, 0, 0};
+  EXPECT_TRUE(rejects_definition(d, "body attitude"));
+  d = valid_sphere();
+  d.attitude = rotor{1, nan, 0, 0};
+  EXPECT_TRUE(rejects_definition(d, "body attitude"));
+  d = valid_sphere();
+  d.shape = shape::plane(vector{0, 0, 1}, 0);
+  EXPECT_TRUE(rejects_definition(d, "plane shape needs a static body"));
+  d = valid_sphere();
+  d.shape = shape::point();
+  EXPECT_TRUE(rejects_definition(d, "explicit inertia"));
+  d = valid_sphere();
+  d.is_static = true;
+  d.velocity = vector{1, 0, 0};
+  EXPECT_TRUE(rejects_definition(d, "static body cannot have a nonzero velocity"));
+  d = valid_sphere();
+  d.is_static = true;
+  d.angular_velocity = bivector{1, 0, 0};
+  EXPECT_TRUE(rejects_definition(d, "static body cannot have a nonzero angular velocity"));
+}
+
+TEST_F(bad_input_test, step_rejects_bad_time_steps_and_changes_nothing) {
+  for (real bad : {real(0), real(-h), nan, inf, -inf}) {
+    EXPECT_TRUE(rejects([&] { w.step(bad); }, "time step")) << bad;
+    expect_unchanged();
+  }
+}
+
+TEST_F(bad_input_test, setters_and_forces_reject_non_finite_values_and_change_nothing) {
+  body& b = w.at(ball);
+  EXPECT_TRUE(rejects([&] { b.set_position(vector{inf, 0, 0}); }, "body position"));
+  EXPECT_TRUE(rejects([&] { b.set_velocity(vector{0, nan, 0}); }, "body velocity"));
+  EXPECT_TRUE(rejects([&] { b.set_attitude(rotor{0, 0, 0, 0}); }, "body attitude"));
+  EXPECT_TRUE(rejects([&] { b.set_angular_velocity(bivector{nan, 0, 0}); }, "body angular velocity"));
+  EXPECT_TRUE(rejects([&] { b.apply_force(vector{0, 0, nan}); }, "force"));
+  EXPECT_TRUE(rejects([&] { b.apply_force(vector{0, 0, 1}, vector{inf, 0, 0}); }, "force offset"));
+  EXPECT_TRUE(rejects([&] { b.apply_torque(bivector{0, inf, 0}); }, "torque"));
+  EXPECT_TRUE(rejects([&] { w.at(0).set_velocity(vector{0, 0, 1}); }, "static body"));
+  EXPECT_TRUE(rejects([&] { w.set_gravity(vector{0, 0, nan}); }, "gravity"));
+  EXPECT_TRUE(rejects([&] { w.set_damping(-1, 0); }, "linear damping"));
+  EXPECT_TRUE(rejects([&] { w.set_damping(0, nan); }, "angular damping"));
+  EXPECT_TRUE(rejects([&] { w.at(count); }, "no body with id"));
+  expect_unchanged();
+  EXPECT_TRUE(near(w.settings().gravity, vector{0, 0, -9.81}, 0));
+}
+
+TEST_F(bad_input_test, world_settings_are_checked) {
+  const auto rejects_settings = [](const world_settings& s, const std::string& what) {
+    return rejects([&] { world{s}; }, what);
+  };
+  world_settings s;
+  s.gravity = vector{0, inf, 0};
+  EXPECT_TRUE(rejects_settings(s, "gravity"));
+  s = {};
+  s.linear_damping = -0.1;
+  EXPECT_TRUE(rejects_settings(s, "linear damping"));
+  s = {};
+  s.solver_iterations = 0;
+  EXPECT_TRUE(rejects_settings(s, "solver iterations"));
+  s = {};
+  s.position_correction = 1.5;
+  EXPECT_TRUE(rejects_settings(s, "position correction"));
+  s = {};
+  s.linear_slop = nan;
+  EXPECT_TRUE(rejects_settings(s, "linear slop"));
+  s = {};
+  s.restitution_threshold = -1;
+  EXPECT_TRUE(rejects_settings(s, "restitution threshold"));
+}
+
+}  // namespace
+}  // namespace gaphys::testing

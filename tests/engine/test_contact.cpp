@@ -1,0 +1,226 @@
+// The narrow phase against closed-form geometry: for random sphere-sphere,
+// sphere-plane and point-sphere configurations (apart, touching, overlapping,
+// deep, nested) the conformal meet's contact point, normal and depth must be
+// the ones elementary geometry gives.
+#include "engine_test_support.hpp"
+
+namespace gaphys::testing {
+namespace {
+
+constexpr real geometry_tolerance = 1e-9;
+const rotor identity{1, 0, 0, 0};
+
+class contact_test : public engine_test {
+ protected:
+  placed_shape sphere_at(const vector& centre, real radius) {
+    return place(shape::sphere(radius), centre, identity);
+  }
+  vector random_point(real extent) {
+    return vector{uniform(-extent, extent), uniform(-extent, extent), uniform(-extent, extent)};
+  }
+  rotor random_attitude() {
+    const vector axis = random_unit_vector();
+    return e3ga::exp(uniform(-3, 3) * e3ga::dual(axis));
+  }
+};
+
+// Two spheres whose centres are `distance` apart along a random direction.
+struct sphere_pair {
+  vector centre_a, centre_b;
+  real radius_a, radius_b;
+};
+
+// The closed form for two spheres: the normal is the line of centres from B
+// to A, the depth is rA + rB - d, and the point is where the radical plane
+// (the plane of the intersection circle, real or imaginary) crosses the line
+// of centres: at t = (d^2 + rB^2 - rA^2) / 2d from B's centre.
+void expect_sphere_sphere_geometry(const sphere_pair& s, const contact_geometry& g) {
+  const vector offset = s.centre_a - s.centre_b;
+  const real d = length(offset);
+  const vector n = offset / d;
+  const real t = (d * d + s.radius_b * s.radius_b - s.radius_a * s.radius_a) / (2 * d);
+  EXPECT_TRUE(near(g.normal, n, geometry_tolerance));
+  EXPECT_NEAR(g.depth, s.radius_a + s.radius_b - d, geometry_tolerance);
+  EXPECT_TRUE(near(g.point, s.centre_b + t * n, geometry_tolerance * (1 + d)));
+}
+
+TEST_F(contact_test, spheres_apart_have_no_contact) {
+  for (int trial = 0; trial < 200; ++trial) {
+    const real ra = uniform(0.05, 2), rb = uniform(0.05, 2);
+    const vector b = random_point(5);
+    const vector a = b + (ra + rb + uniform(1e-6, 5)) * random_unit_vector();
+    EXPECT_FALSE(find_contact(sphere_at(a, ra), sphere_at(b, rb))) << "trial " << trial;
+    EXPECT_FALSE(find_contact(sphere_at(b, rb), sphere_at(a, ra))) << "trial " << trial;
+  }
+}
+
+TEST_F(contact_test, overlapping_spheres_match_the_closed_form) {
+  for (int trial = 0; trial < 200; ++trial) {
+    const real ra = uniform(0.05, 2), rb = uniform(0.05, 2);
+    const vector b = random_point(5);
+    // From barely overlapping to one centre nearly on the other's surface
+    // and beyond, but the surfaces still crossing: |rA - rB| < d < rA + rB.
+    const real d = uniform(std::fabs(ra - rb) + 1e-3, ra + rb - 1e-6);
+    const sphere_pair s{b + d * random_unit_vector(), b, ra, rb};
+    const auto g = find_contact(sphere_at(s.centre_a, ra), sphere_at(s.centre_b, rb));
+    ASSERT_TRUE(g) << "trial " << trial;
+    EXPECT_GT(g->squared_radius, 0);
+    expect_sphere_sphere_geometry(s, *g);
+    // The intersection circle's radius, by Pythagoras from the point.
+    const real t = length(g->point - s.centre_b);
+    EXPECT_NEAR(g->squared_radius, rb * rb - t * t, 1e-8 * (1 + rb * rb));
+  }
+}
+
+TEST_F(contact_test, touching_spheres_are_in_contact_at_the_touching_point) {
+  for (int trial = 0; trial < 100; ++trial) {
+    const real ra = uniform(0.05, 2), rb = uniform(0.05, 2);
+    const vector b = random_point(5);
+    const vector n = random_unit_vector();
+    const sphere_pair s{b + (ra + rb - 1e-7) * n, b, ra, rb};
+    const auto g = find_contact(sphere_at(s.centre_a, ra), sphere_at(s.centre_b, rb));
+    ASSERT_TRUE(g) << "trial " << trial;
+    expect_sphere_sphere_geometry(s, *g);
+    EXPECT_TRUE(near(g->point, b + rb * n, 1e-6));
+    EXPECT_NEAR(g->squared_radius, 0, 1e-6);
+  }
+}
+
+TEST_F(contact_test, a_sphere_inside_another_is_a_deep_contact) {
+  for (int trial = 0; trial < 200; ++trial) {
+    const real rb = uniform(0.5, 2), ra = uniform(0.05, rb / 2);
+    const vector b = random_point(5);
+    // Centre distance below rB - rA: A lies wholly inside B.
+    const real d = uniform(1e-3, rb - ra - 1e-3);
+    const sphere_pair inner{b + d * random_unit_vector(), b, ra, rb};
+    const auto g = find_contact(sphere_at(inner.centre_a, ra), sphere_at(inner.centre_b, rb));
+    ASSERT_TRUE(g) << "trial " << trial;
+    EXPECT_LT(g->squared_radius, 0);
+    expect_sphere_sphere_geometry(inner, *g);
+    // The same pair the other way round: B inside... A holds B.
+    const sphere_pair outer{b, inner.centre_a, rb, ra};
+    const auto h = find_contact(sphere_at(outer.centre_a, rb), sphere_at(outer.centre_b, ra));
+    ASSERT_TRUE(h) << "trial " << trial;
+    expect_sphere_sphere_geometry(outer, *h);
+  }
+}
+
+TEST_F(contact_test, swapping_the_spheres_flips_the_normal_only) {
+  for (int trial = 0; trial < 100; ++trial) {
+    const real ra = uniform(0.05, 2), rb = uniform(0.05, 2);
+    const vector b = random_point(5);
+    const vector a = b + uniform(std::fabs(ra - rb) + 1e-3, ra + rb) * random_unit_vector();
+    const auto ab = find_contact(sphere_at(a, ra), sphere_at(b, rb));
+    const auto ba = find_contact(sphere_at(b, rb), sphere_at(a, ra));
+    ASSERT_TRUE(ab && ba);
+    EXPECT_TRUE(near(ab->normal, -ba->normal, geometry_tolerance));
+    EXPECT_TRUE(near(ab->point, ba->point, geometry_tolerance));
+    EXPECT_NEAR(ab->depth, ba->depth, geometry_tolerance);
+  }
+}
+
+// A plane {n . x <= offset} on a body at a random pose, against a sphere at
+// signed height s above it: apart (s > r), touching, overlapping, the centre
+// below the surface, and the sphere sunk wholly below it (s < -r).
+TEST_F(contact_test, sphere_and_plane_match_the_closed_form) {
+  for (int trial = 0; trial < 300; ++trial) {
+    const vector body_normal = random_unit_vector();
+    const real body_offset = uniform(-3, 3);
+    const vector plane_position = random_point(4);
+    const rotor attitude = random_attitude();
+    const placed_shape plane = place(shape::plane(body_normal, body_offset), plane_position, attitude);
+
+    // The plane in the world frame, computed independently of place().
+    const vector n = e3ga::apply(attitude, body_normal);
+    const real offset = body_offset + dot(n, plane_position);
+
+    const real r = uniform(0.05, 2);
+    const real height = uniform(-3 * r, 3 * r);  // of the centre above the plane
+    const vector foot = random_point(4);
+    const vector on_plane = foot + (offset - dot(n, foot)) * n;
+    const vector centre = on_plane + height * n;
+    const placed_shape sphere = sphere_at(centre, r);
+
+    const auto sp = find_contact(sphere, plane);
+    const auto ps = find_contact(plane, sphere);
+    if (height > r) {
+      EXPECT_FALSE(sp) << "trial " << trial << " height " << height << " radius " << r;
+      EXPECT_FALSE(ps) << "trial " << trial;
+      continue;
+    }
+    ASSERT_TRUE(sp) << "trial " << trial << " height " << height << " radius " << r;
+    ASSERT_TRUE(ps) << "trial " << trial;
+    EXPECT_TRUE(near(sp->normal, n, geometry_tolerance));
+    EXPECT_TRUE(near(ps->normal, -n, geometry_tolerance));
+    EXPECT_NEAR(sp->depth, r - height, geometry_tolerance * 10);
+    EXPECT_NEAR(ps->depth, r - height, geometry_tolerance * 10);
+    EXPECT_TRUE(near(sp->point, on_plane, geometry_tolerance * 10));
+    EXPECT_TRUE(near(ps->point, on_plane, geometry_tolerance * 10));
+    EXPECT_NEAR(sp->squared_radius, r * r - height * height, 1e-8 * (1 + r * r));
+  }
+}
+
+// A point (a flat point in c3ga) inside a sphere is in contact along the line
+// of centres at the point itself, with depth r - |x - c|; outside it is not.
+TEST_F(contact_test, point_and_sphere_match_the_closed_form) {
+  for (int trial = 0; trial < 300; ++trial) {
+    const real r = uniform(0.05, 2);
+    const vector c = random_point(5);
+    const vector direction = random_unit_vector();
+    const real distance = uniform(1e-3, 3 * r);
+    const vector x = c + distance * direction;
+    const placed_shape point = place(shape::point(), x, random_attitude());
+    const placed_shape sphere = sphere_at(c, r);
+
+    const auto ps = find_contact(point, sphere);
+    const auto sp = find_contact(sphere, point);
+    if (distance > r + 1e-9) {
+      EXPECT_FALSE(ps) << "trial " << trial;
+      EXPECT_FALSE(sp) << "trial " << trial;
+      continue;
+    }
+    ASSERT_TRUE(ps) << "trial " << trial << " distance " << distance << " radius " << r;
+    ASSERT_TRUE(sp) << "trial " << trial;
+    EXPECT_TRUE(near(ps->point, x, geometry_tolerance * 10));
+    EXPECT_TRUE(near(sp->point, x, geometry_tolerance * 10));
+    EXPECT_TRUE(near(ps->normal, direction, geometry_tolerance));
+    EXPECT_TRUE(near(sp->normal, -direction, geometry_tolerance));
+    EXPECT_NEAR(ps->depth, r - distance, geometry_tolerance * 10);
+    EXPECT_NEAR(sp->depth, r - distance, geometry_tolerance * 10);
+  }
+}
+
+// Contacts the meet does not define: parallel planes never pair (both are
+// static), and a point meets a plane nowhere in the thesis's sense.
+TEST_F(contact_test, a_point_and_a_plane_do_not_collide) {
+  const placed_shape floor = place(shape::plane(vector{0, 0, 1}, 0), vector{}, identity);
+  for (real z : {real(-1), real(-1e-3), real(1e-3), real(1)}) {
+    EXPECT_FALSE(find_contact(place(shape::point(), vector{0.3, -0.2, z}, identity), floor)) << z;
+  }
+}
+
+// The world forms contacts with the same geometry, between body ids.
+TEST_F(contact_test, the_world_reports_contacts_between_its_bodies) {
+  world w = make_world(vector{});
+  const body_id floor = add_floor(w, 0);
+  const body_id low = add_sphere(w, vector{0, 0, 0.49}, 0.5);
+  const body_id high = add_sphere(w, vector{0, 0, 1.4}, 0.5);
+  const body_id apart = add_sphere(w, vector{5, 0, 0.6}, 0.5);
+  w.step(h);
+  ASSERT_EQ(w.contacts().size(), 2u);
+  const contact& ground = w.contacts()[0];
+  EXPECT_EQ(ground.body_a, floor);
+  EXPECT_EQ(ground.body_b, low);
+  EXPECT_TRUE(near(ground.geometry.normal, vector{0, 0, -1}, geometry_tolerance));
+  EXPECT_NEAR(ground.geometry.depth, 0.01, geometry_tolerance);
+  const contact& stack = w.contacts()[1];
+  EXPECT_EQ(stack.body_a, low);
+  EXPECT_EQ(stack.body_b, high);
+  EXPECT_TRUE(near(stack.geometry.normal, vector{0, 0, -1}, geometry_tolerance));
+  EXPECT_NEAR(stack.geometry.depth, 0.09, geometry_tolerance);
+  EXPECT_TRUE(near(stack.geometry.point, vector{0, 0, 0.945}, geometry_tolerance));
+  for (const contact& c : w.contacts()) EXPECT_NE(c.body_b, apart);
+}
+
+}  // namespace
+}  // namespace gaphys::testing

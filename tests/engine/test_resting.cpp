@@ -1,0 +1,96 @@
+// Resting contact over 10 s of simulated time: bodies at rest on a floor or
+// on each other must stay put. Penetration stays under 1% of the radius and
+// does not creep: the mean depth in the last second equals the mean depth in
+// the second after settling.
+#include <algorithm>
+#include <vector>
+
+#include "engine_test_support.hpp"
+
+namespace gaphys::testing {
+namespace {
+
+class resting_test : public engine_test {
+ protected:
+  static constexpr int steps_per_second = 240;
+
+  // The deepest contact of the last step.
+  static real deepest(const world& w) {
+    real depth = 0;
+    for (const contact& c : w.contacts()) depth = std::max(depth, c.geometry.depth);
+    return depth;
+  }
+};
+
+TEST_F(resting_test, a_sphere_rests_on_a_floor_without_sinking_or_jitter) {
+  const real radius = 0.5;
+  world w = make_world();
+  add_floor(w);
+  const body_id ball = add_sphere(w, vector{0.2, -0.1, radius + 0.001}, radius);
+  real max_depth = 0, early_mean = 0, late_mean = 0, max_late_speed = 0;
+  simulate(w, 10 * steps_per_second, [&](int i) {
+    const real depth = radius - z(w.at(ball).position());
+    max_depth = std::max(max_depth, depth);
+    if (i >= steps_per_second && i < 2 * steps_per_second) early_mean += depth / steps_per_second;
+    if (i >= 9 * steps_per_second) {
+      late_mean += depth / steps_per_second;
+      max_late_speed = std::max(max_late_speed, length(w.at(ball).velocity()));
+    }
+  });
+  EXPECT_LT(max_depth, 0.01 * radius);
+  EXPECT_NEAR(late_mean, early_mean, 1e-4 * radius);
+  EXPECT_LT(max_late_speed, 1e-3);  // h g = 0.04 m/s would be a jitter
+  // It stays where it was put, and upright.
+  EXPECT_NEAR(x(w.at(ball).position()), 0.2, 1e-9);
+  EXPECT_NEAR(y(w.at(ball).position()), -0.1, 1e-9);
+  EXPECT_TRUE(near(w.at(ball).angular_velocity(), bivector{}, 1e-12));
+}
+
+// The shared column: five spheres of radius 0.5 stacked in a tube of planes.
+// After landing, each contact stays under 1% of the radius deep; after two
+// seconds every sphere keeps its height: the stack neither sinks nor grows.
+TEST_F(resting_test, a_column_of_five_spheres_stands_for_ten_seconds) {
+  const real radius = 0.5;
+  const int count = 5;
+  world w = scenes::sphere_column(count, radius);
+  const std::size_t first_ball = w.body_count() - count;
+  real max_depth = 0;
+  std::vector<real> early(count, 0), late(count, 0);
+  simulate(w, 10 * steps_per_second, [&](int i) {
+    if (i < steps_per_second) return;  // landing
+    max_depth = std::max(max_depth, deepest(w));
+    for (int k = 0; k < count; ++k) {
+      const real height = z(w.at(first_ball + k).position());
+      if (i >= 2 * steps_per_second && i < 3 * steps_per_second) early[k] += height / steps_per_second;
+      if (i >= 9 * steps_per_second) late[k] += height / steps_per_second;
+    }
+  });
+  EXPECT_LT(max_depth, 0.01 * radius);
+  for (int k = 0; k < count; ++k) {
+    // Stacked: each centre about a diameter above the one below.
+    EXPECT_NEAR(late[k], radius + 2 * radius * k, 0.01 * radius * (k + 1)) << "sphere " << k;
+    EXPECT_NEAR(late[k], early[k], 1e-4 * radius) << "sphere " << k;
+    EXPECT_LT(length(w.at(first_ball + k).velocity()), 1e-3) << "sphere " << k;
+  }
+}
+
+// Many spheres piled in a box settle into a heap whose contacts stay shallow.
+TEST_F(resting_test, falling_spheres_settle_in_the_box) {
+  world w = scenes::falling_spheres_in_box(40);
+  const real radius = 0.1;
+  simulate(w, 4 * steps_per_second);
+  real max_depth = 0, max_speed = 0;
+  simulate(w, steps_per_second, [&](int) {
+    max_depth = std::max(max_depth, deepest(w));
+    for (const body& b : w.bodies()) max_speed = std::max(max_speed, length(b.velocity()));
+  });
+  EXPECT_LT(max_depth, 0.05 * radius);
+  EXPECT_LT(max_speed, 0.05);
+  for (const body& b : w.bodies()) {
+    if (b.is_static()) continue;
+    EXPECT_GT(z(b.position()), radius * 0.95);  // none fell through the floor
+  }
+}
+
+}  // namespace
+}  // namespace gaphys::testing
