@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs what is missing on a fresh Debian machine, builds gaphys and runs
-# the demo. Safe to run again: it installs only what is not there.
+# the demos. Safe to run again: it installs only what is not there.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -30,3 +30,4 @@ python=$(bash tools/find-python.sh)
 cmake -S . -B build -G Ninja -DPython3_EXECUTABLE="$python"
 cmake --build build
 ./build/examples/algebra_demo
+./build/examples/demo/gaphys_demo --scene bouncing_sphere --steps 480 --every 240

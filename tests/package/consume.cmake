@@ -1,6 +1,7 @@
 # ctest: install gaphys into a scratch prefix, then configure, build and run
-# examples/consumer against it as a separate project (find_package(gaphys) and
-# gaphys_add_algebra() on the app's own spec).
+# two separate projects against it: examples/consumer (find_package(gaphys) and
+# gaphys_add_algebra() on the app's own spec) and examples/demo (the engine,
+# gaphys::scenes and gaphys::gaphys, checked through the trajectory it writes).
 # Inputs: BUILD_DIR (gaphys's build), SOURCE_DIR, WORK_DIR, PYTHON, GENERATOR.
 file(REMOVE_RECURSE "${WORK_DIR}")
 function(run)
@@ -15,3 +16,33 @@ run("${CMAKE_COMMAND}" -S "${SOURCE_DIR}/examples/consumer" -B "${WORK_DIR}/buil
     "-DCMAKE_PREFIX_PATH=${WORK_DIR}/install" "-DPython3_EXECUTABLE=${PYTHON}")
 run("${CMAKE_COMMAND}" --build "${WORK_DIR}/build")
 run("${WORK_DIR}/build/consumer_app")
+
+run("${CMAKE_COMMAND}" -S "${SOURCE_DIR}/examples/demo" -B "${WORK_DIR}/demo" -G "${GENERATOR}"
+    "-DCMAKE_PREFIX_PATH=${WORK_DIR}/install")
+run("${CMAKE_COMMAND}" --build "${WORK_DIR}/demo")
+# 10 spheres recorded at steps 0, 30 and 60: a header and 30 rows.
+set(demo "${WORK_DIR}/demo/gaphys_demo" --scene falling_spheres --spheres 10 --steps 60 --every 30)
+run(${demo} --out "${WORK_DIR}/trajectory.csv")
+file(STRINGS "${WORK_DIR}/trajectory.csv" lines)
+list(POP_FRONT lines header)
+list(LENGTH lines rows)
+if(NOT header STREQUAL "time,body,x,y,z,r_scalar,r_e12,r_e13,r_e23" OR NOT rows EQUAL 30)
+  message(FATAL_ERROR "trajectory.csv: header '${header}' and ${rows} rows; expected "
+                      "'time,body,x,y,z,r_scalar,r_e12,r_e13,r_e23' and 30 rows")
+endif()
+# The same run as JSON: 3 frames of 10 bodies.
+run(${demo} --out "${WORK_DIR}/trajectory.json")
+file(READ "${WORK_DIR}/trajectory.json" json)
+string(SUBSTRING "${json}" 0 1 first)
+string(JSON frames ERROR_VARIABLE bad LENGTH "${json}" frames)
+if(NOT bad)
+  string(JSON bodies ERROR_VARIABLE bad LENGTH "${json}" frames 2 bodies)
+endif()
+if(NOT first STREQUAL "{" OR bad OR NOT frames EQUAL 3 OR NOT bodies EQUAL 10)
+  message(FATAL_ERROR "trajectory.json: expected an object of 3 frames of 10 bodies; got "
+                      "'${first}...', ${frames} frames, ${bodies} bodies in the last (${bad})")
+endif()
+file(GLOB temporaries "${WORK_DIR}/*.tmp.*")
+if(temporaries)
+  message(FATAL_ERROR "the demo left temporary files: ${temporaries}")
+endif()

@@ -1,0 +1,36 @@
+// An output file that appears whole or not at all. Everything is written to a
+// temporary file in the target's directory, and commit() renames it over the
+// target: rename() within one file system is atomic, so no reader (and no
+// crash) ever sees a half-written target, and a failure leaves an existing
+// target as it was.
+#pragma once
+
+#include <fstream>
+#include <string>
+
+namespace demo {
+
+class atomic_file {
+ public:
+  // Creates the temporary; throws std::runtime_error when it cannot (for
+  // example when the target's directory does not exist).
+  explicit atomic_file(const std::string& path);
+  // Removes the temporary unless commit() succeeded.
+  ~atomic_file();
+  atomic_file(const atomic_file&) = delete;
+  atomic_file& operator=(const atomic_file&) = delete;
+
+  std::ostream& stream() { return out_; }
+
+  // Closes the temporary and renames it over the target; throws
+  // std::runtime_error when either fails.
+  void commit();
+
+ private:
+  std::string path_;
+  std::string temporary_;
+  std::ofstream out_;
+  bool committed_ = false;
+};
+
+}  // namespace demo

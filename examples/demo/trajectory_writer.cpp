@@ -1,0 +1,93 @@
+#include "trajectory_writer.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace demo {
+
+namespace {
+
+bool ends_with(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() &&
+         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// Nine significant digits: nanometres on a metre-sized scene, and far below
+// what the engine's 1/240 s steps resolve.
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", value);
+  return text;
+}
+
+// JSON has no NaN or infinity; a blown-up simulation still gives a document
+// that parses.
+std::string json_number(double value) { return std::isfinite(value) ? number(value) : "null"; }
+
+}  // namespace
+
+std::optional<trajectory_format> format_of(const std::string& path) {
+  if (ends_with(path, ".csv")) return trajectory_format::csv;
+  if (ends_with(path, ".json")) return trajectory_format::json;
+  return std::nullopt;
+}
+
+// The scene names come from gaphys::scenes::catalogue() (lower case and
+// underscores), so the JSON string needs no escaping.
+trajectory_writer::trajectory_writer(std::ostream& out, trajectory_format format,
+                                     const std::string& scene, gaphys::real time_step)
+    : out_(out), format_(format) {
+  if (format_ == trajectory_format::csv) {
+    out_ << "time,body,x,y,z,r_scalar,r_e12,r_e13,r_e23\n";
+  } else {
+    out_ << "{\"scene\": \"" << scene << "\", \"time_step\": " << json_number(time_step)
+         << ", \"frames\": [";
+  }
+}
+
+void trajectory_writer::write_frame(const gaphys::world& world) {
+  if (format_ == trajectory_format::csv) {
+    write_csv_frame(world);
+  } else {
+    write_json_frame(world);
+  }
+  first_frame_ = false;
+}
+
+void trajectory_writer::write_csv_frame(const gaphys::world& world) {
+  const std::string time = number(world.time());
+  for (gaphys::body_id id = 0; id < world.body_count(); ++id) {
+    const gaphys::body& b = world.at(id);
+    if (b.is_static()) continue;
+    const gaphys::vector& x = b.position();
+    const gaphys::rotor& r = b.attitude();
+    out_ << time << ',' << id << ',' << number(x.e1()) << ',' << number(x.e2()) << ','
+         << number(x.e3()) << ',' << number(r.scalar()) << ',' << number(r.e12()) << ','
+         << number(r.e13()) << ',' << number(r.e23()) << '\n';
+  }
+}
+
+// One frame per line, so the file stays readable and diffable.
+void trajectory_writer::write_json_frame(const gaphys::world& world) {
+  out_ << (first_frame_ ? "\n" : ",\n") << "{\"time\": " << json_number(world.time())
+       << ", \"bodies\": [";
+  bool first_body = true;
+  for (gaphys::body_id id = 0; id < world.body_count(); ++id) {
+    const gaphys::body& b = world.at(id);
+    if (b.is_static()) continue;
+    const gaphys::vector& x = b.position();
+    const gaphys::rotor& r = b.attitude();
+    out_ << (first_body ? "" : ", ") << "{\"id\": " << id << ", \"position\": ["
+         << json_number(x.e1()) << ", " << json_number(x.e2()) << ", " << json_number(x.e3())
+         << "], \"attitude\": [" << json_number(r.scalar()) << ", " << json_number(r.e12()) << ", "
+         << json_number(r.e13()) << ", " << json_number(r.e23()) << "]}";
+    first_body = false;
+  }
+  out_ << "]}";
+}
+
+void trajectory_writer::finish() {
+  if (format_ == trajectory_format::json) out_ << "\n]}\n";
+}
+
+}  // namespace demo

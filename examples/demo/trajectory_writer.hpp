@@ -1,0 +1,41 @@
+// The demo's output: at each recorded step, the time and every dynamic body's
+// position and attitude rotor, as CSV rows or as one JSON document. Frames are
+// written as the simulation goes, so a long run does not keep them in memory.
+#pragma once
+
+#include <optional>
+#include <ostream>
+#include <string>
+
+#include "gaphys/world.hpp"
+
+namespace demo {
+
+enum class trajectory_format { csv, json };
+
+// From the file name's extension, .csv or .json; nothing for any other.
+std::optional<trajectory_format> format_of(const std::string& path);
+
+class trajectory_writer {
+ public:
+  // Writes the CSV header or the opening of the JSON document.
+  trajectory_writer(std::ostream& out, trajectory_format format, const std::string& scene,
+                    gaphys::real time_step);
+
+  // One frame: the world's time and the pose of each non-static body, named
+  // by its body id (its index in the world).
+  void write_frame(const gaphys::world& world);
+
+  // Closes the JSON document (CSV needs nothing).
+  void finish();
+
+ private:
+  void write_csv_frame(const gaphys::world& world);
+  void write_json_frame(const gaphys::world& world);
+
+  std::ostream& out_;
+  trajectory_format format_;
+  bool first_frame_ = true;
+};
+
+}  // namespace demo
