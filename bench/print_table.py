@@ -7,12 +7,14 @@ From the repository root:
     cmake --build build-bench -j 2
     python3 bench/print_table.py --build-dir build-bench --repetitions 5 --json-dir build-bench/bench-json
 
-It runs bench_table_5_1_{reference,instrumented,optimized} and bench_c3ga_kernels_{...}
-(found under --build-dir) with --benchmark_repetitions=N --benchmark_format=json and prints
-Markdown tables: CPU seconds per 10,000,000 calls (median over the repetitions), the
-reference / optimized ratio, the instrumented / reference overhead, and the thesis's figures (seconds of user time for 10,000,000
-calls). --json-dir keeps the raw JSON; --from-json DIR prints the tables from a kept run
-without running anything. Python 3 standard library only.
+It runs bench_table_5_1_{reference,instrumented,optimized}, bench_c3ga_kernels_{...} and
+bench_world_step_{...} (found under --build-dir) with --benchmark_repetitions=N
+--benchmark_format=json and prints Markdown tables: CPU seconds per 10,000,000 calls (median
+over the repetitions), the reference / optimized ratio, the instrumented / reference overhead,
+and the thesis's figures (seconds of user time for 10,000,000 calls); then the engine's step
+time for N falling spheres with its split into phases. --tables algebra|engine picks one part.
+--json-dir keeps the raw JSON; --from-json DIR prints the tables from a kept run without
+running anything. Python 3 standard library only.
 """
 
 import argparse
@@ -22,7 +24,14 @@ import sys
 from pathlib import Path
 
 VARIANTS = ("reference", "instrumented", "optimized")
-EXECUTABLES = ("bench_table_5_1", "bench_c3ga_kernels")
+ALGEBRA_EXECUTABLES = ("bench_table_5_1", "bench_c3ga_kernels")
+ENGINE_EXECUTABLES = ("bench_world_step",)
+ENGINE_PHASES = (
+    ("integration_ms", "integration"),
+    ("pairs_ms", "pairs"),
+    ("narrow_phase_ms", "narrow phase"),
+    ("response_ms", "response"),
+)
 
 # Table 5.1 of the thesis: user seconds for 10,000,000 calls.
 THESIS_COLUMNS = ("GATL", "Gaigen 2", "Gaigen 2 + profiling")
@@ -74,12 +83,13 @@ def run(executable, args):
     return subprocess.run(command, check=True, stdout=subprocess.PIPE, text=True).stdout
 
 
-def load_results(args):
-    """Returns {(variant, benchmark name): {"median": seconds, "cv": fraction}}, a JSON context
-    and the number of repetitions."""
-    results, context, repetitions = {}, {}, set()
+def load_results(args, executables):
+    """Returns {(variant, benchmark name): {"median": seconds, "cv": fraction}}, for the
+    engine {(variant, benchmark name): {"median": entry, "cv": entry}} with Google Benchmark's
+    JSON entries, a JSON context and the number of repetitions."""
+    results, engine, context, repetitions = {}, {}, {}, set()
     for variant in VARIANTS:
-        for name in EXECUTABLES:
+        for name in executables:
             file_name = f"{name}_{variant}.json"
             if args.from_json:
                 text = (Path(args.from_json) / file_name).read_text()
@@ -98,9 +108,12 @@ def load_results(args):
                 if aggregate not in ("median", "cv"):
                     continue
                 repetitions.add(b["repetitions"])
+                if name in ENGINE_EXECUTABLES:
+                    engine.setdefault((variant, b["run_name"]), {})[aggregate] = b
+                    continue
                 # The cv of s_per_10M is a fraction; its median is in seconds.
                 results.setdefault((variant, b["run_name"]), {})[aggregate] = b["s_per_10M"]
-    return results, context, "/".join(str(r) for r in sorted(repetitions))
+    return results, engine, context, "/".join(str(r) for r in sorted(repetitions))
 
 
 def seconds(cell):
@@ -168,6 +181,56 @@ def kernel_table(results, repetitions):
     return lines
 
 
+def engine_run_name(results, variant, spheres):
+    """The run name of world_step for this many spheres (it carries the iteration count)."""
+    prefix = f"world_step/falling_spheres/{spheres}/"
+    for found_variant, name in results:
+        if found_variant == variant and name.startswith(prefix):
+            return name
+    return None
+
+
+def milliseconds(value):
+    return f"{value:.3f}" if value >= 0.01 else f"{value:.4f}"
+
+
+def engine_table(engine, repetitions):
+    lines = [
+        f"#### Engine step: N spheres falling into a box, wall milliseconds per step (median of {repetitions})",
+        "",
+        "| N | contacts | phase | reference | instrumented | optimized | ref / opt | instr / ref |",
+        "|---:|---:|---|---:|---:|---:|---:|---:|",
+    ]
+    for spheres in (10, 100, 1000):
+        cells = {}
+        for variant in VARIANTS:
+            name = engine_run_name(engine, variant, spheres)
+            if name and "median" in engine[(variant, name)]:
+                cells[variant] = engine[(variant, name)]
+        if not cells:
+            continue
+        contacts = next(iter(cells.values()))["median"]["contacts"]
+        rows = [("step (total)", lambda b: b["real_time"], "cv")] + [
+            (label, lambda b, key=key: b[key], None) for key, label in ENGINE_PHASES
+        ]
+        for index, (label, value, show_cv) in enumerate(rows):
+            times = {v: value(c["median"]) for v, c in cells.items()}
+            shown = []
+            for variant in VARIANTS:
+                if variant not in times:
+                    shown.append("n/a")
+                    continue
+                text = milliseconds(times[variant])
+                if show_cv and "cv" in cells[variant]:
+                    text += f" ±{100 * cells[variant]['cv']['real_time']:.0f}%"
+                shown.append(text)
+            ref, ins, opt = (times.get(v) for v in VARIANTS)
+            by = lambda a, b: f"{a / b:.1f}x" if a and b else "n/a"
+            row = [str(spheres) if index == 0 else "", f"{contacts:.0f}" if index == 0 else "", label]
+            lines.append("| " + " | ".join(row + shown + [by(ref, opt), by(ins, ref)]) + " |")
+    return lines
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     source = parser.add_mutually_exclusive_group()
@@ -177,13 +240,23 @@ def main():
     parser.add_argument("--min-time", help="passed as --benchmark_min_time (e.g. 0.5, or 0.5s for benchmark >= 1.8)")
     parser.add_argument("--filter", help="passed as --benchmark_filter (a regex on the benchmark names)")
     parser.add_argument("--json-dir", metavar="DIR", help="keep each executable's JSON output here")
+    parser.add_argument("--tables", choices=("all", "algebra", "engine"), default="all",
+                        help="which tables to run and print (default all)")
     args = parser.parse_args()
 
-    results, context, repetitions = load_results(args)
+    executables = ()
+    if args.tables in ("all", "algebra"):
+        executables += ALGEBRA_EXECUTABLES
+    if args.tables in ("all", "engine"):
+        executables += ENGINE_EXECUTABLES
+    results, engine, context, repetitions = load_results(args, executables)
     lines = []
-    for algebra in ("e3ga", "c3ga"):
-        lines += table_5_1(results, algebra, repetitions) + [""]
-    lines += kernel_table(results, repetitions) + [""]
+    if args.tables in ("all", "algebra"):
+        for algebra in ("e3ga", "c3ga"):
+            lines += table_5_1(results, algebra, repetitions) + [""]
+        lines += kernel_table(results, repetitions) + [""]
+    if args.tables in ("all", "engine"):
+        lines += engine_table(engine, repetitions) + [""]
     lines.append(
         f"Machine: {context.get('num_cpus', '?')} CPUs at {context.get('mhz_per_cpu', '?')} MHz, "
         f"Google Benchmark library reports build type {context.get('library_build_type', '?')} "

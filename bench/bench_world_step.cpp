@@ -1,0 +1,73 @@
+// The engine's step time: N spheres falling into a box (the shared scene,
+// scenes::falling_spheres_in_box), N = 10, 100, 1000, on the algebra variant
+// this executable is built against. One iteration is one world::step; the
+// counters split its wall time into the world's phases (step_timings):
+// integration, pairs, narrow phase (the conformal meets) and response.
+//
+// Every repetition rebuilds the scene and runs the same warm-up and the same
+// number of steps, so each variant times exactly the same sequence of states
+// (the engine is deterministic) and their medians compare like for like.
+// bench/print_table.py --engine prints the README's table from the JSON.
+#include <benchmark/benchmark.h>
+
+#include <cstdint>
+#include <string>
+
+#include "bench_common.hpp"
+#include "gaphys/scenes.hpp"
+
+namespace {
+
+using gaphys::real;
+
+// Warm-up steps before timing: 0.2 s, so the lowest layer has landed and
+// the contacts the response handles are there.
+constexpr int warm_up_steps = 48;
+
+// Steps timed per repetition: all pairs makes a step O(N^2), so fewer steps
+// for larger N keep a reference-variant run of N = 1000 to minutes.
+std::int64_t timed_steps(int spheres) {
+  if (spheres <= 10) return 480;
+  if (spheres <= 100) return 96;
+  return 4;
+}
+
+void world_step(benchmark::State& state) {
+  const int spheres = static_cast<int>(state.range(0));
+  gaphys::world w = gaphys::scenes::falling_spheres_in_box(spheres);
+  for (int i = 0; i < warm_up_steps; ++i) w.step(gaphys::scenes::time_step);
+
+  gaphys::step_timings total;
+  double contacts = 0;
+  for (auto _ : state) {
+    w.step(gaphys::scenes::time_step);
+    const gaphys::step_timings& t = w.last_step_timings();
+    total.integration += t.integration;
+    total.pairs += t.pairs;
+    total.narrow_phase += t.narrow_phase;
+    total.response += t.response;
+    contacts += static_cast<double>(w.contacts().size());
+  }
+  // Milliseconds per step in each phase, and the mean contact count.
+  const double steps = static_cast<double>(state.iterations());
+  state.counters["integration_ms"] = 1e3 * total.integration / steps;
+  state.counters["pairs_ms"] = 1e3 * total.pairs / steps;
+  state.counters["narrow_phase_ms"] = 1e3 * total.narrow_phase / steps;
+  state.counters["response_ms"] = 1e3 * total.response / steps;
+  state.counters["contacts"] = contacts / steps;
+  state.counters["bodies"] = static_cast<double>(w.body_count());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return gaphys_bench::run_main(argc, argv, [] {
+    for (int spheres : {10, 100, 1000}) {
+      benchmark::RegisterBenchmark("world_step/falling_spheres", world_step)
+          ->Arg(spheres)
+          ->Iterations(timed_steps(spheres))
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+    }
+  });
+}

@@ -1,0 +1,84 @@
+#include "gaphys_adapter.hpp"
+
+#include <optional>
+
+#include "gaphys/world.hpp"
+
+namespace gaphys_compare {
+
+namespace {
+
+gaphys::vector to_gaphys(const vec3& v) { return {v.x, v.y, v.z}; }
+vec3 to_vec3(const gaphys::vector& v) { return {v.c[0], v.c[1], v.c[2]}; }
+
+// Rotation by θ about the unit axis n: R = cos(θ/2) - sin(θ/2) n I, where
+// n I = nx e23 + ny e31 + nz e12 (docs/engine.md's pairing of planes and
+// axes). The quaternion is cos(θ/2) + sin(θ/2) n, so with R's coordinates
+// (1, e12, e13, e23) and e31 = -e13: x = -e23, y = e13, z = -e12. |q| is
+// then sqrt(R ~R), the rotor's norm.
+quat to_quat(const gaphys::rotor& r) { return {r.c[0], -r.c[3], r.c[2], -r.c[1]}; }
+
+// ω = ωx e23 + ωy e31 + ωz e12 as a bivector with coordinates (e12, e13, e23).
+gaphys::bivector to_bivector(const vec3& w) { return {w.z, -w.y, w.x}; }
+vec3 axis_of(const gaphys::bivector& b) { return {b.c[2], -b.c[1], b.c[0]}; }
+
+class gaphys_adapter final : public engine_adapter {
+ public:
+  void build(const scene& s) override {
+    gaphys::world_settings settings;  // defaults: 20 sweeps, threshold 0.5 m/s
+    settings.gravity = to_gaphys(s.gravity);
+    world_.emplace(settings);
+    for (const plane_description& p : s.planes) {
+      gaphys::body_definition plane;
+      plane.is_static = true;
+      plane.shape = gaphys::shape::plane(to_gaphys(p.normal), p.offset).with_restitution(p.restitution);
+      world_->create_body(plane);
+    }
+    first_body_ = s.planes.size();
+    for (const body_description& b : s.bodies) {
+      gaphys::body_definition d;
+      d.is_static = b.is_static;
+      d.mass = b.is_static ? 1 : b.mass;
+      d.inertia = gaphys::inertia::principal(b.inertia.x, b.inertia.y, b.inertia.z);
+      d.position = to_gaphys(b.position);
+      d.velocity = to_gaphys(b.velocity);
+      d.angular_velocity = to_bivector(b.angular_velocity);
+      if (b.radius > 0) d.shape = gaphys::shape::sphere(b.radius).with_restitution(b.restitution);
+      world_->create_body(d);
+    }
+  }
+
+  void step(double h) override { world_->step(h); }
+
+  body_state state(std::size_t i) const override {
+    const gaphys::body& b = world_->at(first_body_ + i);
+    return {to_vec3(b.position()), to_vec3(b.velocity()), axis_of(b.angular_velocity()),
+            to_quat(b.attitude())};
+  }
+
+ private:
+  std::optional<gaphys::world> world_;
+  std::size_t first_body_ = 0;
+};
+
+}  // namespace
+
+engine gaphys_engine() {
+  const gaphys::world_settings defaults;
+  return {"gaphys",
+          "this tree",
+          "double",
+          {{"world", "gaphys::world, default world_settings", "the engine as documented"},
+           {"solver sweeps", std::to_string(defaults.solver_iterations), "default"},
+           {"restitution", "max(e_a, e_b) per contact, threshold " +
+                               std::to_string(defaults.restitution_threshold).substr(0, 4) + " m/s",
+            "default; the scenes give every shape the same e"},
+           {"position correction",
+            "20% of depth beyond 0.5 mm slop per step, positions only",
+            "default; adds no kinetic energy"},
+           {"friction / damping", "none / 0", "gaphys has no friction; default damping 0"},
+           {"attitude", "rotor, |q| = sqrt(R ~R)", "read as a quaternion for the harness"}},
+          [] { return std::make_unique<gaphys_adapter>(); }};
+}
+
+}  // namespace gaphys_compare

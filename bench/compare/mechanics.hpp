@@ -1,0 +1,31 @@
+// Energies, momenta and overlaps computed from body states, one way for every
+// engine: the engines' own energy reports (where they have one) differ in
+// what they include, so the harness never asks for them.
+#pragma once
+
+#include <vector>
+
+#include "engine_adapter.hpp"
+#include "scene.hpp"
+
+namespace gaphys_compare {
+
+// World-frame angular momentum about the centre of mass: I_w ω with
+// I_w = R I R^T, R from the normalized attitude.
+vec3 angular_momentum(const body_description& body, const body_state& state);
+// ½ m v² + ½ ω · I_w ω; zero for static bodies.
+double kinetic_energy(const body_description& body, const body_state& state);
+
+// Sums over the scene's dynamic bodies.
+vec3 total_momentum(const scene& s, const std::vector<body_state>& states);
+double total_kinetic_energy(const scene& s, const std::vector<body_state>& states);
+
+// The deepest overlap of any sphere with a plane or another sphere (m,
+// >= 0): r - (n · x - offset) for a plane, r_a + r_b - |x_a - x_b| for two
+// spheres. All pairs: for the small scenes it is used on.
+double deepest_overlap(const scene& s, const std::vector<body_state>& states);
+
+// Every body's state.
+std::vector<body_state> states_of(const engine_adapter& adapter, const scene& s);
+
+}  // namespace gaphys_compare

@@ -1,0 +1,119 @@
+#include "scenes.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "gaphys/scenes.hpp"
+
+namespace gaphys_compare {
+
+namespace {
+
+vec3 to_vec3(const gaphys::vector& v) { return {v.c[0], v.c[1], v.c[2]}; }
+
+// gaphys keeps angular velocity as a bivector Ω = ωx e23 + ωy e31 + ωz e12
+// (docs/engine.md); its coordinates are (e12, e13, e23) and e31 = -e13.
+vec3 axis_of(const gaphys::bivector& b) { return {b.c[2], -b.c[1], b.c[0]}; }
+
+// A short label for a scene parameter: 0.3, 0.95, 1.
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+body_description sphere(double radius, double mass, const vec3& position, const vec3& velocity,
+                        double restitution) {
+  const double moment = 0.4 * mass * radius * radius;  // solid sphere
+  body_description b;
+  b.mass = mass;
+  b.radius = radius;
+  b.inertia = {moment, moment, moment};
+  b.position = position;
+  b.velocity = velocity;
+  b.restitution = restitution;
+  return b;
+}
+
+}  // namespace
+
+scene from_gaphys(const gaphys::world& world, const std::string& name) {
+  scene s;
+  s.name = name;
+  s.gravity = to_vec3(world.settings().gravity);
+  for (const gaphys::body& b : world.bodies()) {
+    const gaphys::rotor& r = b.attitude();
+    if (r.c[0] != 1 || r.c[1] != 0 || r.c[2] != 0 || r.c[3] != 0) {
+      throw std::invalid_argument(name + ": a body does not start at the identity attitude");
+    }
+    const auto& shape = b.shape();
+    if (shape && shape->kind() == gaphys::shape_kind::plane) {
+      const gaphys::placed_shape placed = gaphys::place(*shape, b.position(), r);
+      s.planes.push_back({to_vec3(placed.normal), placed.offset, shape->restitution()});
+      continue;
+    }
+    if (shape && shape->kind() != gaphys::shape_kind::sphere) {
+      throw std::invalid_argument(name + ": only spheres and planes have a neutral description");
+    }
+    const auto& rows = b.body_inertia().rows();
+    if (rows[1] != 0 || rows[2] != 0 || rows[3] != 0 || rows[5] != 0 || rows[6] != 0 || rows[7] != 0) {
+      throw std::invalid_argument(name + ": inertia is not diagonal in the body frame");
+    }
+    body_description d;
+    d.is_static = b.is_static();
+    d.mass = b.is_static() ? 0 : b.mass();
+    d.radius = shape ? shape->radius() : 0;
+    d.inertia = {rows[0], rows[4], rows[8]};
+    d.position = to_vec3(b.position());
+    d.velocity = to_vec3(b.velocity());
+    d.angular_velocity = axis_of(b.angular_velocity());
+    d.restitution = shape ? shape->restitution() : 0;
+    s.bodies.push_back(d);
+  }
+  return s;
+}
+
+scene spinning_body() { return from_gaphys(gaphys::scenes::spinning_body(), "spinning body"); }
+
+scene two_spheres(double offset) {
+  return from_gaphys(gaphys::scenes::elastic_collision(offset),
+                     offset == 0 ? "head-on" : "oblique " + number(offset));
+}
+
+scene newtons_cradle() {
+  scene s;
+  s.name = "cradle 5";
+  s.bodies.push_back(sphere(0.5, 1, {-2, 0, 0}, {1, 0, 0}, 1));
+  for (int i = 0; i < 4; ++i) s.bodies.push_back(sphere(0.5, 1, {double(i), 0, 0}, {}, 1));
+  return s;
+}
+
+scene bouncing_sphere(double e) {
+  return from_gaphys(gaphys::scenes::bouncing_sphere(e), "e " + number(e));
+}
+
+scene sphere_column(int count) {
+  return from_gaphys(gaphys::scenes::sphere_column(count), "K " + number(count));
+}
+
+scene projectile(double speed, bool sphere_target) {
+  constexpr double radius = 0.1, restitution = 0.5;
+  scene s;
+  s.name = sphere_target ? "sphere target" : "plane target";
+  if (sphere_target) {
+    body_description target = sphere(radius, 1, {}, {}, restitution);
+    target.is_static = true;
+    s.bodies.push_back(target);
+  } else {
+    s.planes.push_back({{0, 0, 1}, 0, restitution});
+  }
+  s.bodies.push_back(sphere(radius, 1, {0, 0, 1}, {0, 0, -speed}, restitution));
+  return s;
+}
+
+scene falling_spheres(int count) {
+  return from_gaphys(gaphys::scenes::falling_spheres_in_box(count),
+                     "N " + number(count));
+}
+
+}  // namespace gaphys_compare

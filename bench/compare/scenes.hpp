@@ -1,0 +1,45 @@
+// The scenes the metrics run. Where gaphys::scenes already has one it is
+// converted from that world, so the comparison runs exactly the scene the
+// gaphys tests and benchmarks run (same sizes, same jittered grid).
+#pragma once
+
+#include "scene.hpp"
+
+namespace gaphys {
+class world;
+}  // namespace gaphys
+
+namespace gaphys_compare {
+
+// The bodies, planes and gravity of a gaphys world. Throws
+// std::invalid_argument for what the neutral description cannot hold
+// (a non-identity attitude, a non-diagonal inertia, a point shape).
+scene from_gaphys(const gaphys::world& world, const std::string& name);
+
+// M1: principal inertia (1, 2, 3) kg m^2 spun at (1, 2, 3) rad/s, no gravity.
+scene spinning_body();
+
+// M2: 1 kg and 2 kg spheres (r 0.5, e 1) meeting at 3 and -1 m/s, their
+// paths offset by `offset` (0: head-on), no gravity.
+scene two_spheres(double offset);
+
+// M2: five 1 kg spheres (r 0.5, e 1) on the x axis, the last four touching,
+// the first 1 m away and moving at 1 m/s towards them, no gravity.
+scene newtons_cradle();
+
+// M3: a sphere (r 0.5, 1 kg) whose bottom is 2 m above a floor at z = 0,
+// both with restitution e, under gravity.
+scene bouncing_sphere(double e);
+
+// M4: count spheres (r 0.5, e 0) stacked in a tube of four walls.
+scene sphere_column(int count);
+
+// M5: a sphere (r 0.1, 1 kg, e 0.5) 1 m above its target moving down at
+// `speed`, no gravity; it is the scene's last body. The target is the floor plane z = 0 or, for
+// `sphere_target`, a static sphere (r 0.1) centred at the origin.
+scene projectile(double speed, bool sphere_target);
+
+// M6: count spheres (r 0.1, e 0.3) falling into an open box of five planes.
+scene falling_spheres(int count);
+
+}  // namespace gaphys_compare
