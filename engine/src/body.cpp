@@ -96,11 +96,13 @@ void body::apply_torque(const bivector& torque) {
 
 bivector body::world_inertia(const bivector& b) const {
   if (is_static_) return bivector{};
+  if (inertia_.is_isotropic()) return inertia_.isotropic_moment() * b;
   return e3ga::apply(attitude_, inertia_(e3ga::apply(e3ga::reverse(attitude_), b)));
 }
 
 bivector body::world_inverse_inertia(const bivector& l) const {
   if (is_static_) return bivector{};
+  if (inertia_.is_isotropic()) return (1 / inertia_.isotropic_moment()) * l;
   return e3ga::apply(attitude_, inertia_.inverse(e3ga::apply(e3ga::reverse(attitude_), l)));
 }
 

@@ -25,6 +25,17 @@ real support_height(const placed_shape& s, const vector& direction) {
   return 0;
 }
 
+// Two spheres with the same centre and radius: their duals are equal, the
+// meet is zero and has no round to read. They overlap wholly; the normal is
+// arbitrary (e3), so the solver separates them deterministically.
+std::optional<contact_geometry> coincident_spheres(const placed_shape& a, const placed_shape& b) {
+  if (a.kind != shape_kind::sphere || b.kind != shape_kind::sphere) return std::nullopt;
+  if (!(c3ga::scp(a.dual, b.dual) > 0)) return std::nullopt;
+  const vector normal{0, 0, 1};
+  const real depth = support_height(a, -normal) + support_height(b, normal);
+  return contact_geometry{a.center, normal, depth, a.radius * a.radius};
+}
+
 }  // namespace
 
 placed_shape place(const shape& s, const vector& position, const rotor& attitude) {
@@ -64,10 +75,10 @@ std::optional<contact_geometry> find_contact(const placed_shape& a, const placed
   // the squared radius of a round is C Ĉ / (ni ⌋ C)^2 (Dorst et al. 2007,
   // table 14.1). > 0: interpenetrating, 0: touching, < 0: the surfaces do not
   // meet. A zero weight means no finite intersection (parallel planes, a
-  // point and a plane).
+  // point and a plane) or no intersection to speak of (identical spheres).
   const mv weight = c3ga::lc(ni, meet);
   const real weight_square = c3ga::scp(weight, weight);
-  if (!(std::fabs(weight_square) > 0)) return std::nullopt;
+  if (!(std::fabs(weight_square) > 0)) return coincident_spheres(a, b);
   const real squared_radius = c3ga::scp(meet, c3ga::involute(meet)) / weight_square;
   // Surfaces that do not meet are apart, or one solid holds the other whole
   // (a sphere sunk below a plane, or inside a bigger sphere). The inner

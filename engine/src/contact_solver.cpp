@@ -1,6 +1,7 @@
 #include "contact_solver.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace gaphys {
@@ -13,40 +14,51 @@ real normal_speed(const body& a, const body& b, const contact& c) {
   return e3ga::scp(a.velocity_at(p) - b.velocity_at(p), c.geometry.normal);
 }
 
-// n . (r ⌋ I⁻¹(r ∧ n)): how much a unit impulse along n at offset r changes the
-// normal speed of that point through the body's rotation.
-real angular_term(const body& x, const vector& r, const vector& n) {
-  return e3ga::scp(n, e3ga::lc(r, x.world_inverse_inertia(e3ga::op(r, n))));
-}
-
 }  // namespace
 
-void contact_solver::apply_impulse(body& a, body& b, const vector& normal, const constraint& k,
-                                   real j) {
-  const vector impulse = j * normal;
-  a.velocity_ = a.velocity_ + a.inverse_mass_ * impulse;
-  a.angular_velocity_ = a.angular_velocity_ + a.world_inverse_inertia(e3ga::op(k.offset_a, impulse));
-  b.velocity_ = b.velocity_ - b.inverse_mass_ * impulse;
-  b.angular_velocity_ = b.angular_velocity_ - b.world_inverse_inertia(e3ga::op(k.offset_b, impulse));
+// The same normal speed from the constraint's precomputed terms: with
+// v(p) = v + r ⌋ Ω, n . (r ⌋ Ω) = (n ∧ r) ⌋ Ω, a scalar of two bivectors.
+real contact_solver::normal_speed(const body& a, const body& b, const constraint& k) {
+  return e3ga::scp(k.normal, a.velocity_ - b.velocity_) + e3ga::lc(k.arm_a, a.angular_velocity_) -
+         e3ga::lc(k.arm_b, b.angular_velocity_);
+}
+
+// j n on A and -j n on B at the contact point: Δv = j n / m and
+// ΔΩ = I⁻¹(r ∧ j n) = j I⁻¹(r ∧ n), precomputed as turn.
+void contact_solver::apply_impulse(body& a, body& b, const constraint& k, real j) {
+  a.velocity_ = a.velocity_ + (j * a.inverse_mass_) * k.normal;
+  a.angular_velocity_ = a.angular_velocity_ + j * k.turn_a;
+  b.velocity_ = b.velocity_ - (j * b.inverse_mass_) * k.normal;
+  b.angular_velocity_ = b.angular_velocity_ - j * k.turn_b;
+}
+
+// The terms of one contact that stay fixed while the sweeps run (attitudes do
+// not change, so neither do the world inertias).
+contact_solver::constraint contact_solver::make_constraint(const body& a, const body& b,
+                                                           const contact& c) const {
+  const vector& n = c.geometry.normal;
+  constraint k;
+  k.normal = n;
+  const vector offset_a = c.geometry.point - a.position();
+  const vector offset_b = c.geometry.point - b.position();
+  k.arm_a = e3ga::op(n, offset_a);
+  k.arm_b = e3ga::op(n, offset_b);
+  k.turn_a = a.world_inverse_inertia(e3ga::op(offset_a, n));
+  k.turn_b = b.world_inverse_inertia(e3ga::op(offset_b, n));
+  // The denominator of eq. 3.20 / 4.7, with the inertias as linear maps:
+  // 1/mA + 1/mB + n . (rA ⌋ I_A⁻¹(rA ∧ n)) + n . (rB ⌋ I_B⁻¹(rB ∧ n)).
+  k.effective_mass_inverse = a.inverse_mass() + b.inverse_mass() + e3ga::lc(k.arm_a, k.turn_a) +
+                             e3ga::lc(k.arm_b, k.turn_b);
+  const real approach = gaphys::normal_speed(a, b, c);
+  k.target_speed = approach < -settings_.restitution_threshold ? -c.restitution * approach : real(0);
+  return k;
 }
 
 void contact_solver::solve_velocities(std::vector<body>& bodies, std::vector<contact>& contacts,
                                       const std::vector<contact>& previous) {
   constraints_.clear();
   for (const contact& c : contacts) {
-    const body& a = bodies[c.body_a];
-    const body& b = bodies[c.body_b];
-    const vector& n = c.geometry.normal;
-    constraint k;
-    k.offset_a = c.geometry.point - a.position();
-    k.offset_b = c.geometry.point - b.position();
-    // The denominator of eq. 3.20 / 4.7, with the inertias as linear maps.
-    k.effective_mass_inverse = a.inverse_mass() + b.inverse_mass() +
-                               angular_term(a, k.offset_a, n) + angular_term(b, k.offset_b, n);
-    const real approach = normal_speed(a, b, c);
-    k.target_speed =
-        approach < -settings_.restitution_threshold ? -c.restitution * approach : real(0);
-    constraints_.push_back(k);
+    constraints_.push_back(make_constraint(bodies[c.body_a], bodies[c.body_b], c));
   }
 
   // Warm start: both lists are sorted by body pair, so one merge finds the
@@ -62,24 +74,30 @@ void contact_solver::solve_velocities(std::vector<body>& bodies, std::vector<con
     constraint& k = constraints_[i];
     if (!(k.effective_mass_inverse > 0)) continue;
     k.accumulated = old->impulse;
-    apply_impulse(bodies[c.body_a], bodies[c.body_b], c.geometry.normal, k, k.accumulated);
+    apply_impulse(bodies[c.body_a], bodies[c.body_b], k, k.accumulated);
   }
 
   // Sequential impulses: each sweep drives every contact to its target with
   // the impulse j n on A and -j n on B; the total per contact stays >= 0
   // (contacts push, never pull).
+  // A sweep that changes no contact's normal speed by more than the
+  // tolerance has converged, and ends the solve early.
   for (int sweep = 0; sweep < settings_.solver_iterations; ++sweep) {
+    real largest_change = 0;
     for (std::size_t i = 0; i < contacts.size(); ++i) {
       const contact& c = contacts[i];
       constraint& k = constraints_[i];
       if (!(k.effective_mass_inverse > 0)) continue;
       body& a = bodies[c.body_a];
       body& b = bodies[c.body_b];
-      const real wanted = (k.target_speed - normal_speed(a, b, c)) / k.effective_mass_inverse;
+      const real wanted = (k.target_speed - normal_speed(a, b, k)) / k.effective_mass_inverse;
       const real total = std::max(k.accumulated + wanted, real(0));
-      apply_impulse(a, b, c.geometry.normal, k, total - k.accumulated);
+      const real j = total - k.accumulated;
+      apply_impulse(a, b, k, j);
       k.accumulated = total;
+      largest_change = std::max(largest_change, std::fabs(j) * k.effective_mass_inverse);
     }
+    if (largest_change <= settings_.solver_tolerance) break;
   }
   for (std::size_t i = 0; i < contacts.size(); ++i) contacts[i].impulse = constraints_[i].accumulated;
 }

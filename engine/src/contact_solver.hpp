@@ -30,14 +30,17 @@ class contact_solver {
 
  private:
   struct constraint {
-    vector offset_a, offset_b;  // contact point minus each centre of mass
+    vector normal;            // n, from B to A
+    bivector arm_a, arm_b;    // n ∧ r for each body's offset r to the contact point
+    bivector turn_a, turn_b;  // I⁻¹(r ∧ n): the change of Ω per unit impulse
     real effective_mass_inverse;
     real target_speed;  // normal separation speed wanted after the impulses
     real accumulated = 0;
   };
 
-  // j n on A and -j n on B at the contact point.
-  static void apply_impulse(body& a, body& b, const vector& normal, const constraint& k, real j);
+  constraint make_constraint(const body& a, const body& b, const contact& c) const;
+  static real normal_speed(const body& a, const body& b, const constraint& k);
+  static void apply_impulse(body& a, body& b, const constraint& k, real j);
 
   const world_settings& settings_;
   std::vector<constraint> constraints_;

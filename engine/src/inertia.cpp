@@ -27,6 +27,12 @@ matrix inverse_of(const matrix& m) {
 
 }  // namespace
 
+inertia::inertia(const matrix& rows, const matrix& inverse)
+    : tensor_(rows),
+      inverse_(inverse),
+      isotropic_(rows[1] == 0 && rows[2] == 0 && rows[3] == 0 && rows[5] == 0 && rows[6] == 0 &&
+                 rows[7] == 0 && rows[0] == rows[4] && rows[0] == rows[8]) {}
+
 inertia inertia::tensor(const matrix& m) {
   for (real x : m) detail::require_finite(x, "inertia tensor entry");
   const real scale = std::fabs(m[0]) + std::fabs(m[4]) + std::fabs(m[8]);

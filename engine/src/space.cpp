@@ -4,7 +4,14 @@
 
 namespace gaphys {
 
-void space::candidate_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs) const {
+void space::candidate_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs) {
+  // The grid declines coordinates too far out for integer cells.
+  if (kind_ == broad_phase_kind::uniform_grid && grid_.find_pairs(bodies, shaped_bodies_, pairs)) return;
+  all_pairs(bodies, pairs);
+}
+
+// The thesis's candidates: every two shaped bodies not both static.
+void space::all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs) const {
   pairs.clear();
   for (std::size_t i = 0; i < shaped_bodies_.size(); ++i) {
     const std::size_t a = shaped_bodies_[i];

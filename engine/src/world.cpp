@@ -16,11 +16,15 @@ const world_settings& validated(const world_settings& s) {
   detail::require_non_negative(s.linear_damping, "linear damping");
   detail::require_non_negative(s.angular_damping, "angular damping");
   if (s.solver_iterations < 1) detail::reject("solver iterations must be >= 1");
+  detail::require_non_negative(s.solver_tolerance, "solver tolerance");
   detail::require_non_negative(s.restitution_threshold, "restitution threshold");
   if (!(s.position_correction >= 0 && s.position_correction <= 1)) {
     detail::reject("position correction must be in [0, 1] (got ", s.position_correction, ")");
   }
   detail::require_non_negative(s.linear_slop, "linear slop");
+  if (s.broad_phase != broad_phase_kind::uniform_grid && s.broad_phase != broad_phase_kind::all_pairs) {
+    detail::reject("broad phase must be uniform_grid or all_pairs");
+  }
   return s;
 }
 
@@ -32,7 +36,8 @@ double seconds(clock::time_point from, clock::time_point to) {
 
 }  // namespace
 
-world::world(const world_settings& settings) : settings_(validated(settings)) {}
+world::world(const world_settings& settings)
+    : settings_(validated(settings)), space_(settings.broad_phase) {}
 
 body_id world::create_body(const body_definition& definition) {
   bodies_.emplace_back(definition);  // body's constructor validates, then nothing is added
@@ -60,6 +65,13 @@ void world::set_damping(real linear, real angular) {
   detail::require_non_negative(angular, "angular damping");
   settings_.linear_damping = linear;
   settings_.angular_damping = angular;
+}
+
+void world::set_broad_phase(broad_phase_kind kind) {
+  world_settings changed = settings_;
+  changed.broad_phase = kind;
+  settings_ = validated(changed);
+  space_.set_broad_phase(kind);
 }
 
 void world::step(real h) {
@@ -122,14 +134,16 @@ void world::integrate_positions(real h) {
     const bivector momentum = b.world_inertia(b.angular_velocity_);
     const rotor start = b.attitude_;
     bivector omega = b.angular_velocity_;
-    for (int sweep = 0; sweep < midpoint_sweeps; ++sweep) {
+    // An isotropic body's Ω is fixed with L: no midpoint to look for.
+    const int sweeps = b.inertia_.is_isotropic() ? 0 : midpoint_sweeps;
+    for (int sweep = 0; sweep < sweeps; ++sweep) {
       const rotor midpoint = e3ga::gp(e3ga::exp((-h / 4) * omega), start);
       b.attitude_ = midpoint / e3ga::norm(midpoint);
       omega = b.world_inverse_inertia(momentum);
     }
     const rotor attitude = e3ga::gp(e3ga::exp((-h / 2) * omega), start);
     b.attitude_ = attitude / e3ga::norm(attitude);
-    b.angular_velocity_ = b.world_inverse_inertia(momentum);
+    if (sweeps > 0) b.angular_velocity_ = b.world_inverse_inertia(momentum);
   }
 }
 

@@ -169,6 +169,9 @@ TEST_F(bad_input_test, world_settings_are_checked) {
   s.solver_iterations = 0;
   EXPECT_TRUE(rejects_settings(s, "solver iterations"));
   s = {};
+  s.solver_tolerance = -1e-6;
+  EXPECT_TRUE(rejects_settings(s, "solver tolerance"));
+  s = {};
   s.position_correction = 1.5;
   EXPECT_TRUE(rejects_settings(s, "position correction"));
   s = {};
@@ -177,6 +180,9 @@ TEST_F(bad_input_test, world_settings_are_checked) {
   s = {};
   s.restitution_threshold = -1;
   EXPECT_TRUE(rejects_settings(s, "restitution threshold"));
+  s = {};
+  s.broad_phase = static_cast<broad_phase_kind>(7);
+  EXPECT_TRUE(rejects_settings(s, "broad phase"));
 }
 
 }  // namespace

@@ -105,6 +105,23 @@ TEST_F(contact_test, a_sphere_inside_another_is_a_deep_contact) {
   }
 }
 
+// Bodies placed exactly on top of each other: identical spheres (whose meet
+// is zero) and concentric ones (no line of centres) still make a contact
+// with a unit normal and the full overlap as depth, never NaN.
+TEST_F(contact_test, coincident_and_concentric_spheres_are_deep_contacts) {
+  for (int trial = 0; trial < 50; ++trial) {
+    const vector c = random_point(5);
+    const real ra = uniform(0.05, 2), rb = uniform(0.05, 2);
+    for (const real other : {ra, rb}) {
+      const auto g = find_contact(sphere_at(c, ra), sphere_at(c, other));
+      ASSERT_TRUE(g) << "trial " << trial << " radii " << ra << ", " << other;
+      EXPECT_NEAR(length(g->normal), 1, 1e-12);
+      EXPECT_NEAR(g->depth, ra + other, 1e-9);
+      EXPECT_TRUE(near(g->point, c, 1e-9 * (1 + length(c))));
+    }
+  }
+}
+
 TEST_F(contact_test, swapping_the_spheres_flips_the_normal_only) {
   for (int trial = 0; trial < 100; ++trial) {
     const real ra = uniform(0.05, 2), rb = uniform(0.05, 2);

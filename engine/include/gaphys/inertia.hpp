@@ -31,13 +31,19 @@ class inertia {
   bivector inverse(const bivector& l) const { return apply(inverse_, l); }
   const std::array<real, 9>& rows() const { return tensor_; }
 
+  // The same moment about every axis (a sphere's): I(B) = k B in any frame,
+  // so a body need not turn B into its own frame, and Ω = L / k is fixed
+  // while L is.
+  bool is_isotropic() const { return isotropic_; }
+  real isotropic_moment() const { return tensor_[0]; }
+
  private:
-  inertia(const std::array<real, 9>& rows, const std::array<real, 9>& inverse)
-      : tensor_(rows), inverse_(inverse) {}
+  inertia(const std::array<real, 9>& rows, const std::array<real, 9>& inverse);
   static bivector apply(const std::array<real, 9>& m, const bivector& b);
 
   std::array<real, 9> tensor_;
   std::array<real, 9> inverse_;
+  bool isotropic_;
 };
 
 }  // namespace gaphys

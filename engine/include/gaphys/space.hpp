@@ -8,25 +8,39 @@
 
 #include "gaphys/body.hpp"
 #include "gaphys/contact.hpp"
+#include "gaphys/detail/uniform_grid.hpp"
 
 namespace gaphys {
 
 using body_pair = std::pair<std::size_t, std::size_t>;
 
+// How candidate pairs are found. Both give the same contacts in the same
+// order, so the same simulation to the bit; the grid is O(N), all pairs
+// (the thesis's) O(N^2) and kept as the reference the grid is tested against.
+enum class broad_phase_kind { uniform_grid, all_pairs };
+
 class space {
  public:
+  explicit space(broad_phase_kind kind = broad_phase_kind::uniform_grid) : kind_(kind) {}
+
   void add(std::size_t body_index) { shaped_bodies_.push_back(body_index); }
   std::size_t shape_count() const { return shaped_bodies_.size(); }
+  broad_phase_kind broad_phase() const { return kind_; }
+  void set_broad_phase(broad_phase_kind kind) { kind_ = kind; }
 
-  // All pairs, as in the thesis (a broad phase is future work): every two
-  // shaped bodies that are not both static. Pairs are (a, b) with a < b.
-  void candidate_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs) const;
+  // Pairs of shaped bodies, not both static, that may touch: a superset of
+  // those that do. Pairs are (a, b) with a < b, in increasing order.
+  void candidate_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs);
 
   // Places every shape once, then meets each candidate pair.
   void find_contacts(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
                      std::vector<contact>& contacts);
 
  private:
+  void all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs) const;
+
+  broad_phase_kind kind_;
+  detail::uniform_grid grid_;
   std::vector<std::size_t> shaped_bodies_;
   std::vector<placed_shape> placed_;  // indexed by body; reused between steps
 };

@@ -20,16 +20,20 @@ struct world_settings {
   // Damping rates (1/s, >= 0): each step scales v by 1 / (1 + h c).
   real linear_damping = 0;
   real angular_damping = 0;
-  int solver_iterations = 20;         // sequential impulse sweeps per step
+  int solver_iterations = 20;         // most sequential impulse sweeps per step
+  real solver_tolerance = 1e-6;       // m/s: a sweep changing no normal speed more ends the solve
   real restitution_threshold = 0.5;   // m/s: slower approaches do not bounce
   real position_correction = 0.2;     // share of the excess depth removed per step
   real linear_slop = 0.0005;          // m of depth left uncorrected
+  // Candidate pairs: the grid (O(N)) or the thesis's all pairs (O(N^2)); the
+  // simulation is the same to the bit.
+  broad_phase_kind broad_phase = broad_phase_kind::uniform_grid;
 };
 
 // Wall-clock seconds the last step spent in each phase.
 struct step_timings {
   double integration = 0;   // forces, velocities, positions, attitudes
-  double pairs = 0;         // candidate pairs
+  double pairs = 0;         // candidate pairs (the broad phase)
   double narrow_phase = 0;  // meets
   double response = 0;      // impulses and position correction
 };
@@ -49,6 +53,7 @@ class world {
   const world_settings& settings() const { return settings_; }
   void set_gravity(const vector& gravity);
   void set_damping(real linear, real angular);
+  void set_broad_phase(broad_phase_kind kind);
 
   // Advances by h seconds (finite, > 0; else invalid_input, nothing changes).
   void step(real h);

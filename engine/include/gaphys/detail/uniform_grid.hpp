@@ -1,0 +1,85 @@
+// The broad phase behind space (space.hpp), not an API of its own: candidate
+// pairs from a uniform grid of cells, so a step costs O(N) for spheres of
+// similar size at a bounded density instead of the O(N^2) of all pairs.
+//
+// Each sphere or point is bounded by a sphere (its own, widened by a
+// rounding margin) and lands in the cell of its centre. Cells are as wide as
+// the widest ordinary bound, so two bounds that overlap have their centres
+// in the same or adjacent cells: each cell is compared with itself and its
+// 13 "forward" neighbours, and every two bounds that overlap make a
+// candidate. Bounds wider than twice the median would make the cells coarse,
+// so they are "large" and tested against every bound directly. Planes
+// (static, unbounded) are tested exactly against each bound: a sphere
+// reaches the half-space n . x <= d when n . c - r <= d.
+//
+// The result is a superset of the pairs whose shapes touch, sorted like all
+// pairs', so the narrow phase finds exactly the contacts all pairs finds, in
+// the same order: the two broad phases give bit-identical simulations.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "gaphys/body.hpp"
+
+namespace gaphys::detail {
+
+using index_pair = std::pair<std::size_t, std::size_t>;
+
+class uniform_grid {
+ public:
+  // Appends to `pairs` (cleared first) every candidate among `shaped`
+  // (indices into bodies), not both static, as (a, b) with a < b, sorted.
+  // Returns false, adding nothing, when coordinates are too far out for
+  // integer cells (|x| / cell > 2^50); the caller then uses all pairs.
+  bool find_pairs(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped,
+                  std::vector<index_pair>& pairs);
+
+ private:
+  struct bound {  // a bounding sphere
+    vector centre;
+    real radius;
+    std::size_t body;
+    bool is_static;
+  };
+  struct entry {  // an ordinary bound in its cell
+    std::int64_t x, y, z;
+    std::size_t bound;
+  };
+  struct run {  // entries [begin, end) of the sorted list
+    std::size_t begin, end;
+  };
+  struct cell {  // a hash table slot; empty when end == 0
+    std::int64_t x, y, z;
+    std::size_t begin, end;
+  };
+
+  void collect(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped);
+  bool sort_into_cells();
+  void sort_dense(std::size_t cells);
+  void sort_hashed();
+  std::size_t dense_index(std::int64_t x, std::int64_t y, std::int64_t z) const;
+  run find_cell(std::int64_t x, std::int64_t y, std::int64_t z) const;
+  void pair_cells(std::vector<index_pair>& pairs) const;
+  void pair_large(std::vector<index_pair>& pairs) const;
+  void pair_planes(const std::vector<body>& bodies, std::vector<index_pair>& pairs) const;
+  void add_if_overlapping(const bound& a, const bound& b, std::vector<index_pair>& pairs) const;
+  void sort_pairs(std::size_t body_count, std::vector<index_pair>& pairs);
+
+  // Scratch, kept between steps so a step allocates nothing once warm.
+  std::vector<bound> bounds_;
+  std::vector<std::size_t> large_, planes_;
+  std::vector<entry> unsorted_, entries_;
+  bool dense_ = true;
+  std::int64_t origin_[3] = {0, 0, 0}, extent_[3] = {0, 0, 0};  // the occupied block of cells
+  std::vector<std::size_t> cell_starts_, cell_fill_;           // dense: runs by cell index
+  std::vector<cell> table_;  // sparse: open addressing, power-of-two size
+  std::vector<real> widths_;
+  std::vector<std::size_t> starts_, fill_;
+  std::vector<index_pair> sorted_;
+  real cell_size_ = 1;
+};
+
+}  // namespace gaphys::detail

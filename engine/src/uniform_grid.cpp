@@ -1,0 +1,250 @@
+#include "gaphys/detail/uniform_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace gaphys::detail {
+
+namespace {
+
+// Bounds are widened by this share of their scale (1 + |centre| + r), far
+// above the rounding of the narrow phase's test, so a pair the meet calls
+// touching is never lost to rounding here.
+constexpr real relative_margin = 1e-9;
+// Cell coordinates must fit in 64-bit integers with room for the +-1 offsets.
+constexpr real largest_cell_coordinate = 0x1.0p50;
+
+real largest_magnitude(const vector& v) {
+  return std::max({std::fabs(v.e1()), std::fabs(v.e2()), std::fabs(v.e3())});
+}
+
+std::uint64_t hash(std::int64_t x, std::int64_t y, std::int64_t z) {
+  std::uint64_t h = static_cast<std::uint64_t>(x) * 0x9e3779b97f4a7c15ull;
+  h ^= static_cast<std::uint64_t>(y) * 0xc2b2ae3d27d4eb4full + (h << 6) + (h >> 2);
+  h ^= static_cast<std::uint64_t>(z) * 0x165667b19e3779f9ull + (h << 6) + (h >> 2);
+  return h ^ (h >> 29);
+}
+
+}  // namespace
+
+bool uniform_grid::find_pairs(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped,
+                              std::vector<index_pair>& pairs) {
+  pairs.clear();
+  collect(bodies, shaped);
+  if (!sort_into_cells()) return false;
+  pair_cells(pairs);
+  pair_large(pairs);
+  pair_planes(bodies, pairs);
+  sort_pairs(bodies.size(), pairs);
+  return true;
+}
+
+// All pairs' order, which the solver (and its warm starting) relies on: a
+// counting sort on the first body, then each (short) run by the second.
+void uniform_grid::sort_pairs(std::size_t body_count, std::vector<index_pair>& pairs) {
+  starts_.assign(body_count + 1, 0);
+  for (const index_pair& p : pairs) ++starts_[p.first + 1];
+  for (std::size_t i = 0; i < body_count; ++i) starts_[i + 1] += starts_[i];
+  sorted_.resize(pairs.size());
+  fill_ = starts_;
+  for (const index_pair& p : pairs) sorted_[fill_[p.first]++] = p;
+  for (std::size_t i = 0; i < body_count; ++i) {
+    std::sort(sorted_.begin() + static_cast<std::ptrdiff_t>(starts_[i]),
+              sorted_.begin() + static_cast<std::ptrdiff_t>(starts_[i + 1]));
+  }
+  pairs.swap(sorted_);
+}
+
+// Bounds for spheres and points, and the cell size: the widest bound that
+// is not "large" (wider than twice the median width).
+void uniform_grid::collect(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped) {
+  bounds_.clear();
+  planes_.clear();
+  large_.clear();
+  widths_.clear();
+  for (std::size_t index : shaped) {
+    const body& b = bodies[index];
+    if (b.shape()->kind() == shape_kind::plane) {
+      planes_.push_back(index);
+      continue;
+    }
+    const vector& c = b.position();
+    const real r = b.shape()->radius();
+    const real reach = r + relative_margin * (1 + largest_magnitude(c) + r);
+    bounds_.push_back(bound{c, reach, index, b.is_static()});
+    widths_.push_back(2 * reach);
+  }
+  if (bounds_.empty()) return;
+  const auto middle = widths_.begin() + static_cast<std::ptrdiff_t>(widths_.size() / 2);
+  std::nth_element(widths_.begin(), middle, widths_.end());
+  const real large_width = 2 * *middle;
+  cell_size_ = 0;
+  for (std::size_t i = 0; i < bounds_.size(); ++i) {
+    const real width = 2 * bounds_[i].radius;
+    if (width > large_width) {
+      large_.push_back(i);
+    } else {
+      cell_size_ = std::max(cell_size_, width);
+    }
+  }
+}
+
+// Sorts the ordinary bounds by cell, in (x, y, z) order, and indexes the
+// cells' runs: in a dense array over the occupied block of cells when it is
+// not much larger than the number of bounds (a counting sort, and lookups
+// by index), else in a hash table.
+bool uniform_grid::sort_into_cells() {
+  unsorted_.clear();
+  std::int64_t low[3] = {0, 0, 0}, high[3] = {0, 0, 0};
+  std::size_t next_large = 0;
+  for (std::size_t i = 0; i < bounds_.size(); ++i) {
+    if (next_large < large_.size() && large_[next_large] == i) {
+      ++next_large;
+      continue;
+    }
+    const vector scaled = bounds_[i].centre / cell_size_;
+    if (!(largest_magnitude(scaled) < largest_cell_coordinate)) return false;
+    const std::int64_t at[3] = {static_cast<std::int64_t>(std::floor(scaled.e1())),
+                                static_cast<std::int64_t>(std::floor(scaled.e2())),
+                                static_cast<std::int64_t>(std::floor(scaled.e3()))};
+    for (int axis = 0; axis < 3; ++axis) {
+      low[axis] = unsorted_.empty() ? at[axis] : std::min(low[axis], at[axis]);
+      high[axis] = unsorted_.empty() ? at[axis] : std::max(high[axis], at[axis]);
+    }
+    unsorted_.push_back(entry{at[0], at[1], at[2], i});
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    origin_[axis] = low[axis];
+    extent_[axis] = high[axis] - low[axis] + 1;
+  }
+  const double cells = double(extent_[0]) * double(extent_[1]) * double(extent_[2]);
+  dense_ = cells <= 8.0 * double(unsorted_.size()) + 4096;
+  if (dense_) {
+    sort_dense(static_cast<std::size_t>(cells));
+  } else {
+    sort_hashed();
+  }
+  return true;
+}
+
+std::size_t uniform_grid::dense_index(std::int64_t x, std::int64_t y, std::int64_t z) const {
+  return static_cast<std::size_t>(((x - origin_[0]) * extent_[1] + (y - origin_[1])) * extent_[2] +
+                                  (z - origin_[2]));
+}
+
+// A counting sort by cell index; within a cell the bounds keep their order.
+void uniform_grid::sort_dense(std::size_t cells) {
+  cell_starts_.assign(cells + 1, 0);
+  for (const entry& e : unsorted_) ++cell_starts_[dense_index(e.x, e.y, e.z) + 1];
+  for (std::size_t c = 0; c < cells; ++c) cell_starts_[c + 1] += cell_starts_[c];
+  cell_fill_.assign(cell_starts_.begin(), cell_starts_.end() - 1);
+  entries_.resize(unsorted_.size());
+  for (const entry& e : unsorted_) entries_[cell_fill_[dense_index(e.x, e.y, e.z)]++] = e;
+}
+
+void uniform_grid::sort_hashed() {
+  entries_ = unsorted_;
+  std::sort(entries_.begin(), entries_.end(), [](const entry& a, const entry& b) {
+    return std::tie(a.x, a.y, a.z, a.bound) < std::tie(b.x, b.y, b.z, b.bound);
+  });
+  std::size_t size = 16;
+  while (size < 2 * entries_.size()) size *= 2;
+  table_.assign(size, cell{0, 0, 0, 0, 0});
+  for (std::size_t begin = 0; begin < entries_.size();) {
+    const entry& first = entries_[begin];
+    std::size_t end = begin + 1;
+    while (end < entries_.size() && entries_[end].x == first.x && entries_[end].y == first.y &&
+           entries_[end].z == first.z) {
+      ++end;
+    }
+    std::size_t slot = hash(first.x, first.y, first.z) & (size - 1);
+    while (table_[slot].end != 0) slot = (slot + 1) & (size - 1);
+    table_[slot] = cell{first.x, first.y, first.z, begin, end};
+    begin = end;
+  }
+}
+
+// The run of entries in cell (x, y, z); empty (begin == end) if none.
+uniform_grid::run uniform_grid::find_cell(std::int64_t x, std::int64_t y, std::int64_t z) const {
+  if (dense_) {
+    if (x < origin_[0] || y < origin_[1] || z < origin_[2] || x >= origin_[0] + extent_[0] ||
+        y >= origin_[1] + extent_[1] || z >= origin_[2] + extent_[2]) {
+      return run{0, 0};
+    }
+    const std::size_t c = dense_index(x, y, z);
+    return run{cell_starts_[c], cell_starts_[c + 1]};
+  }
+  const std::size_t mask = table_.size() - 1;
+  for (std::size_t slot = hash(x, y, z) & mask; table_[slot].end != 0; slot = (slot + 1) & mask) {
+    const cell& c = table_[slot];
+    if (c.x == x && c.y == y && c.z == z) return run{c.begin, c.end};
+  }
+  return run{0, 0};
+}
+
+// Each cell with itself and with the 13 neighbours that come after it in
+// (x, y, z) order, so every two adjacent cells meet once.
+void uniform_grid::pair_cells(std::vector<index_pair>& pairs) const {
+  static constexpr int forward[13][3] = {{1, -1, -1}, {1, -1, 0}, {1, -1, 1}, {1, 0, -1}, {1, 0, 0},
+                                         {1, 0, 1},   {1, 1, -1}, {1, 1, 0},  {1, 1, 1},  {0, 1, -1},
+                                         {0, 1, 0},   {0, 1, 1},  {0, 0, 1}};
+  for (std::size_t begin = 0; begin < entries_.size();) {
+    const entry& first = entries_[begin];
+    const run here = find_cell(first.x, first.y, first.z);
+    for (std::size_t i = here.begin; i < here.end; ++i) {
+      for (std::size_t j = i + 1; j < here.end; ++j) {
+        add_if_overlapping(bounds_[entries_[i].bound], bounds_[entries_[j].bound], pairs);
+      }
+    }
+    for (const auto& offset : forward) {
+      const run there = find_cell(first.x + offset[0], first.y + offset[1], first.z + offset[2]);
+      for (std::size_t i = here.begin; i < here.end; ++i) {
+        for (std::size_t j = there.begin; j < there.end; ++j) {
+          add_if_overlapping(bounds_[entries_[i].bound], bounds_[entries_[j].bound], pairs);
+        }
+      }
+    }
+    begin = here.end;
+  }
+}
+
+// Large bounds against every other bound (large ones once per pair).
+void uniform_grid::pair_large(std::vector<index_pair>& pairs) const {
+  for (std::size_t k = 0; k < large_.size(); ++k) {
+    const bound& a = bounds_[large_[k]];
+    for (std::size_t i = 0; i < bounds_.size(); ++i) {
+      const bool other_large = std::binary_search(large_.begin(), large_.end(), i);
+      if (other_large && i <= large_[k]) continue;
+      add_if_overlapping(a, bounds_[i], pairs);
+    }
+  }
+}
+
+// A plane against each dynamic bound, exactly: the sphere reaches the
+// solid side n . x <= d when n . c - r <= d.
+void uniform_grid::pair_planes(const std::vector<body>& bodies, std::vector<index_pair>& pairs) const {
+  for (std::size_t index : planes_) {
+    const body& p = bodies[index];
+    const vector n = e3ga::apply(p.attitude(), p.shape()->normal());
+    const real d = p.shape()->offset() + e3ga::scp(n, p.position());
+    for (const bound& b : bounds_) {
+      if (b.is_static) continue;  // planes are static too
+      if (e3ga::scp(n, b.centre) - b.radius <= d) {
+        pairs.emplace_back(std::min(index, b.body), std::max(index, b.body));
+      }
+    }
+  }
+}
+
+// Bounds overlap when |cA - cB| <= rA + rB (radii widened by the margin).
+void uniform_grid::add_if_overlapping(const bound& a, const bound& b,
+                                      std::vector<index_pair>& pairs) const {
+  if (a.is_static && b.is_static) return;
+  const vector d = a.centre - b.centre;
+  const real reach = a.radius + b.radius;
+  if (e3ga::scp(d, d) > reach * reach) return;
+  pairs.emplace_back(std::min(a.body, b.body), std::max(a.body, b.body));
+}
+
+}  // namespace gaphys::detail
