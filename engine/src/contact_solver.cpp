@@ -8,10 +8,14 @@ namespace gaphys {
 
 namespace {
 
-// The normal speed n . (v_A(p) - v_B(p)): < 0 while the contact approaches.
-real normal_speed(const body& a, const body& b, const contact& c) {
+// The normal speed n . (v_A(p) - v_B(p)) the bodies had at the start of the
+// step: < 0 while the contact approaches.
+real approach_speed(const body& a, const body& b, const body_velocity& start_a,
+                    const body_velocity& start_b, const contact& c) {
   const vector& p = c.geometry.point;
-  return e3ga::scp(a.velocity_at(p) - b.velocity_at(p), c.geometry.normal);
+  const vector at_a = start_a.linear + e3ga::lc(p - a.position(), start_a.angular);
+  const vector at_b = start_b.linear + e3ga::lc(p - b.position(), start_b.angular);
+  return e3ga::scp(at_a - at_b, c.geometry.normal);
 }
 
 }  // namespace
@@ -35,7 +39,7 @@ void contact_solver::apply_impulse(body& a, body& b, const constraint& k, real j
 // The terms of one contact that stay fixed while the sweeps run (attitudes do
 // not change, so neither do the world inertias).
 contact_solver::constraint contact_solver::make_constraint(const body& a, const body& b,
-                                                           const contact& c) const {
+                                                           const contact& c, real approach) const {
   const vector& n = c.geometry.normal;
   constraint k;
   k.normal = n;
@@ -49,16 +53,20 @@ contact_solver::constraint contact_solver::make_constraint(const body& a, const 
   // 1/mA + 1/mB + n . (rA ⌋ I_A⁻¹(rA ∧ n)) + n . (rB ⌋ I_B⁻¹(rB ∧ n)).
   k.effective_mass_inverse = a.inverse_mass() + b.inverse_mass() + e3ga::lc(k.arm_a, k.turn_a) +
                              e3ga::lc(k.arm_b, k.turn_b);
-  const real approach = gaphys::normal_speed(a, b, c);
   k.target_speed = approach < -settings_.restitution_threshold ? -c.restitution * approach : real(0);
   return k;
 }
 
-void contact_solver::solve_velocities(std::vector<body>& bodies, std::vector<contact>& contacts,
+void contact_solver::solve_velocities(std::vector<body>& bodies,
+                                      const std::vector<body_velocity>& start,
+                                      std::vector<contact>& contacts,
                                       const std::vector<contact>& previous) {
   constraints_.clear();
   for (const contact& c : contacts) {
-    constraints_.push_back(make_constraint(bodies[c.body_a], bodies[c.body_b], c));
+    const body& a = bodies[c.body_a];
+    const body& b = bodies[c.body_b];
+    const real approach = approach_speed(a, b, start[c.body_a], start[c.body_b], c);
+    constraints_.push_back(make_constraint(a, b, c, approach));
   }
 
   // Warm start: both lists are sorted by body pair, so one merge finds the

@@ -17,11 +17,14 @@ class contact_solver {
 
   // Changes velocities so that no contact still approaches and each
   // bouncing contact separates at e times its approach speed, and stores
-  // each contact's total impulse in it. Contacts between the same two bodies
-  // in `previous` (the last step's, sorted by body pair like `contacts`)
-  // start from their old impulse.
-  void solve_velocities(std::vector<body>& bodies, std::vector<contact>& contacts,
-                        const std::vector<contact>& previous);
+  // each contact's total impulse in it. The approach speed is taken from
+  // `start` (each body's velocities before this step's gravity and forces):
+  // from the velocities after them, a ball dropped with e = 1 would leave
+  // each bounce h g faster than it came and climb 1.3% higher every time.
+  // Contacts between the same two bodies in `previous` (the last step's,
+  // sorted by body pair like `contacts`) start from their old impulse.
+  void solve_velocities(std::vector<body>& bodies, const std::vector<body_velocity>& start,
+                        std::vector<contact>& contacts, const std::vector<contact>& previous);
 
   // After the positions moved by h v: pushes overlapping bodies apart along
   // the normal by a share of the depth left beyond the slop.
@@ -38,7 +41,7 @@ class contact_solver {
     real accumulated = 0;
   };
 
-  constraint make_constraint(const body& a, const body& b, const contact& c) const;
+  constraint make_constraint(const body& a, const body& b, const contact& c, real approach) const;
   static real normal_speed(const body& a, const body& b, const constraint& k);
   static void apply_impulse(body& a, body& b, const constraint& k, real j);
 

@@ -77,6 +77,8 @@ void world::set_broad_phase(broad_phase_kind kind) {
 void world::step(real h) {
   detail::require_positive(h, "time step");
   const auto start = clock::now();
+  start_velocities_.clear();
+  for (const body& b : bodies_) start_velocities_.push_back({b.velocity_, b.angular_velocity_});
   integrate_velocities(h);
   const auto integrated = clock::now();
   space_.candidate_pairs(bodies_, pairs_);
@@ -85,7 +87,7 @@ void world::step(real h) {
   space_.find_contacts(bodies_, pairs_, contacts_);
   const auto met = clock::now();
   contact_solver solver(settings_);
-  solver.solve_velocities(bodies_, contacts_, previous_contacts_);
+  solver.solve_velocities(bodies_, start_velocities_, contacts_, previous_contacts_);
   const auto solved = clock::now();
   integrate_positions(h);
   const auto moved = clock::now();

@@ -2,6 +2,8 @@
 // impulse acts along the line of centres, momentum is conserved, kinetic
 // energy scales the normal approach speed by e, and a dropped ball rebounds
 // to e^2 of its drop height.
+#include <vector>
+
 #include "engine_test_support.hpp"
 
 namespace gaphys::testing {
@@ -155,6 +157,28 @@ TEST_F(collision_test, a_dropped_sphere_rebounds_to_e_squared_of_its_height) {
     ASSERT_TRUE(bounced) << "e = " << e;
     EXPECT_NEAR(apex / drop, e * e, 0.05) << "e = " << e;
   }
+}
+
+// e = 1: every bounce returns the ball to its drop height. Restitution acts
+// on the approach speed the ball had before the step's gravity, so the
+// bounces neither gain h g each (1.3% height per bounce) nor lose it.
+TEST_F(collision_test, an_elastic_ball_keeps_its_height_over_20_bounces) {
+  const real drop = 2, radius = 0.5;
+  world w = scenes::bouncing_sphere(1, drop);
+  const body_id ball = 1;
+  std::vector<real> apexes;
+  real previous_vz = 0;
+  while (apexes.size() < 20 && w.time() < 40) {
+    w.step(h);
+    const real vz = z(w.at(ball).velocity());
+    if (previous_vz > 0 && vz <= 0) apexes.push_back(z(w.at(ball).position()) - radius);
+    previous_vz = vz;
+  }
+  ASSERT_EQ(apexes.size(), 20u);
+  for (std::size_t i = 0; i < apexes.size(); ++i) {
+    EXPECT_NEAR(apexes[i] / drop, 1, 0.01) << "bounce " << i + 1;
+  }
+  EXPECT_NEAR(apexes.back() / apexes.front(), 1, 0.005);
 }
 
 }  // namespace

@@ -75,17 +75,19 @@ TEST_F(resting_test, a_column_of_five_spheres_stands_for_ten_seconds) {
 }
 
 // Many spheres piled in a box settle into a heap whose contacts stay shallow.
+// Without friction the heap keeps rearranging for a while (spheres slide
+// off each other and the kinetic energy rises and falls), so it is given 6 s.
 TEST_F(resting_test, falling_spheres_settle_in_the_box) {
   world w = scenes::falling_spheres_in_box(40);
   const real radius = 0.1;
-  simulate(w, 4 * steps_per_second);
+  simulate(w, 6 * steps_per_second);
   real max_depth = 0, max_speed = 0;
   simulate(w, steps_per_second, [&](int) {
     max_depth = std::max(max_depth, deepest(w));
     for (const body& b : w.bodies()) max_speed = std::max(max_speed, length(b.velocity()));
   });
   EXPECT_LT(max_depth, 0.05 * radius);
-  EXPECT_LT(max_speed, 0.05);
+  EXPECT_LT(max_speed, 0.01);
   for (const body& b : w.bodies()) {
     if (b.is_static()) continue;
     EXPECT_GT(z(b.position()), radius * 0.95);  // none fell through the floor

@@ -31,6 +31,12 @@ struct body_definition {
   std::optional<gaphys::shape> shape;
 };
 
+// A body's linear and angular velocity at one instant.
+struct body_velocity {
+  vector linear;
+  bivector angular;
+};
+
 class body {
  public:
   // Throws invalid_input (naming the bad field) for non-finite numbers,

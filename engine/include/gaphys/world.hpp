@@ -77,6 +77,7 @@ class world {
   std::vector<body_pair> pairs_;
   std::vector<contact> contacts_;
   std::vector<contact> previous_contacts_;  // the last step's, for warm starting
+  std::vector<body_velocity> start_velocities_;  // before this step's forces, for restitution
   step_timings timings_;
   real time_ = 0;
 };
