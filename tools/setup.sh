@@ -7,10 +7,11 @@ cd "$(dirname "$0")/.."
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
 
 missing=()
-for tool in cmake:cmake ninja:ninja-build g++:g++ clang-format:clang-format node:nodejs npm:npm; do
+for tool in cmake:cmake ninja:ninja-build g++:g++ pkg-config:pkg-config clang-format:clang-format node:nodejs npm:npm; do
   command -v "${tool%%:*}" >/dev/null 2>&1 || missing+=("${tool##*:}")
 done
-for package in libgtest-dev libgmock-dev libbenchmark-dev; do
+# Bullet, ODE and gnuplot: bench/compare (gaphys against other engines).
+for package in libgtest-dev libgmock-dev libbenchmark-dev libbullet-dev libode-dev gnuplot-nox; do
   dpkg -s "$package" >/dev/null 2>&1 || missing+=("$package")
 done
 python=$(bash tools/find-python.sh)

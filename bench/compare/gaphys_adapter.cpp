@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "gaphys/world.hpp"
+#include "number.hpp"
 
 namespace gaphys_compare {
 
@@ -31,7 +32,8 @@ class gaphys_adapter final : public engine_adapter {
     for (const plane_description& p : s.planes) {
       gaphys::body_definition plane;
       plane.is_static = true;
-      plane.shape = gaphys::shape::plane(to_gaphys(p.normal), p.offset).with_restitution(p.restitution);
+      plane.shape =
+          gaphys::shape::plane(to_gaphys(p.normal), p.offset).with_restitution(p.restitution);
       world_->create_body(plane);
     }
     first_body_ = s.planes.size();
@@ -39,7 +41,9 @@ class gaphys_adapter final : public engine_adapter {
       gaphys::body_definition d;
       d.is_static = b.is_static;
       d.mass = b.is_static ? 1 : b.mass;
-      d.inertia = gaphys::inertia::principal(b.inertia.x, b.inertia.y, b.inertia.z);
+      if (!b.is_static) {  // static bodies take their sphere's default
+        d.inertia = gaphys::inertia::principal(b.inertia.x, b.inertia.y, b.inertia.z);
+      }
       d.position = to_gaphys(b.position);
       d.velocity = to_gaphys(b.velocity);
       d.angular_velocity = to_bivector(b.angular_velocity);
@@ -65,20 +69,22 @@ class gaphys_adapter final : public engine_adapter {
 
 engine gaphys_engine() {
   const gaphys::world_settings defaults;
-  return {"gaphys",
-          "this tree",
-          "double",
-          {{"world", "gaphys::world, default world_settings", "the engine as documented"},
-           {"solver sweeps", std::to_string(defaults.solver_iterations), "default"},
-           {"restitution", "max(e_a, e_b) per contact, threshold " +
-                               std::to_string(defaults.restitution_threshold).substr(0, 4) + " m/s",
-            "default; the scenes give every shape the same e"},
-           {"position correction",
-            "20% of depth beyond 0.5 mm slop per step, positions only",
-            "default; adds no kinetic energy"},
-           {"friction / damping", "none / 0", "gaphys has no friction; default damping 0"},
-           {"attitude", "rotor, |q| = sqrt(R ~R)", "read as a quaternion for the harness"}},
-          [] { return std::make_unique<gaphys_adapter>(); }};
+  return {
+      "gaphys",
+      "this tree",
+      "double",
+      {{"world", "gaphys::world, default world_settings", "the engine as documented"},
+       {"solver sweeps", std::to_string(defaults.solver_iterations), "default"},
+       {"restitution",
+        "max(e_a, e_b) per contact, threshold " + number(defaults.restitution_threshold) + " m/s",
+        "default; the scenes give every shape the same e"},
+       {"position correction",
+        number(100 * defaults.position_correction) + "% of depth beyond " +
+            number(1000 * defaults.linear_slop) + " mm per step, positions only",
+        "default; adds no kinetic energy"},
+       {"friction / damping", "none / 0", "gaphys has no friction; default damping 0"},
+       {"attitude", "rotor, |q| = sqrt(R ~R)", "read as a quaternion for the harness"}},
+      [] { return std::make_unique<gaphys_adapter>(); }};
 }
 
 }  // namespace gaphys_compare

@@ -27,7 +27,9 @@ vec3 total_momentum(const scene& s, const std::vector<body_state>& states) {
 
 double total_kinetic_energy(const scene& s, const std::vector<body_state>& states) {
   double energy = 0;
-  for (std::size_t i = 0; i < s.bodies.size(); ++i) energy += kinetic_energy(s.bodies[i], states[i]);
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    energy += kinetic_energy(s.bodies[i], states[i]);
+  }
   return energy;
 }
 

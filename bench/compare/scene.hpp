@@ -1,5 +1,6 @@
 // An engine-neutral scene: what every adapter builds, in the same units and
-// conventions, so that the three engines start from bit-identical numbers.
+// conventions, so that every engine starts from the same numbers (rounded to
+// float where the engine computes in float).
 // Every body starts with the identity attitude.
 #pragma once
 
@@ -20,11 +21,11 @@ struct plane_description {
 };
 
 struct body_description {
-  double mass = 1;     // kg; ignored when static
-  double radius = 0;   // m: a solid sphere; 0: no shape (a free body)
-  vec3 inertia;        // principal moments about the body's x, y, z (kg m^2)
-  vec3 position;       // m
-  vec3 velocity;       // m/s
+  double mass = 1;        // kg; ignored when static
+  double radius = 0;      // m: a solid sphere; 0: no shape (a free body)
+  vec3 inertia;           // principal moments about the body's x, y, z (kg m^2)
+  vec3 position;          // m
+  vec3 velocity;          // m/s
   vec3 angular_velocity;  // rad/s, world frame (axis times rate)
   double restitution = 0;
   bool is_static = false;  // static spheres: targets that never move

@@ -1,9 +1,9 @@
 #include "scenes.hpp"
 
-#include <cstdio>
 #include <stdexcept>
 
 #include "gaphys/scenes.hpp"
+#include "number.hpp"
 
 namespace gaphys_compare {
 
@@ -14,13 +14,6 @@ vec3 to_vec3(const gaphys::vector& v) { return {v.c[0], v.c[1], v.c[2]}; }
 // gaphys keeps angular velocity as a bivector Ω = ωx e23 + ωy e31 + ωz e12
 // (docs/engine.md); its coordinates are (e12, e13, e23) and e31 = -e13.
 vec3 axis_of(const gaphys::bivector& b) { return {b.c[2], -b.c[1], b.c[0]}; }
-
-// A short label for a scene parameter: 0.3, 0.95, 1.
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
 
 body_description sphere(double radius, double mass, const vec3& position, const vec3& velocity,
                         double restitution) {
@@ -56,7 +49,8 @@ scene from_gaphys(const gaphys::world& world, const std::string& name) {
       throw std::invalid_argument(name + ": only spheres and planes have a neutral description");
     }
     const auto& rows = b.body_inertia().rows();
-    if (rows[1] != 0 || rows[2] != 0 || rows[3] != 0 || rows[5] != 0 || rows[6] != 0 || rows[7] != 0) {
+    if (rows[1] != 0 || rows[2] != 0 || rows[3] != 0 || rows[5] != 0 || rows[6] != 0 ||
+        rows[7] != 0) {
       throw std::invalid_argument(name + ": inertia is not diagonal in the body frame");
     }
     body_description d;
@@ -112,8 +106,7 @@ scene projectile(double speed, bool sphere_target) {
 }
 
 scene falling_spheres(int count) {
-  return from_gaphys(gaphys::scenes::falling_spheres_in_box(count),
-                     "N " + number(count));
+  return from_gaphys(gaphys::scenes::falling_spheres_in_box(count), "N " + number(count));
 }
 
 }  // namespace gaphys_compare

@@ -23,7 +23,9 @@ struct quat {
   double w = 1, x = 0, y = 0, z = 0;
 };
 
-inline double norm(const quat& q) { return std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z); }
+inline double norm(const quat& q) {
+  return std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
+}
 
 // v rotated by q / |q|: v + 2 w (u × v) + 2 u × (u × v), u = (x, y, z), on
 // the normalized q, so a drift of |q| does not leak into what is measured

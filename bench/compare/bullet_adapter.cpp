@@ -1,0 +1,168 @@
+#include "bullet_adapter.hpp"
+
+#include <btBulletDynamicsCommon.h>
+
+#include <cmath>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "number.hpp"
+
+namespace gaphys_compare {
+
+namespace {
+
+// Matched to gaphys::world_settings' defaults.
+constexpr int solver_iterations = 20;
+constexpr double restitution_threshold = 0.5;  // m/s
+constexpr double position_correction = 0.2;    // share of the depth per step
+
+btVector3 to_bullet(const vec3& v) { return {btScalar(v.x), btScalar(v.y), btScalar(v.z)}; }
+vec3 to_vec3(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
+
+// Bullet combines two restitutions by their product, gaphys by their max.
+// Giving every shape sqrt(e) makes each pair's product e when both shapes
+// have the same e, which every scene here does (else the pair gets the
+// geometric mean, sqrt(e_a e_b)).
+btScalar restitution_of(double e) { return btScalar(std::sqrt(e)); }
+
+// Everything one scene needs, declared in the order it must be built; members
+// are destroyed in reverse, so the world goes before the bodies, shapes and
+// broadphase it refers to.
+struct bullet_scene {
+  btDefaultCollisionConfiguration configuration;
+  btCollisionDispatcher dispatcher{&configuration};
+  btDbvtBroadphase broadphase;
+  btSequentialImpulseConstraintSolver solver;
+  std::map<double, std::unique_ptr<btSphereShape>> spheres;  // one shape per radius
+  std::vector<std::unique_ptr<btCollisionShape>> other_shapes;
+  std::vector<std::unique_ptr<btRigidBody>> bodies;  // planes first, then the scene's bodies
+  std::unique_ptr<btDiscreteDynamicsWorld> world;
+};
+
+class bullet_adapter final : public engine_adapter {
+ public:
+  void build(const scene& s) override {
+    scene_.reset();
+    scene_ = std::make_unique<bullet_scene>();
+    bullet_scene& b = *scene_;
+    b.world = std::make_unique<btDiscreteDynamicsWorld>(&b.dispatcher, &b.broadphase, &b.solver,
+                                                        &b.configuration);
+    b.world->setGravity(to_bullet(s.gravity));
+    btContactSolverInfo& info = b.world->getSolverInfo();
+    info.m_numIterations = solver_iterations;
+    info.m_restitutionVelocityThreshold = btScalar(restitution_threshold);
+    // Split impulse for every penetration (by default only beyond 4 cm; a
+    // velocity bias, which adds energy, below): the correction moves
+    // positions without adding kinetic energy, as gaphys's does, at the same
+    // 20% per step. m_linearSlop stays 0: Bullet also subtracts slop / h from
+    // the contact's target velocity, which would cost every bounce
+    // 0.0005 / h = 0.12 m/s, where gaphys's slop only limits the correction.
+    info.m_splitImpulse = 1;
+    info.m_splitImpulsePenetrationThreshold = 0;
+    info.m_erp2 = btScalar(position_correction);
+
+    for (const plane_description& p : s.planes) {
+      b.other_shapes.push_back(
+          std::make_unique<btStaticPlaneShape>(to_bullet(p.normal), btScalar(p.offset)));
+      add_body(0, b.other_shapes.back().get(), {}, {}, {}, {}, p.restitution);
+    }
+    first_body_ = s.planes.size();
+    for (const body_description& d : s.bodies) {
+      btCollisionShape* shape = nullptr;
+      if (d.radius > 0) {
+        auto& sphere = b.spheres[d.radius];
+        if (!sphere) sphere = std::make_unique<btSphereShape>(btScalar(d.radius));
+        shape = sphere.get();
+      } else {
+        // A body without a shape: Bullet needs one, the empty shape collides with nothing.
+        b.other_shapes.push_back(std::make_unique<btEmptyShape>());
+        shape = b.other_shapes.back().get();
+      }
+      add_body(d.is_static ? 0 : d.mass, shape, d.inertia, d.position, d.velocity,
+               d.angular_velocity, d.restitution);
+    }
+  }
+
+  // maxSubSteps = 0: exactly one step of h. (h, 1, h) would accumulate h in
+  // a btScalar clock and, in float, occasionally take no step.
+  void step(double h) override { scene_->world->stepSimulation(btScalar(h), 0); }
+
+  body_state state(std::size_t i) const override {
+    const btRigidBody& body = *scene_->bodies[first_body_ + i];
+    // Bullet keeps the attitude as a 3x3 matrix; getRotation converts it.
+    const btQuaternion q = body.getWorldTransform().getRotation();
+    return {to_vec3(body.getWorldTransform().getOrigin()),
+            to_vec3(body.getLinearVelocity()),
+            to_vec3(body.getAngularVelocity()),
+            {q.w(), q.x(), q.y(), q.z()}};
+  }
+
+ private:
+  void add_body(double mass, btCollisionShape* shape, const vec3& inertia, const vec3& position,
+                const vec3& velocity, const vec3& angular_velocity, double restitution) {
+    btRigidBody::btRigidBodyConstructionInfo info(
+        btScalar(mass), nullptr, shape, mass > 0 ? to_bullet(inertia) : btVector3(0, 0, 0));
+    info.m_startWorldTransform.setIdentity();
+    info.m_startWorldTransform.setOrigin(to_bullet(position));
+    // gaphys has no friction: none here either, sliding, rolling or spinning.
+    info.m_friction = 0;
+    info.m_rollingFriction = 0;
+    info.m_spinningFriction = 0;
+    info.m_restitution = restitution_of(restitution);
+    info.m_linearDamping = 0;
+    info.m_angularDamping = 0;
+    auto body = std::make_unique<btRigidBody>(info);
+    body->setLinearVelocity(to_bullet(velocity));
+    body->setAngularVelocity(to_bullet(angular_velocity));
+    // No sleeping: gaphys never puts bodies to sleep.
+    body->setActivationState(DISABLE_DEACTIVATION);
+    // Bullet's default since 2.83, stated because M1 depends on it.
+    body->setFlags(body->getFlags() | BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY);
+    scene_->world->addRigidBody(body.get());
+    scene_->bodies.push_back(std::move(body));
+  }
+
+  std::unique_ptr<bullet_scene> scene_;
+  std::size_t first_body_ = 0;
+};
+
+}  // namespace
+
+engine bullet_engine() {
+  const btSphereShape sphere(btScalar(0.1));
+  const btStaticPlaneShape plane(btVector3(0, 0, 1), 0);
+  const btContactSolverInfo defaults;
+  const int version = btGetVersion();
+  return {
+      "bullet",
+      number(version / 100) + "." + number(version % 100),
+      btIsDoublePrecision() ? "double (BT_USE_DOUBLE_PRECISION)" : "float (btScalar = float)",
+      {{"world", "btDiscreteDynamicsWorld, btDbvtBroadphase, btSequentialImpulseConstraintSolver",
+        "the standard single-threaded pipeline"},
+       {"step", "stepSimulation(h, 0)", "one fixed step of h per call, no interpolation"},
+       {"solver iterations", number(solver_iterations),
+        "gaphys's 20 sweeps (Bullet default " + number(defaults.m_numIterations) + ")"},
+       {"restitution", "sqrt(e) per shape; Bullet multiplies the pair's values",
+        "product = e = gaphys's max(e, e) (all shapes of a scene share e)"},
+       {"restitution threshold", number(restitution_threshold) + " m/s",
+        "gaphys's (Bullet default " + number(defaults.m_restitutionVelocityThreshold) + ")"},
+       {"penetration",
+        "split impulse at every depth, erp2 " + number(position_correction) + ", slop 0",
+        "positions-only correction like gaphys's (Bullet default: split impulse beyond " +
+            number(-defaults.m_splitImpulsePenetrationThreshold) +
+            " m only); slop 0 as Bullet's slop also lowers the rebound velocity"},
+       {"friction", "0 sliding, rolling and spinning", "gaphys is frictionless"},
+       {"damping / sleeping", "0 / DISABLE_DEACTIVATION", "gaphys has neither"},
+       {"gyroscopic", "BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY", "Bullet's default, for M1"},
+       {"margins",
+        "sphere " + number(sphere.getMargin()) + " m (= r: the whole sphere is margin), plane " +
+            number(plane.getMargin()) + " m",
+        "shape defaults"},
+       {"warm starting", "factor " + number(defaults.m_warmstartingFactor), "default"},
+       {"CCD", "off", "default; gaphys and ODE have none"}},
+      [] { return std::make_unique<bullet_adapter>(); }};
+}
+
+}  // namespace gaphys_compare

@@ -1,0 +1,101 @@
+#include "options.hpp"
+
+#include <sstream>
+#include <stdexcept>
+
+namespace gaphys_compare {
+
+namespace {
+
+std::vector<std::string> split(const std::string& list) {
+  std::vector<std::string> items;
+  std::istringstream in(list);
+  for (std::string item; std::getline(in, item, ',');) {
+    if (!item.empty()) items.push_back(item);
+  }
+  return items;
+}
+
+double to_number(const std::string& flag, const std::string& text) {
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || !(value > 0)) {
+    throw std::invalid_argument(flag + ": expected a positive number, got '" + text + "'");
+  }
+  return value;
+}
+
+int to_count(const std::string& flag, const std::string& text) {
+  const double value = to_number(flag, text);
+  if (value != static_cast<int>(value)) {
+    throw std::invalid_argument(flag + ": expected a whole number, got '" + text + "'");
+  }
+  return static_cast<int>(value);
+}
+
+}  // namespace
+
+const char* usage() {
+  return "usage: compare_engines [flags]\n"
+         "  --engines LIST        gaphys,bullet,ode-quick,ode-lcp (default: all)\n"
+         "  --metrics LIST        m1,m2,m3,m4,m5,m6 (default: all)\n"
+         "  --m1-steps N          free rotation steps (10000)\n"
+         "  --m5-speeds LIST      projectile speeds, m/s (1,2,5,10,20,50,100,200,500)\n"
+         "  --m6-sizes LIST       sphere counts (100,300,1000,3000,10000)\n"
+         "  --m6-warmup N         steps before timing (120)\n"
+         "  --m6-steps N          steps timed per size (100)\n"
+         "  --m6-step-budget S    skip a size (and larger) when one step takes > S s (2)\n"
+         "  --m6-size-budget S    stop timing a size after S s of timed steps (60)\n"
+         "  --out-dir DIR         results.csv, results.json, plots (compare-results)\n"
+         "  --no-plots            do not run gnuplot\n";
+}
+
+options parse_options(int argc, char** argv) {
+  options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string flag = argv[i];
+    if (flag == "--help" || flag == "-h") {
+      o.help = true;
+      continue;
+    }
+    if (flag == "--no-plots") {
+      o.plots = false;
+      continue;
+    }
+    if (i + 1 >= argc) throw std::invalid_argument(flag + ": missing value (or unknown flag)");
+    const std::string value = argv[++i];
+    if (flag == "--engines") {
+      o.engines = split(value);
+    } else if (flag == "--metrics") {
+      o.metrics = split(value);
+    } else if (flag == "--m1-steps") {
+      o.m1_steps = to_count(flag, value);
+    } else if (flag == "--m5-speeds") {
+      o.m5_speeds.clear();
+      for (const std::string& item : split(value)) o.m5_speeds.push_back(to_number(flag, item));
+    } else if (flag == "--m6-sizes") {
+      o.m6_sizes.clear();
+      for (const std::string& item : split(value)) o.m6_sizes.push_back(to_count(flag, item));
+    } else if (flag == "--m6-warmup") {
+      o.m6_warmup = to_count(flag, value);
+    } else if (flag == "--m6-steps") {
+      o.m6_steps = to_count(flag, value);
+    } else if (flag == "--m6-step-budget") {
+      o.m6_step_budget = to_number(flag, value);
+    } else if (flag == "--m6-size-budget") {
+      o.m6_size_budget = to_number(flag, value);
+    } else if (flag == "--out-dir") {
+      o.out_dir = value;
+    } else {
+      throw std::invalid_argument("unknown flag " + flag);
+    }
+  }
+  return o;
+}
+
+}  // namespace gaphys_compare

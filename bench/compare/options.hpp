@@ -1,0 +1,33 @@
+// The command line: which engines and metrics to run, how long, and where
+// the results go. Every default is the full comparison; the flags exist so a
+// quick run (the smoke test, a check while editing) takes seconds.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace gaphys_compare {
+
+struct options {
+  std::vector<std::string> engines;  // empty: all
+  std::vector<std::string> metrics;  // empty: all (m1 .. m6)
+  int m1_steps = 10000;
+  std::vector<double> m5_speeds{1, 2, 5, 10, 20, 50, 100, 200, 500};  // m/s
+  std::vector<int> m6_sizes{100, 300, 1000, 3000, 10000};
+  int m6_warmup = 120;  // steps before timing: the spheres have landed
+  int m6_steps = 100;   // steps timed per size
+  // A size is skipped, with every larger one, when one of its steps takes
+  // longer than this (s); the timing of a size stops early (after at least
+  // 10 steps) once its timed steps add up to m6_size_budget seconds.
+  double m6_step_budget = 2;
+  double m6_size_budget = 60;
+  std::string out_dir = "compare-results";
+  bool plots = true;
+  bool help = false;
+};
+
+// Throws std::invalid_argument naming the bad flag.
+options parse_options(int argc, char** argv);
+const char* usage();
+
+}  // namespace gaphys_compare

@@ -1,0 +1,82 @@
+// M6. Wall time of one step with N spheres falling into a box, after a
+// warm-up that lets the lower layers land (so the contacts are there). The
+// median is the typical step; the 99th percentile shows the slow ones
+// (broad-phase rebuilds, solver spikes). Each engine times its whole step:
+// broad phase, narrow phase, solver and integration.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <vector>
+
+#include "metrics.hpp"
+#include "number.hpp"
+#include "scenes.hpp"
+
+namespace gaphys_compare {
+
+namespace {
+
+using clock = std::chrono::steady_clock;
+
+double timed_step(engine_adapter& adapter) {
+  const auto start = clock::now();
+  adapter.step(time_step);
+  return std::chrono::duration<double>(clock::now() - start).count();
+}
+
+// The nearest-rank percentile of sorted samples.
+double percentile(const std::vector<double>& sorted, double p) {
+  const auto rank = static_cast<std::size_t>(std::ceil(p * static_cast<double>(sorted.size())));
+  return sorted[std::max<std::size_t>(rank, 1) - 1];
+}
+
+}  // namespace
+
+void step_time(const engine& e, const options& o, recorder& out) {
+  constexpr int min_timed_steps = 10;
+  bool too_slow = false;
+  std::vector<int> sizes = o.m6_sizes;
+  std::sort(sizes.begin(), sizes.end());
+  for (const int count : sizes) {
+    const scene s = falling_spheres(count);
+    const scene_label label{s.name, static_cast<double>(count)};
+    if (too_slow) {
+      out.add_missing(label, "median ms/step", "skipped (too slow)");
+      out.add_missing(label, "p99 ms/step", "skipped (too slow)");
+      out.add_missing(label, "mean height at end (m)", "skipped");
+      continue;
+    }
+    std::cerr << "  M6 " << e.name << " " << s.name << "\n";
+    auto adapter = e.make();
+    adapter->build(s);
+    std::vector<double> samples;
+    double timed = 0;
+    for (int i = 0; i < o.m6_warmup + o.m6_steps && !too_slow; ++i) {
+      const double seconds = timed_step(*adapter);
+      too_slow = seconds > o.m6_step_budget;
+      if (i < o.m6_warmup) continue;
+      samples.push_back(seconds);
+      timed += seconds;
+      if (timed > o.m6_size_budget && static_cast<int>(samples.size()) >= min_timed_steps) break;
+    }
+    if (too_slow) {
+      const std::string why = "skipped (step > " + number(o.m6_step_budget) + " s)";
+      out.add_missing(label, "median ms/step", why);
+      out.add_missing(label, "p99 ms/step", why);
+      out.add_missing(label, "mean height at end (m)", "skipped");
+      continue;
+    }
+    std::sort(samples.begin(), samples.end());
+    out.add(label, "median ms/step", 1e3 * percentile(samples, 0.5));
+    out.add(label, "p99 ms/step", 1e3 * percentile(samples, 0.99));
+    out.add_detail(label, "steps timed", static_cast<double>(samples.size()));
+    // Not a speed: a check that the engines simulated the same thing (the
+    // spheres fell and stayed in the box), so their times compare.
+    double height = 0;
+    for (std::size_t i = 0; i < s.bodies.size(); ++i) height += adapter->state(i).position.z;
+    out.add(label, "mean height at end (m)", height / static_cast<double>(s.bodies.size()));
+  }
+}
+
+}  // namespace gaphys_compare
