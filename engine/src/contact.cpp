@@ -62,7 +62,8 @@ placed_shape place(const shape& s, const vector& position, const rotor& attitude
   return placed;
 }
 
-std::optional<contact_geometry> find_contact(const placed_shape& a, const placed_shape& b) {
+std::optional<contact_geometry> find_contact(const placed_shape& a, const placed_shape& b,
+                                             real max_gap) {
   const mv ni = c3ga::ni();
   const mv no = c3ga::no();
 
@@ -84,8 +85,10 @@ std::optional<contact_geometry> find_contact(const placed_shape& a, const placed
   // (a sphere sunk below a plane, or inside a bigger sphere). The inner
   // product of the duals tells which: for spheres σA . σB = (rA^2 + rB^2 -
   // d^2) / 2, below -rA rB when apart and above rA rB when nested; for a
-  // sphere and a plane it is the centre's depth below the plane.
-  if (!(squared_radius >= 0) && !(c3ga::scp(a.dual, b.dual) > 0)) return std::nullopt;
+  // sphere and a plane it is the centre's depth below the plane. Apart
+  // shapes go on only when a gap up to max_gap is asked for.
+  const bool apart = !(squared_radius >= 0) && !(c3ga::scp(a.dual, b.dual) > 0);
+  if (apart && !(max_gap > 0)) return std::nullopt;
 
   // Thesis eq. 4.10: reflecting infinity in the round gives its centre.
   const mv centre = c3ga::gp(c3ga::gp(meet, ni), meet);
@@ -107,8 +110,10 @@ std::optional<contact_geometry> find_contact(const placed_shape& a, const placed
   }
   normal = normal / length;
 
-  // Depth: how far the solids overlap along the normal.
+  // Depth: how far the solids overlap along the normal (minus the gap when
+  // they are apart).
   const real depth = support_height(a, -normal) + support_height(b, normal);
+  if (apart && !(depth >= -max_gap)) return std::nullopt;
   return contact_geometry{point, normal, depth, squared_radius};
 }
 

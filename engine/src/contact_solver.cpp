@@ -39,7 +39,8 @@ void contact_solver::apply_impulse(body& a, body& b, const constraint& k, real j
 // The terms of one contact that stay fixed while the sweeps run (attitudes do
 // not change, so neither do the world inertias).
 contact_solver::constraint contact_solver::make_constraint(const body& a, const body& b,
-                                                           const contact& c, real approach) const {
+                                                           const contact& c, real approach,
+                                                           real h) const {
   const vector& n = c.geometry.normal;
   constraint k;
   k.normal = n;
@@ -53,20 +54,27 @@ contact_solver::constraint contact_solver::make_constraint(const body& a, const 
   // 1/mA + 1/mB + n . (rA ⌋ I_A⁻¹(rA ∧ n)) + n . (rB ⌋ I_B⁻¹(rB ∧ n)).
   k.effective_mass_inverse = a.inverse_mass() + b.inverse_mass() + e3ga::lc(k.arm_a, k.turn_a) +
                              e3ga::lc(k.arm_b, k.turn_b);
-  k.target_speed = approach < -settings_.restitution_threshold ? -c.restitution * approach : real(0);
+  const bool bounces = approach < -settings_.restitution_threshold && c.restitution > 0;
+  const real gap = -c.geometry.depth;
+  if (gap > 0) {  // speculative
+    if (bounces) k.effective_mass_inverse = 0;
+    k.target_speed = -gap / h;
+  } else {
+    k.target_speed = bounces ? -c.restitution * approach : real(0);
+  }
   return k;
 }
 
 void contact_solver::solve_velocities(std::vector<body>& bodies,
                                       const std::vector<body_velocity>& start,
                                       std::vector<contact>& contacts,
-                                      const std::vector<contact>& previous) {
+                                      const std::vector<contact>& previous, real h) {
   constraints_.clear();
   for (const contact& c : contacts) {
     const body& a = bodies[c.body_a];
     const body& b = bodies[c.body_b];
     const real approach = approach_speed(a, b, start[c.body_a], start[c.body_b], c);
-    constraints_.push_back(make_constraint(a, b, c, approach));
+    constraints_.push_back(make_constraint(a, b, c, approach, h));
   }
 
   // Warm start: both lists are sorted by body pair, so one merge finds the
@@ -113,6 +121,9 @@ void contact_solver::solve_velocities(std::vector<body>& bodies,
 void contact_solver::correct_positions(std::vector<body>& bodies,
                                        const std::vector<contact>& contacts, real h) const {
   for (const contact& c : contacts) {
+    // A speculative contact had a gap when the step began; if its bodies
+    // overlap now (one left to bounce), the next step meets them for real.
+    if (c.geometry.depth < 0) continue;
     body& a = bodies[c.body_a];
     body& b = bodies[c.body_b];
     const real inverse_masses = a.inverse_mass_ + b.inverse_mass_;

@@ -23,8 +23,15 @@ class contact_solver {
   // each bounce h g faster than it came and climb 1.3% higher every time.
   // Contacts between the same two bodies in `previous` (the last step's,
   // sorted by body pair like `contacts`) start from their old impulse.
+  //
+  // A speculative contact (depth = -gap < 0) lets its bodies close the gap
+  // in this step of h seconds but no more: its target is -gap / h, so a
+  // landing body ends the step touching. One that would bounce (e > 0,
+  // approach faster than the threshold) is left to become a real contact,
+  // since stopping it at the surface would take its impact speed away.
   void solve_velocities(std::vector<body>& bodies, const std::vector<body_velocity>& start,
-                        std::vector<contact>& contacts, const std::vector<contact>& previous);
+                        std::vector<contact>& contacts, const std::vector<contact>& previous,
+                        real h);
 
   // After the positions moved by h v: pushes overlapping bodies apart along
   // the normal by a share of the depth left beyond the slop.
@@ -36,12 +43,13 @@ class contact_solver {
     vector normal;            // n, from B to A
     bivector arm_a, arm_b;    // n ∧ r for each body's offset r to the contact point
     bivector turn_a, turn_b;  // I⁻¹(r ∧ n): the change of Ω per unit impulse
-    real effective_mass_inverse;
+    real effective_mass_inverse;  // 0: the constraint is left out
     real target_speed;  // normal separation speed wanted after the impulses
     real accumulated = 0;
   };
 
-  constraint make_constraint(const body& a, const body& b, const contact& c, real approach) const;
+  constraint make_constraint(const body& a, const body& b, const contact& c, real approach,
+                             real h) const;
   static real normal_speed(const body& a, const body& b, const constraint& k);
   static void apply_impulse(body& a, body& b, const constraint& k, real j);
 

@@ -4,9 +4,13 @@
 
 namespace gaphys {
 
-void space::candidate_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs) {
+void space::candidate_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs,
+                            real lookahead) {
   // The grid declines coordinates too far out for integer cells.
-  if (kind_ == broad_phase_kind::uniform_grid && grid_.find_pairs(bodies, shaped_bodies_, pairs)) return;
+  if (kind_ == broad_phase_kind::uniform_grid &&
+      grid_.find_pairs(bodies, shaped_bodies_, lookahead, pairs)) {
+    return;
+  }
   all_pairs(bodies, pairs);
 }
 
@@ -24,7 +28,7 @@ void space::all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& p
 }
 
 void space::find_contacts(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
-                          std::vector<contact>& contacts) {
+                          std::vector<contact>& contacts, real lookahead) {
   placed_.resize(bodies.size());
   for (std::size_t index : shaped_bodies_) {
     const body& b = bodies[index];
@@ -32,7 +36,8 @@ void space::find_contacts(const std::vector<body>& bodies, const std::vector<bod
   }
   contacts.clear();
   for (const auto& [a, b] : pairs) {
-    if (auto geometry = find_contact(placed_[a], placed_[b])) {
+    const real reach = lookahead * (e3ga::norm(bodies[a].velocity()) + e3ga::norm(bodies[b].velocity()));
+    if (auto geometry = find_contact(placed_[a], placed_[b], reach)) {
       const real restitution =
           std::max(bodies[a].shape()->restitution(), bodies[b].shape()->restitution());
       contacts.push_back(contact{a, b, *geometry, restitution});

@@ -29,9 +29,9 @@ std::uint64_t hash(std::int64_t x, std::int64_t y, std::int64_t z) {
 }  // namespace
 
 bool uniform_grid::find_pairs(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped,
-                              std::vector<index_pair>& pairs) {
+                              real lookahead, std::vector<index_pair>& pairs) {
   pairs.clear();
-  collect(bodies, shaped);
+  collect(bodies, shaped, lookahead);
   if (!sort_into_cells()) return false;
   pair_cells(pairs);
   pair_large(pairs);
@@ -58,7 +58,8 @@ void uniform_grid::sort_pairs(std::size_t body_count, std::vector<index_pair>& p
 
 // Bounds for spheres and points, and the cell size: the widest bound that
 // is not "large" (wider than twice the median width).
-void uniform_grid::collect(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped) {
+void uniform_grid::collect(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped,
+                           real lookahead) {
   bounds_.clear();
   planes_.clear();
   large_.clear();
@@ -71,7 +72,8 @@ void uniform_grid::collect(const std::vector<body>& bodies, const std::vector<st
     }
     const vector& c = b.position();
     const real r = b.shape()->radius();
-    const real reach = r + relative_margin * (1 + largest_magnitude(c) + r);
+    const real sweep = lookahead * e3ga::norm(b.velocity());
+    const real reach = r + sweep + relative_margin * (1 + largest_magnitude(c) + r + sweep);
     bounds_.push_back(bound{c, reach, index, b.is_static()});
     widths_.push_back(2 * reach);
   }

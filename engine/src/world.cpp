@@ -81,13 +81,16 @@ void world::step(real h) {
   for (const body& b : bodies_) start_velocities_.push_back({b.velocity_, b.angular_velocity_});
   integrate_velocities(h);
   const auto integrated = clock::now();
-  space_.candidate_pairs(bodies_, pairs_);
+  // Pairs that may touch by the end of the step: contacts up to h |v| apart
+  // are speculative, so a landing body stops at the surface instead of
+  // sinking in by up to h |v| first.
+  space_.candidate_pairs(bodies_, pairs_, h);
   const auto paired = clock::now();
   previous_contacts_.swap(contacts_);
-  space_.find_contacts(bodies_, pairs_, contacts_);
+  space_.find_contacts(bodies_, pairs_, contacts_, h);
   const auto met = clock::now();
   contact_solver solver(settings_);
-  solver.solve_velocities(bodies_, start_velocities_, contacts_, previous_contacts_);
+  solver.solve_velocities(bodies_, start_velocities_, contacts_, previous_contacts_, h);
   const auto solved = clock::now();
   integrate_positions(h);
   const auto moved = clock::now();

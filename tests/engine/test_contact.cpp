@@ -54,6 +54,24 @@ TEST_F(contact_test, spheres_apart_have_no_contact) {
   }
 }
 
+// Speculative contacts: spheres apart by a gap up to max_gap still meet, in
+// an imaginary circle whose centre and carrier give the same closed form,
+// with depth = -gap.
+TEST_F(contact_test, spheres_within_the_gap_asked_for_are_speculative_contacts) {
+  for (int trial = 0; trial < 200; ++trial) {
+    const real ra = uniform(0.05, 2), rb = uniform(0.05, 2);
+    const vector b = random_point(5);
+    const real gap = uniform(1e-6, 0.5);
+    const sphere_pair s{b + (ra + rb + gap) * random_unit_vector(), b, ra, rb};
+    const auto within = find_contact(sphere_at(s.centre_a, ra), sphere_at(s.centre_b, rb), gap * 1.01);
+    ASSERT_TRUE(within) << "trial " << trial;
+    EXPECT_LT(within->squared_radius, 0);
+    expect_sphere_sphere_geometry(s, *within);
+    EXPECT_FALSE(find_contact(sphere_at(s.centre_a, ra), sphere_at(s.centre_b, rb), gap * 0.99))
+        << "trial " << trial;
+  }
+}
+
 TEST_F(contact_test, overlapping_spheres_match_the_closed_form) {
   for (int trial = 0; trial < 200; ++trial) {
     const real ra = uniform(0.05, 2), rb = uniform(0.05, 2);

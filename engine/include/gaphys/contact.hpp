@@ -33,14 +33,18 @@ struct contact_geometry {
   // the radical plane (for a plane, still the projected centre).
   vector point;
   vector normal;  // unit, from B towards A
-  real depth;     // overlap along the normal (>= 0 when in contact)
+  real depth;     // overlap along the normal; < 0 (minus the gap) for a speculative contact
   // Of the meet's round: > 0 the surfaces cross, 0 they touch, < 0 one solid
   // holds the other whole (a sphere inside a sphere or below a plane).
   real squared_radius;
 };
 
-// The contact between A and B, or nothing when they are apart.
-std::optional<contact_geometry> find_contact(const placed_shape& a, const placed_shape& b);
+// The contact between A and B, or nothing when they are apart by more than
+// max_gap. Apart shapes within max_gap make a speculative contact: the same
+// geometry (the meet's round is imaginary, its centre and carrier still
+// real), with depth = -gap < 0.
+std::optional<contact_geometry> find_contact(const placed_shape& a, const placed_shape& b,
+                                             real max_gap = 0);
 
 // A contact between two bodies, as the solver uses it.
 struct contact {

@@ -28,13 +28,16 @@ class space {
   broad_phase_kind broad_phase() const { return kind_; }
   void set_broad_phase(broad_phase_kind kind) { kind_ = kind; }
 
-  // Pairs of shaped bodies, not both static, that may touch: a superset of
-  // those that do. Pairs are (a, b) with a < b, in increasing order.
-  void candidate_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs);
+  // Pairs of shaped bodies, not both static, that may touch within
+  // `lookahead` seconds at their present velocities: a superset of those
+  // that do. Pairs are (a, b) with a < b, in increasing order.
+  void candidate_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs,
+                       real lookahead = 0);
 
-  // Places every shape once, then meets each candidate pair.
+  // Places every shape once, then meets each candidate pair. Pairs apart by
+  // no more than lookahead (|vA| + |vB|) make speculative contacts (depth < 0).
   void find_contacts(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
-                     std::vector<contact>& contacts);
+                     std::vector<contact>& contacts, real lookahead = 0);
 
  private:
   void all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs) const;

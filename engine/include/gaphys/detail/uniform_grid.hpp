@@ -31,11 +31,12 @@ using index_pair = std::pair<std::size_t, std::size_t>;
 class uniform_grid {
  public:
   // Appends to `pairs` (cleared first) every candidate among `shaped`
-  // (indices into bodies), not both static, as (a, b) with a < b, sorted.
+  // (indices into bodies), not both static, as (a, b) with a < b, sorted;
+  // each bound reaches lookahead |v| further, for speculative contacts.
   // Returns false, adding nothing, when coordinates are too far out for
   // integer cells (|x| / cell > 2^50); the caller then uses all pairs.
   bool find_pairs(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped,
-                  std::vector<index_pair>& pairs);
+                  real lookahead, std::vector<index_pair>& pairs);
 
  private:
   struct bound {  // a bounding sphere
@@ -56,7 +57,8 @@ class uniform_grid {
     std::size_t begin, end;
   };
 
-  void collect(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped);
+  void collect(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped,
+               real lookahead);
   bool sort_into_cells();
   void sort_dense(std::size_t cells);
   void sort_hashed();
