@@ -19,6 +19,7 @@ running anything. Python 3 standard library only.
 
 import argparse
 import json
+import math
 import subprocess
 import sys
 from pathlib import Path
@@ -181,9 +182,9 @@ def kernel_table(results, repetitions):
     return lines
 
 
-def engine_run_name(results, variant, spheres):
-    """The run name of world_step for this many spheres (it carries the iteration count)."""
-    prefix = f"world_step/falling_spheres/{spheres}/"
+def engine_run_name(results, variant, spheres, broad_phase="world_step"):
+    """The run name of a world_step benchmark for this many spheres (it carries the iteration count)."""
+    prefix = f"{broad_phase}/falling_spheres/{spheres}/"
     for found_variant, name in results:
         if found_variant == variant and name.startswith(prefix):
             return name
@@ -194,17 +195,28 @@ def milliseconds(value):
     return f"{value:.3f}" if value >= 0.01 else f"{value:.4f}"
 
 
-def engine_table(engine, repetitions):
+def log_log_slope(points):
+    """Least-squares slope of log(time) against log(N)."""
+    xs = [math.log(n) for n, _ in points]
+    ys = [math.log(t) for _, t in points]
+    mean_x, mean_y = sum(xs) / len(xs), sum(ys) / len(ys)
+    covariance = sum((x - mean_x) * (y - mean_y) for x, y in zip(xs, ys))
+    return covariance / sum((x - mean_x) ** 2 for x in xs)
+
+
+def engine_table(engine, repetitions, broad_phase="world_step", sizes=(10, 100, 1000, 3000, 10000)):
+    title = "uniform grid" if broad_phase == "world_step" else "all pairs (the thesis's broad phase)"
     lines = [
-        f"#### Engine step: N spheres falling into a box, wall milliseconds per step (median of {repetitions})",
+        f"#### Engine step, {title}: N spheres falling into a box, wall ms per step (median of {repetitions})",
         "",
         "| N | contacts | phase | reference | instrumented | optimized | ref / opt | instr / ref |",
         "|---:|---:|---|---:|---:|---:|---:|---:|",
     ]
-    for spheres in (10, 100, 1000):
+    steps = {variant: [] for variant in VARIANTS}
+    for spheres in sizes:
         cells = {}
         for variant in VARIANTS:
-            name = engine_run_name(engine, variant, spheres)
+            name = engine_run_name(engine, variant, spheres, broad_phase)
             if name and "median" in engine[(variant, name)]:
                 cells[variant] = engine[(variant, name)]
         if not cells:
@@ -213,6 +225,8 @@ def engine_table(engine, repetitions):
         rows = [("step (total)", lambda b: b["real_time"], "cv")] + [
             (label, lambda b, key=key: b[key], None) for key, label in ENGINE_PHASES
         ]
+        for variant, cell in cells.items():
+            steps[variant].append((spheres, cell["median"]["real_time"]))
         for index, (label, value, show_cv) in enumerate(rows):
             times = {v: value(c["median"]) for v, c in cells.items()}
             shown = []
@@ -228,6 +242,13 @@ def engine_table(engine, repetitions):
             by = lambda a, b: f"{a / b:.1f}x" if a and b else "n/a"
             row = [str(spheres) if index == 0 else "", f"{contacts:.0f}" if index == 0 else "", label]
             lines.append("| " + " | ".join(row + shown + [by(ref, opt), by(ins, ref)]) + " |")
+    slopes = []
+    for variant in VARIANTS:
+        points = [(n, t) for n, t in steps[variant] if n >= 100]
+        if len(points) >= 2:
+            slopes.append(f"{variant} {log_log_slope(points):.2f}")
+    if slopes:
+        lines += ["", "Log-log slope of step time against N over N >= 100: " + ", ".join(slopes) + "."]
     return lines
 
 
@@ -257,6 +278,7 @@ def main():
         lines += kernel_table(results, repetitions) + [""]
     if args.tables in ("all", "engine"):
         lines += engine_table(engine, repetitions) + [""]
+        lines += engine_table(engine, repetitions, "world_step_all_pairs", (10, 100, 1000)) + [""]
     lines.append(
         f"Machine: {context.get('num_cpus', '?')} CPUs at {context.get('mhz_per_cpu', '?')} MHz, "
         f"Google Benchmark library reports build type {context.get('library_build_type', '?')} "

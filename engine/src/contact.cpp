@@ -63,7 +63,7 @@ placed_shape place(const shape& s, const vector& position, const rotor& attitude
 }
 
 std::optional<contact_geometry> find_contact(const placed_shape& a, const placed_shape& b,
-                                             real max_gap) {
+                                             real lookahead, const vector& relative_velocity) {
   const mv ni = c3ga::ni();
   const mv no = c3ga::no();
 
@@ -86,14 +86,9 @@ std::optional<contact_geometry> find_contact(const placed_shape& a, const placed
   // product of the duals tells which: for spheres σA . σB = (rA^2 + rB^2 -
   // d^2) / 2, below -rA rB when apart and above rA rB when nested; for a
   // sphere and a plane it is the centre's depth below the plane. Apart
-  // shapes go on only when a gap up to max_gap is asked for.
+  // shapes go on only when they may close the gap within the lookahead.
   const bool apart = !(squared_radius >= 0) && !(c3ga::scp(a.dual, b.dual) > 0);
-  if (apart && !(max_gap > 0)) return std::nullopt;
-
-  // Thesis eq. 4.10: reflecting infinity in the round gives its centre.
-  const mv centre = c3ga::gp(c3ga::gp(meet, ni), meet);
-  const real centre_weight = -c3ga::scp(ni, centre);
-  const vector point = to_e3ga(c3ga::euclidean_vector(centre)) / centre_weight;
+  if (apart && !(lookahead > 0)) return std::nullopt;
 
   // Thesis eq. 4.11: (-ni ⌋ C) ∧ ni is the direction of the round's carrier,
   // n ∧ ni; undualized and read out by no ⌋ it is a vector along the normal,
@@ -111,9 +106,15 @@ std::optional<contact_geometry> find_contact(const placed_shape& a, const placed
   normal = normal / length;
 
   // Depth: how far the solids overlap along the normal (minus the gap when
-  // they are apart).
+  // they are apart). A gap counts when the closing speed -n . (vA - vB)
+  // covers it within the lookahead.
   const real depth = support_height(a, -normal) + support_height(b, normal);
-  if (apart && !(depth >= -max_gap)) return std::nullopt;
+  if (apart && !(-depth <= -lookahead * e3ga::scp(normal, relative_velocity))) return std::nullopt;
+
+  // Thesis eq. 4.10: reflecting infinity in the round gives its centre.
+  const mv centre = c3ga::gp(c3ga::gp(meet, ni), meet);
+  const real centre_weight = -c3ga::scp(ni, centre);
+  const vector point = to_e3ga(c3ga::euclidean_vector(centre)) / centre_weight;
   return contact_geometry{point, normal, depth, squared_radius};
 }
 

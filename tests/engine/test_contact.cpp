@@ -54,21 +54,29 @@ TEST_F(contact_test, spheres_apart_have_no_contact) {
   }
 }
 
-// Speculative contacts: spheres apart by a gap up to max_gap still meet, in
-// an imaginary circle whose centre and carrier give the same closed form,
-// with depth = -gap.
+// Speculative contacts: spheres apart by a gap their closing speed covers
+// within the lookahead still meet, in an imaginary circle whose centre and
+// carrier give the same closed form, with depth = -gap.
 TEST_F(contact_test, spheres_within_the_gap_asked_for_are_speculative_contacts) {
   for (int trial = 0; trial < 200; ++trial) {
     const real ra = uniform(0.05, 2), rb = uniform(0.05, 2);
     const vector b = random_point(5);
     const real gap = uniform(1e-6, 0.5);
-    const sphere_pair s{b + (ra + rb + gap) * random_unit_vector(), b, ra, rb};
-    const auto within = find_contact(sphere_at(s.centre_a, ra), sphere_at(s.centre_b, rb), gap * 1.01);
+    const vector n = random_unit_vector();
+    const sphere_pair s{b + (ra + rb + gap) * n, b, ra, rb};
+    const placed_shape a_shape = sphere_at(s.centre_a, ra), b_shape = sphere_at(s.centre_b, rb);
+    // A closes on B at speed u along -n plus a sideways slide: the gap is
+    // closed within h exactly when u h >= gap.
+    vector slide = random_unit_vector();
+    slide = slide - dot(slide, n) * n;
+    const auto closing = [&](real u) { return -u * n + uniform(0, 3) * slide; };
+    const auto within = find_contact(a_shape, b_shape, h, closing(gap * 1.01 / h));
     ASSERT_TRUE(within) << "trial " << trial;
     EXPECT_LT(within->squared_radius, 0);
     expect_sphere_sphere_geometry(s, *within);
-    EXPECT_FALSE(find_contact(sphere_at(s.centre_a, ra), sphere_at(s.centre_b, rb), gap * 0.99))
-        << "trial " << trial;
+    EXPECT_FALSE(find_contact(a_shape, b_shape, h, closing(gap * 0.99 / h))) << "trial " << trial;
+    EXPECT_FALSE(find_contact(a_shape, b_shape, h, -closing(gap * 2 / h))) << "trial " << trial;
+    EXPECT_FALSE(find_contact(a_shape, b_shape)) << "trial " << trial;
   }
 }
 

@@ -39,12 +39,13 @@ struct contact_geometry {
   real squared_radius;
 };
 
-// The contact between A and B, or nothing when they are apart by more than
-// max_gap. Apart shapes within max_gap make a speculative contact: the same
-// geometry (the meet's round is imaginary, its centre and carrier still
-// real), with depth = -gap < 0.
+// The contact between A and B, or nothing when they are apart. Shapes apart
+// by a gap their relative velocity vA - vB closes within `lookahead` seconds
+// make a speculative contact: the same geometry (the meet's round is
+// imaginary, its centre and carrier still real), with depth = -gap < 0.
 std::optional<contact_geometry> find_contact(const placed_shape& a, const placed_shape& b,
-                                             real max_gap = 0);
+                                             real lookahead = 0,
+                                             const vector& relative_velocity = vector{});
 
 // A contact between two bodies, as the solver uses it.
 struct contact {

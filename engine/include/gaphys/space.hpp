@@ -34,8 +34,9 @@ class space {
   void candidate_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs,
                        real lookahead = 0);
 
-  // Places every shape once, then meets each candidate pair. Pairs apart by
-  // no more than lookahead (|vA| + |vB|) make speculative contacts (depth < 0).
+  // Places every shape once, then meets each candidate pair. Pairs whose
+  // gap their velocities close within lookahead seconds make speculative
+  // contacts (depth < 0).
   void find_contacts(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
                      std::vector<contact>& contacts, real lookahead = 0);
 
