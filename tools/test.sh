@@ -10,3 +10,6 @@ cmake -S . -B build -G Ninja -DPython3_EXECUTABLE="$python"
 cmake --build build
 ctest --test-dir build --output-on-failure -j2
 
+
+# The same GoogleTest suites (reference and optimized) under ASan + UBSan.
+bash tools/test-sanitized.sh

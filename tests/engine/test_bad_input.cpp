@@ -155,6 +155,31 @@ TEST_F(bad_input_test, setters_and_forces_reject_non_finite_values_and_change_no
   EXPECT_TRUE(near(w.settings().gravity, vector{0, 0, -9.81}, 0));
 }
 
+// Bodies placed exactly on top of each other are not an error: identical
+// spheres (a zero meet), concentric ones and a point at a sphere's centre are
+// pushed apart without a NaN anywhere.
+TEST_F(bad_input_test, bodies_on_top_of_each_other_are_separated_without_nan) {
+  world stacked = make_world();
+  add_floor(stacked);
+  const vector spot{0.3, -0.2, 2};
+  add_sphere(stacked, spot, 0.5);
+  add_sphere(stacked, spot, 0.5);
+  add_sphere(stacked, spot, 0.25, 2);
+  body_definition point;
+  point.position = spot;
+  point.shape = shape::point();
+  point.inertia = inertia::principal(1, 1, 1);
+  stacked.create_body(point);
+  simulate(stacked, 480);
+  for (const body& b : stacked.bodies()) {
+    for (real c : b.position().c) ASSERT_TRUE(std::isfinite(c));
+    for (real c : b.velocity().c) ASSERT_TRUE(std::isfinite(c));
+    for (real c : b.attitude().c) ASSERT_TRUE(std::isfinite(c));
+  }
+  // The two identical spheres no longer share a centre.
+  EXPECT_GT(length(stacked.at(1).position() - stacked.at(2).position()), 0.5);
+}
+
 TEST_F(bad_input_test, world_settings_are_checked) {
   const auto rejects_settings = [](const world_settings& s, const std::string& what) {
     return rejects([&] { world{s}; }, what);
