@@ -7,7 +7,11 @@ from .symbolic import Poly
 
 
 def number(value: Fraction) -> str:
-    """An exact C++ literal of type T for a rational."""
+    """An exact C++ literal of type T for a rational, or the nearest double when its
+    numerator or denominator needs over 53 bits (products of spec numbers can): no
+    C++ integer literal holds 2^64, and T cannot be exact there anyway."""
+    if abs(value.numerator) > 2**53 or value.denominator > 2**53:
+        return f"T({float(value)!r})"
     if value.denominator == 1:
         return f"T({value.numerator})"
     denominator = value.denominator

@@ -14,7 +14,6 @@ from fractions import Fraction
 
 from . import symbolic as sym
 from .blades import PRODUCTS, conjugate_sign, involute_sign, reverse_sign
-from .errors import SpecError
 from .model import Algebra, FunctionRequest, NamedType
 from .symbolic import Poly, SymMV
 
@@ -189,10 +188,11 @@ class Expander:
             # A null type (e.g. ni alone) has no versor inverse, and a sandwich by it is undefined.
             if location is None:
                 return None
-            raise SpecError(location, f"{function}({', '.join(a.name for a in arguments)}) divides by zero: "
-                                      f"{arguments[0].name} is null (<x ~x> = 0)")
+            raise self.algebra.error(location, f"{function}({', '.join(a.name for a in arguments)}) divides by "
+                                               f"zero: {arguments[0].name} is null (<x ~x> = 0)")
         if not result and location is not None:
-            raise SpecError(location, f"{function}({', '.join(a.name for a in arguments)}) is identically zero")
+            raise self.algebra.error(location,
+                                     f"{function}({', '.join(a.name for a in arguments)}) is identically zero")
         rtype = self.result_type(result, divisor)
         if function == "norm2":
             rtype = ResultType("scalar")
@@ -284,7 +284,8 @@ def expand(algebra: Algebra) -> list[Kernel]:
             add(function, (named, named))
     for request in algebra.functions:
         if request.name in ("dual", "undual", "meet") and not expander.has_dual:
-            raise SpecError(request.location, f"{request.name} needs a non-degenerate metric (the pseudoscalar squares to 0)")
+            raise algebra.error(request.location,
+                                f"{request.name} needs a non-degenerate metric (the pseudoscalar squares to 0)")
         add(request.name, request.arguments, request.location)
     return list(kernels.values())
 

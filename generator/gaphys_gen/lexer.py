@@ -16,7 +16,8 @@ class Token:
 _TOKEN = re.compile(
     r"(?P<space>[ \t\r]+)|(?P<comment>#[^\n]*)|(?P<newline>\n)"
     r"|(?P<number>\d+(\.\d+)?([eE][+-]?\d+)?)|(?P<ident>[A-Za-z_][A-Za-z_0-9]*)"
-    r"|(?P<punct>[=,^().*+\-/])"
+    r"|(?P<punct>[=,^().*+\-/])",
+    re.ASCII,  # DIGITS are 0-9: \d would also take other scripts' digits
 )
 
 

@@ -96,6 +96,11 @@ class Algebra:
     constants: tuple[Constant, ...]
     functions: tuple[FunctionRequest, ...]
     products: BladeAlgebra = field(repr=False)
+    lines: tuple[str, ...] = field(repr=False)  # the spec's text, for errors found after validation
+
+    def error(self, location: Location, message: str) -> SpecError:
+        """A SpecError at a place in this algebra's spec, showing its line."""
+        return SpecError(location, message, self.lines[location.line - 1])
 
     @property
     def blade_count(self) -> int:
@@ -212,6 +217,7 @@ class _Validator:
             constants=self.validate_constants(type_names, aliases),
             functions=self.validate_functions(type_names, aliases),
             products=BladeAlgebra(metric),
+            lines=self.spec.lines,
         )
 
     def validate_metric(self) -> tuple[tuple[Fraction, ...], ...]:
@@ -316,10 +322,22 @@ def validate(spec: ast.SpecSyntax, text: str) -> Algebra:
     return _Validator(spec, text).validate()
 
 
+def _not_utf8(error: UnicodeDecodeError, path: str) -> SpecError:
+    """Points at the first byte that is not UTF-8, counting lines as reading in text mode does."""
+    before = error.object[: error.start].decode("utf-8").replace("\r\n", "\n").replace("\r", "\n")
+    lines = error.object.decode("utf-8", "replace").replace("\r\n", "\n").replace("\r", "\n").split("\n")
+    line = before.count("\n") + 1
+    location = Location(path, line, len(before) - before.rfind("\n"))
+    return SpecError(location, f"not UTF-8 text (byte 0x{error.object[error.start]:02x})", lines[line - 1])
+
+
 def load(path: str, display_path: str | None = None) -> Algebra:
     from .parser import parse
 
-    with open(path, encoding="utf-8") as handle:
-        text = handle.read()
     shown = display_path or path
+    try:
+        with open(path, encoding="utf-8") as handle:
+            text = handle.read()
+    except UnicodeDecodeError as error:
+        raise _not_utf8(error, shown) from error
     return validate(parse(text, shown), text)

@@ -7,6 +7,13 @@ from .errors import Location, SpecError
 from .lexer import Token, tokenize
 
 SCALAR_TYPES = ("float", "double")
+# Numerators and denominators up to 2^53 are exact in double, and the products
+# of them that make a kernel's coefficients stay inside double's range.
+MAX_PART = 2**53
+
+
+def _fits(value: Fraction) -> bool:
+    return abs(value.numerator) <= MAX_PART and value.denominator <= MAX_PART
 
 
 class _Parser:
@@ -43,15 +50,31 @@ class _Parser:
             return self.next()
         return None
 
+    def out_of_range(self, location: Location, text: str) -> SpecError:
+        shown = text if len(text) <= 24 else text[:20] + "..."
+        return self.error(location, f"number {shown} is out of range (numerator and denominator at most 2^53)")
+
+    def literal(self, token: Token) -> Fraction:
+        exponent = token.text.lower().partition("e")[2].lstrip("+-").lstrip("0")
+        # Measure before converting: Fraction("1e999999999") computes 10 ** 999999999.
+        if len(token.text) <= 100 and len(exponent) <= 3:
+            value = Fraction(token.text)
+            if _fits(value):
+                return value
+        raise self.out_of_range(token.location, token.text)
+
     def number(self) -> Fraction:
         sign = -1 if self.accept("-") else 1
         token = self.expect("NUMBER", what="a number")
-        value = Fraction(token.text)
+        value = self.literal(token)
         if self.accept("/"):
-            denominator = self.expect("NUMBER", what="a denominator")
-            if Fraction(denominator.text) == 0:
-                raise self.error(denominator.location, "division by zero")
-            value /= Fraction(denominator.text)
+            divisor = self.expect("NUMBER", what="a denominator")
+            denominator = self.literal(divisor)
+            if denominator == 0:
+                raise self.error(divisor.location, "division by zero")
+            value /= denominator
+            if not _fits(value):
+                raise self.out_of_range(token.location, f"{token.text}/{divisor.text}")
         return sign * value
 
     def blade(self) -> ast.BladeRef:

@@ -22,6 +22,10 @@ from .model import Algebra
 
 FORMAT = "gaphys-profile"
 FORMAT_VERSION = 1
+# Counts are exact integers, but bounded: Python prints no integer of over 4300
+# digits, and a sum of huge counts would make a profile that cannot be written.
+# The recorder counts in 64 bits, so 2^128 leaves room for any number of merges.
+MAX_COUNT = 2**128
 
 # Recorded functions and how many multivector arguments each takes.
 RECORDED_ARITY = {
@@ -59,11 +63,12 @@ class Profile:
         return sum(e.count for e in self.entries)
 
 
-def _combine(entries) -> tuple[Entry, ...]:
+def _combine(entries, path: str) -> tuple[Entry, ...]:
     """One entry per key, counts added; sorted for deterministic output."""
     counts: dict[tuple, int] = {}
     for e in entries:
         counts[e.key] = counts.get(e.key, 0) + e.count
+        _require(counts[e.key] < MAX_COUNT, path, f"{e.function} {list(e.arguments)}: 2^128 calls or more")
     return tuple(Entry(f, a, r, c) for (f, a, r), c in sorted(counts.items()))
 
 
@@ -81,9 +86,13 @@ def parse(text: str, path: str, algebra: Algebra | None = None) -> Profile:
         data = json.loads(text)
     except json.JSONDecodeError as error:
         raise ProfileError(f"{path}:{error.lineno}:{error.colno}: malformed JSON: {error.msg}") from error
+    except RecursionError as error:
+        raise ProfileError(f"{path}: malformed JSON: nested too deeply") from error
+    except ValueError as error:  # Python's int refuses numbers of over 4300 digits
+        raise ProfileError(f"{path}: malformed JSON: a number has too many digits") from error
     _require(isinstance(data, dict), path, "a profile is a JSON object")
     _require(data.get("format") == FORMAT, path, f"not a gaphys profile (\"format\" must be \"{FORMAT}\")")
-    _require(data.get("version") == FORMAT_VERSION, path,
+    _require(_is_int(data.get("version")) and data["version"] == FORMAT_VERSION, path,  # not true, not 1.0
              f"profile format version {data.get('version')!r} is not supported (expected {FORMAT_VERSION})")
     for key in ("algebra", "spec_hash", "generator_version"):
         _require(isinstance(data.get(key), str), path, f"\"{key}\" must be a string")
@@ -104,7 +113,8 @@ def parse(text: str, path: str, algebra: Algebra | None = None) -> Profile:
         _require(set(raw) == {"function", "arguments", "result", "count"}, path,
                  f"{where}: needs exactly the keys function, arguments, result, count")
         function = raw["function"]
-        _require(function in RECORDED_ARITY, path, f"{where}: unknown function {function!r}")
+        _require(isinstance(function, str) and function in RECORDED_ARITY, path,
+                 f"{where}: unknown function {function!r}")
         arguments = raw["arguments"]
         _require(isinstance(arguments, list) and len(arguments) == RECORDED_ARITY[function], path,
                  f"{where}: {function} takes {RECORDED_ARITY[function]} bitmap argument(s)")
@@ -114,7 +124,7 @@ def parse(text: str, path: str, algebra: Algebra | None = None) -> Profile:
         _require(_is_int(raw["count"]) and raw["count"] >= 0, path,
                  f"{where}: count must be a non-negative integer, not {raw['count']!r}")
         entries.append(Entry(function, tuple(arguments), raw["result"], raw["count"]))
-    return Profile(data["algebra"], data["spec_hash"], data["generator_version"], _combine(entries))
+    return Profile(data["algebra"], data["spec_hash"], data["generator_version"], _combine(entries, path))
 
 
 def load(path: str, algebra: Algebra | None = None) -> Profile:
@@ -149,8 +159,10 @@ def merge(profiles: list[tuple[str, Profile]]) -> Profile:
         _require(other.algebra == first.algebra and other.spec_hash == first.spec_hash, path,
                  f"cannot merge: profile is for {other.algebra} (spec {other.spec_hash[:12]}...), "
                  f"the first for {first.algebra} (spec {first.spec_hash[:12]}...)")
-    return Profile(first.algebra, first.spec_hash, VERSION,
-                   _combine(e for _, p in profiles for e in p.entries))
+    entries: tuple[Entry, ...] = ()
+    for path, other in profiles:  # one at a time, to name the profile that overflows a count
+        entries = _combine(entries + other.entries, path)
+    return Profile(first.algebra, first.spec_hash, VERSION, entries)
 
 
 def select(profile: Profile, coverage: float) -> list[tuple[str, tuple[int, ...], int]]:

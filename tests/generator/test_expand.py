@@ -434,6 +434,7 @@ class TypeSelection(SpecErrorAssertions, unittest.TestCase):
         error = caught.exception
         self.assertEqual((error.location.line, error.location.column), (6, 10))
         self.assertIn("identically zero", error.message)
+        self.assertEqual(str(error).split("\n")[1:], ["function op(vector, trivector)", " " * 9 + "^"])
 
     def test_dual_needs_a_non_degenerate_metric(self):
         text = "algebra pga\nbasis e0 e1 e2\nmetric e1.e1 = 1, e2.e2 = 1\ntype vector = e0, e1, e2\nfunction dual(vector)\n"

@@ -3,6 +3,7 @@
 import itertools
 import os
 import re
+import tempfile
 import unittest
 from fractions import Fraction
 
@@ -304,6 +305,17 @@ class ShippedSpecs(unittest.TestCase):
     def test_display_path_is_used_in_errors(self):
         self.assertEqual(self.e3ga.path, "specs/e3ga.ga")
         self.assertTrue(os.path.isfile(spec_path("e3ga")))
+
+
+class Reading(unittest.TestCase):
+    def test_bytes_that_are_not_utf8_are_located(self):
+        with tempfile.TemporaryDirectory() as folder:
+            path = os.path.join(folder, "bad.ga")
+            with open(path, "wb") as handle:
+                handle.write(b"algebra t\r\nbasis e1 \xff\n")
+            with self.assertRaises(SpecError) as caught:
+                load(path)
+        self.assertEqual(str(caught.exception).split("\n")[0], f"{path}:2:10: error: not UTF-8 text (byte 0xff)")
 
 
 if __name__ == "__main__":

@@ -52,6 +52,18 @@ class SyntaxErrors(SpecErrorAssertions, unittest.TestCase):
     def test_division_by_zero(self):
         self.assertSpecError("algebra t\nbasis e1\nmetric e1.e1 = 1/0\n", 3, 18, "division by zero")
 
+    def test_number_out_of_range(self):
+        # Numerators and denominators stay within 2^53, where double is exact.
+        self.assertSpecError("algebra t\nbasis e1\nmetric e1.e1 = 9007199254740993\n", 3, 16, "out of range")
+        self.assertSpecError("algebra t\nbasis e1\nmetric e1.e1 = 1e-9/9007199254740992\n", 3, 16,
+                             "number 1e-9/9007199254740992 is out of range")
+
+    def test_huge_exponent_is_refused_before_it_is_computed(self):
+        self.assertSpecError("algebra t\nbasis e1\nmetric e1.e1 = 1e999999999\n", 3, 16, "out of range")
+
+    def test_digits_are_ascii(self):
+        self.assertSpecError("algebra t\nbasis e1\nmetric e1.e1 = \u0663\n", 3, 16, "unexpected character")
+
     def test_unclosed_parenthesis_reports_next_token(self):
         # Inside ( ) newlines continue the statement, so the error lands on the next line.
         self.assertSpecError(

@@ -85,6 +85,22 @@ class Loading(unittest.TestCase):
         loaded = profile.parse(json.dumps(document(entries=[entry(count=2**70)])), "p.json", E3)
         self.assertEqual(loaded.total_calls, 2**70)
 
+    def test_json_that_python_cannot_hold(self):
+        self.assertRejected(None, "p.json: malformed JSON: nested too deeply", text="[" * 100000)
+        digits = json.dumps(document(entries=[entry(count=0)])).replace('"count": 0', '"count": ' + "9" * 5000)
+        self.assertRejected(None, "p.json: malformed JSON: a number has too many digits", text=digits)
+
+    def test_counts_stay_below_2_to_128_after_adding_duplicates(self):
+        loaded = profile.parse(json.dumps(document(entries=[entry(count=2**128 - 1)])), "p.json", E3)
+        self.assertEqual(loaded.total_calls, 2**128 - 1)
+        self.assertRejected(document(entries=[entry(count=2**127), entry(count=2**127)]), "2^128 calls or more")
+
+    def test_wrong_types_that_python_compares_equal(self):
+        self.assertRejected(document(version=True), "version True is not supported")
+        self.assertRejected(document(version=1.0), "version 1.0 is not supported")
+        self.assertRejected(document(entries=[entry(function=["gp"])]), "unknown function ['gp']")
+        self.assertRejected(document(entries=[entry(function={"gp": 1})]), "unknown function {'gp': 1}")
+
     def test_duplicate_entries_add_up(self):
         loaded = profile.parse(json.dumps(document(entries=[entry(count=2), entry(count=5)])), "p.json", E3)
         self.assertEqual([e.count for e in loaded.entries], [7])
@@ -97,6 +113,12 @@ class MergeAndWrite(unittest.TestCase):
                                                                           count=1)])), "b", E3)
         merged = profile.merge([("a", a), ("b", b)])
         self.assertEqual({(e.function, e.count) for e in merged.entries}, {("gp", 7), ("add", 1)})
+
+    def test_merge_names_the_profile_that_reaches_2_to_128(self):
+        half = profile.parse(json.dumps(document(entries=[entry(count=2**127)])), "a", E3)
+        with self.assertRaises(profile.ProfileError) as caught:
+            profile.merge([("a", half), ("b", half)])
+        self.assertEqual(str(caught.exception), f"b: gp [{VECTOR}, {VECTOR}]: 2^128 calls or more")
 
     def test_merge_refuses_other_specs(self):
         a = profile.parse(json.dumps(document()), "a", E3)
