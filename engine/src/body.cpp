@@ -107,7 +107,7 @@ bivector body::world_inverse_inertia(const bivector& l) const {
 }
 
 vector body::velocity_at(const vector& world_point) const {
-  return velocity_ + e3ga::lc(world_point - position_, angular_velocity_);
+  return body_velocity{velocity_, angular_velocity_}.at_offset(world_point - position_);
 }
 
 // Bivectors square to minus their squared magnitude, hence the sign of the

@@ -13,9 +13,8 @@ namespace {
 real approach_speed(const body& a, const body& b, const body_velocity& start_a,
                     const body_velocity& start_b, const contact& c) {
   const vector& p = c.geometry.point;
-  const vector at_a = start_a.linear + e3ga::lc(p - a.position(), start_a.angular);
-  const vector at_b = start_b.linear + e3ga::lc(p - b.position(), start_b.angular);
-  return e3ga::scp(at_a - at_b, c.geometry.normal);
+  return e3ga::scp(start_a.at_offset(p - a.position()) - start_b.at_offset(p - b.position()),
+                   c.geometry.normal);
 }
 
 }  // namespace

@@ -35,6 +35,9 @@ struct body_definition {
 struct body_velocity {
   vector linear;
   bivector angular;
+
+  // The velocity of the point at world offset r from the centre: v + r ⌋ Ω.
+  vector at_offset(const vector& r) const { return linear + e3ga::lc(r, angular); }
 };
 
 class body {
