@@ -46,6 +46,7 @@ void world_step(benchmark::State& state) {
 
   gaphys::step_timings total;
   double contacts = 0;
+  double pairs = 0;
   for (auto _ : state) {
     w.step(gaphys::scenes::time_step);
     const gaphys::step_timings& t = w.last_step_timings();
@@ -54,14 +55,16 @@ void world_step(benchmark::State& state) {
     total.narrow_phase += t.narrow_phase;
     total.response += t.response;
     contacts += static_cast<double>(w.contacts().size());
+    pairs += static_cast<double>(t.candidate_pairs);
   }
-  // Milliseconds per step in each phase, and the mean contact count.
+  // Milliseconds per step in each phase, and the mean candidate pair and contact counts.
   const double steps = static_cast<double>(state.iterations());
   state.counters["integration_ms"] = 1e3 * total.integration / steps;
   state.counters["pairs_ms"] = 1e3 * total.pairs / steps;
   state.counters["narrow_phase_ms"] = 1e3 * total.narrow_phase / steps;
   state.counters["response_ms"] = 1e3 * total.response / steps;
   state.counters["contacts"] = contacts / steps;
+  state.counters["candidate_pairs"] = pairs / steps;
   state.counters["bodies"] = static_cast<double>(w.body_count());
 }
 

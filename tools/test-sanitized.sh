@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
 # The GoogleTest suites of the algebras and the engine, in the reference and
-# optimized variants, built with AddressSanitizer and UndefinedBehaviorSanitizer
-# (-DGAPHYS_SANITIZE=ON): any report aborts its test, and so fails this script.
-# algebra_variants_agree (thousands of template instantiations, minutes to
-# compile even unsanitized) is left out to keep CI short.
-# tools/test.sh runs it after the main suite.
+# optimized variants, and algebra_variants_agree (the two variants call by
+# call, and every profiled and superset kernel), built with AddressSanitizer
+# and UndefinedBehaviorSanitizer (-DGAPHYS_SANITIZE=ON): any report aborts its
+# test, and so fails this script. tools/test.sh runs it after the main suite.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 python=$(bash tools/find-python.sh)
-targets=(algebra_tests_reference algebra_tests_optimized engine_tests_reference engine_tests_optimized)
+targets=(algebra_tests_reference algebra_tests_optimized algebra_variants_agree
+         engine_tests_reference engine_tests_optimized)
 cmake -S . -B build-asan -G Ninja -DPython3_EXECUTABLE="$python" -DGAPHYS_SANITIZE=ON \
       -DGAPHYS_BUILD_BENCHMARKS=OFF -DGAPHYS_BUILD_EXAMPLES=OFF
 cmake --build build-asan --target "${targets[@]}"
@@ -17,4 +17,4 @@ cmake --build build-asan --target "${targets[@]}"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 ctest --test-dir build-asan -j2 --output-on-failure \
-      -R '^(reference|optimized|engine_reference|engine_optimized)/'
+      -R '^(reference|optimized|variants_agree|engine_reference|engine_optimized)/'

@@ -90,12 +90,12 @@ std::optional<contact_geometry> find_contact(const placed_shape& a, const placed
   const bool apart = !(squared_radius >= 0) && !(c3ga::scp(a.dual, b.dual) > 0);
   if (apart && !(lookahead > 0)) return std::nullopt;
 
-  // Thesis eq. 4.11: (-ni ⌋ C) ∧ ni is the direction of the round's carrier,
-  // n ∧ ni; undualized and read out by no ⌋ it is a vector along the normal,
-  // oriented from B to A. A round point has no carrier direction: for a flat
-  // point the normal is the line of the two centres instead.
-  const mv direction = c3ga::lc(no, c3ga::undual(c3ga::op(c3ga::lc(-ni, meet), ni)));
-  vector normal = to_e3ga(c3ga::euclidean_vector(direction));
+  // Thesis eq. 4.11: (-ni ⌋ C) ∧ ni = -weight ∧ ni is the direction of the
+  // round's carrier, n ∧ ni; undualized and read out by no ⌋ it is a vector
+  // along the normal, oriented from B to A. A round point has no carrier
+  // direction: for a flat point the normal is the line of the two centres.
+  const mv direction = c3ga::lc(no, c3ga::undual(c3ga::op(weight, ni)));
+  vector normal = -to_e3ga(c3ga::euclidean_vector(direction));
   real length = e3ga::norm(normal);
   if (!(length > 1e-9 * std::sqrt(std::fabs(weight_square)))) {
     if (a.kind == shape_kind::plane || b.kind == shape_kind::plane) return std::nullopt;

@@ -309,6 +309,45 @@ class MvKernel:
     def name(self) -> str:
         return self.function + "".join(f"_{bits:x}" for bits in self.argument_bits)
 
+    @property
+    def operations(self) -> int:
+        """Multiplications and additions, the kernel's cost."""
+        k = self.kernel
+        polys = [p for _, p in k.outputs] + [p for _, p in k.temporaries]
+        polys += [p for p in (k.divisor, k.square, k.cosine) if p is not None]
+        return sum(sum(cost(p)) for p in polys)
+
+    @property
+    def covers_subsets(self) -> bool:
+        """Whether the kernel may also serve arguments with fewer nonzero
+        coefficients: it reads exact zeros there, so its result is the generic
+        path's, unless it divides (a divisor that vanishes on the subset is the
+        generic path's to handle)."""
+        return self.kernel.divisor is None
+
+    def serves(self, argument_bits: tuple[int, ...]) -> bool:
+        """Whether the dispatcher takes this kernel for arguments with these
+        nonzero coefficients when no kernel was made for exactly them."""
+        return (self.covers_subsets
+                and all(bits & ~mine == 0 for bits, mine in zip(argument_bits, self.argument_bits))
+                and self.operations <= OPERATIONS_PER_GENERIC_TERM * generic_work(self.function, argument_bits))
+
+
+# A kernel larger than the arguments it serves costs more than the generic
+# path beyond this many operations per term the generic path visits: a generic
+# term costs 12-27 kernel operations (gp on full mv, c3ga and e3ga, README
+# benchmarks), so 8 leaves a margin.
+OPERATIONS_PER_GENERIC_TERM = 8
+
+
+def generic_work(function: str, argument_bits: tuple[int, ...]) -> int:
+    """The terms the generic path visits: the table product's pairs of
+    coefficients, or the coefficients a sum or a linear map reads."""
+    counts = [bin(bits).count("1") for bits in argument_bits]
+    if len(counts) == 1 or function in ("add", "sub"):
+        return sum(counts)
+    return counts[0] * counts[1]
+
 
 def mv_kernel(expander: Expander, function: str, argument_bits: tuple[int, ...], calls: int) -> MvKernel:
     """Expands `function` on mv arguments whose nonzero coefficients are exactly

@@ -189,14 +189,27 @@ def blade_list(algebra: Algebra, bitmap: int) -> str:
 def report(profile: Profile, algebra: Algebra, coverage: float, top: int = 20) -> str:
     """A readable table of the hot combinations, and what an optimized build
     selected at `coverage` would still send to the generic fallback."""
+    from .expand import expand_profile
+
     total = profile.total_calls
     chosen = select(profile, coverage)
     covered = sum(count for _, _, count in chosen)
+    # The other combinations go to a kernel made for a superset of their
+    # bitmaps where one serves them, else to the generic path.
+    kernels = expand_profile(algebra, chosen)
+    made = {(function, arguments) for function, arguments, _ in chosen}
+    calls: dict[tuple, int] = {}
+    for e in profile.entries:
+        if (e.function, e.arguments) not in made:
+            calls[(e.function, e.arguments)] = calls.get((e.function, e.arguments), 0) + e.count
+    superset = sum(count for (function, arguments), count in calls.items()
+                   if any(k.function == function and k.serves(arguments) for k in kernels))
+    fallback = total - covered - superset
     lines = [
         f"profile of {profile.algebra}: {total} calls, {len(profile.entries)} entries",
         f"specialized at coverage {coverage}: {len(chosen)} combinations, "
-        f"{covered} calls; generic fallback: {total - covered} calls "
-        f"({100.0 * (total - covered) / total if total else 0.0:.3f}%)",
+        f"{covered} calls; served by a superset's kernel: {superset} calls; "
+        f"generic fallback: {fallback} calls ({100.0 * fallback / total if total else 0.0:.3f}%)",
         "",
         "| calls | share | function | arguments |",
         "|---:|---:|---|---|",

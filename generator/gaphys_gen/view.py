@@ -8,7 +8,7 @@ from fractions import Fraction
 
 from . import VERSION, cpp, profile
 from .blades import PRODUCTS, conjugate_sign, involute_sign, reverse_sign
-from .expand import Expander, Kernel
+from .expand import OPERATIONS_PER_GENERIC_TERM, Expander, Kernel
 from .model import Algebra, NamedType
 
 # Functions with a generic (mv) implementation that returns a scalar.
@@ -64,6 +64,7 @@ def named_type(named: NamedType) -> dict:
                 "sign": "" if c.sign > 0 else "-",
                 "stored_index": None if c.constant is not None else stored,
                 "constant": None if c.constant is None else cpp.number(c.constant),
+                "bit": hex(1 << c.blade.index) + "u",
             }
         )
         stored += c.constant is None
@@ -75,7 +76,7 @@ def named_type(named: NamedType) -> dict:
         "coordinates": coordinates,
         "stored": [c for c in coordinates if c["stored_index"] is not None],
         "constants": [c for c in coordinates if c["constant"] is not None],
-        "bits": hex(sum(1 << c.blade.index for c in named.coordinates)) + "u",
+        "constant_bits": hex(sum(1 << c.blade.index for c in named.coordinates if c.constant is not None)) + "u",
         "description": ", ".join(c.blade.name + ("" if c.constant is None else f" = {c.constant}") for c in named.coordinates),
     }
 
@@ -177,8 +178,28 @@ def mv_kernel_view(algebra: Algebra, mk) -> dict:
     }
 
 
+def covering_cases(kernels) -> list[dict]:
+    """The kernels that may serve subsets of their bitmaps, cheapest first,
+    each with its operation count and C++ subset test (MvKernel.serves)."""
+    cases = [
+        {"operations": mk.operations, "bits": mk.argument_bits, "kernel": mk.name,
+         "test": " && ".join(f"!({letter}_bits & ~0x{bits:x}u)" for letter, bits in zip("ab", mk.argument_bits))}
+        for mk in kernels if mk.covers_subsets
+    ]
+    return sorted(cases, key=lambda c: (c["operations"], c["bits"]))
+
+
+# The generic path's work (expand.generic_work) on arguments with bitmaps a_bits (and b_bits).
+GENERIC_WORK = {
+    "product": "gaphys::ga::bit_count(a_bits) * gaphys::ga::bit_count(b_bits)",
+    "sum": "gaphys::ga::bit_count(a_bits) + gaphys::ga::bit_count(b_bits)",
+    "unary": "gaphys::ga::bit_count(a_bits)",
+}
+
+
 def dispatchers(mv_kernels) -> list[dict]:
-    """One dispatcher per specializable function, with a case per profiled kernel."""
+    """One dispatcher per specializable function, with a case per profiled
+    kernel and the kernels that cover unprofiled subsets."""
     from .expand import SPECIALIZABLE
     from .profile import RECORDED_ARITY
 
@@ -196,10 +217,21 @@ def dispatchers(mv_kernels) -> list[dict]:
             "arguments": "a, b" if binary else "a",
             "key_type": "std::uint64_t" if binary else "std::uint32_t",
             "key": "pair_key(a.bits, b.bits)" if binary else "a.bits",
-            "exact_key": ("pair_key(gaphys::ga::exact_bits(a), gaphys::ga::exact_bits(b))" if binary
-                          else "gaphys::ga::exact_bits(a)"),
+            "exact": (["a_bits = gaphys::ga::exact_bits(a)", "b_bits = gaphys::ga::exact_bits(b)"] if binary
+                      else ["a_bits = gaphys::ga::exact_bits(a)"]),
+            "exact_key": "pair_key(a_bits, b_bits)" if binary else "a_bits",
+            "exact_arguments": "a_bits, b_bits" if binary else "a_bits",
+            "bits_params": "std::uint32_t a_bits, std::uint32_t b_bits" if binary else "std::uint32_t a_bits",
+            "unused_params": ", ".join(
+                "[[maybe_unused]] " + p for p in
+                (["std::uint32_t a_bits", "std::uint32_t b_bits", "const basic_mv<T>& a", "const basic_mv<T>& b"]
+                 if binary else ["std::uint32_t a_bits", "const basic_mv<T>& a"])
+                + ["T& r" if function == "scp" else "basic_mv<T>& r"]),
             "result_type": "T" if function == "scp" else "basic_mv<T>",
             "cases": cases,
+            "covering": covering_cases(mk for mk in mv_kernels if mk.function == function),
+            "operations_per_term": OPERATIONS_PER_GENERIC_TERM,
+            "work": GENERIC_WORK["sum" if function in ("add", "sub") else "product" if binary else "unary"],
         })
     return result
 
@@ -226,7 +258,8 @@ def build(algebra: Algebra, kernels: list[Kernel], variant: str, banner: list[st
         "mv_kernels": [mv_kernel_view(algebra, mk) for mk in mv_kernels],
         "combinations": [
             {"function": mk.function, "a": hex(mk.argument_bits[0]) + "u",
-             "b": hex(mk.argument_bits[1] if len(mk.argument_bits) > 1 else 0) + "u"}
+             "b": hex(mk.argument_bits[1] if len(mk.argument_bits) > 1 else 0) + "u",
+             "covers_subsets": "true" if mk.covers_subsets else "false"}
             for mk in mv_kernels
         ],
         "dispatchers": dispatchers(mv_kernels),

@@ -2,7 +2,8 @@
 // reaches its straight-line code through dispatch, and the result equals the
 // reference variant's generic path on random inputs with exactly those
 // bitmaps, also when the stored bits mark more coefficients than are nonzero
-// (the dispatcher's retry on exact bits). (Unprofiled bitmaps, the fallback path, are covered by
+// (the dispatcher's retry on exact bits), and on subsets of those bitmaps (a
+// kernel made for a superset). (Unprofiled bitmaps, the fallback path, are covered by
 // the random dense and sparse inputs of test_variants_agree_*.)
 #include <gtest/gtest.h>
 
@@ -124,6 +125,50 @@ GAPHYS_DISPATCHED(c3ga)
     }                                                                                            \
   }                                                                                              \
   EXPECT_GT(checked, 0) << "the committed profile specialized nothing";
+
+// Bitmaps the profile never showed, inside a kernel's: one coefficient of each
+// argument with two or more left out. The dispatcher serves them with that
+// kernel (or another that covers them) where it is cheaper than the generic
+// path; either way the result is the reference's.
+#define GAPHYS_CHECK_SUBSETS(ns)                                                                 \
+  std::mt19937 rng(7);                                                                           \
+  int checked = 0, served = 0;                                                                   \
+  for (const auto* c = ns::detail::specialized_combinations; c->function != nullptr; ++c) {      \
+    if (!c->covers_subsets) continue;                                                            \
+    const auto fewer = [](std::uint32_t bits) { return bits & (bits - 1) ? bits & (bits - 1) : bits; }; \
+    const std::uint32_t sub_a = fewer(c->a), sub_b = fewer(c->b);                                \
+    if (sub_a == c->a && sub_b == c->b) continue;                                                \
+    SCOPED_TRACE(std::string(c->function) + " on subsets " + std::to_string(sub_a) + ", " +      \
+                 std::to_string(sub_b));                                                         \
+    for (int trial = 0; trial < 4; ++trial) {                                                    \
+      const ns::mv a = with_bits<ns::mv>(rng, sub_a), b = with_bits<ns::mv>(rng, sub_b);         \
+      const auto ra = same_coordinates<ns##_ref::mv>(a), rb = same_coordinates<ns##_ref::mv>(b); \
+      ns::mv opt;                                                                                \
+      ns##_ref::mv ref;                                                                          \
+      ASSERT_TRUE(evaluate_##ns(c->function, a, b, opt));                                        \
+      ASSERT_TRUE(evaluate_##ns##_ref(c->function, ra, rb, ref));                                \
+      EXPECT_TRUE((results_agree<ns::mv, ns##_ref::mv>(opt, ref)));                              \
+      served += dispatched_##ns(c->function, a, b);                                              \
+      ++checked;                                                                                 \
+    }                                                                                            \
+  }                                                                                              \
+  EXPECT_GT(checked, 0);                                                                         \
+  EXPECT_GT(served, 0) << "no superset kernel served an unprofiled subset";
+
+TEST(ProfiledKernels, E3gaSupersetKernelsServeSubsets) { GAPHYS_CHECK_SUBSETS(e3ga) }
+TEST(ProfiledKernels, C3gaSupersetKernelsServeSubsets) { GAPHYS_CHECK_SUBSETS(c3ga) }
+
+// A named type widened to mv marks only its nonzero coordinates (and its
+// constant ones), so its exact zeros reach the kernels made for them.
+TEST(ProfiledKernels, WideningMarksNonzeroCoordinatesOnly) {
+  const c3ga::mv e3_plane = c3ga::dual_plane{0, 0, 1, 0};  // e1 e2 e3 ni at canonical 2..5
+  EXPECT_EQ(e3_plane.bits, 1u << 4);
+  const c3ga::mv origin = c3ga::normalized_point{0, 0, 0, 0};  // no = 1, a constant
+  EXPECT_EQ(origin.bits, 1u << 1);
+  EXPECT_EQ(c3ga::mv(c3ga::ni()).bits, 1u << 5);
+  const e3ga::mv zero = e3ga::vector{0, 0, 0};
+  EXPECT_EQ(zero.bits, 0u);
+}
 
 TEST(ProfiledKernels, E3gaAgreeWithReference){
     GAPHYS_CHECK_PROFILED(e3ga)} TEST(ProfiledKernels, C3gaAgreeWithReference) {

@@ -147,7 +147,7 @@ class SelectionAndReport(unittest.TestCase):
 
     def test_report_names_blades_and_fallback_share(self):
         text = profile.report(self.PROFILE, E3, 0.99)
-        self.assertIn("generic fallback: 1 calls (0.100%)", text)
+        self.assertIn("generic fallback: 1 calls (0.100%)", text)  # add: no kernel serves it
         self.assertIn("{1, e1^e2, e1^e3, e2^e3} x {1, e1^e2, e1^e3, e2^e3}", text)
 
 
@@ -179,3 +179,43 @@ class CommandLine(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class SupersetKernels(unittest.TestCase):
+    """Kernels made for one bitmap serve the subsets of it the profile never showed."""
+
+    def kernel(self, function, *bits):
+        from gaphys_gen.expand import expand_profile
+
+        (made,) = expand_profile(E3, [(function, bits, 1)])
+        return made
+
+    def test_a_kernel_serves_subsets_of_its_bitmaps_only(self):
+        rotors = self.kernel("gp", ROTOR, ROTOR)
+        self.assertTrue(rotors.serves((ROTOR, ROTOR)))
+        self.assertTrue(rotors.serves((0b0000001, ROTOR)))  # a scalar times a rotor
+        self.assertTrue(rotors.serves((0b0110000, 0b1000001)))  # parts of rotors
+        self.assertFalse(rotors.serves((VECTOR, ROTOR)))  # e1 is no rotor coefficient
+
+    def test_a_kernel_much_larger_than_the_arguments_leaves_them_to_the_generic_path(self):
+        full = self.kernel("gp", 0xFF, 0xFF)
+        self.assertEqual(full.operations, 120)  # 64 mul, 56 add
+        self.assertTrue(full.serves((VECTOR | ROTOR, ROTOR)))  # 28 generic terms: 120 <= 8 * 28
+        self.assertFalse(full.serves((VECTOR, ROTOR)))  # 12 generic terms: 120 > 8 * 12
+
+    def test_kernels_that_divide_serve_no_subsets(self):
+        apply = self.kernel("apply", ROTOR, VECTOR)
+        self.assertIsNotNone(apply.kernel.divisor)
+        self.assertFalse(apply.serves((0b0000001, VECTOR)))
+        self.assertFalse(apply.serves((ROTOR, VECTOR)))  # exactly its bitmaps: the switch's case, not this
+
+    def test_report_counts_calls_served_by_a_superset_kernel(self):
+        data = profile.Profile("e3ga", E3.spec_hash, "0.1.0", (
+            profile.Entry("gp", (ROTOR, ROTOR), ROTOR, 900),
+            profile.Entry("gp", (0b0000001, ROTOR), ROTOR, 60),  # served by gp on rotors
+            profile.Entry("op", (VECTOR, VECTOR), 0b1110000, 40),  # no kernel for op
+        ))
+        text = profile.report(data, E3, 0.9)
+        self.assertIn("specialized at coverage 0.9: 1 combinations, 900 calls", text)
+        self.assertIn("served by a superset's kernel: 60 calls", text)
+        self.assertIn("generic fallback: 40 calls (4.000%)", text)

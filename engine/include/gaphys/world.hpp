@@ -30,12 +30,14 @@ struct world_settings {
   broad_phase_kind broad_phase = broad_phase_kind::uniform_grid;
 };
 
-// Wall-clock seconds the last step spent in each phase.
+// Wall-clock seconds the last step spent in each phase, and how many candidate
+// pairs the broad phase handed to the narrow phase.
 struct step_timings {
   double integration = 0;   // forces, velocities, positions, attitudes
   double pairs = 0;         // candidate pairs (the broad phase)
   double narrow_phase = 0;  // meets
   double response = 0;      // impulses and position correction
+  std::size_t candidate_pairs = 0;
 };
 
 class world {

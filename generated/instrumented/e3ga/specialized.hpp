@@ -7,6 +7,8 @@
 // dispatcher returns false for every other bitmap (and always, without a
 // profile), and the caller takes the generic table-driven path. Kernels write
 // into the caller's result r, which must be a zero (default) mv.
+// A dispatcher tries, in order: the stored bitmaps, the exactly nonzero
+// coefficients' bitmaps, and the smallest kernel made for a superset of those.
 #pragma once
 
 #include <cstdint>
@@ -22,14 +24,16 @@ constexpr std::uint64_t pair_key(std::uint32_t a, std::uint32_t b) {
   return std::uint64_t(a) << 32 | b;
 }
 
-// The (function, argument bitmaps) combinations with straight-line code, for
-// tests and reports; the last entry has no function.
+// The (function, argument bitmaps) combinations with straight-line code, and
+// whether the kernel also serves subsets of its bitmaps, for tests and
+// reports; the last entry has no function.
 struct specialized_combination {
   const char* function;
   std::uint32_t a, b;
+  bool covers_subsets;
 };
 inline constexpr specialized_combination specialized_combinations[] = {
-    {nullptr, 0, 0},
+    {nullptr, 0, 0, false},
 };
 
 // No profiled combination: always the generic path.

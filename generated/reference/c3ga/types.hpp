@@ -22,20 +22,28 @@ struct basic_mv {
   using scalar_type = T;
   static constexpr int size = blade_count;
 
-  std::array<T, size> c{};
+  std::array<T, size> c;
   std::uint32_t bits = 0;
 
-  constexpr basic_mv() = default;
+  // Zero. Every mv function starts from one, so this is on the hot path: an
+  // unrolled loop compiles to a few vector stores, where `c{}` or `: c()`
+  // becomes a memset (`rep stos`, whose start-up alone costs more than most
+  // kernels). C++17 forbids a constexpr constructor that leaves c to its
+  // body, so mv is not a literal type.
+  basic_mv() {
+#pragma GCC unroll 64
+    for (int i = 0; i < size; ++i) c[i] = T(0);
+  }
 
   // Bits are set for the nonzero entries.
-  static constexpr basic_mv from_array(const std::array<T, size>& coefficients) {
+  static basic_mv from_array(const std::array<T, size>& coefficients) {
     basic_mv m;
     m.c = coefficients;
     for (int i = 0; i < size; ++i)
       if (coefficients[i] != T(0)) m.bits |= std::uint32_t(1) << i;
     return m;
   }
-  static constexpr basic_mv from_terms(std::initializer_list<std::pair<int, T>> terms) {
+  static basic_mv from_terms(std::initializer_list<std::pair<int, T>> terms) {
     basic_mv m;
     for (const auto& [index, value] : terms) {
       m.c[index] += value;
@@ -43,10 +51,8 @@ struct basic_mv {
     }
     return m;
   }
-  static constexpr basic_mv basis_blade(int index, T value = T(1)) {
-    return from_terms({{index, value}});
-  }
-  constexpr std::array<T, size> to_array() const { return c; }
+  static basic_mv basis_blade(int index, T value = T(1)) { return from_terms({{index, value}}); }
+  std::array<T, size> to_array() const { return c; }
   constexpr T operator[](int index) const { return c[index]; }
   static constexpr std::uint32_t grade_mask(int k) {
     return k >= 0 && k <= dimension ? grade_masks[k] : 0u;
@@ -67,14 +73,21 @@ struct basic_normalized_point {
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_normalized_point(const basic_mv<T>& m)
       : c{m.c[2], m.c[3], m.c[4], m.c[5]} {}
-  constexpr operator basic_mv<T>() const {
+  // Bits for the constant coordinates and the nonzero stored ones: a named
+  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
+  // the mv kernels the profile made for them without a rescan.
+  operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[2] = c[0];
     m.c[3] = c[1];
     m.c[4] = c[2];
     m.c[5] = c[3];
     m.c[1] = T(1);
-    m.bits = 0x3eu;
+    m.bits = 0x2u;
+    if (c[0] != T(0)) m.bits |= 0x4u;
+    if (c[1] != T(0)) m.bits |= 0x8u;
+    if (c[2] != T(0)) m.bits |= 0x10u;
+    if (c[3] != T(0)) m.bits |= 0x20u;
     return m;
   }
 
@@ -102,14 +115,22 @@ struct basic_dual_sphere {
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_dual_sphere(const basic_mv<T>& m)
       : c{m.c[1], m.c[2], m.c[3], m.c[4], m.c[5]} {}
-  constexpr operator basic_mv<T>() const {
+  // Bits for the constant coordinates and the nonzero stored ones: a named
+  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
+  // the mv kernels the profile made for them without a rescan.
+  operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[1] = c[0];
     m.c[2] = c[1];
     m.c[3] = c[2];
     m.c[4] = c[3];
     m.c[5] = c[4];
-    m.bits = 0x3eu;
+    m.bits = 0x0u;
+    if (c[0] != T(0)) m.bits |= 0x2u;
+    if (c[1] != T(0)) m.bits |= 0x4u;
+    if (c[2] != T(0)) m.bits |= 0x8u;
+    if (c[3] != T(0)) m.bits |= 0x10u;
+    if (c[4] != T(0)) m.bits |= 0x20u;
     return m;
   }
 
@@ -137,13 +158,20 @@ struct basic_dual_plane {
   constexpr basic_dual_plane(T e1, T e2, T e3, T ni) : c{e1, e2, e3, ni} {}
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_dual_plane(const basic_mv<T>& m) : c{m.c[2], m.c[3], m.c[4], m.c[5]} {}
-  constexpr operator basic_mv<T>() const {
+  // Bits for the constant coordinates and the nonzero stored ones: a named
+  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
+  // the mv kernels the profile made for them without a rescan.
+  operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[2] = c[0];
     m.c[3] = c[1];
     m.c[4] = c[2];
     m.c[5] = c[3];
-    m.bits = 0x3cu;
+    m.bits = 0x0u;
+    if (c[0] != T(0)) m.bits |= 0x4u;
+    if (c[1] != T(0)) m.bits |= 0x8u;
+    if (c[2] != T(0)) m.bits |= 0x10u;
+    if (c[3] != T(0)) m.bits |= 0x20u;
     return m;
   }
 
@@ -169,12 +197,18 @@ struct basic_euclidean_vector {
   constexpr basic_euclidean_vector(T e1, T e2, T e3) : c{e1, e2, e3} {}
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_euclidean_vector(const basic_mv<T>& m) : c{m.c[2], m.c[3], m.c[4]} {}
-  constexpr operator basic_mv<T>() const {
+  // Bits for the constant coordinates and the nonzero stored ones: a named
+  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
+  // the mv kernels the profile made for them without a rescan.
+  operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[2] = c[0];
     m.c[3] = c[1];
     m.c[4] = c[2];
-    m.bits = 0x1cu;
+    m.bits = 0x0u;
+    if (c[0] != T(0)) m.bits |= 0x4u;
+    if (c[1] != T(0)) m.bits |= 0x8u;
+    if (c[2] != T(0)) m.bits |= 0x10u;
     return m;
   }
 
@@ -199,13 +233,20 @@ struct basic_flat_point {
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_flat_point(const basic_mv<T>& m)
       : c{m.c[12], m.c[14], m.c[15], m.c[9]} {}
-  constexpr operator basic_mv<T>() const {
+  // Bits for the constant coordinates and the nonzero stored ones: a named
+  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
+  // the mv kernels the profile made for them without a rescan.
+  operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[12] = c[0];
     m.c[14] = c[1];
     m.c[15] = c[2];
     m.c[9] = c[3];
-    m.bits = 0xd200u;
+    m.bits = 0x0u;
+    if (c[0] != T(0)) m.bits |= 0x1000u;
+    if (c[1] != T(0)) m.bits |= 0x4000u;
+    if (c[2] != T(0)) m.bits |= 0x8000u;
+    if (c[3] != T(0)) m.bits |= 0x200u;
     return m;
   }
 
@@ -232,12 +273,18 @@ struct basic_euclidean_bivector {
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_euclidean_bivector(const basic_mv<T>& m)
       : c{m.c[10], m.c[11], m.c[13]} {}
-  constexpr operator basic_mv<T>() const {
+  // Bits for the constant coordinates and the nonzero stored ones: a named
+  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
+  // the mv kernels the profile made for them without a rescan.
+  operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[10] = c[0];
     m.c[11] = c[1];
     m.c[13] = c[2];
-    m.bits = 0x2c00u;
+    m.bits = 0x0u;
+    if (c[0] != T(0)) m.bits |= 0x400u;
+    if (c[1] != T(0)) m.bits |= 0x800u;
+    if (c[2] != T(0)) m.bits |= 0x2000u;
     return m;
   }
 
@@ -264,7 +311,10 @@ struct basic_point_pair {
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_point_pair(const basic_mv<T>& m)
       : c{m.c[6], m.c[7], m.c[8], m.c[9], m.c[10], m.c[11], m.c[12], m.c[13], m.c[14], m.c[15]} {}
-  constexpr operator basic_mv<T>() const {
+  // Bits for the constant coordinates and the nonzero stored ones: a named
+  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
+  // the mv kernels the profile made for them without a rescan.
+  operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[6] = c[0];
     m.c[7] = c[1];
@@ -276,7 +326,17 @@ struct basic_point_pair {
     m.c[13] = c[7];
     m.c[14] = c[8];
     m.c[15] = c[9];
-    m.bits = 0xffc0u;
+    m.bits = 0x0u;
+    if (c[0] != T(0)) m.bits |= 0x40u;
+    if (c[1] != T(0)) m.bits |= 0x80u;
+    if (c[2] != T(0)) m.bits |= 0x100u;
+    if (c[3] != T(0)) m.bits |= 0x200u;
+    if (c[4] != T(0)) m.bits |= 0x400u;
+    if (c[5] != T(0)) m.bits |= 0x800u;
+    if (c[6] != T(0)) m.bits |= 0x1000u;
+    if (c[7] != T(0)) m.bits |= 0x2000u;
+    if (c[8] != T(0)) m.bits |= 0x4000u;
+    if (c[9] != T(0)) m.bits |= 0x8000u;
     return m;
   }
 
@@ -316,7 +376,10 @@ struct basic_dual_line {
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_dual_line(const basic_mv<T>& m)
       : c{m.c[10], m.c[11], m.c[13], m.c[12], m.c[14], m.c[15]} {}
-  constexpr operator basic_mv<T>() const {
+  // Bits for the constant coordinates and the nonzero stored ones: a named
+  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
+  // the mv kernels the profile made for them without a rescan.
+  operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[10] = c[0];
     m.c[11] = c[1];
@@ -324,7 +387,13 @@ struct basic_dual_line {
     m.c[12] = c[3];
     m.c[14] = c[4];
     m.c[15] = c[5];
-    m.bits = 0xfc00u;
+    m.bits = 0x0u;
+    if (c[0] != T(0)) m.bits |= 0x400u;
+    if (c[1] != T(0)) m.bits |= 0x800u;
+    if (c[2] != T(0)) m.bits |= 0x2000u;
+    if (c[3] != T(0)) m.bits |= 0x1000u;
+    if (c[4] != T(0)) m.bits |= 0x4000u;
+    if (c[5] != T(0)) m.bits |= 0x8000u;
     return m;
   }
 
@@ -356,7 +425,10 @@ struct basic_line {
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_line(const basic_mv<T>& m)
       : c{m.c[23], m.c[24], m.c[25], m.c[18], m.c[20], m.c[21]} {}
-  constexpr operator basic_mv<T>() const {
+  // Bits for the constant coordinates and the nonzero stored ones: a named
+  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
+  // the mv kernels the profile made for them without a rescan.
+  operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[23] = c[0];
     m.c[24] = c[1];
@@ -364,7 +436,13 @@ struct basic_line {
     m.c[18] = c[3];
     m.c[20] = c[4];
     m.c[21] = c[5];
-    m.bits = 0x3b40000u;
+    m.bits = 0x0u;
+    if (c[0] != T(0)) m.bits |= 0x800000u;
+    if (c[1] != T(0)) m.bits |= 0x1000000u;
+    if (c[2] != T(0)) m.bits |= 0x2000000u;
+    if (c[3] != T(0)) m.bits |= 0x40000u;
+    if (c[4] != T(0)) m.bits |= 0x100000u;
+    if (c[5] != T(0)) m.bits |= 0x200000u;
     return m;
   }
 
@@ -399,7 +477,10 @@ struct basic_circle {
   explicit constexpr basic_circle(const basic_mv<T>& m)
       : c{m.c[16], m.c[17], m.c[19], m.c[18], m.c[20],
           m.c[21], m.c[22], m.c[23], m.c[24], m.c[25]} {}
-  constexpr operator basic_mv<T>() const {
+  // Bits for the constant coordinates and the nonzero stored ones: a named
+  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
+  // the mv kernels the profile made for them without a rescan.
+  operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[16] = c[0];
     m.c[17] = c[1];
@@ -411,7 +492,17 @@ struct basic_circle {
     m.c[23] = c[7];
     m.c[24] = c[8];
     m.c[25] = c[9];
-    m.bits = 0x3ff0000u;
+    m.bits = 0x0u;
+    if (c[0] != T(0)) m.bits |= 0x10000u;
+    if (c[1] != T(0)) m.bits |= 0x20000u;
+    if (c[2] != T(0)) m.bits |= 0x80000u;
+    if (c[3] != T(0)) m.bits |= 0x40000u;
+    if (c[4] != T(0)) m.bits |= 0x100000u;
+    if (c[5] != T(0)) m.bits |= 0x200000u;
+    if (c[6] != T(0)) m.bits |= 0x400000u;
+    if (c[7] != T(0)) m.bits |= 0x800000u;
+    if (c[8] != T(0)) m.bits |= 0x1000000u;
+    if (c[9] != T(0)) m.bits |= 0x2000000u;
     return m;
   }
 
@@ -451,14 +542,22 @@ struct basic_sphere {
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_sphere(const basic_mv<T>& m)
       : c{m.c[26], m.c[27], m.c[28], m.c[29], m.c[30]} {}
-  constexpr operator basic_mv<T>() const {
+  // Bits for the constant coordinates and the nonzero stored ones: a named
+  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
+  // the mv kernels the profile made for them without a rescan.
+  operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[26] = c[0];
     m.c[27] = c[1];
     m.c[28] = c[2];
     m.c[29] = c[3];
     m.c[30] = c[4];
-    m.bits = 0x7c000000u;
+    m.bits = 0x0u;
+    if (c[0] != T(0)) m.bits |= 0x4000000u;
+    if (c[1] != T(0)) m.bits |= 0x8000000u;
+    if (c[2] != T(0)) m.bits |= 0x10000000u;
+    if (c[3] != T(0)) m.bits |= 0x20000000u;
+    if (c[4] != T(0)) m.bits |= 0x40000000u;
     return m;
   }
 
@@ -487,13 +586,20 @@ struct basic_plane {
       : c{e123_ni, no_e12_ni, no_e13_ni, no_e23_ni} {}
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_plane(const basic_mv<T>& m) : c{m.c[30], m.c[27], m.c[28], m.c[29]} {}
-  constexpr operator basic_mv<T>() const {
+  // Bits for the constant coordinates and the nonzero stored ones: a named
+  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
+  // the mv kernels the profile made for them without a rescan.
+  operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[30] = c[0];
     m.c[27] = c[1];
     m.c[28] = c[2];
     m.c[29] = c[3];
-    m.bits = 0x78000000u;
+    m.bits = 0x0u;
+    if (c[0] != T(0)) m.bits |= 0x40000000u;
+    if (c[1] != T(0)) m.bits |= 0x8000000u;
+    if (c[2] != T(0)) m.bits |= 0x10000000u;
+    if (c[3] != T(0)) m.bits |= 0x20000000u;
     return m;
   }
 
@@ -519,10 +625,14 @@ struct basic_pseudoscalar {
   explicit constexpr basic_pseudoscalar(T no_e123_ni) : c{no_e123_ni} {}
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_pseudoscalar(const basic_mv<T>& m) : c{m.c[31]} {}
-  constexpr operator basic_mv<T>() const {
+  // Bits for the constant coordinates and the nonzero stored ones: a named
+  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
+  // the mv kernels the profile made for them without a rescan.
+  operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[31] = c[0];
-    m.bits = 0x80000000u;
+    m.bits = 0x0u;
+    if (c[0] != T(0)) m.bits |= 0x80000000u;
     return m;
   }
 
@@ -542,13 +652,20 @@ struct basic_rotor {
   constexpr basic_rotor(T scalar, T e12, T e13, T e23) : c{scalar, e12, e13, e23} {}
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_rotor(const basic_mv<T>& m) : c{m.c[0], m.c[10], m.c[11], m.c[13]} {}
-  constexpr operator basic_mv<T>() const {
+  // Bits for the constant coordinates and the nonzero stored ones: a named
+  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
+  // the mv kernels the profile made for them without a rescan.
+  operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[0] = c[0];
     m.c[10] = c[1];
     m.c[11] = c[2];
     m.c[13] = c[3];
-    m.bits = 0x2c01u;
+    m.bits = 0x0u;
+    if (c[0] != T(0)) m.bits |= 0x1u;
+    if (c[1] != T(0)) m.bits |= 0x400u;
+    if (c[2] != T(0)) m.bits |= 0x800u;
+    if (c[3] != T(0)) m.bits |= 0x2000u;
     return m;
   }
 
@@ -576,13 +693,20 @@ struct basic_translator {
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_translator(const basic_mv<T>& m)
       : c{m.c[0], m.c[12], m.c[14], m.c[15]} {}
-  constexpr operator basic_mv<T>() const {
+  // Bits for the constant coordinates and the nonzero stored ones: a named
+  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
+  // the mv kernels the profile made for them without a rescan.
+  operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[0] = c[0];
     m.c[12] = c[1];
     m.c[14] = c[2];
     m.c[15] = c[3];
-    m.bits = 0xd001u;
+    m.bits = 0x0u;
+    if (c[0] != T(0)) m.bits |= 0x1u;
+    if (c[1] != T(0)) m.bits |= 0x1000u;
+    if (c[2] != T(0)) m.bits |= 0x4000u;
+    if (c[3] != T(0)) m.bits |= 0x8000u;
     return m;
   }
 
@@ -610,7 +734,10 @@ struct basic_motor {
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_motor(const basic_mv<T>& m)
       : c{m.c[0], m.c[10], m.c[11], m.c[13], m.c[12], m.c[14], m.c[15], m.c[30]} {}
-  constexpr operator basic_mv<T>() const {
+  // Bits for the constant coordinates and the nonzero stored ones: a named
+  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
+  // the mv kernels the profile made for them without a rescan.
+  operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[0] = c[0];
     m.c[10] = c[1];
@@ -620,7 +747,15 @@ struct basic_motor {
     m.c[14] = c[5];
     m.c[15] = c[6];
     m.c[30] = c[7];
-    m.bits = 0x4000fc01u;
+    m.bits = 0x0u;
+    if (c[0] != T(0)) m.bits |= 0x1u;
+    if (c[1] != T(0)) m.bits |= 0x400u;
+    if (c[2] != T(0)) m.bits |= 0x800u;
+    if (c[3] != T(0)) m.bits |= 0x2000u;
+    if (c[4] != T(0)) m.bits |= 0x1000u;
+    if (c[5] != T(0)) m.bits |= 0x4000u;
+    if (c[6] != T(0)) m.bits |= 0x8000u;
+    if (c[7] != T(0)) m.bits |= 0x40000000u;
     return m;
   }
 

@@ -22,20 +22,28 @@ struct basic_mv {
   using scalar_type = T;
   static constexpr int size = blade_count;
 
-  std::array<T, size> c{};
+  std::array<T, size> c;
   std::uint32_t bits = 0;
 
-  constexpr basic_mv() = default;
+  // Zero. Every mv function starts from one, so this is on the hot path: an
+  // unrolled loop compiles to a few vector stores, where `c{}` or `: c()`
+  // becomes a memset (`rep stos`, whose start-up alone costs more than most
+  // kernels). C++17 forbids a constexpr constructor that leaves c to its
+  // body, so mv is not a literal type.
+  basic_mv() {
+#pragma GCC unroll 64
+    for (int i = 0; i < size; ++i) c[i] = T(0);
+  }
 
   // Bits are set for the nonzero entries.
-  static constexpr basic_mv from_array(const std::array<T, size>& coefficients) {
+  static basic_mv from_array(const std::array<T, size>& coefficients) {
     basic_mv m;
     m.c = coefficients;
     for (int i = 0; i < size; ++i)
       if (coefficients[i] != T(0)) m.bits |= std::uint32_t(1) << i;
     return m;
   }
-  static constexpr basic_mv from_terms(std::initializer_list<std::pair<int, T>> terms) {
+  static basic_mv from_terms(std::initializer_list<std::pair<int, T>> terms) {
     basic_mv m;
     for (const auto& [index, value] : terms) {
       m.c[index] += value;
@@ -43,10 +51,8 @@ struct basic_mv {
     }
     return m;
   }
-  static constexpr basic_mv basis_blade(int index, T value = T(1)) {
-    return from_terms({{index, value}});
-  }
-  constexpr std::array<T, size> to_array() const { return c; }
+  static basic_mv basis_blade(int index, T value = T(1)) { return from_terms({{index, value}}); }
+  std::array<T, size> to_array() const { return c; }
   constexpr T operator[](int index) const { return c[index]; }
   static constexpr std::uint32_t grade_mask(int k) {
     return k >= 0 && k <= dimension ? grade_masks[k] : 0u;
@@ -66,10 +72,14 @@ struct basic_scalar {
   explicit constexpr basic_scalar(T scalar) : c{scalar} {}
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_scalar(const basic_mv<T>& m) : c{m.c[0]} {}
-  constexpr operator basic_mv<T>() const {
+  // Bits for the constant coordinates and the nonzero stored ones: a named
+  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
+  // the mv kernels the profile made for them without a rescan.
+  operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[0] = c[0];
-    m.bits = 0x1u;
+    m.bits = 0x0u;
+    if (c[0] != T(0)) m.bits |= 0x1u;
     return m;
   }
 
@@ -89,12 +99,18 @@ struct basic_vector {
   constexpr basic_vector(T e1, T e2, T e3) : c{e1, e2, e3} {}
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_vector(const basic_mv<T>& m) : c{m.c[1], m.c[2], m.c[3]} {}
-  constexpr operator basic_mv<T>() const {
+  // Bits for the constant coordinates and the nonzero stored ones: a named
+  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
+  // the mv kernels the profile made for them without a rescan.
+  operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[1] = c[0];
     m.c[2] = c[1];
     m.c[3] = c[2];
-    m.bits = 0xeu;
+    m.bits = 0x0u;
+    if (c[0] != T(0)) m.bits |= 0x2u;
+    if (c[1] != T(0)) m.bits |= 0x4u;
+    if (c[2] != T(0)) m.bits |= 0x8u;
     return m;
   }
 
@@ -118,12 +134,18 @@ struct basic_bivector {
   constexpr basic_bivector(T e12, T e13, T e23) : c{e12, e13, e23} {}
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_bivector(const basic_mv<T>& m) : c{m.c[4], m.c[5], m.c[6]} {}
-  constexpr operator basic_mv<T>() const {
+  // Bits for the constant coordinates and the nonzero stored ones: a named
+  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
+  // the mv kernels the profile made for them without a rescan.
+  operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[4] = c[0];
     m.c[5] = c[1];
     m.c[6] = c[2];
-    m.bits = 0x70u;
+    m.bits = 0x0u;
+    if (c[0] != T(0)) m.bits |= 0x10u;
+    if (c[1] != T(0)) m.bits |= 0x20u;
+    if (c[2] != T(0)) m.bits |= 0x40u;
     return m;
   }
 
@@ -147,10 +169,14 @@ struct basic_trivector {
   explicit constexpr basic_trivector(T e123) : c{e123} {}
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_trivector(const basic_mv<T>& m) : c{m.c[7]} {}
-  constexpr operator basic_mv<T>() const {
+  // Bits for the constant coordinates and the nonzero stored ones: a named
+  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
+  // the mv kernels the profile made for them without a rescan.
+  operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[7] = c[0];
-    m.bits = 0x80u;
+    m.bits = 0x0u;
+    if (c[0] != T(0)) m.bits |= 0x80u;
     return m;
   }
 
@@ -170,13 +196,20 @@ struct basic_rotor {
   constexpr basic_rotor(T scalar, T e12, T e13, T e23) : c{scalar, e12, e13, e23} {}
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_rotor(const basic_mv<T>& m) : c{m.c[0], m.c[4], m.c[5], m.c[6]} {}
-  constexpr operator basic_mv<T>() const {
+  // Bits for the constant coordinates and the nonzero stored ones: a named
+  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
+  // the mv kernels the profile made for them without a rescan.
+  operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[0] = c[0];
     m.c[4] = c[1];
     m.c[5] = c[2];
     m.c[6] = c[3];
-    m.bits = 0x71u;
+    m.bits = 0x0u;
+    if (c[0] != T(0)) m.bits |= 0x1u;
+    if (c[1] != T(0)) m.bits |= 0x10u;
+    if (c[2] != T(0)) m.bits |= 0x20u;
+    if (c[3] != T(0)) m.bits |= 0x40u;
     return m;
   }
 
