@@ -76,6 +76,22 @@ void contact_solver::solve_velocities(std::vector<body>& bodies,
     constraints_.push_back(make_constraint(a, b, c, approach, h));
   }
 
+  // Over-relaxation speeds up coupled contacts (a row of balls, a stack),
+  // whose impulses disturb each other; a contact alone on its dynamic bodies
+  // is met exactly by one plain impulse, which relaxation would only turn
+  // into a geometric approach.
+  contacts_per_body_.assign(bodies.size(), 0);
+  for (const contact& c : contacts) {
+    if (!bodies[c.body_a].is_static()) ++contacts_per_body_[c.body_a];
+    if (!bodies[c.body_b].is_static()) ++contacts_per_body_[c.body_b];
+  }
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const contact& c = contacts[i];
+    if (contacts_per_body_[c.body_a] > 1 || contacts_per_body_[c.body_b] > 1) {
+      constraints_[i].relaxation = settings_.solver_relaxation;
+    }
+  }
+
   // Warm start: both lists are sorted by body pair, so one merge finds the
   // contacts that persist. The sweeps below correct the old impulse as
   // needed (down to zero), so the result does not depend on it, only how
@@ -105,7 +121,8 @@ void contact_solver::solve_velocities(std::vector<body>& bodies,
       if (!(k.effective_mass_inverse > 0)) continue;
       body& a = bodies[c.body_a];
       body& b = bodies[c.body_b];
-      const real wanted = (k.target_speed - normal_speed(a, b, k)) / k.effective_mass_inverse;
+      const real wanted =
+          k.relaxation * (k.target_speed - normal_speed(a, b, k)) / k.effective_mass_inverse;
       const real total = std::max(k.accumulated + wanted, real(0));
       const real j = total - k.accumulated;
       apply_impulse(a, b, k, j);

@@ -45,6 +45,7 @@ class contact_solver {
     bivector turn_a, turn_b;  // I⁻¹(r ∧ n): the change of Ω per unit impulse
     real effective_mass_inverse;  // 0: the constraint is left out
     real target_speed;  // normal separation speed wanted after the impulses
+    real relaxation = 1;  // settings' over-relaxation where the contact shares a body, else 1
     real accumulated = 0;
   };
 
@@ -55,6 +56,7 @@ class contact_solver {
 
   const world_settings& settings_;
   std::vector<constraint> constraints_;
+  std::vector<int> contacts_per_body_;
 };
 
 }  // namespace gaphys

@@ -17,6 +17,9 @@ const world_settings& validated(const world_settings& s) {
   detail::require_non_negative(s.angular_damping, "angular damping");
   if (s.solver_iterations < 1) detail::reject("solver iterations must be >= 1");
   detail::require_non_negative(s.solver_tolerance, "solver tolerance");
+  if (!(s.solver_relaxation > 0 && s.solver_relaxation < 2)) {
+    detail::reject("solver relaxation must be in (0, 2) (got ", s.solver_relaxation, ")");
+  }
   detail::require_non_negative(s.restitution_threshold, "restitution threshold");
   if (!(s.position_correction >= 0 && s.position_correction <= 1)) {
     detail::reject("position correction must be in [0, 1] (got ", s.position_correction, ")");

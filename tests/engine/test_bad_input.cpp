@@ -197,6 +197,11 @@ TEST_F(bad_input_test, world_settings_are_checked) {
   s.solver_tolerance = -1e-6;
   EXPECT_TRUE(rejects_settings(s, "solver tolerance"));
   s = {};
+  for (real relaxation : {real(0), real(2), real(-1), nan}) {
+    s.solver_relaxation = relaxation;
+    EXPECT_TRUE(rejects_settings(s, "solver relaxation"));
+  }
+  s = {};
   s.position_correction = 1.5;
   EXPECT_TRUE(rejects_settings(s, "position correction"));
   s = {};
