@@ -121,8 +121,11 @@ void contact_solver::solve_velocities(std::vector<body>& bodies,
       if (!(k.effective_mass_inverse > 0)) continue;
       body& a = bodies[c.body_a];
       body& b = bodies[c.body_b];
+      // The last sweep is plain: it takes back what over-relaxation pushed
+      // contacts apart beyond their targets.
+      const real relaxation = sweep + 1 < settings_.solver_iterations ? k.relaxation : real(1);
       const real wanted =
-          k.relaxation * (k.target_speed - normal_speed(a, b, k)) / k.effective_mass_inverse;
+          relaxation * (k.target_speed - normal_speed(a, b, k)) / k.effective_mass_inverse;
       const real total = std::max(k.accumulated + wanted, real(0));
       const real j = total - k.accumulated;
       apply_impulse(a, b, k, j);
