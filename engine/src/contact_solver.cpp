@@ -21,19 +21,32 @@ real approach_speed(const body& a, const body& b, const body_velocity& start_a,
 
 // The same normal speed from the constraint's precomputed terms: with
 // v(p) = v + r ⌋ Ω, n . (r ⌋ Ω) = (n ∧ r) ⌋ Ω, a scalar of two bivectors.
-real contact_solver::normal_speed(const body& a, const body& b, const constraint& k) {
-  return e3ga::scp(k.normal, a.velocity_ - b.velocity_) + e3ga::lc(k.arm_a, a.angular_velocity_) -
-         e3ga::lc(k.arm_b, b.angular_velocity_);
+real contact_solver::normal_speed(const solver_body& a, const solver_body& b, const constraint& k) {
+  const real linear = e3ga::scp(k.normal, a.velocity - b.velocity);
+  if (k.central) return linear;
+  return linear + e3ga::lc(k.arm_a, a.angular_velocity) - e3ga::lc(k.arm_b, b.angular_velocity);
 }
 
 // j n on A and -j n on B at the contact point: Δv = j n / m and
 // ΔΩ = I⁻¹(r ∧ j n) = j I⁻¹(r ∧ n), precomputed as turn.
-void contact_solver::apply_impulse(body& a, body& b, const constraint& k, real j) {
-  a.velocity_ = a.velocity_ + (j * a.inverse_mass_) * k.normal;
-  a.angular_velocity_ = a.angular_velocity_ + j * k.turn_a;
-  b.velocity_ = b.velocity_ - (j * b.inverse_mass_) * k.normal;
-  b.angular_velocity_ = b.angular_velocity_ - j * k.turn_b;
+void contact_solver::apply_impulse(solver_body& a, solver_body& b, const constraint& k, real j) {
+  a.velocity = a.velocity + (j * a.inverse_mass) * k.normal;
+  b.velocity = b.velocity - (j * b.inverse_mass) * k.normal;
+  if (k.central) return;
+  a.angular_velocity = a.angular_velocity + j * k.turn_a;
+  b.angular_velocity = b.angular_velocity - j * k.turn_b;
 }
+
+namespace {
+
+// Every shape's contact normal passes through the centre of a sphere or a
+// point (the line of centres, a plane's normal), so the arm n ∧ r of such a
+// body is zero; computed from the contact point it would be rounding only.
+bool central(const body& b) {
+  return b.shape() && b.shape()->kind() != shape_kind::plane;
+}
+
+}  // namespace
 
 // The terms of one contact that stay fixed while the sweeps run (attitudes do
 // not change, so neither do the world inertias).
@@ -43,12 +56,20 @@ contact_solver::constraint contact_solver::make_constraint(const body& a, const 
   const vector& n = c.geometry.normal;
   constraint k;
   k.normal = n;
-  const vector offset_a = c.geometry.point - a.position();
-  const vector offset_b = c.geometry.point - b.position();
-  k.arm_a = e3ga::op(n, offset_a);
-  k.arm_b = e3ga::op(n, offset_b);
-  k.turn_a = a.world_inverse_inertia(e3ga::op(offset_a, n));
-  k.turn_b = b.world_inverse_inertia(e3ga::op(offset_b, n));
+  // A static body's arm counts for nothing: its Ω stays zero.
+  const bool central_a = central(a) || a.is_static();
+  const bool central_b = central(b) || b.is_static();
+  if (!central_a) {
+    const vector offset_a = c.geometry.point - a.position();
+    k.arm_a = e3ga::op(n, offset_a);
+    k.turn_a = a.world_inverse_inertia(e3ga::op(offset_a, n));
+  }
+  if (!central_b) {
+    const vector offset_b = c.geometry.point - b.position();
+    k.arm_b = e3ga::op(n, offset_b);
+    k.turn_b = b.world_inverse_inertia(e3ga::op(offset_b, n));
+  }
+  k.central = central_a && central_b;
   // The denominator of eq. 3.20 / 4.7, with the inertias as linear maps:
   // 1/mA + 1/mB + n . (rA ⌋ I_A⁻¹(rA ∧ n)) + n . (rB ⌋ I_B⁻¹(rB ∧ n)).
   k.effective_mass_inverse = a.inverse_mass() + b.inverse_mass() + e3ga::lc(k.arm_a, k.turn_a) +
@@ -69,11 +90,14 @@ void contact_solver::solve_velocities(std::vector<body>& bodies,
                                       std::vector<contact>& contacts,
                                       const std::vector<contact>& previous, real h) {
   constraints_.clear();
+  constraints_.reserve(contacts.size());
   for (const contact& c : contacts) {
     const body& a = bodies[c.body_a];
     const body& b = bodies[c.body_b];
     const real approach = approach_speed(a, b, start[c.body_a], start[c.body_b], c);
     constraints_.push_back(make_constraint(a, b, c, approach, h));
+    constraints_.back().body_a = c.body_a;
+    constraints_.back().body_b = c.body_b;
   }
 
   // Over-relaxation speeds up coupled contacts (a row of balls, a stack),
@@ -92,6 +116,12 @@ void contact_solver::solve_velocities(std::vector<body>& bodies,
     }
   }
 
+  solver_bodies_.resize(bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const body& b = bodies[i];
+    solver_bodies_[i] = {b.velocity_, b.angular_velocity_, b.inverse_mass_};
+  }
+
   // Warm start: both lists are sorted by body pair, so one merge finds the
   // contacts that persist. The sweeps below correct the old impulse as
   // needed (down to zero), so the result does not depend on it, only how
@@ -105,7 +135,7 @@ void contact_solver::solve_velocities(std::vector<body>& bodies,
     constraint& k = constraints_[i];
     if (!(k.effective_mass_inverse > 0)) continue;
     k.accumulated = old->impulse;
-    apply_impulse(bodies[c.body_a], bodies[c.body_b], k, k.accumulated);
+    apply_impulse(solver_bodies_[c.body_a], solver_bodies_[c.body_b], k, k.accumulated);
   }
 
   // Sequential impulses: each sweep drives every contact to its target with
@@ -115,12 +145,10 @@ void contact_solver::solve_velocities(std::vector<body>& bodies,
   // tolerance has converged, and ends the solve early.
   for (int sweep = 0; sweep < settings_.solver_iterations; ++sweep) {
     real largest_change = 0;
-    for (std::size_t i = 0; i < contacts.size(); ++i) {
-      const contact& c = contacts[i];
-      constraint& k = constraints_[i];
+    for (constraint& k : constraints_) {
       if (!(k.effective_mass_inverse > 0)) continue;
-      body& a = bodies[c.body_a];
-      body& b = bodies[c.body_b];
+      solver_body& a = solver_bodies_[k.body_a];
+      solver_body& b = solver_bodies_[k.body_b];
       // The last sweep is plain: it takes back what over-relaxation pushed
       // contacts apart beyond their targets.
       const real relaxation = sweep + 1 < settings_.solver_iterations ? k.relaxation : real(1);
@@ -135,6 +163,12 @@ void contact_solver::solve_velocities(std::vector<body>& bodies,
     if (largest_change <= settings_.solver_tolerance) break;
   }
   for (std::size_t i = 0; i < contacts.size(); ++i) contacts[i].impulse = constraints_[i].accumulated;
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    body& b = bodies[i];
+    if (b.is_static()) continue;
+    b.velocity_ = solver_bodies_[i].velocity;
+    b.angular_velocity_ = solver_bodies_[i].angular_velocity;
+  }
 }
 
 void contact_solver::correct_positions(std::vector<body>& bodies,

@@ -40,23 +40,35 @@ class contact_solver {
 
  private:
   struct constraint {
+    std::size_t body_a, body_b;
     vector normal;            // n, from B to A
     bivector arm_a, arm_b;    // n ∧ r for each body's offset r to the contact point
     bivector turn_a, turn_b;  // I⁻¹(r ∧ n): the change of Ω per unit impulse
+    bool central = false;     // both arms zero: the impulse turns neither body
     real effective_mass_inverse;  // 0: the constraint is left out
     real target_speed;  // normal separation speed wanted after the impulses
     real relaxation = 1;  // settings' over-relaxation where the contact shares a body, else 1
     real accumulated = 0;
   };
 
+  // What the sweeps read and change of each body, packed together: the
+  // sweeps visit bodies in contact order, and whole body objects would
+  // spread them over many cache lines.
+  struct solver_body {
+    vector velocity;
+    bivector angular_velocity;
+    real inverse_mass;
+  };
+
   constraint make_constraint(const body& a, const body& b, const contact& c, real approach,
                              real h) const;
-  static real normal_speed(const body& a, const body& b, const constraint& k);
-  static void apply_impulse(body& a, body& b, const constraint& k, real j);
+  static real normal_speed(const solver_body& a, const solver_body& b, const constraint& k);
+  static void apply_impulse(solver_body& a, solver_body& b, const constraint& k, real j);
 
   const world_settings& settings_;
   std::vector<constraint> constraints_;
   std::vector<int> contacts_per_body_;
+  std::vector<solver_body> solver_bodies_;
 };
 
 }  // namespace gaphys
