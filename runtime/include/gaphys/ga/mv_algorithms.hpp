@@ -19,15 +19,13 @@ namespace gaphys::ga {
 // x.bits without the bits of coefficients that are exactly zero: the bitmap
 // a profile would key x on (the profile's recorder also drops rounding
 // residues; this exact test never changes a result).
-// How many bits are set.
-inline int bit_count(std::uint32_t bits) {
-#if defined(__GNUC__) || defined(__clang__)
-  return __builtin_popcount(bits);
-#else
-  int n = 0;
-  for (; bits != 0; bits &= bits - 1) ++n;
-  return n;
-#endif
+// How many bits are set: sums of bit pairs, nibbles, then bytes. Inline on
+// every target, where __builtin_popcount without -mpopcnt is a library call.
+constexpr int bit_count(std::uint32_t bits) {
+  bits = bits - ((bits >> 1) & 0x55555555u);
+  bits = (bits & 0x33333333u) + ((bits >> 2) & 0x33333333u);
+  bits = (bits + (bits >> 4)) & 0x0f0f0f0fu;
+  return static_cast<int>((bits * 0x01010101u) >> 24);
 }
 
 // The index of the lowest set bit of a nonzero bitmap.
