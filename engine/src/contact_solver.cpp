@@ -55,6 +55,8 @@ contact_solver::constraint contact_solver::make_constraint(const body& a, const 
                                                            real h) const {
   const vector& n = c.geometry.normal;
   constraint k;
+  k.body_a = c.body_a;
+  k.body_b = c.body_b;
   k.normal = n;
   // A static body's arm counts for nothing: its Ω stays zero.
   const bool central_a = central(a) || a.is_static();
@@ -96,8 +98,6 @@ void contact_solver::solve_velocities(std::vector<body>& bodies,
     const body& b = bodies[c.body_b];
     const real approach = approach_speed(a, b, start[c.body_a], start[c.body_b], c);
     constraints_.push_back(make_constraint(a, b, c, approach, h));
-    constraints_.back().body_a = c.body_a;
-    constraints_.back().body_b = c.body_b;
   }
 
   // Over-relaxation speeds up coupled contacts (a row of balls, a stack),

@@ -51,6 +51,12 @@ class Kernel:
     def signature(self) -> tuple[str, tuple[str, ...]]:
         return (self.function, tuple(a.name for a in self.arguments))
 
+    @property
+    def polys(self) -> list[Poly]:
+        """Every polynomial the kernel evaluates."""
+        polys = [p for _, p in self.outputs] + [p for _, p in self.temporaries]
+        return polys + [p for p in (self.divisor, self.square, self.cosine) if p is not None]
+
 
 def cost(poly: Poly) -> tuple[int, int]:
     """(multiplications, additions) of evaluating poly as written."""
@@ -312,10 +318,7 @@ class MvKernel:
     @property
     def operations(self) -> int:
         """Multiplications and additions, the kernel's cost."""
-        k = self.kernel
-        polys = [p for _, p in k.outputs] + [p for _, p in k.temporaries]
-        polys += [p for p in (k.divisor, k.square, k.cosine) if p is not None]
-        return sum(sum(cost(p)) for p in polys)
+        return sum(sum(cost(p)) for p in self.kernel.polys)
 
     @property
     def covers_subsets(self) -> bool:
@@ -340,13 +343,21 @@ class MvKernel:
 OPERATIONS_PER_GENERIC_TERM = 8
 
 
+def generic_work_kind(function: str, arity: int) -> str:
+    """How the generic path's work grows with the arguments' coefficients:
+    "product" (a table product visits every pair), "sum" (add, sub) or
+    "unary" (a linear map reads each once)."""
+    if arity == 1:
+        return "unary"
+    return "sum" if function in ("add", "sub") else "product"
+
+
 def generic_work(function: str, argument_bits: tuple[int, ...]) -> int:
-    """The terms the generic path visits: the table product's pairs of
-    coefficients, or the coefficients a sum or a linear map reads."""
+    """The terms the generic path visits on arguments with these bitmaps."""
     counts = [bin(bits).count("1") for bits in argument_bits]
-    if len(counts) == 1 or function in ("add", "sub"):
-        return sum(counts)
-    return counts[0] * counts[1]
+    if generic_work_kind(function, len(counts)) == "product":
+        return counts[0] * counts[1]
+    return sum(counts)
 
 
 def mv_kernel(expander: Expander, function: str, argument_bits: tuple[int, ...], calls: int) -> MvKernel:

@@ -8,7 +8,7 @@ from fractions import Fraction
 
 from . import VERSION, cpp, profile
 from .blades import PRODUCTS, conjugate_sign, involute_sign, reverse_sign
-from .expand import OPERATIONS_PER_GENERIC_TERM, Expander, Kernel
+from .expand import OPERATIONS_PER_GENERIC_TERM, Expander, Kernel, generic_work_kind
 from .model import Algebra, NamedType
 
 # Functions with a generic (mv) implementation that returns a scalar.
@@ -89,15 +89,9 @@ def return_type(kernel: Kernel) -> str:
     return type_cpp(kernel.result.named) + "<T>"
 
 
-def kernel_polys(kernel: Kernel) -> list:
-    """Every polynomial a kernel evaluates."""
-    polys = [p for _, p in kernel.outputs] + [p for _, p in kernel.temporaries]
-    return polys + [p for p in (kernel.divisor, kernel.square, kernel.cosine) if p is not None]
-
-
 def cost_text(kernel: Kernel) -> str:
     """': 16 mul, 12 add' (', 1 div'): what the kernel's comment states."""
-    muls, adds = cpp.count(kernel_polys(kernel))
+    muls, adds = cpp.count(kernel.polys)
     if kernel.divisor is None:
         return f": {muls} mul, {adds} add"
     return f": {muls + len(kernel.outputs)} mul, {adds} add, 1 div"  # each output times 1/divisor
@@ -231,7 +225,7 @@ def dispatchers(mv_kernels) -> list[dict]:
             "cases": cases,
             "covering": covering_cases(mk for mk in mv_kernels if mk.function == function),
             "operations_per_term": OPERATIONS_PER_GENERIC_TERM,
-            "work": GENERIC_WORK["sum" if function in ("add", "sub") else "product" if binary else "unary"],
+            "work": GENERIC_WORK[generic_work_kind(function, RECORDED_ARITY[function])],
         })
     return result
 

@@ -8,7 +8,7 @@
 // profile), and the caller takes the generic table-driven path. Kernels write
 // into the caller's result r, which must be a zero (default) mv.
 // A dispatcher tries, in order: the stored bitmaps, the exactly nonzero
-// coefficients' bitmaps, and the smallest kernel made for a superset of those.
+// coefficients' bitmaps, and the cheapest kernel made for a superset of those.
 #pragma once
 
 #include <cstdint>
