@@ -1,5 +1,6 @@
 #include "gaphys/contact.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace gaphys {
@@ -63,7 +64,8 @@ placed_shape place(const shape& s, const vector& position, const rotor& attitude
 }
 
 std::optional<contact_geometry> find_contact(const placed_shape& a, const placed_shape& b,
-                                             real lookahead, const vector& relative_velocity) {
+                                             real lookahead, const vector& velocity_a,
+                                             const vector& velocity_b) {
   const mv ni = c3ga::ni();
   const mv no = c3ga::no();
 
@@ -106,10 +108,12 @@ std::optional<contact_geometry> find_contact(const placed_shape& a, const placed
   normal = normal / length;
 
   // Depth: how far the solids overlap along the normal (minus the gap when
-  // they are apart). A gap counts when the closing speed -n . (vA - vB)
-  // covers it within the lookahead.
+  // they are apart). A gap counts when the speeds of A and B towards each
+  // other, -n . vA and n . vB where positive, cover it within the lookahead.
   const real depth = support_height(a, -normal) + support_height(b, normal);
-  if (apart && !(-depth <= -lookahead * e3ga::scp(normal, relative_velocity))) return std::nullopt;
+  const real closing = std::max(-e3ga::scp(normal, velocity_a), real(0)) +
+                       std::max(e3ga::scp(normal, velocity_b), real(0));
+  if (apart && !(-depth <= lookahead * closing)) return std::nullopt;
 
   // Thesis eq. 4.10: reflecting infinity in the round gives its centre.
   const mv centre = c3ga::gp(c3ga::gp(meet, ni), meet);

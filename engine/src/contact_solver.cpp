@@ -1,7 +1,10 @@
 #include "contact_solver.hpp"
 
+#include "timed_impact.hpp"
+
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 namespace gaphys {
@@ -48,10 +51,28 @@ bool central(const body& b) {
 
 }  // namespace
 
+// When and along which normal the contact's surfaces meet in this step (see
+// timed_impact.hpp); only for central contacts, whose normal is a plane's or
+// the line of centres.
+std::optional<timed_impact> contact_solver::time_impact(const body& a, const body& b,
+                                                        const contact& c,
+                                                        const body_velocity& start_a,
+                                                        const body_velocity& start_b, real h) {
+  const relative_motion motion{a.position() - b.position(), start_a.linear - start_b.linear,
+                               a.velocity_ - b.velocity_};
+  const auto is_plane = [](const body& x) { return x.shape() && x.shape()->kind() == shape_kind::plane; };
+  if (is_plane(a) || is_plane(b)) {
+    return impact_across_plane(-c.geometry.depth, c.geometry.normal, motion, h);
+  }
+  return impact_of_centres(e3ga::norm(motion.offset) + c.geometry.depth, motion, h);
+}
+
 // The terms of one contact that stay fixed while the sweeps run (attitudes do
 // not change, so neither do the world inertias).
 contact_solver::constraint contact_solver::make_constraint(const body& a, const body& b,
-                                                           const contact& c, real approach,
+                                                           const contact& c,
+                                                           const body_velocity& start_a,
+                                                           const body_velocity& start_b,
                                                            real h) const {
   const vector& n = c.geometry.normal;
   constraint k;
@@ -76,10 +97,24 @@ contact_solver::constraint contact_solver::make_constraint(const body& a, const 
   // 1/mA + 1/mB + n . (rA ⌋ I_A⁻¹(rA ∧ n)) + n . (rB ⌋ I_B⁻¹(rB ∧ n)).
   k.effective_mass_inverse = a.inverse_mass() + b.inverse_mass() + e3ga::lc(k.arm_a, k.turn_a) +
                              e3ga::lc(k.arm_b, k.turn_b);
+  const real approach = approach_speed(a, b, start_a, start_b, c);
   const bool bounces = approach < -settings_.restitution_threshold && c.restitution > 0;
   const real gap = -c.geometry.depth;
+  if (bounces && k.central) {
+    if (const std::optional<timed_impact> impact = time_impact(a, b, c, start_a, start_b, h)) {
+      // Bounced at that moment: the normal speed changes by (1 + e) times
+      // the impact speed, and correct_positions moves the bodies as if the
+      // impulse had come then rather than at the start of the step.
+      k.normal = impact->normal;
+      k.target_speed = e3ga::scp(impact->normal, a.velocity_ - b.velocity_) +
+                       (1 + c.restitution) * impact->speed;
+      k.impact_time = impact->time;
+      k.timed = true;
+      return k;
+    }
+  }
   if (gap > 0) {  // speculative
-    if (bounces) k.effective_mass_inverse = 0;
+    if (bounces) k.effective_mass_inverse = 0;  // meets only in a later step
     k.target_speed = -gap / h;
   } else {
     k.target_speed = bounces ? -c.restitution * approach : real(0);
@@ -96,8 +131,7 @@ void contact_solver::solve_velocities(std::vector<body>& bodies,
   for (const contact& c : contacts) {
     const body& a = bodies[c.body_a];
     const body& b = bodies[c.body_b];
-    const real approach = approach_speed(a, b, start[c.body_a], start[c.body_b], c);
-    constraints_.push_back(make_constraint(a, b, c, approach, h));
+    constraints_.push_back(make_constraint(a, b, c, start[c.body_a], start[c.body_b], h));
   }
 
   // Over-relaxation speeds up coupled contacts (a row of balls, a stack),
@@ -173,15 +207,26 @@ void contact_solver::solve_velocities(std::vector<body>& bodies,
 
 void contact_solver::correct_positions(std::vector<body>& bodies,
                                        const std::vector<contact>& contacts, real h) const {
-  for (const contact& c : contacts) {
-    // A speculative contact had a gap when the step began; if its bodies
-    // overlap now (one left to bounce), the next step meets them for real.
-    if (c.geometry.depth < 0) continue;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const contact& c = contacts[i];
+    const constraint& k = constraints_[i];
     body& a = bodies[c.body_a];
     body& b = bodies[c.body_b];
     const real inverse_masses = a.inverse_mass_ + b.inverse_mass_;
     if (!(inverse_masses > 0)) continue;
     const vector& n = c.geometry.normal;
+    if (k.timed) {
+      // The impulse j came at impact_time into the step, not at its start:
+      // each body moved with its old velocity until then, t Δv less far.
+      const vector shift = (k.impact_time * k.accumulated) * k.normal;
+      a.position_ = a.position_ - a.inverse_mass_ * shift;
+      b.position_ = b.position_ + b.inverse_mass_ * shift;
+      continue;
+    }
+    // A speculative contact had a gap when the step began; if its bodies
+    // overlap now (one left to bounce in a later step), the next step meets
+    // them for real.
+    if (c.geometry.depth < 0) continue;
     // The depth now, to first order: the positions moved by h v since the
     // narrow phase measured it.
     const real depth = c.geometry.depth - h * e3ga::scp(a.velocity_ - b.velocity_, n);

@@ -3,11 +3,13 @@
 // position correction that removes penetration without adding velocity.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "gaphys/body.hpp"
 #include "gaphys/contact.hpp"
 #include "gaphys/world.hpp"
+#include "timed_impact.hpp"
 
 namespace gaphys {
 
@@ -16,25 +18,26 @@ class contact_solver {
   explicit contact_solver(const world_settings& settings) : settings_(settings) {}
 
   // Changes velocities so that no contact still approaches and each
-  // bouncing contact separates at e times its approach speed, and stores
-  // each contact's total impulse in it. The approach speed is taken from
-  // `start` (each body's velocities before this step's gravity and forces):
-  // from the velocities after them, a ball dropped with e = 1 would leave
-  // each bounce h g faster than it came and climb 1.3% higher every time.
+  // bouncing contact separates at e times its impact speed, and stores
+  // each contact's total impulse in it. A bounce is timed inside the step
+  // (timed_impact.hpp) from `start` (each body's velocities before this
+  // step's gravity and forces) and the velocities after them; its impact
+  // speed taken after them alone, a ball dropped with e = 1 would leave each
+  // bounce h g faster than it came and climb 1.3% higher every time.
   // Contacts between the same two bodies in `previous` (the last step's,
   // sorted by body pair like `contacts`) start from their old impulse.
   //
-  // A speculative contact (depth = -gap < 0) lets its bodies close the gap
-  // in this step of h seconds but no more: its target is -gap / h, so a
-  // landing body ends the step touching. One that would bounce (e > 0,
-  // approach faster than the threshold) is left to become a real contact,
-  // since stopping it at the surface would take its impact speed away.
+  // A speculative contact (depth = -gap < 0) that does not bounce lets its
+  // bodies close the gap in this step of h seconds but no more: its target
+  // is -gap / h, so a landing body ends the step touching. One that would
+  // bounce but meets only in a later step is left out.
   void solve_velocities(std::vector<body>& bodies, const std::vector<body_velocity>& start,
                         std::vector<contact>& contacts, const std::vector<contact>& previous,
                         real h);
 
-  // After the positions moved by h v: pushes overlapping bodies apart along
-  // the normal by a share of the depth left beyond the slop.
+  // After the positions moved by h v: moves the bodies of a timed bounce by
+  // -t Δv (the impulse came t into the step), and pushes other overlapping
+  // bodies apart along the normal by a share of the depth beyond the slop.
   void correct_positions(std::vector<body>& bodies, const std::vector<contact>& contacts,
                          real h) const;
 
@@ -49,6 +52,8 @@ class contact_solver {
     real target_speed;  // normal separation speed wanted after the impulses
     real relaxation = 1;  // settings' over-relaxation where the contact shares a body, else 1
     real accumulated = 0;
+    bool timed = false;     // a bounce at impact_time into the step (timed_impact.hpp)
+    real impact_time = 0;   // s; correct_positions moves the bodies by it
   };
 
   // What the sweeps read and change of each body, packed together: the
@@ -60,8 +65,12 @@ class contact_solver {
     real inverse_mass;
   };
 
-  constraint make_constraint(const body& a, const body& b, const contact& c, real approach,
+  constraint make_constraint(const body& a, const body& b, const contact& c,
+                             const body_velocity& start_a, const body_velocity& start_b,
                              real h) const;
+  static std::optional<timed_impact> time_impact(const body& a, const body& b, const contact& c,
+                                                 const body_velocity& start_a,
+                                                 const body_velocity& start_b, real h);
   static real normal_speed(const solver_body& a, const solver_body& b, const constraint& k);
   static void apply_impulse(solver_body& a, solver_body& b, const constraint& k, real j);
 

@@ -36,8 +36,8 @@ void space::find_contacts(const std::vector<body>& bodies, const std::vector<bod
   }
   contacts.clear();
   for (const auto& [a, b] : pairs) {
-    const vector relative_velocity = bodies[a].velocity() - bodies[b].velocity();
-    if (auto geometry = find_contact(placed_[a], placed_[b], lookahead, relative_velocity)) {
+    if (auto geometry = find_contact(placed_[a], placed_[b], lookahead, bodies[a].velocity(),
+                                     bodies[b].velocity())) {
       const real restitution =
           std::max(bodies[a].shape()->restitution(), bodies[b].shape()->restitution());
       contacts.push_back(contact{a, b, *geometry, restitution});

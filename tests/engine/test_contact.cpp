@@ -75,6 +75,13 @@ TEST_F(contact_test, spheres_within_the_gap_asked_for_are_speculative_contacts) 
     EXPECT_LT(within->squared_radius, 0);
     expect_sphere_sphere_geometry(s, *within);
     EXPECT_FALSE(find_contact(a_shape, b_shape, h, closing(gap * 0.99 / h))) << "trial " << trial;
+    // B moving with A (a stack falling together) does not hide A's approach:
+    // B may be stopped by another contact within the step.
+    const vector together = closing(gap * 1.01 / h);
+    EXPECT_TRUE(find_contact(a_shape, b_shape, h, together, together)) << "trial " << trial;
+    // Nor does it matter which of the two approaches.
+    EXPECT_TRUE(find_contact(a_shape, b_shape, h, vector{}, -closing(gap * 1.01 / h)))
+        << "trial " << trial;
     EXPECT_FALSE(find_contact(a_shape, b_shape, h, -closing(gap * 2 / h))) << "trial " << trial;
     EXPECT_FALSE(find_contact(a_shape, b_shape)) << "trial " << trial;
   }

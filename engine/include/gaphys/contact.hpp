@@ -40,12 +40,16 @@ struct contact_geometry {
 };
 
 // The contact between A and B, or nothing when they are apart. Shapes apart
-// by a gap their relative velocity vA - vB closes within `lookahead` seconds
+// by a gap that A's and B's velocities may close within `lookahead` seconds
 // make a speculative contact: the same geometry (the meet's round is
 // imaginary, its centre and carrier still real), with depth = -gap < 0.
+// Each body's own speed towards the other counts, not only their relative
+// speed: either may be stopped by its other contacts while the other goes
+// on (two touching balls of a stack both falling under gravity).
 std::optional<contact_geometry> find_contact(const placed_shape& a, const placed_shape& b,
                                              real lookahead = 0,
-                                             const vector& relative_velocity = vector{});
+                                             const vector& velocity_a = vector{},
+                                             const vector& velocity_b = vector{});
 
 // A contact between two bodies, as the solver uses it.
 struct contact {
