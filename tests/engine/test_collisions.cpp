@@ -232,6 +232,31 @@ TEST_F(collision_test, a_dropped_sphere_rebounds_to_e_squared_of_its_height) {
   }
 }
 
+// A ball fired at a small static sphere covers up to 21 radii per step, so it
+// would pass through between two steps; it is met speculatively and bounced
+// at the moment of first touch: back along the line of centres at e times its
+// speed, from where the bounce takes it within the step.
+TEST_F(collision_test, a_fast_ball_bounces_off_a_small_sphere_instead_of_passing_through) {
+  for (real speed : {real(10), real(60), real(200), real(500)}) {
+    const real radius = 0.1, e = 0.5;
+    world w = make_world(vector{});
+    body_definition target;
+    target.is_static = true;
+    target.shape = shape::sphere(radius).with_restitution(e);
+    w.create_body(target);
+    // Started 1 m away, plus a fraction of a step so the touch falls mid-step.
+    const real start = 2 * radius + 1 + real(0.37) * speed * h;
+    const body_id ball = add_sphere(w, vector{0, 0, start}, radius, 1, vector{0, 0, -speed}, e);
+    const int steps_to_touch = static_cast<int>((start - 2 * radius) / (speed * h));
+    simulate(w, steps_to_touch + 1);
+    const real touch = (start - 2 * radius) / speed;  // s after the start
+    const real after = (steps_to_touch + 1) * h - touch;
+    EXPECT_NEAR(z(w.at(ball).velocity()), e * speed, 1e-9 * speed) << "speed " << speed;
+    EXPECT_NEAR(z(w.at(ball).position()), 2 * radius + e * speed * after, 1e-9 * start)
+        << "speed " << speed;
+  }
+}
+
 // e = 0: the sphere lands and stays, touching the floor.
 TEST_F(collision_test, a_dropped_sphere_without_restitution_stays_down) {
   const real drop = 2, radius = 0.5;

@@ -64,9 +64,13 @@ TEST_F(resting_test, a_landing_sphere_stops_at_the_surface) {
   }
 }
 
-// The shared column: five spheres of radius 0.5 stacked in a tube of planes.
-// After landing, each contact stays under 1% of the radius deep; after two
-// seconds every sphere keeps its height: the stack neither sinks nor grows.
+// The shared column: five spheres of radius 0.5, 1 cm apart, drop into a
+// tube of planes and land on each other. No contact gets deeper than 1e-4 of
+// the radius, landing included: each ball is met speculatively even while it
+// falls with the ball below it, which the floor stops (with only the relative
+// speed counted, it fell g h^2 = 0.17 mm in and stayed there, below the slop).
+// After two seconds every sphere keeps its height: the stack neither sinks
+// nor grows.
 TEST_F(resting_test, a_column_of_five_spheres_stands_for_ten_seconds) {
   const real radius = 0.5;
   const int count = 5;
@@ -75,7 +79,6 @@ TEST_F(resting_test, a_column_of_five_spheres_stands_for_ten_seconds) {
   real max_depth = 0;
   std::vector<real> early(count, 0), late(count, 0);
   simulate(w, 10 * steps_per_second, [&](int i) {
-    if (i < steps_per_second) return;  // landing
     max_depth = std::max(max_depth, deepest(w));
     for (int k = 0; k < count; ++k) {
       const real height = z(w.at(first_ball + k).position());
@@ -83,10 +86,10 @@ TEST_F(resting_test, a_column_of_five_spheres_stands_for_ten_seconds) {
       if (i >= 9 * steps_per_second) late[k] += height / steps_per_second;
     }
   });
-  EXPECT_LT(max_depth, 0.01 * radius);
+  EXPECT_LT(max_depth, 1e-4 * radius);
   for (int k = 0; k < count; ++k) {
-    // Stacked: each centre about a diameter above the one below.
-    EXPECT_NEAR(late[k], radius + 2 * radius * k, 0.01 * radius * (k + 1)) << "sphere " << k;
+    // Stacked: each centre a diameter above the one below.
+    EXPECT_NEAR(late[k], radius + 2 * radius * k, 1e-5 * radius * (k + 1)) << "sphere " << k;
     EXPECT_NEAR(late[k], early[k], 1e-4 * radius) << "sphere " << k;
     EXPECT_LT(length(w.at(first_ball + k).velocity()), 1e-3) << "sphere " << k;
   }
