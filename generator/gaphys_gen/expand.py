@@ -375,13 +375,33 @@ def mv_kernel(expander: Expander, function: str, argument_bits: tuple[int, ...],
     return MvKernel(function, argument_bits, kernel, calls)
 
 
+# The generic add and sub are one dense, vectorized pass over every
+# coefficient (mv_algorithms.hpp, linear_combination), so a kernel can only
+# save the coefficients the arguments lack, and the dispatch to it costs more
+# than that in a small algebra: in e3ga (8 coefficients) the generic sum took
+# 2.1 ns per call and the dispatched kernels 3.7-5.0 (README, table 5.1);
+# in c3ga (32) the kernels win 1.6-4.3x. Sums are specialized only in
+# algebras with more coefficients than e3ga's.
+DENSE_SUM_LIMIT = 8
+
+
+def worth_a_kernel(algebra: Algebra, function: str) -> bool:
+    """Whether a profiled combination of `function` gets a kernel at all."""
+    if function in ("add", "sub"):
+        return algebra.blade_count > DENSE_SUM_LIMIT
+    return True
+
+
 def expand_profile(algebra: Algebra, chosen: list[tuple[str, tuple[int, ...], int]]) -> list[MvKernel]:
     """Kernels for the profiled combinations `chosen` (from profile.select) that
-    can be specialized; a divisor that vanishes structurally stays generic."""
+    can be specialized and are worth it (worth_a_kernel); a divisor that
+    vanishes structurally stays generic."""
     expander = Expander(algebra)
     kernels = []
     for function, argument_bits, calls in chosen:
         if function not in SPECIALIZABLE or (function in ("dual", "undual", "meet") and not expander.has_dual):
+            continue
+        if not worth_a_kernel(algebra, function):
             continue
         kernel = mv_kernel(expander, function, argument_bits, calls)
         if kernel.kernel.divisor is not None and kernel.kernel.divisor.is_zero():

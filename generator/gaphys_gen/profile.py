@@ -189,27 +189,36 @@ def blade_list(algebra: Algebra, bitmap: int) -> str:
 def report(profile: Profile, algebra: Algebra, coverage: float, top: int = 20) -> str:
     """A readable table of the hot combinations, and what an optimized build
     selected at `coverage` would still send to the generic fallback."""
-    from .expand import expand_profile
+    from .expand import SPECIALIZABLE, expand_profile, worth_a_kernel
 
     total = profile.total_calls
     chosen = select(profile, coverage)
-    covered = sum(count for _, _, count in chosen)
-    # The other combinations go to a kernel made for a superset of their
-    # bitmaps where one serves them, else to the generic path.
+    # Functions without mv kernels (not in SPECIALIZABLE) count as chosen:
+    # their recorded calls are straight-line named-type code or made of
+    # specialized calls. Sums in an algebra where no kernel pays
+    # (expand.worth_a_kernel) take the dense generic sum on purpose and are
+    # counted apart. Every other call goes to its own kernel, else to a kernel
+    # made for a superset of its bitmaps, else to the generic path.
     kernels = expand_profile(algebra, chosen)
-    made = {(function, arguments) for function, arguments, _ in chosen}
+    with_kernel = {(k.function, k.argument_bits) for k in kernels}
+    made = {(function, arguments) for function, arguments, _ in chosen
+            if function not in SPECIALIZABLE or (function, arguments) in with_kernel}
     calls: dict[tuple, int] = {}
     for e in profile.entries:
-        if (e.function, e.arguments) not in made:
-            calls[(e.function, e.arguments)] = calls.get((e.function, e.arguments), 0) + e.count
+        calls[(e.function, e.arguments)] = calls.get((e.function, e.arguments), 0) + e.count
+    covered = sum(count for key, count in calls.items() if key in made)
+    dense = sum(count for (function, _), count in calls.items()
+                if function in SPECIALIZABLE and not worth_a_kernel(algebra, function))
     superset = sum(count for (function, arguments), count in calls.items()
-                   if any(k.function == function and k.serves(arguments) for k in kernels))
-    fallback = total - covered - superset
+                   if (function, arguments) not in made and worth_a_kernel(algebra, function)
+                   and any(k.function == function and k.serves(arguments) for k in kernels))
+    fallback = total - covered - dense - superset
     lines = [
         f"profile of {profile.algebra}: {total} calls, {len(profile.entries)} entries",
-        f"specialized at coverage {coverage}: {len(chosen)} combinations, "
+        f"specialized at coverage {coverage}: {len(made)} combinations, "
         f"{covered} calls; served by a superset's kernel: {superset} calls; "
-        f"generic fallback: {fallback} calls ({100.0 * fallback / total if total else 0.0:.3f}%)",
+        + (f"dense generic sums (no sum kernel pays in this algebra): {dense} calls; " if dense else "")
+        + f"generic fallback: {fallback} calls ({100.0 * fallback / total if total else 0.0:.3f}%)",
         "",
         "| calls | share | function | arguments |",
         "|---:|---:|---|---|",

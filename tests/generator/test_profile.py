@@ -7,7 +7,7 @@ import sys
 import tempfile
 import unittest
 
-from gaphys_gen import model, profile
+from gaphys_gen import expand, model, profile
 
 from .support import GENERATOR_DIR, spec_path
 
@@ -135,7 +135,7 @@ class MergeAndWrite(unittest.TestCase):
 
 class SelectionAndReport(unittest.TestCase):
     PROFILE = profile.Profile("e3ga", E3.spec_hash, "0.1.0", (
-        profile.Entry("add", (VECTOR, VECTOR), VECTOR, 1),
+        profile.Entry("lc", (VECTOR, VECTOR), 1, 1),
         profile.Entry("gp", (ROTOR, ROTOR), ROTOR, 900),
         profile.Entry("gp", (VECTOR, VECTOR), ROTOR, 99),
     ))
@@ -147,8 +147,22 @@ class SelectionAndReport(unittest.TestCase):
 
     def test_report_names_blades_and_fallback_share(self):
         text = profile.report(self.PROFILE, E3, 0.99)
-        self.assertIn("generic fallback: 1 calls (0.100%)", text)  # add: no kernel serves it
+        self.assertIn("generic fallback: 1 calls (0.100%)", text)  # lc: no kernel serves it
         self.assertIn("{1, e1^e2, e1^e3, e2^e3} x {1, e1^e2, e1^e3, e2^e3}", text)
+
+    def test_sums_get_kernels_only_where_the_dense_sum_is_longer(self):
+        # e3ga's dense generic sum of 8 coefficients beats a dispatch; c3ga's 32 do not.
+        self.assertEqual(expand.expand_profile(E3, [("add", (VECTOR, VECTOR), 10), ("sub", (VECTOR, VECTOR), 5)]), [])
+        self.assertEqual(len(expand.expand_profile(E3, [("gp", (VECTOR, VECTOR), 10)])), 1)
+        c3_vector = 0x3e  # no, e1, e2, e3, ni
+        self.assertEqual([k.function for k in expand.expand_profile(C3, [("add", (c3_vector, c3_vector), 10)])],
+                         ["add"])
+        text = profile.report(profile.Profile("e3ga", E3.spec_hash, "0.1.0", (
+            profile.Entry("add", (VECTOR, VECTOR), VECTOR, 7),
+            profile.Entry("gp", (VECTOR, VECTOR), ROTOR, 3),
+        )), E3, 1.0)
+        self.assertIn("dense generic sums (no sum kernel pays in this algebra): 7 calls", text)
+        self.assertIn("generic fallback: 0 calls", text)
 
 
 class CommandLine(unittest.TestCase):
