@@ -66,8 +66,14 @@ typename Alg::mv random_2_blade(rng& g) {
   return exact_bits(op(u, v));
 }
 
+// Each algebra names the named types that hold the benchmarks' vectors,
+// 2-blades and versors exactly, for the same operations on named types.
 struct e3ga_algebra {
   using mv = e3ga::mv;
+  using vector_type = e3ga::vector;
+  using two_blade_type = e3ga::bivector;
+  using versor_type = e3ga::rotor;
+  static constexpr bool two_blades_wedge_to_zero = true;  // grade 4 in 3-D
   static constexpr const char* name = "e3ga";
   static constexpr const char* versor_name = "rotor";
   static int grade(std::size_t i) { return e3ga::blade_grades[i]; }
@@ -81,6 +87,10 @@ struct e3ga_algebra {
 
 struct c3ga_algebra {
   using mv = c3ga::mv;
+  using vector_type = c3ga::dual_sphere;  // all five grade-1 coordinates
+  using two_blade_type = c3ga::point_pair;  // all ten grade-2 coordinates
+  using versor_type = c3ga::motor;
+  static constexpr bool two_blades_wedge_to_zero = false;
   static constexpr const char* name = "c3ga";
   static constexpr const char* versor_name = "motor";
   static int grade(std::size_t i) { return c3ga::blade_grades[i]; }

@@ -160,6 +160,33 @@ def table_5_1(results, algebra, repetitions):
     return lines
 
 
+def named_table(results, algebra, repetitions):
+    """The table 5.1 operations on named types holding the same values as the mv rows,
+    and how far the optimized mv path is from the named kernels (the issue's 2x bar)."""
+    lines = [
+        f"#### {algebra}: the same operands in named types, CPU seconds per 10,000,000 calls "
+        f"(median of {repetitions}, ±cv)",
+        "",
+        "| function | arguments | reference | instrumented | optimized | optimized `mv` | `mv` / named |",
+        "|---|---|---:|---:|---:|---:|---:|",
+    ]
+    for function in FUNCTIONS:
+        first = True
+        for argument in ARGUMENTS:
+            name = f"{algebra}/{function}/{argument}/named"
+            ref, opt = results.get(("reference", name)), results.get(("optimized", name))
+            ins = results.get(("instrumented", name))
+            if ref is None and opt is None:
+                continue
+            mv = results.get(("optimized", f"{algebra}/{function}/{argument}"))
+            label = function + (f" ({THESIS_NAMES[function]})" if function in THESIS_NAMES else "")
+            cells = [label if first else "", ARGUMENT_LABELS[argument], seconds(ref), seconds(ins), seconds(opt),
+                     seconds(mv), ratio(mv, opt)]
+            lines.append("| " + " | ".join(cells) + " |")
+            first = False
+    return lines
+
+
 def kernel_table(results, repetitions):
     lines = [
         f"#### c3ga kernels: CPU seconds per 10,000,000 calls (median of {repetitions}, ±cv)",
@@ -275,6 +302,7 @@ def main():
     if args.tables in ("all", "algebra"):
         for algebra in ("e3ga", "c3ga"):
             lines += table_5_1(results, algebra, repetitions) + [""]
+            lines += named_table(results, algebra, repetitions) + [""]
         lines += kernel_table(results, repetitions) + [""]
     if args.tables in ("all", "engine"):
         lines += engine_table(engine, repetitions) + [""]

@@ -83,6 +83,14 @@ TYPED_TEST(C3gaVariantsAgree, SpecFunctions) {
   AGREE1(c3ga, log, translator)
   AGREE1(c3ga, log, motor)
   AGREE1(c3ga, inverse, motor)
+  AGREE2(c3ga, lc, dual_sphere, dual_sphere)
+  AGREE2(c3ga, gp, point_pair, point_pair)
+  AGREE2(c3ga, lc, point_pair, point_pair)
+  AGREE2(c3ga, op, point_pair, point_pair)
+  AGREE2(c3ga, scp, point_pair, point_pair)
+  AGREE2(c3ga, lc, motor, motor)
+  AGREE2(c3ga, op, motor, motor)
+  AGREE2(c3ga, scp, motor, motor)
 }
 
 TYPED_TEST(C3gaVariantsAgree, EveryType) {

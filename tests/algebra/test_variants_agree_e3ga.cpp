@@ -58,6 +58,8 @@ TYPED_TEST(E3gaVariantsAgree, SpecFunctions) {
   AGREE1(e3ga, exp, bivector)
   AGREE1(e3ga, log, rotor)
   AGREE1(e3ga, inverse, rotor)
+  AGREE2(e3ga, lc, rotor, rotor)
+  AGREE2(e3ga, op, rotor, rotor)
   AGREE1(e3ga, inverse, vector)
   AGREE2(e3ga, meet, bivector, bivector)
 }
