@@ -140,6 +140,14 @@ def kernel_view(kernel: Kernel) -> dict:
     }
 
 
+# Runs of zeros in a kernel's result at least this long are written by
+# gaphys::ga::set_zero (an unrolled loop: vector stores), shorter ones one
+# coefficient at a time. With every zero its own statement, c3ga gp on full
+# multivectors in mv took 1.9x as long (bench_table_5_1: the function holding
+# the inlined kernels grew past what the compiler schedules well).
+ZERO_RUN_FOR_VECTOR_STORES = 4
+
+
 def mv_kernel_view(algebra: Algebra, mk) -> dict:
     """A profiled mv kernel: reads a.c[i] for the bits it was made for."""
     kernel = mk.kernel
@@ -154,18 +162,34 @@ def mv_kernel_view(algebra: Algebra, mk) -> dict:
     evaluated = [p for _, p in kernel.outputs] + [p for _, p in kernel.temporaries]
     evaluated += [kernel.divisor] if divides else []
     read = {v[0] for poly in evaluated for monomial in poly.terms for v in monomial}  # letters used
-    # Kernels write into the caller's result, which starts as a zero mv: no copies.
+    # Kernels write every coefficient of the caller's result, zeros included,
+    # in canonical order: the result is not zeroed first (one pass of stores,
+    # which adjacent coefficients share), and no copies.
     if kernel.result.kind == "scalar":
         body = [f"r = ({cpp.expression(kernel.outputs[0][1])}){scale};"]
     else:
-        body = [f"r.c[{i}] = ({cpp.expression(p)}){scale};" for i, p in kernel.outputs]
+        values = dict(kernel.outputs)
+        body, i, size = [], 0, len(algebra.blades)
+        while i < size:
+            if i in values:
+                body.append(f"r.c[{i}] = ({cpp.expression(values[i])}){scale};")
+                i += 1
+                continue
+            run = next((j for j in range(i, size) if j in values), size) - i
+            if run < ZERO_RUN_FOR_VECTOR_STORES:
+                body += [f"r.c[{j}] = T(0);" for j in range(i, i + run)]
+            else:
+                body.append(f"gaphys::ga::set_zero<{i}, {run}>(r.c);")
+            i += run
         body += [f"r.bits = {hex(kernel.mv_bits)}u;"]
     return {
         "name": mk.name,
         "comment": f"{mk.function} on mv {shown}{cost_text(kernel)} ({mk.calls} profiled calls)",
+        # Restrict: the result is never an argument (see gaphys/ga/compiler.hpp).
         "params": ", ".join(
-            ("" if letter in read else "[[maybe_unused]] ") + f"const basic_mv<T>& {letter}" for letter in letters
-        ) + (", T& r" if kernel.result.kind == "scalar" else ", basic_mv<T>& r"),
+            ("" if letter in read else "[[maybe_unused]] ") + f"const basic_mv<T>& GAPHYS_RESTRICT {letter}"
+            for letter in letters
+        ) + (", T& GAPHYS_RESTRICT r" if kernel.result.kind == "scalar" else ", basic_mv<T>& GAPHYS_RESTRICT r"),
         "temporaries": [{"name": n, "expr": cpp.expression(p)} for n, p in kernel.temporaries],
         "prologue": prologue,
         "body": body,

@@ -3,14 +3,17 @@
 // reference variant's generic path on random inputs with exactly those
 // bitmaps, also when the stored bits mark more coefficients than are nonzero
 // (the dispatcher's retry on exact bits), and on subsets of those bitmaps (a
-// kernel made for a superset). (Unprofiled bitmaps, the fallback path, are covered by
-// the random dense and sparse inputs of test_variants_agree_*.)
+// kernel made for a superset); and every kernel writes its whole result.
+// (Unprofiled bitmaps, the fallback path, are covered by the random dense and
+// sparse inputs of test_variants_agree_*.)
 #include <gtest/gtest.h>
 
 #include <c3ga/c3ga.hpp>
 #include <c3ga_ref/c3ga_ref.hpp>
 #include <e3ga/e3ga.hpp>
 #include <e3ga_ref/e3ga_ref.hpp>
+#include <cmath>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -75,27 +78,33 @@ GAPHYS_EVALUATE(e3ga_ref)
 GAPHYS_EVALUATE(c3ga)
 GAPHYS_EVALUATE(c3ga_ref)
 
-#define GAPHYS_DISPATCHED(ns)                                                    \
-  bool dispatched_##ns(const std::string& f, const ns::mv& a, const ns::mv& b) { \
-    namespace d = ns::detail;                                                    \
-    ns::mv r;                                                                    \
-    double s = 0;                                                                \
-    if (f == "gp") return d::specialized_gp(a, b, r);                            \
-    if (f == "op") return d::specialized_op(a, b, r);                            \
-    if (f == "lc") return d::specialized_lc(a, b, r);                            \
-    if (f == "rc") return d::specialized_rc(a, b, r);                            \
-    if (f == "add") return d::specialized_add(a, b, r);                          \
-    if (f == "sub") return d::specialized_sub(a, b, r);                          \
-    if (f == "apply") return d::specialized_apply(a, b, r);                      \
-    if (f == "meet") return d::specialized_meet(a, b, r);                        \
-    if (f == "scp") return d::specialized_scp(a, b, s);                          \
-    if (f == "neg") return d::specialized_neg(a, r);                             \
-    if (f == "reverse") return d::specialized_reverse(a, r);                     \
-    if (f == "involute") return d::specialized_involute(a, r);                   \
-    if (f == "conjugate") return d::specialized_conjugate(a, r);                 \
-    if (f == "dual") return d::specialized_dual(a, r);                           \
-    if (f == "undual") return d::specialized_undual(a, r);                       \
-    return false;                                                                \
+// dispatch_into_<ns>(f, a, b, r): ns's dispatcher for f writing into r, and
+// whether it had straight-line code for these bitmaps (scp into s).
+#define GAPHYS_DISPATCHED(ns)                                                         \
+  bool dispatch_into_##ns(const std::string& f, const ns::mv& a, const ns::mv& b,    \
+                          ns::mv& r, double& s) {                                    \
+    namespace d = ns::detail;                                                        \
+    if (f == "gp") return d::specialized_gp(a, b, r);                                \
+    if (f == "op") return d::specialized_op(a, b, r);                                \
+    if (f == "lc") return d::specialized_lc(a, b, r);                                \
+    if (f == "rc") return d::specialized_rc(a, b, r);                                \
+    if (f == "add") return d::specialized_add(a, b, r);                              \
+    if (f == "sub") return d::specialized_sub(a, b, r);                              \
+    if (f == "apply") return d::specialized_apply(a, b, r);                          \
+    if (f == "meet") return d::specialized_meet(a, b, r);                            \
+    if (f == "scp") return d::specialized_scp(a, b, s);                              \
+    if (f == "neg") return d::specialized_neg(a, r);                                 \
+    if (f == "reverse") return d::specialized_reverse(a, r);                         \
+    if (f == "involute") return d::specialized_involute(a, r);                       \
+    if (f == "conjugate") return d::specialized_conjugate(a, r);                     \
+    if (f == "dual") return d::specialized_dual(a, r);                               \
+    if (f == "undual") return d::specialized_undual(a, r);                           \
+    return false;                                                                    \
+  }                                                                                  \
+  bool dispatched_##ns(const std::string& f, const ns::mv& a, const ns::mv& b) {     \
+    ns::mv r;                                                                        \
+    double s = 0;                                                                    \
+    return dispatch_into_##ns(f, a, b, r, s);                                        \
   }
 GAPHYS_DISPATCHED(e3ga)
 GAPHYS_DISPATCHED(c3ga)
@@ -154,6 +163,33 @@ GAPHYS_DISPATCHED(c3ga)
   }                                                                                              \
   EXPECT_GT(checked, 0);                                                                         \
   EXPECT_GT(served, 0) << "no superset kernel served an unprofiled subset";
+
+// The mv functions hand the kernels a result that was not zeroed, so every
+// kernel must write every coefficient: a result filled with NaN beforehand
+// comes back equal to the reference's (NaN equals nothing), with its bits.
+#define GAPHYS_CHECK_WRITES_EVERY_COEFFICIENT(ns)                                                  \
+  std::mt19937 rng(99);                                                                          \
+  int checked = 0;                                                                               \
+  for (const auto* c = ns::detail::specialized_combinations; c->function != nullptr; ++c) {      \
+    if (std::string(c->function) == "scp") continue; /* a scalar result */                      \
+    SCOPED_TRACE(std::string(c->function) + " on bitmaps " + std::to_string(c->a) + ", " +       \
+                 std::to_string(c->b));                                                          \
+    const ns::mv a = with_bits<ns::mv>(rng, c->a), b = with_bits<ns::mv>(rng, c->b);             \
+    const auto ra = same_coordinates<ns##_ref::mv>(a), rb = same_coordinates<ns##_ref::mv>(b);   \
+    ns##_ref::mv ref;                                                                            \
+    ASSERT_TRUE(evaluate_##ns##_ref(c->function, ra, rb, ref));                                  \
+    ns::mv poisoned(gaphys::ga::uninitialized);                                                  \
+    for (auto& x : poisoned.c) x = std::numeric_limits<double>::quiet_NaN();                     \
+    double s = 0;                                                                                \
+    ASSERT_TRUE(dispatch_into_##ns(c->function, a, b, poisoned, s));                             \
+    for (double x : poisoned.c) ASSERT_FALSE(std::isnan(x)) << "a coefficient was not written";  \
+    EXPECT_TRUE((results_agree<ns::mv, ns##_ref::mv>(poisoned, ref)));                           \
+    ++checked;                                                                                   \
+  }                                                                                              \
+  EXPECT_GT(checked, 0);
+
+TEST(ProfiledKernels, E3gaKernelsWriteEveryCoefficient) { GAPHYS_CHECK_WRITES_EVERY_COEFFICIENT(e3ga) }
+TEST(ProfiledKernels, C3gaKernelsWriteEveryCoefficient) { GAPHYS_CHECK_WRITES_EVERY_COEFFICIENT(c3ga) }
 
 TEST(ProfiledKernels, E3gaSupersetKernelsServeSubsets) { GAPHYS_CHECK_SUBSETS(e3ga) }
 TEST(ProfiledKernels, C3gaSupersetKernelsServeSubsets) { GAPHYS_CHECK_SUBSETS(c3ga) }

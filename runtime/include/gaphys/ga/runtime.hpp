@@ -2,6 +2,8 @@
 #pragma once
 
 #include "mv_algorithms.hpp"
+#include "compiler.hpp"
 #include "scalar_functions.hpp"
 #include "table_product.hpp"
+#include "uninitialized.hpp"
 #include "version.hpp"
