@@ -99,6 +99,8 @@ def load_results(args, executables):
                 if args.json_dir:
                     Path(args.json_dir).mkdir(parents=True, exist_ok=True)
                     (Path(args.json_dir) / file_name).write_text(text)
+            if not text.strip():
+                continue  # --filter matched none of this executable's benchmarks
             data = json.loads(text)
             context = data["context"]
             found = data["context"].get("gaphys_variant")
