@@ -42,12 +42,12 @@ void contact_solver::apply_impulse(solver_body& a, solver_body& b, const constra
 
 namespace {
 
+bool is_plane(const body& b) { return b.shape() && b.shape()->kind() == shape_kind::plane; }
+
 // Every shape's contact normal passes through the centre of a sphere or a
 // point (the line of centres, a plane's normal), so the arm n ∧ r of such a
 // body is zero; computed from the contact point it would be rounding only.
-bool central(const body& b) {
-  return b.shape() && b.shape()->kind() != shape_kind::plane;
-}
+bool central(const body& b) { return b.shape() && !is_plane(b); }
 
 }  // namespace
 
@@ -60,7 +60,6 @@ std::optional<timed_impact> contact_solver::time_impact(const body& a, const bod
                                                         const body_velocity& start_b, real h) {
   const relative_motion motion{a.position() - b.position(), start_a.linear - start_b.linear,
                                a.velocity_ - b.velocity_};
-  const auto is_plane = [](const body& x) { return x.shape() && x.shape()->kind() == shape_kind::plane; };
   if (is_plane(a) || is_plane(b)) {
     return impact_across_plane(-c.geometry.depth, c.geometry.normal, motion, h);
   }

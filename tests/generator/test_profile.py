@@ -191,10 +191,6 @@ class CommandLine(unittest.TestCase):
             self.assertIn("| 6 | 100.00% | gp | {e1, e2, e3} x {e1, e2, e3} |", report.stdout)
 
 
-if __name__ == "__main__":
-    unittest.main()
-
-
 class SupersetKernels(unittest.TestCase):
     """Kernels made for one bitmap serve the subsets of it the profile never showed."""
 
@@ -233,3 +229,7 @@ class SupersetKernels(unittest.TestCase):
         self.assertIn("specialized at coverage 0.9: 1 combinations, 900 calls", text)
         self.assertIn("served by a superset's kernel: 60 calls", text)
         self.assertIn("generic fallback: 40 calls (4.000%)", text)
+
+
+if __name__ == "__main__":
+    unittest.main()
