@@ -1007,8 +1007,8 @@ bool specialized_gp_on_exact_bits(const basic_mv<T>& a, const basic_mv<T>& b, ba
   return specialized_gp_covering(a_bits, b_bits, a, b, r);
 }
 
-// Kept small so that it inlines into the mv function: a hit costs one call
-// into the switch, a miss another into the retry.
+// Kept small, and the switch forced inline, so that a hit runs inside the mv
+// function (one call in all); only a miss calls the retry.
 template <class T>
 inline bool specialized_gp(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   return specialized_gp_by_key(pair_key(a.bits, b.bits), a, b, r) ||
@@ -1082,8 +1082,8 @@ bool specialized_op_on_exact_bits(const basic_mv<T>& a, const basic_mv<T>& b, ba
   return specialized_op_covering(a_bits, b_bits, a, b, r);
 }
 
-// Kept small so that it inlines into the mv function: a hit costs one call
-// into the switch, a miss another into the retry.
+// Kept small, and the switch forced inline, so that a hit runs inside the mv
+// function (one call in all); only a miss calls the retry.
 template <class T>
 inline bool specialized_op(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   return specialized_op_by_key(pair_key(a.bits, b.bits), a, b, r) ||
@@ -1205,8 +1205,8 @@ bool specialized_lc_on_exact_bits(const basic_mv<T>& a, const basic_mv<T>& b, ba
   return specialized_lc_covering(a_bits, b_bits, a, b, r);
 }
 
-// Kept small so that it inlines into the mv function: a hit costs one call
-// into the switch, a miss another into the retry.
+// Kept small, and the switch forced inline, so that a hit runs inside the mv
+// function (one call in all); only a miss calls the retry.
 template <class T>
 inline bool specialized_lc(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   return specialized_lc_by_key(pair_key(a.bits, b.bits), a, b, r) ||
@@ -1593,8 +1593,8 @@ bool specialized_scp_on_exact_bits(const basic_mv<T>& a, const basic_mv<T>& b, T
   return specialized_scp_covering(a_bits, b_bits, a, b, r);
 }
 
-// Kept small so that it inlines into the mv function: a hit costs one call
-// into the switch, a miss another into the retry.
+// Kept small, and the switch forced inline, so that a hit runs inside the mv
+// function (one call in all); only a miss calls the retry.
 template <class T>
 inline bool specialized_scp(const basic_mv<T>& a, const basic_mv<T>& b, T& r) {
   return specialized_scp_by_key(pair_key(a.bits, b.bits), a, b, r) ||
@@ -1668,8 +1668,8 @@ bool specialized_apply_on_exact_bits(const basic_mv<T>& a, const basic_mv<T>& b,
   return specialized_apply_covering(a_bits, b_bits, a, b, r);
 }
 
-// Kept small so that it inlines into the mv function: a hit costs one call
-// into the switch, a miss another into the retry.
+// Kept small, and the switch forced inline, so that a hit runs inside the mv
+// function (one call in all); only a miss calls the retry.
 template <class T>
 inline bool specialized_apply(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
   return specialized_apply_by_key(pair_key(a.bits, b.bits), a, b, r) ||
@@ -1750,8 +1750,8 @@ bool specialized_neg_on_exact_bits(const basic_mv<T>& a, basic_mv<T>& r) {
   return specialized_neg_covering(a_bits, a, r);
 }
 
-// Kept small so that it inlines into the mv function: a hit costs one call
-// into the switch, a miss another into the retry.
+// Kept small, and the switch forced inline, so that a hit runs inside the mv
+// function (one call in all); only a miss calls the retry.
 template <class T>
 inline bool specialized_neg(const basic_mv<T>& a, basic_mv<T>& r) {
   return specialized_neg_by_key(a.bits, a, r) || specialized_neg_on_exact_bits(a, r);
@@ -1862,8 +1862,8 @@ bool specialized_reverse_on_exact_bits(const basic_mv<T>& a, basic_mv<T>& r) {
   return specialized_reverse_covering(a_bits, a, r);
 }
 
-// Kept small so that it inlines into the mv function: a hit costs one call
-// into the switch, a miss another into the retry.
+// Kept small, and the switch forced inline, so that a hit runs inside the mv
+// function (one call in all); only a miss calls the retry.
 template <class T>
 inline bool specialized_reverse(const basic_mv<T>& a, basic_mv<T>& r) {
   return specialized_reverse_by_key(a.bits, a, r) || specialized_reverse_on_exact_bits(a, r);
