@@ -120,12 +120,10 @@ void register_algebra() {
   // (grade 4 in 3-D), so the spec has no kernel for it and the row is left out.
   register_named<typename Alg::vector_type, add_call, gp_call, lc_call, op_call, scp_call>(
       Alg::name, vectors);
-  if constexpr (Alg::two_blades_wedge_to_zero)
-    register_named<typename Alg::two_blade_type, add_call, gp_call, lc_call, scp_call>(Alg::name,
-                                                                                       blades);
-  else
-    register_named<typename Alg::two_blade_type, add_call, gp_call, lc_call, op_call, scp_call>(
-        Alg::name, blades);
+  register_named<typename Alg::two_blade_type, add_call, gp_call, lc_call, scp_call>(Alg::name,
+                                                                                     blades);
+  if constexpr (!Alg::two_blades_wedge_to_zero)
+    register_named<typename Alg::two_blade_type, op_call>(Alg::name, blades);
   register_named<typename Alg::versor_type, add_call, gp_call, lc_call, op_call, scp_call>(
       Alg::name, versors);
 }

@@ -134,6 +134,24 @@ def ratio(reference, optimized):
     return f"{reference['median'] / optimized['median']:.1f}x"
 
 
+def function_label(function):
+    return function + (f" ({THESIS_NAMES[function]})" if function in THESIS_NAMES else "")
+
+
+def table_5_1_rows(results, algebra, suffix=""):
+    """(function, argument, first row of its function, (reference, instrumented, optimized)) for
+    every table 5.1 benchmark <algebra>/<function>/<argument><suffix> that ran."""
+    for function in FUNCTIONS:
+        first = True
+        for argument in ARGUMENTS:
+            name = f"{algebra}/{function}/{argument}{suffix}"
+            cells = tuple(results.get((variant, name)) for variant in VARIANTS)
+            if cells[0] is None and cells[2] is None:
+                continue
+            yield function, argument, first, cells
+            first = False
+
+
 def table_5_1(results, algebra, repetitions):
     lines = [
         f"#### {algebra}: `mv` arguments, CPU seconds per 10,000,000 calls (median of {repetitions}, ±cv)",
@@ -143,22 +161,11 @@ def table_5_1(results, algebra, repetitions):
         + " |",
         "|---|---|---:|---:|---:|---:|---:|" + "---:|" * len(THESIS_COLUMNS),
     ]
-    for function in FUNCTIONS:
-        first = True
-        for argument in ARGUMENTS:
-            name = f"{algebra}/{function}/{argument}"
-            ref, opt = results.get(("reference", name)), results.get(("optimized", name))
-            ins = results.get(("instrumented", name))
-            if ref is None and opt is None:
-                continue
-            label = function
-            if function in THESIS_NAMES:
-                label += f" ({THESIS_NAMES[function]})"
-            thesis = [f"{t:.2f}" for t in THESIS[function]] if first else [""] * len(THESIS_COLUMNS)
-            cells = [label if first else "", ARGUMENT_LABELS[argument], seconds(ref), seconds(ins), seconds(opt),
-                     ratio(ref, opt), ratio(ins, ref)]
-            lines.append("| " + " | ".join(cells + thesis) + " |")
-            first = False
+    for function, argument, first, (ref, ins, opt) in table_5_1_rows(results, algebra):
+        thesis = [f"{t:.2f}" for t in THESIS[function]] if first else [""] * len(THESIS_COLUMNS)
+        cells = [function_label(function) if first else "", ARGUMENT_LABELS[argument], seconds(ref), seconds(ins),
+                 seconds(opt), ratio(ref, opt), ratio(ins, ref)]
+        lines.append("| " + " | ".join(cells + thesis) + " |")
     return lines
 
 
@@ -172,20 +179,11 @@ def named_table(results, algebra, repetitions):
         "| function | arguments | reference | instrumented | optimized | optimized `mv` | `mv` / named |",
         "|---|---|---:|---:|---:|---:|---:|",
     ]
-    for function in FUNCTIONS:
-        first = True
-        for argument in ARGUMENTS:
-            name = f"{algebra}/{function}/{argument}/named"
-            ref, opt = results.get(("reference", name)), results.get(("optimized", name))
-            ins = results.get(("instrumented", name))
-            if ref is None and opt is None:
-                continue
-            mv = results.get(("optimized", f"{algebra}/{function}/{argument}"))
-            label = function + (f" ({THESIS_NAMES[function]})" if function in THESIS_NAMES else "")
-            cells = [label if first else "", ARGUMENT_LABELS[argument], seconds(ref), seconds(ins), seconds(opt),
-                     seconds(mv), ratio(mv, opt)]
-            lines.append("| " + " | ".join(cells) + " |")
-            first = False
+    for function, argument, first, (ref, ins, opt) in table_5_1_rows(results, algebra, "/named"):
+        mv = results.get(("optimized", f"{algebra}/{function}/{argument}"))
+        cells = [function_label(function) if first else "", ARGUMENT_LABELS[argument], seconds(ref), seconds(ins),
+                 seconds(opt), seconds(mv), ratio(mv, opt)]
+        lines.append("| " + " | ".join(cells) + " |")
     return lines
 
 
