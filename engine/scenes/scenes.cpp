@@ -23,57 +23,70 @@ class jitter {
   std::uint64_t state_;
 };
 
-void add_static_plane(world& w, const vector& normal, real offset, real restitution) {
+shape with_material(const shape& s, const material& m) {
+  return s.with_restitution(m.restitution)
+      .with_friction(m.friction)
+      .with_rolling_resistance(m.rolling_resistance)
+      .with_spinning_friction(m.spinning_friction);
+}
+
+void add_static_plane(world& w, const vector& normal, real offset, const material& m) {
   body_definition floor;
   floor.is_static = true;
-  floor.shape = shape::plane(normal, offset).with_restitution(restitution);
+  floor.shape = with_material(shape::plane(normal, offset), m);
   w.create_body(floor);
 }
 
 // A floor at z = 0 and walls at x, y = ±half_width; each plane's solid side is
 // outside the box.
-void add_box(world& w, real half_width, real restitution) {
-  add_static_plane(w, vector{0, 0, 1}, 0, restitution);
-  add_static_plane(w, vector{1, 0, 0}, -half_width, restitution);
-  add_static_plane(w, vector{-1, 0, 0}, -half_width, restitution);
-  add_static_plane(w, vector{0, 1, 0}, -half_width, restitution);
-  add_static_plane(w, vector{0, -1, 0}, -half_width, restitution);
+void add_box(world& w, real half_width, const material& m) {
+  add_static_plane(w, vector{0, 0, 1}, 0, m);
+  add_static_plane(w, vector{1, 0, 0}, -half_width, m);
+  add_static_plane(w, vector{-1, 0, 0}, -half_width, m);
+  add_static_plane(w, vector{0, 1, 0}, -half_width, m);
+  add_static_plane(w, vector{0, -1, 0}, -half_width, m);
 }
 
-body_id add_sphere(world& w, const vector& position, real radius, real restitution,
-                   const vector& velocity = vector{}) {
+body_id add_sphere(world& w, const vector& position, real radius, const material& m,
+                   const vector& velocity = vector{}, const bivector& spin = bivector{}) {
   body_definition ball;
   ball.mass = 1;
   ball.position = position;
   ball.velocity = velocity;
-  ball.shape = shape::sphere(radius).with_restitution(restitution);
+  ball.angular_velocity = spin;
+  ball.shape = with_material(shape::sphere(radius), m);
   return w.create_body(ball);
 }
 
+// Restitution e and friction μ, no rolling or spinning resistance.
+material surface(real restitution, real friction) { return {restitution, friction, 0, 0}; }
+
 }  // namespace
 
-world falling_spheres_in_box(int count, std::uint64_t seed) {
-  constexpr real radius = real(0.1), restitution = real(0.3), spacing = 3 * radius;
+world falling_spheres_in_box(int count, std::uint64_t seed, real friction) {
+  constexpr real radius = real(0.1), spacing = 3 * radius;
+  const material m = surface(real(0.3), friction);
   const int side = std::max(1, static_cast<int>(std::ceil(std::sqrt(real(count) / 4))));
   const real half_width = side * spacing / 2;
   world w;
-  add_box(w, half_width, restitution);
+  add_box(w, half_width, m);
   jitter random(seed);
   for (int i = 0; i < count; ++i) {
     const int layer = i / (side * side), row = (i / side) % side, column = i % side;
     const vector cell{-half_width + (column + real(0.5)) * spacing,
                       -half_width + (row + real(0.5)) * spacing, 2 * radius + layer * spacing};
     const vector shake{random.next(), random.next(), random.next()};
-    add_sphere(w, cell + (radius / 4) * shake, radius, restitution, real(0.5) * shake);
+    add_sphere(w, cell + (radius / 4) * shake, radius, m, real(0.5) * shake);
   }
   return w;
 }
 
-world sphere_column(int count, real radius) {
+world sphere_column(int count, real radius, real friction) {
   world w;
-  add_box(w, real(1.02) * radius, 0);
+  const material m = surface(0, friction);
+  add_box(w, real(1.02) * radius, m);
   for (int i = 0; i < count; ++i) {
-    add_sphere(w, vector{0, 0, radius + i * (2 * radius + real(0.01))}, radius, 0);
+    add_sphere(w, vector{0, 0, radius + i * (2 * radius + real(0.01))}, radius, m);
   }
   return w;
 }
@@ -86,7 +99,7 @@ world elastic_collision(real offset) {
   light.mass = 1;
   light.position = vector{-2, 0, 0};
   light.velocity = vector{3, 0, 0};
-  light.shape = shape::sphere(real(0.5)).with_restitution(1);
+  light.shape = shape::sphere(real(0.5)).with_restitution(1).with_friction(0);
   w.create_body(light);
   body_definition heavy = light;
   heavy.mass = 2;
@@ -111,8 +124,80 @@ world spinning_body() {
 
 world bouncing_sphere(real restitution, real drop_height) {
   world w;
-  add_static_plane(w, vector{0, 0, 1}, 0, restitution);
-  add_sphere(w, vector{0, 0, real(0.5) + drop_height}, real(0.5), restitution);
+  add_static_plane(w, vector{0, 0, 1}, 0, surface(restitution, 0));
+  add_sphere(w, vector{0, 0, real(0.5) + drop_height}, real(0.5), surface(restitution, 0));
+  return w;
+}
+
+world sphere_on_floor(const vector& velocity, const bivector& spin, const material& m) {
+  world w;
+  add_static_plane(w, vector{0, 0, 1}, 0, m);
+  add_sphere(w, vector{0, 0, real(0.5)}, real(0.5), m, velocity, spin);
+  return w;
+}
+
+world sphere_on_incline(real angle, real friction) {
+  world w;
+  const material m = surface(0, friction);
+  const vector normal{-std::sin(angle), 0, std::cos(angle)};
+  add_static_plane(w, normal, 0, m);
+  add_sphere(w, real(0.5) * normal, real(0.5), m);
+  return w;
+}
+
+world rolling_ramp() {
+  world w;
+  const real angle = real(3.14159265358979323846) / 9;  // 20°
+  const material m = surface(0, real(0.5));
+  const vector normal{std::sin(angle), 0, std::cos(angle)};
+  add_static_plane(w, normal, 0, m);         // the ramp, falling towards +x to the floor
+  add_static_plane(w, vector{0, 0, 1}, 0, m);  // the floor, from x = 0 on
+  const real start = -3;                     // x of the contact point on the ramp
+  add_sphere(w, vector{start, 0, -std::tan(angle) * start} + real(0.5) * normal, real(0.5), m);
+  return w;
+}
+
+world newtons_cradle(int released, int count, real speed) {
+  world_settings settings;
+  settings.gravity = vector{};
+  world w(settings);
+  const material m = surface(1, 0);
+  for (int i = 0; i < count; ++i) {
+    add_sphere(w, vector{real(i) - count + 1, 0, 0}, real(0.5), m,
+               i < released ? vector{speed, 0, 0} : vector{});
+  }
+  // The released balls start touching the row: a gap of 1e-9 m, closed in the
+  // first step.
+  for (int i = 0; i < released; ++i) {
+    body& ball = w.at(static_cast<body_id>(i));
+    ball.set_position(ball.position() - vector{real(1e-9), 0, 0});
+  }
+  return w;
+}
+
+world sphere_gas(int count, std::uint64_t seed, real speed) {
+  world_settings settings;
+  settings.gravity = vector{};
+  settings.restitution_threshold = 0;
+  world w(settings);
+  constexpr real half_width = 2, radius = real(0.1);
+  const material m = surface(1, 0);
+  add_box(w, half_width, m);
+  add_static_plane(w, vector{0, 0, -1}, -2 * half_width, m);  // the lid, 4 m up
+  // On a grid 0.4 m apart inside the box, each ball shaken by up to 0.1 m and
+  // sent in a random direction.
+  const int side = static_cast<int>(std::ceil(std::cbrt(real(count))));
+  const real spacing = 2 * half_width / side;
+  jitter random(seed);
+  for (int i = 0; i < count; ++i) {
+    const int layer = i / (side * side), row = (i / side) % side, column = i % side;
+    const vector cell{-half_width + (column + real(0.5)) * spacing,
+                      -half_width + (row + real(0.5)) * spacing, (layer + real(0.5)) * spacing};
+    const vector shake{random.next(), random.next(), random.next()};
+    vector direction{random.next(), random.next(), random.next()};
+    direction = direction / e3ga::norm(direction);
+    add_sphere(w, cell + (spacing / 2 - radius) * real(0.5) * shake, radius, m, speed * direction);
+  }
   return w;
 }
 
@@ -123,6 +208,15 @@ const std::vector<entry>& catalogue() {
       {"elastic_collision", "two spheres, oblique elastic impact", [] { return elastic_collision(); }},
       {"spinning_body", "torque-free asymmetric body", [] { return spinning_body(); }},
       {"bouncing_sphere", "a sphere dropped 2 m, e = 0.8", [] { return bouncing_sphere(real(0.8)); }},
+      {"rolling_ramp", "a ball rolls down a 20° ramp onto the floor", [] { return rolling_ramp(); }},
+      {"cue_ball_backspin", "a ball struck low: slides, then rolls back",
+       // Backspin: Ω = 20 e13 moves the ball's bottom forward at 10 m/s
+       // (r ⌋ Ω with r = -0.5 e3) besides the ball's 3 m/s; as 2 r ω0 = 20
+       // exceeds 5 v0 = 15, friction brings it back at (5 v0 - 2 r ω0) / 7.
+       [] { return sphere_on_floor(vector{3, 0, 0}, bivector{0, 20, 0}, material{0, real(0.3), 0, 0}); }},
+      {"newtons_cradle", "two balls strike a row of three", [] { return newtons_cradle(2); }},
+      {"friction_pile", "100 spheres falling into a box, friction 0.5",
+       [] { return falling_spheres_in_box(100, 1, real(0.5)); }},
   };
   return scenes;
 }

@@ -1,14 +1,25 @@
 // Collision response: the thesis's impulse (eq. 3.20, in GA eq. 4.7) with the
-// full inertia, solved by sequential impulses over all contacts, then a
-// position correction that removes penetration without adding velocity.
+// full inertia, Coulomb friction, rolling resistance and spinning friction,
+// then a position correction that removes penetration without adding
+// velocity. A step's response has two phases (docs/engine.md):
+//
+// 1. impacts: contacts that bounce exchange impulses as sequential pairwise
+//    impacts would, each from the bodies' velocities as the earlier impacts
+//    of the step left them, so an impact travels down a row of touching
+//    balls (Newton's cradle) and no set of impacts can create energy;
+// 2. contacts: sequential impulses on every contact at once (resting,
+//    landing, sliding), warm started from the last step, friction in the
+//    same sweeps as the normal impulse.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <vector>
 
 #include "gaphys/body.hpp"
 #include "gaphys/contact.hpp"
 #include "gaphys/world.hpp"
+#include "impulse_row.hpp"
 #include "timed_impact.hpp"
 
 namespace gaphys {
@@ -17,15 +28,17 @@ class contact_solver {
  public:
   explicit contact_solver(const world_settings& settings) : settings_(settings) {}
 
-  // Changes velocities so that no contact still approaches and each
-  // bouncing contact separates at e times its impact speed, and stores
-  // each contact's total impulse in it. A bounce is timed inside the step
-  // (timed_impact.hpp) from `start` (each body's velocities before this
-  // step's gravity and forces) and the velocities after them; its impact
-  // speed taken after them alone, a ball dropped with e = 1 would leave each
-  // bounce h g faster than it came and climb 1.3% higher every time.
-  // Contacts between the same two bodies in `previous` (the last step's,
-  // sorted by body pair like `contacts`) start from their old impulse.
+  // Changes velocities so that no contact still approaches, each bouncing
+  // contact separates at e times its impact speed and every tangential
+  // impulse stays within its friction cone, and stores each contact's
+  // impulses in it. A bounce is timed inside the step (timed_impact.hpp)
+  // from `start` (each body's velocities before this step's gravity and
+  // forces) and the velocities after them; which contacts bounce, and how
+  // fast, is read from `start` and the step's earlier impacts: taken after
+  // gravity, a ball dropped with e = 1 would leave each bounce h g faster
+  // than it came and climb 1.3% higher every time. Contacts between the
+  // same two bodies in `previous` (the last step's, sorted by body pair like
+  // `contacts`) start from their old resting impulses.
   //
   // A speculative contact (depth = -gap < 0) that does not bounce lets its
   // bodies close the gap in this step of h seconds but no more: its target
@@ -42,27 +55,35 @@ class contact_solver {
                          real h) const;
 
  private:
+  using solver_body = detail::solver_body;
+  using impulse_row = detail::impulse_row;
+  using disk_block = detail::disk_block;
+
   struct constraint {
     std::size_t body_a, body_b;
-    vector normal;            // n, from B to A
-    bivector arm_a, arm_b;    // n ∧ r for each body's offset r to the contact point
-    bivector turn_a, turn_b;  // I⁻¹(r ∧ n): the change of Ω per unit impulse
-    bool central = false;     // both arms zero: the impulse turns neither body
-    real effective_mass_inverse;  // 0: the constraint is left out
-    real target_speed;  // normal separation speed wanted after the impulses
-    real relaxation = 1;  // settings' over-relaxation where the contact shares a body, else 1
-    real accumulated = 0;
-    bool timed = false;     // a bounce at impact_time into the step (timed_impact.hpp)
-    real impact_time = 0;   // s; correct_positions moves the bodies by it
-  };
+    real inverse_masses;   // 1/m_A + 1/m_B
+    impulse_row normal;    // n, from B to A; mass_inverse 0: left out of the contact phase
+    disk_block friction;   // along two tangents t1, t2
+    disk_block rolling;    // turning in n ∧ t1 and n ∧ t2
+    impulse_row spinning;  // turning in t1 ∧ t2, about the normal
+    real spinning_accumulated = 0;
+    std::array<vector, 2> frame;  // t1, t2: unit tangents, (t1, t2, n) right-handed
+    std::array<bivector, 3> planes;  // n ∧ t1, n ∧ t2 (rolling) and t1 ∧ t2 (spin)
+    material surface;      // the contact's combined material
+    real rolling_radius = 0;
+    real target_speed = 0;  // normal separation speed wanted after the contact phase
+    real relaxation = 1;    // settings' over-relaxation where the contact shares a body, else 1
+    real accumulated = 0;   // the contact phase's normal impulse
+    real gap = 0;           // m, > 0 for a speculative contact
 
-  // What the sweeps read and change of each body, packed together: the
-  // sweeps visit bodies in contact order, and whole body objects would
-  // spread them over many cache lines.
-  struct solver_body {
-    vector velocity;
-    bivector angular_velocity;
-    real inverse_mass;
+    // The impact phase.
+    bool bounces = false;  // approached faster than the threshold at the start of the step
+    std::optional<timed_impact> timing;  // when and how fast, for a bounce within the step
+    bool waits = false;    // a bounce whose surfaces meet only in a later step: left out
+    real impact_normal = 0;              // the impulses the impact phase gave
+    std::array<real, 2> impact_tangent{};
+    bool timed = false;     // its first impact came at timing->time into the step
+    vector timed_impulse{}; // and was this impulse (N s); correct_positions moves the bodies by it
   };
 
   constraint make_constraint(const body& a, const body& b, const contact& c,
@@ -71,13 +92,19 @@ class contact_solver {
   static std::optional<timed_impact> time_impact(const body& a, const body& b, const contact& c,
                                                  const body_velocity& start_a,
                                                  const body_velocity& start_b, real h);
-  static real normal_speed(const solver_body& a, const solver_body& b, const constraint& k);
-  static void apply_impulse(solver_body& a, solver_body& b, const constraint& k, real j);
+  void set_relaxation(const std::vector<body>& bodies);
+  void resolve_impacts(real h);
+  bool impact(constraint& k, real h);
+  void warm_start(const std::vector<contact>& contacts, const std::vector<contact>& previous);
+  void solve_contacts();
+  void store_impulses(std::vector<contact>& contacts) const;
 
   const world_settings& settings_;
   std::vector<constraint> constraints_;
   std::vector<int> contacts_per_body_;
-  std::vector<solver_body> solver_bodies_;
+  std::vector<solver_body> solver_bodies_;  // the velocities after the step's forces, as solved
+  std::vector<solver_body> impact_bodies_;  // the start velocities plus the impact phase's impulses
+  std::vector<char> impacted_;              // bodies the impact phase has changed
 };
 
 }  // namespace gaphys

@@ -24,7 +24,28 @@ shape shape::with_restitution(real restitution) const {
     detail::reject("restitution must be in [0, 1] (got ", restitution, ")");
   }
   shape copy = *this;
-  copy.restitution_ = restitution;
+  copy.material_.restitution = restitution;
+  return copy;
+}
+
+shape shape::with_friction(real mu) const {
+  detail::require_non_negative(mu, "friction");
+  shape copy = *this;
+  copy.material_.friction = mu;
+  return copy;
+}
+
+shape shape::with_rolling_resistance(real c) const {
+  detail::require_non_negative(c, "rolling resistance");
+  shape copy = *this;
+  copy.material_.rolling_resistance = c;
+  return copy;
+}
+
+shape shape::with_spinning_friction(real c) const {
+  detail::require_non_negative(c, "spinning friction");
+  shape copy = *this;
+  copy.material_.spinning_friction = c;
   return copy;
 }
 

@@ -28,7 +28,8 @@ void space::all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& p
 }
 
 void space::find_contacts(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
-                          std::vector<contact>& contacts, real lookahead) {
+                          std::vector<contact>& contacts, real lookahead,
+                          const material_combine_rules& rules) {
   placed_.resize(bodies.size());
   for (std::size_t index : shaped_bodies_) {
     const body& b = bodies[index];
@@ -38,9 +39,9 @@ void space::find_contacts(const std::vector<body>& bodies, const std::vector<bod
   for (const auto& [a, b] : pairs) {
     if (auto geometry = find_contact(placed_[a], placed_[b], lookahead, bodies[a].velocity(),
                                      bodies[b].velocity())) {
-      const real restitution =
-          std::max(bodies[a].shape()->restitution(), bodies[b].shape()->restitution());
-      contacts.push_back(contact{a, b, *geometry, restitution});
+      contacts.push_back(contact{
+          a, b, *geometry,
+          combine(rules, bodies[a].shape()->material(), bodies[b].shape()->material())});
     }
   }
 }

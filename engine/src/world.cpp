@@ -11,16 +11,34 @@ namespace gaphys {
 
 namespace {
 
+void require_rule(combine_rule rule, const char* what) {
+  switch (rule) {
+    case combine_rule::geometric_mean:
+    case combine_rule::average:
+    case combine_rule::min:
+    case combine_rule::max:
+    case combine_rule::multiply:
+      return;
+  }
+  detail::reject(what, " must be geometric_mean, average, min, max or multiply (got ",
+                 static_cast<int>(rule), ")");
+}
+
 const world_settings& validated(const world_settings& s) {
   detail::require_finite(s.gravity, "gravity");
   detail::require_non_negative(s.linear_damping, "linear damping");
   detail::require_non_negative(s.angular_damping, "angular damping");
   if (s.solver_iterations < 1) detail::reject("solver iterations must be >= 1");
+  if (s.impact_iterations < 1) detail::reject("impact iterations must be >= 1");
   detail::require_non_negative(s.solver_tolerance, "solver tolerance");
   if (!(s.solver_relaxation > 0 && s.solver_relaxation < 2)) {
     detail::reject("solver relaxation must be in (0, 2) (got ", s.solver_relaxation, ")");
   }
   detail::require_non_negative(s.restitution_threshold, "restitution threshold");
+  require_rule(s.material_combine.restitution, "restitution combine rule");
+  require_rule(s.material_combine.friction, "friction combine rule");
+  require_rule(s.material_combine.rolling_resistance, "rolling resistance combine rule");
+  require_rule(s.material_combine.spinning_friction, "spinning friction combine rule");
   if (!(s.position_correction >= 0 && s.position_correction <= 1)) {
     detail::reject("position correction must be in [0, 1] (got ", s.position_correction, ")");
   }
@@ -77,6 +95,12 @@ void world::set_broad_phase(broad_phase_kind kind) {
   space_.set_broad_phase(kind);
 }
 
+void world::set_material_combine(const material_combine_rules& rules) {
+  world_settings changed = settings_;
+  changed.material_combine = rules;
+  settings_ = validated(changed);
+}
+
 void world::step(real h) {
   detail::require_positive(h, "time step");
   const auto start = clock::now();
@@ -90,7 +114,7 @@ void world::step(real h) {
   space_.candidate_pairs(bodies_, pairs_, h);
   const auto paired = clock::now();
   previous_contacts_.swap(contacts_);
-  space_.find_contacts(bodies_, pairs_, contacts_, h);
+  space_.find_contacts(bodies_, pairs_, contacts_, h, settings_.material_combine);
   const auto met = clock::now();
   contact_solver solver(settings_);
   solver.solve_velocities(bodies_, start_velocities_, contacts_, previous_contacts_, h);
@@ -172,7 +196,13 @@ std::uint64_t world::state_hash() const {
     mix(b.angular_velocity_.c);
   }
   // The last impulses too: the next step starts from them.
-  for (const contact& c : contacts_) mix(std::array<real, 1>{c.impulse});
+  for (const contact& c : contacts_) {
+    for (const contact_impulse& i : {c.impulse, c.resting}) {
+      mix(std::array<real, 1>{i.normal});
+      mix(i.tangent.c);
+      mix(i.angular.c);
+    }
+  }
   return hash;
 }
 

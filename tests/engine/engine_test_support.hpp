@@ -46,22 +46,32 @@ class engine_test : public ::testing::Test {
     return world(settings);
   }
 
-  // A static floor: the half-space z <= height.
-  static body_id add_floor(world& w, real height = 0, real restitution = 0) {
+  // A static floor: the half-space z <= height. Friction as the engine's
+  // default unless given.
+  static body_id add_floor(world& w, real height = 0, real restitution = 0,
+                           real friction = material{}.friction) {
     body_definition floor;
     floor.is_static = true;
-    floor.shape = shape::plane(vector{0, 0, 1}, height).with_restitution(restitution);
+    floor.shape =
+        shape::plane(vector{0, 0, 1}, height).with_restitution(restitution).with_friction(friction);
     return w.create_body(floor);
   }
 
   static body_id add_sphere(world& w, const vector& position, real radius, real mass = 1,
-                            const vector& velocity = vector{}, real restitution = 0) {
+                            const vector& velocity = vector{}, real restitution = 0,
+                            real friction = material{}.friction) {
     body_definition ball;
     ball.mass = mass;
     ball.position = position;
     ball.velocity = velocity;
-    ball.shape = shape::sphere(radius).with_restitution(restitution);
+    ball.shape = shape::sphere(radius).with_restitution(restitution).with_friction(friction);
     return w.create_body(ball);
+  }
+
+  static real kinetic_energy(const world& w) {
+    real e = 0;
+    for (const body& b : w.bodies()) e += b.kinetic_energy();
+    return e;
   }
 
   // Steps the world `steps` times, calling after_step(step index) after each.

@@ -77,6 +77,44 @@ TEST_F(bad_input_test, shapes_reject_bad_radii_normals_and_restitutions) {
   }
 }
 
+TEST_F(bad_input_test, materials_reject_negative_and_non_finite_values) {
+  for (real value : {real(-0.1), nan, inf, -inf}) {
+    EXPECT_TRUE(rejects([&] { shape::sphere(1).with_friction(value); }, "friction")) << value;
+    EXPECT_TRUE(rejects([&] { shape::plane(vector{0, 0, 1}, 0).with_rolling_resistance(value); },
+                        "rolling resistance"))
+        << value;
+    EXPECT_TRUE(rejects([&] { shape::point().with_spinning_friction(value); }, "spinning friction"))
+        << value;
+  }
+  // The shape a bad call started from keeps its values.
+  const shape ball = shape::sphere(1).with_friction(0.7);
+  EXPECT_TRUE(rejects([&] { (void)ball.with_friction(-1); }, "friction"));
+  EXPECT_EQ(ball.friction(), 0.7);
+  // Zero is a valid value of each.
+  EXPECT_EQ(shape::sphere(1).with_friction(0).friction(), 0);
+  EXPECT_EQ(shape::sphere(1).with_rolling_resistance(0).rolling_resistance(), 0);
+  EXPECT_EQ(shape::sphere(1).with_spinning_friction(0).spinning_friction(), 0);
+}
+
+TEST_F(bad_input_test, combine_rules_are_checked_and_a_bad_one_changes_nothing) {
+  const auto bad = static_cast<combine_rule>(42);
+  const std::pair<combine_rule material_combine_rules::*, const char*> fields[] = {
+      {&material_combine_rules::restitution, "restitution combine rule"},
+      {&material_combine_rules::friction, "friction combine rule"},
+      {&material_combine_rules::rolling_resistance, "rolling resistance combine rule"},
+      {&material_combine_rules::spinning_friction, "spinning friction combine rule"}};
+  for (const auto& [field, name] : fields) {
+    world_settings s;
+    s.material_combine.*field = bad;
+    EXPECT_TRUE(rejects([&] { world{s}; }, name));
+    material_combine_rules rules;
+    rules.*field = bad;
+    EXPECT_TRUE(rejects([&] { w.set_material_combine(rules); }, name));
+    expect_unchanged();
+    EXPECT_EQ(w.settings().material_combine.*field, material_combine_rules{}.*field);
+  }
+}
+
 TEST_F(bad_input_test, inertia_rejects_non_positive_and_asymmetric_tensors) {
   EXPECT_TRUE(rejects([] { inertia::principal(1, 0, 1); }, "inertia about y"));
   EXPECT_TRUE(rejects([] { inertia::principal(-1, 1, 1); }, "inertia about x"));
@@ -193,6 +231,9 @@ TEST_F(bad_input_test, world_settings_are_checked) {
   s = {};
   s.solver_iterations = 0;
   EXPECT_TRUE(rejects_settings(s, "solver iterations"));
+  s = {};
+  s.impact_iterations = 0;
+  EXPECT_TRUE(rejects_settings(s, "impact iterations"));
   s = {};
   s.solver_tolerance = -1e-6;
   EXPECT_TRUE(rejects_settings(s, "solver tolerance"));

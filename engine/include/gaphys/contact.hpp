@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "gaphys/algebra.hpp"
+#include "gaphys/material.hpp"
 #include "gaphys/shape.hpp"
 
 namespace gaphys {
@@ -51,17 +52,28 @@ std::optional<contact_geometry> find_contact(const placed_shape& a, const placed
                                              const vector& velocity_a = vector{},
                                              const vector& velocity_b = vector{});
 
+// The impulses of one contact over a step, all acting on A (B gets their
+// opposites): along the normal, in the tangent plane (friction), and the
+// angular impulse of rolling resistance and spinning friction.
+struct contact_impulse {
+  real normal = 0;    // N s, >= 0
+  vector tangent{};   // N s, orthogonal to the normal, |tangent| <= μ normal
+  bivector angular{};  // N m s: rolling (planes holding the normal) and spin (the tangent plane)
+};
+
 // A contact between two bodies, as the solver uses it.
 struct contact {
   std::size_t body_a;
   std::size_t body_b;
   contact_geometry geometry;
-  real restitution;
-  // The normal impulse (N s, >= 0) the solver gave this contact in its step;
-  // impulse / h is the mean contact force. The next step starts from it when
-  // the two bodies still touch (warm starting), so a resting stack is held
-  // up at once instead of sinking while the sweeps converge.
-  real impulse = 0;
+  gaphys::material material;  // the two shapes' values, combined by world_settings' rules
+  // What the solver gave this contact in its step; impulse.normal / h is the
+  // mean normal force. Of it, `resting` is what the contact solve (not the
+  // step's bounces) gave: the next step starts from it when the two bodies
+  // still touch (warm starting), so a resting stack is held up at once
+  // instead of sinking while the sweeps converge.
+  contact_impulse impulse{};
+  contact_impulse resting{};
 };
 
 }  // namespace gaphys

@@ -6,6 +6,7 @@
 #include "gaphys/contact.hpp"
 #include "gaphys/error.hpp"
 #include "gaphys/inertia.hpp"
+#include "gaphys/material.hpp"
 #include "gaphys/shape.hpp"
 #include "gaphys/space.hpp"
 #include "gaphys/world.hpp"

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "gaphys/algebra.hpp"
+#include "gaphys/material.hpp"
 
 namespace gaphys {
 
@@ -20,15 +21,23 @@ class shape {
   // collide with spheres.
   static shape point();
 
-  // Coefficient of restitution in [0, 1]; a contact uses the larger of its
-  // two shapes' values.
-  shape with_restitution(real restitution) const;
+  // The surface's material (material.hpp says what each value does and how
+  // a contact combines its two shapes' values). Each returns a copy with the
+  // one value changed; a value out of range throws invalid_input naming it.
+  shape with_restitution(real restitution) const;  // in [0, 1]; default 0.5
+  shape with_friction(real mu) const;              // finite, >= 0; default 0.5
+  shape with_rolling_resistance(real c) const;     // finite, >= 0; default 0
+  shape with_spinning_friction(real c) const;      // finite, >= 0; default 0
 
   shape_kind kind() const { return kind_; }
   real radius() const { return radius_; }
   const vector& normal() const { return normal_; }
   real offset() const { return offset_; }
-  real restitution() const { return restitution_; }
+  const gaphys::material& material() const { return material_; }
+  real restitution() const { return material_.restitution; }
+  real friction() const { return material_.friction; }
+  real rolling_resistance() const { return material_.rolling_resistance; }
+  real spinning_friction() const { return material_.spinning_friction; }
 
  private:
   shape(shape_kind kind, real radius, const vector& normal, real offset)
@@ -38,7 +47,7 @@ class shape {
   real radius_ = 0;
   vector normal_{};
   real offset_ = 0;
-  real restitution_ = 0.5;
+  gaphys::material material_;
 };
 
 }  // namespace gaphys

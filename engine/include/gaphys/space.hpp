@@ -36,9 +36,11 @@ class space {
 
   // Places every shape once, then meets each candidate pair. Pairs whose
   // gap their velocities close within lookahead seconds make speculative
-  // contacts (depth < 0).
+  // contacts (depth < 0). Each contact's material combines its shapes' by
+  // `rules`.
   void find_contacts(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
-                     std::vector<contact>& contacts, real lookahead = 0);
+                     std::vector<contact>& contacts, real lookahead = 0,
+                     const material_combine_rules& rules = {});
 
  private:
   void all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs) const;

@@ -27,6 +27,11 @@ struct world_settings {
   // Gauss-Seidel; above 1 converges faster along chains of contacts.
   real solver_relaxation = 1.3;
   real restitution_threshold = 0.5;   // m/s: slower approaches do not bounce
+  // Most sweeps of the impact phase per step (docs/engine.md): a row of N
+  // touching bodies struck against the order of the contact list needs N.
+  int impact_iterations = 64;
+  // How a contact combines its two shapes' material values (material.hpp).
+  material_combine_rules material_combine{};
   real position_correction = 0.2;     // share of the excess depth removed per step
   real linear_slop = 0.0005;          // m of depth left uncorrected
   // Candidate pairs: the grid (O(N)) or the thesis's all pairs (O(N^2)); the
@@ -60,6 +65,8 @@ class world {
   void set_gravity(const vector& gravity);
   void set_damping(real linear, real angular);
   void set_broad_phase(broad_phase_kind kind);
+  // Applies from the next step's contacts on.
+  void set_material_combine(const material_combine_rules& rules);
 
   // Advances by h seconds (finite, > 0; else invalid_input, nothing changes).
   void step(real h);

@@ -16,23 +16,48 @@ inline constexpr real time_step = real(1) / 240;
 
 // count spheres (radius 0.1 m, 1 kg, e = 0.3) on a jittered grid above an
 // open box of five static planes sized to hold them, falling under gravity.
-world falling_spheres_in_box(int count, std::uint64_t seed = 1);
+// Friction (every shape's) 0 by default: the thesis's frictionless world.
+world falling_spheres_in_box(int count, std::uint64_t seed = 1, real friction = 0);
 
 // count spheres (radius, 1 kg, e = 0) stacked in a square tube of static
 // planes 2% wider than a sphere, each dropped from 1 cm above the one below.
-world sphere_column(int count = 5, real radius = real(0.5));
+world sphere_column(int count = 5, real radius = real(0.5), real friction = 0);
 
-// Two spheres without gravity, e = 1: 1 kg at (-2, 0, 0) moving at 3 m/s
-// along e1 and 2 kg at (2, offset, 0) moving at -1 m/s; offset 0 is head-on.
+// Two smooth spheres (no friction) without gravity, e = 1: 1 kg at
+// (-2, 0, 0) moving at 3 m/s along e1 and 2 kg at (2, offset, 0) moving at
+// -1 m/s; offset 0 is head-on.
 world elastic_collision(real offset = real(0.3));
 
 // One body without shape or gravity, principal inertia (1, 2, 3) kg m^2,
 // spun at (1, 2, 3) rad/s about its body axes x, y, z.
 world spinning_body();
 
-// A sphere (radius 0.5, 1 kg) whose bottom is drop_height above a static
-// floor at z = 0, both with the given restitution.
+// A smooth sphere (radius 0.5, 1 kg) whose bottom is drop_height above a
+// static floor at z = 0, both with the given restitution.
 world bouncing_sphere(real restitution, real drop_height = 2);
+
+// A solid sphere (radius 0.5, 1 kg) touching a static floor at z = 0, with
+// the given velocity and angular velocity; floor and sphere both of material m.
+world sphere_on_floor(const vector& velocity, const bivector& spin, const material& m);
+
+// A solid sphere (radius 0.5, 1 kg, e = 0) at rest touching a static plane
+// through the origin tilted by `angle` (rad) about e2, so that it slopes down
+// towards -e1; sphere and plane with friction μ.
+world sphere_on_incline(real angle, real friction);
+
+// A ball (radius 0.5, μ = 0.5) at rest on a 20° ramp, 3 m up-slope from
+// where the ramp meets a floor: it rolls down and on along the floor.
+world rolling_ramp();
+
+// `count` smooth balls (radius 0.5, 1 kg, e = 1) in a touching row along e1
+// without gravity; the first `released` of them move at `speed` towards the
+// rest, touching them.
+world newtons_cradle(int released, int count = 5, real speed = 1);
+
+// `count` smooth spheres (radius 0.1, 1 kg, e = 1) in a closed 4 m box without
+// gravity, at `speed` m/s in random directions, bouncing at any speed
+// (restitution threshold 0): a gas whose kinetic energy is constant.
+world sphere_gas(int count = 300, std::uint64_t seed = 1, real speed = 2);
 
 // The scenes by name, with their default sizes, for programs that pick one.
 struct entry {

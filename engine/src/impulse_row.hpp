@@ -1,0 +1,161 @@
+// One direction along which a contact exchanges impulse between its two
+// bodies, and the small block solves of friction's two tangents.
+//
+// A linear row pushes A by j d and B by -j d at the contact point: with the
+// offsets r from each centre, Δv = j d / m and ΔΩ = I⁻¹(r ∧ j d). The speed
+// it reads is d · (v_A(p) - v_B(p)); with v(p) = v + r ⌋ Ω,
+// d · (r ⌋ Ω) = (d ∧ r) ⌋ Ω, a scalar of two bivectors, precomputed as the arm.
+//
+// An angular row turns A by the angular impulse j U and B by -j U, for a unit
+// bivector U (U U = -1): ΔΩ = I⁻¹(j U). The speed it reads is the rate of
+// turning in U, -U ⌋ (Ω_A - Ω_B) = ~U ⌋ (Ω_A - Ω_B): its arm is ~U.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "gaphys/algebra.hpp"
+#include "gaphys/body.hpp"
+
+namespace gaphys::detail {
+
+// What the sweeps read and change of each body, packed together: the sweeps
+// visit bodies in contact order, and whole body objects would spread them
+// over many cache lines.
+struct solver_body {
+  vector velocity;
+  bivector angular_velocity;
+  real inverse_mass;
+};
+
+struct impulse_row {
+  vector linear{};            // d, unit; zero for an angular row
+  bivector arm_a{}, arm_b{};  // the speed's angular terms
+  bivector turn_a{}, turn_b{};  // ΔΩ of A (and -ΔΩ of B) per unit impulse
+  bool turns = true;          // false: both arms zero, the row turns neither body
+  real mass_inverse = 0;      // speed change per unit impulse; 0: left out
+
+  real speed(const solver_body& a, const solver_body& b) const {
+    const real linear_speed = e3ga::scp(linear, a.velocity - b.velocity);
+    if (!turns) return linear_speed;
+    return linear_speed + e3ga::lc(arm_a, a.angular_velocity) - e3ga::lc(arm_b, b.angular_velocity);
+  }
+
+  void apply(solver_body& a, solver_body& b, real j) const {
+    a.velocity = a.velocity + (j * a.inverse_mass) * linear;
+    b.velocity = b.velocity - (j * b.inverse_mass) * linear;
+    if (!turns) return;
+    a.angular_velocity = a.angular_velocity + j * turn_a;
+    b.angular_velocity = b.angular_velocity - j * turn_b;
+  }
+
+  // How much this row's impulse changes another row's speed: the entries of
+  // the effective-mass matrix K of a block (K_ii is mass_inverse).
+  real coupling(const impulse_row& other, real inverse_masses) const {
+    return inverse_masses * e3ga::scp(linear, other.linear) + e3ga::lc(arm_a, other.turn_a) +
+           e3ga::lc(arm_b, other.turn_b);
+  }
+};
+
+// The row along d at offsets r_a, r_b of two bodies (a static body's arm
+// counts for nothing: its Ω stays zero).
+inline impulse_row linear_row(const vector& d, const vector& r_a, const vector& r_b, const body& a,
+                              const body& b) {
+  impulse_row row;
+  row.linear = d;
+  if (!a.is_static()) {
+    row.arm_a = e3ga::op(d, r_a);
+    row.turn_a = a.world_inverse_inertia(e3ga::op(r_a, d));
+  }
+  if (!b.is_static()) {
+    row.arm_b = e3ga::op(d, r_b);
+    row.turn_b = b.world_inverse_inertia(e3ga::op(r_b, d));
+  }
+  row.mass_inverse = a.inverse_mass() + b.inverse_mass() + e3ga::lc(row.arm_a, row.turn_a) +
+                     e3ga::lc(row.arm_b, row.turn_b);
+  return row;
+}
+
+// The row that turns A by U and B by -U.
+inline impulse_row angular_row(const bivector& u, const body& a, const body& b) {
+  impulse_row row;
+  const bivector arm = e3ga::reverse(u);
+  if (!a.is_static()) row.arm_a = arm, row.turn_a = a.world_inverse_inertia(u);
+  if (!b.is_static()) row.arm_b = arm, row.turn_b = b.world_inverse_inertia(u);
+  row.mass_inverse = e3ga::lc(row.arm_a, row.turn_a) + e3ga::lc(row.arm_b, row.turn_b);
+  return row;
+}
+
+// Two rows solved together, their accumulated impulse kept within a disk
+// |λ| <= bound: friction's two tangents (the Coulomb cone), or rolling
+// resistance's two planes. Solving both at once with the 2x2 effective mass
+// and projecting on the disk makes the friction isotropic: a pyramid of
+// two clamped rows would let a body slide at 45° to them feel √2 μ.
+struct disk_block {
+  std::array<impulse_row, 2> rows;
+  std::array<real, 3> inverse{};  // K⁻¹ as (00, 01, 11)
+  std::array<real, 2> accumulated{};
+
+  void prepare(real inverse_masses) {
+    const real k00 = rows[0].mass_inverse, k11 = rows[1].mass_inverse;
+    const real k01 = rows[0].coupling(rows[1], inverse_masses);
+    const real determinant = k00 * k11 - k01 * k01;
+    if (!(determinant > 0)) {
+      inverse = {0, 0, 0};
+      return;
+    }
+    inverse = {k11 / determinant, -k01 / determinant, k00 / determinant};
+  }
+
+  bool active() const { return inverse[0] > 0; }
+
+  // The total impulse that stops the relative motion the rows read, starting
+  // from `held`, projected on the disk: the result when the bound allows,
+  // else the most that opposes the motion.
+  std::array<real, 2> stopping_total(const solver_body& a, const solver_body& b,
+                                     const std::array<real, 2>& held, real bound) const {
+    const real s0 = rows[0].speed(a, b), s1 = rows[1].speed(a, b);
+    std::array<real, 2> total{held[0] - (inverse[0] * s0 + inverse[1] * s1),
+                              held[1] - (inverse[1] * s0 + inverse[2] * s1)};
+    const real length = std::hypot(total[0], total[1]);
+    if (length > bound) {
+      const real scale = bound / length;
+      total = {total[0] * scale, total[1] * scale};
+    }
+    return total;
+  }
+
+  void apply(solver_body& a, solver_body& b, const std::array<real, 2>& j) const {
+    rows[0].apply(a, b, j[0]);
+    rows[1].apply(a, b, j[1]);
+  }
+
+  // One sweep's solve of the accumulated impulse; returns |Δλ|.
+  real solve(solver_body& a, solver_body& b, real bound) {
+    const std::array<real, 2> total = stopping_total(a, b, accumulated, bound);
+    const std::array<real, 2> j{total[0] - accumulated[0], total[1] - accumulated[1]};
+    apply(a, b, j);
+    accumulated = total;
+    return std::hypot(j[0], j[1]);
+  }
+
+  // Starts from a given impulse (warm starting), already within the bound.
+  void start_from(solver_body& a, solver_body& b, const std::array<real, 2>& impulse) {
+    accumulated = impulse;
+    apply(a, b, impulse);
+  }
+};
+
+// A single row kept within |λ| <= bound (spinning friction).
+inline real solve_bounded(const impulse_row& row, real& accumulated, solver_body& a,
+                          solver_body& b, real bound) {
+  const real total =
+      std::clamp(accumulated - row.speed(a, b) / row.mass_inverse, -bound, bound);
+  const real j = total - accumulated;
+  row.apply(a, b, j);
+  accumulated = total;
+  return std::fabs(j);
+}
+
+}  // namespace gaphys::detail
