@@ -72,7 +72,10 @@ void run(gaphys::world world, double seconds) {
 void engine_scenes() {
   namespace scenes = gaphys::scenes;
   run(scenes::falling_spheres_in_box(40), 1.5);
+  run(scenes::falling_spheres_in_box(40, 2, 0.5), 1.5);  // with friction
   run(scenes::sphere_column(), 2);
+  run(scenes::rolling_ramp(), 2);
+  run(scenes::newtons_cradle(2), 0.5);
   run(scenes::elastic_collision(), 1.5);
   run(scenes::bouncing_sphere(0.8), 2);
   run(scenes::spinning_body(), 1);
