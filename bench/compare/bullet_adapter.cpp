@@ -27,6 +27,12 @@ vec3 to_vec3(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 // geometric mean, sqrt(e_a e_b)).
 btScalar restitution_of(double e) { return btScalar(std::sqrt(e)); }
 
+// Friction combines by the product too (btManifoldResult::
+// calculateCombinedFriction, capped at 10), so each shape gets sqrt(mu):
+// sphere-plane and, in F5, sphere-sphere pairs then both get mu, where
+// giving the planes 1 would leave sphere pairs mu^2.
+btScalar friction_of(double mu) { return btScalar(std::sqrt(mu)); }
+
 // Everything one scene needs, declared in the order it must be built; members
 // are destroyed in reverse, so the world goes before the bodies, shapes and
 // broadphase it refers to.
@@ -66,7 +72,7 @@ class bullet_adapter final : public engine_adapter {
     for (const plane_description& p : s.planes) {
       b.other_shapes.push_back(
           std::make_unique<btStaticPlaneShape>(to_bullet(p.normal), btScalar(p.offset)));
-      add_body(0, b.other_shapes.back().get(), {}, {}, {}, {}, p.restitution);
+      add_body(0, b.other_shapes.back().get(), {}, {}, {}, {}, p.restitution, p.friction);
     }
     first_body_ = s.planes.size();
     for (const body_description& d : s.bodies) {
@@ -81,7 +87,7 @@ class bullet_adapter final : public engine_adapter {
         shape = b.other_shapes.back().get();
       }
       add_body(d.is_static ? 0 : d.mass, shape, d.inertia, d.position, d.velocity,
-               d.angular_velocity, d.restitution);
+               d.angular_velocity, d.restitution, d.friction);
     }
   }
 
@@ -101,13 +107,15 @@ class bullet_adapter final : public engine_adapter {
 
  private:
   void add_body(double mass, btCollisionShape* shape, const vec3& inertia, const vec3& position,
-                const vec3& velocity, const vec3& angular_velocity, double restitution) {
+                const vec3& velocity, const vec3& angular_velocity, double restitution,
+                double friction) {
     btRigidBody::btRigidBodyConstructionInfo info(
         btScalar(mass), nullptr, shape, mass > 0 ? to_bullet(inertia) : btVector3(0, 0, 0));
     info.m_startWorldTransform.setIdentity();
     info.m_startWorldTransform.setOrigin(to_bullet(position));
-    // gaphys has no friction: none here either, sliding, rolling or spinning.
-    info.m_friction = 0;
+    // Sliding friction as the scene says (0 unless an F scene sets it; Bullet's
+    // default would be 0.5); rolling and spinning friction never.
+    info.m_friction = friction_of(friction);
     info.m_rollingFriction = 0;
     info.m_spinningFriction = 0;
     info.m_restitution = restitution_of(restitution);
@@ -134,6 +142,8 @@ engine bullet_engine() {
   const btSphereShape sphere(btScalar(0.1));
   const btStaticPlaneShape plane(btVector3(0, 0, 1), 0);
   const btContactSolverInfo defaults;
+  const btRigidBody::btRigidBodyConstructionInfo default_body(1, nullptr, nullptr);
+  const double default_friction = default_body.m_friction;
   const int version = btGetVersion();
   return {
       "bullet",
@@ -153,7 +163,18 @@ engine bullet_engine() {
         "positions-only correction like gaphys's (Bullet default: split impulse beyond " +
             number(-defaults.m_splitImpulsePenetrationThreshold) +
             " m only); slop 0 as Bullet's slop also lowers the rebound velocity"},
-       {"friction", "0 sliding, rolling and spinning", "gaphys is frictionless"},
+       {"friction",
+        "sqrt(mu) per shape (0 in M1-M6, Bullet default " + number(default_friction) +
+            "); Bullet multiplies the pair's values",
+        "product = mu for every pair in F1-F5 (all shapes of a scene share mu), as gaphys's "
+        "geometric mean gives"},
+       {"friction model",
+        "one friction row per contact point, along its slip before the solve (below sqrt("
+        "SIMD_EPSILON) = " +
+            number(std::sqrt(double(SIMD_EPSILON)), 3) +
+            " m/s: a fixed tangent), bounded by mu times the point's normal impulse; warm started",
+        "Bullet's default solver mode (no SOLVER_USE_2_FRICTION_DIRECTIONS)"},
+       {"rolling / spinning friction", "0 / 0", "the F scenes measure sliding friction only"},
        {"damping / sleeping", "0 / DISABLE_DEACTIVATION", "gaphys has neither"},
        {"gyroscopic", "BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY", "Bullet's default, for M1"},
        {"margins",

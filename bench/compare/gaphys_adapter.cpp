@@ -1,6 +1,7 @@
 #include "gaphys_adapter.hpp"
 
 #include <optional>
+#include <string>
 
 #include "gaphys/world.hpp"
 #include "number.hpp"
@@ -23,6 +24,16 @@ quat to_quat(const gaphys::rotor& r) { return {r.c[0], -r.c[3], r.c[2], -r.c[1]}
 gaphys::bivector to_bivector(const vec3& w) { return {w.z, -w.y, w.x}; }
 vec3 axis_of(const gaphys::bivector& b) { return {b.c[2], -b.c[1], b.c[0]}; }
 
+// A shape with the scene's surface values. Every value is set, so a change of
+// gaphys's defaults (friction 0.5) cannot leak into the frictionless scenes;
+// rolling resistance and spinning friction stay 0 in every scene.
+gaphys::shape with_surface(const gaphys::shape& shape, double restitution, double friction) {
+  return shape.with_restitution(restitution)
+      .with_friction(friction)
+      .with_rolling_resistance(0)
+      .with_spinning_friction(0);
+}
+
 class gaphys_adapter final : public engine_adapter {
  public:
   void build(const scene& s) override {
@@ -32,8 +43,8 @@ class gaphys_adapter final : public engine_adapter {
     for (const plane_description& p : s.planes) {
       gaphys::body_definition plane;
       plane.is_static = true;
-      plane.shape =
-          gaphys::shape::plane(to_gaphys(p.normal), p.offset).with_restitution(p.restitution);
+      plane.shape = with_surface(gaphys::shape::plane(to_gaphys(p.normal), p.offset), p.restitution,
+                                 p.friction);
       world_->create_body(plane);
     }
     first_body_ = s.planes.size();
@@ -47,7 +58,9 @@ class gaphys_adapter final : public engine_adapter {
       d.position = to_gaphys(b.position);
       d.velocity = to_gaphys(b.velocity);
       d.angular_velocity = to_bivector(b.angular_velocity);
-      if (b.radius > 0) d.shape = gaphys::shape::sphere(b.radius).with_restitution(b.restitution);
+      if (b.radius > 0) {
+        d.shape = with_surface(gaphys::shape::sphere(b.radius), b.restitution, b.friction);
+      }
       world_->create_body(d);
     }
   }
@@ -64,6 +77,22 @@ class gaphys_adapter final : public engine_adapter {
   std::optional<gaphys::world> world_;
   std::size_t first_body_ = 0;
 };
+
+std::string rule_name(gaphys::combine_rule rule) {
+  switch (rule) {
+    case gaphys::combine_rule::geometric_mean:
+      return "geometric mean";
+    case gaphys::combine_rule::average:
+      return "average";
+    case gaphys::combine_rule::min:
+      return "min";
+    case gaphys::combine_rule::max:
+      return "max";
+    case gaphys::combine_rule::multiply:
+      return "product";
+  }
+  return "rule " + std::to_string(static_cast<int>(rule));
+}
 
 }  // namespace
 
@@ -82,7 +111,15 @@ engine gaphys_engine() {
         number(100 * defaults.position_correction) + "% of depth beyond " +
             number(1000 * defaults.linear_slop) + " mm per step, positions only",
         "default; adds no kinetic energy"},
-       {"friction / damping", "none / 0", "gaphys has no friction; default damping 0"},
+       {"friction",
+        "with_friction(mu) on every sphere and plane: 0 in M1-M6, the scene's mu in F1-F5; a "
+        "pair's mu is the " +
+            rule_name(defaults.material_combine.friction) +
+            " of its shapes'; Coulomb cone |impulse_t| <= mu impulse_n (material.hpp)",
+        "default combine rule; both shapes get the scene's mu, so every pair gets mu"},
+       {"rolling resistance / spinning friction", "0 / 0 on every shape",
+        "the F scenes measure sliding friction only; set explicitly, as are friction and e"},
+       {"damping", "0", "default"},
        {"attitude", "rotor, |q| = sqrt(R ~R)", "read as a quaternion for the harness"}},
       [] { return std::make_unique<gaphys_adapter>(); }};
 }

@@ -50,6 +50,13 @@ double deepest_overlap(const scene& s, const std::vector<body_state>& states) {
   return deepest;
 }
 
+vec3 contact_slip(const body_description& sphere, const body_state& state,
+                  const plane_description& plane) {
+  const vec3 n = plane.normal;
+  const vec3 u = state.velocity + cross(state.angular_velocity, (-sphere.radius) * n);
+  return u - dot(u, n) * n;
+}
+
 std::vector<body_state> states_of(const engine_adapter& adapter, const scene& s) {
   std::vector<body_state> states;
   states.reserve(s.bodies.size());

@@ -25,6 +25,15 @@ double total_kinetic_energy(const scene& s, const std::vector<body_state>& state
 // spheres. All pairs: for the small scenes it is used on.
 double deepest_overlap(const scene& s, const std::vector<body_state>& states);
 
+// The velocity, in the plane's tangent plane, of the sphere's point nearest
+// the (static) plane: v + ω × (-r n), its normal part removed. Zero when the
+// sphere rolls without slipping; what friction acts against when it slides.
+vec3 contact_slip(const body_description& sphere, const body_state& state,
+                  const plane_description& plane);
+
+// The horizontal part of v (gravity along -z in every friction scene).
+inline vec3 horizontal(const vec3& v) { return {v.x, v.y, 0}; }
+
 // Every body's state.
 std::vector<body_state> states_of(const engine_adapter& adapter, const scene& s);
 

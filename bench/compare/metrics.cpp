@@ -12,6 +12,14 @@ const std::vector<metric>& all_metrics() {
       {"m4", "M4", "resting columns of K spheres (r 0.5) in a tube, 10 s", resting_columns},
       {"m5", "M5", "tunnelling: sphere (r 0.1) fired at a target, no gravity", tunnelling},
       {"m6", "M6", "N spheres (r 0.1) falling into a box: wall time per step", step_time},
+      {"f1", "F1", "sliding to rolling: ball (r 0.5) launched at 5 m/s without spin, mu 0.3, 3 s",
+       sliding_to_rolling},
+      {"f2", "F2", "backspin: ball (r 0.5) at v0 2 m/s, spin about -y, mu 0.3, 3 s", backspin},
+      {"f3", "F3", "ball (r 0.5) released on a 30 deg slope, 2 s (n = 480 steps)", incline},
+      {"f4", "F4", "isotropy: ball (r 0.5) sliding at 5 m/s, mu 0.3, first 0.2 s",
+       friction_isotropy},
+      {"f5", "F5", "M6 with friction 0.5 on every sphere and plane: wall time per step",
+       friction_step_time},
   };
   return metrics;
 }

@@ -1,5 +1,6 @@
-// The six metrics of the comparison, each written once against
-// engine_adapter and run on every engine with the same scene and step.
+// The metrics of the comparison, each written once against engine_adapter
+// and run on every engine with the same scene and step: M1-M6 frictionless,
+// F1-F5 with Coulomb friction.
 #pragma once
 
 #include <functional>
@@ -29,6 +30,16 @@ void resting_columns(const engine& e, const options& o, recorder& out);
 void tunnelling(const engine& e, const options& o, recorder& out);
 // M6: wall time per step of N spheres falling into a box.
 void step_time(const engine& e, const options& o, recorder& out);
+// F1: a ball launched sliding: the change to rolling at 5/7 v0.
+void sliding_to_rolling(const engine& e, const options& o, recorder& out);
+// F2: a ball with backspin: final velocity (5 v0 - 2 r w0) / 7.
+void backspin(const engine& e, const options& o, recorder& out);
+// F3: a ball on a 30 degree slope, rolling or sliding: distance in 2 s.
+void incline(const engine& e, const options& o, recorder& out);
+// F4: deceleration and heading of a sliding ball at 0, 30 and 45 degrees.
+void friction_isotropy(const engine& e, const options& o, recorder& out);
+// F5: M6's wall time per step with friction 0.5 on every shape.
+void friction_step_time(const engine& e, const options& o, recorder& out);
 
 struct metric {
   std::string id;     // "m1": the --metrics name

@@ -3,6 +3,7 @@
 #include <ode/ode.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <iostream>
@@ -72,14 +73,14 @@ class ode_adapter final : public engine_adapter {
     space_ = dSweepAndPruneSpaceCreate(nullptr, dSAP_AXES_XYZ);
     contacts_ = dJointGroupCreate(0);
 
-    // Each geom's data points at its restitution; reserved up front, so the
+    // Each geom's data points at its surface; reserved up front, so the
     // pointers stay valid.
-    restitution_.clear();
-    restitution_.reserve(s.planes.size() + s.bodies.size());
+    surfaces_.clear();
+    surfaces_.reserve(s.planes.size() + s.bodies.size());
     for (const plane_description& p : s.planes) {
       const dGeomID plane = dCreatePlane(space_, p.normal.x, p.normal.y, p.normal.z, p.offset);
-      restitution_.push_back(p.restitution);
-      dGeomSetData(plane, &restitution_.back());
+      surfaces_.push_back({p.restitution, p.friction});
+      dGeomSetData(plane, &surfaces_.back());
     }
     bodies_.clear();
     geoms_.clear();
@@ -128,8 +129,8 @@ class ode_adapter final : public engine_adapter {
     dGeomID geom = nullptr;
     if (d.radius > 0) {
       geom = dCreateSphere(space_, d.radius);
-      restitution_.push_back(d.restitution);
-      dGeomSetData(geom, &restitution_.back());
+      surfaces_.push_back({d.restitution, d.friction});
+      dGeomSetData(geom, &surfaces_.back());
       if (body) {
         dGeomSetBody(geom, body);
       } else {
@@ -140,8 +141,13 @@ class ode_adapter final : public engine_adapter {
     geoms_.push_back(geom);
   }
 
-  // Frictionless bouncing contacts, e = the larger of the two geoms' values
-  // (gaphys's rule), bouncing only above the threshold, as in gaphys.
+  // Bouncing contacts, e = the larger of the two geoms' values (gaphys's
+  // rule), bouncing only above the threshold, as in gaphys. Friction mu is
+  // the geometric mean of the two (gaphys's rule), and dContactApprox1 bounds
+  // each of ODE's two friction rows by mu times the contact's normal force,
+  // ODE's nearest to Coulomb: a pyramid on ODE's own tangent axes (no
+  // dContactFDir1), not a cone. mu 0 adds no friction rows, so M1-M6 stay
+  // frictionless.
   static void near_callback(void* data, dGeomID a, dGeomID b) {
     auto& self = *static_cast<ode_adapter*>(data);
     const dBodyID body_a = dGeomGetBody(a), body_b = dGeomGetBody(b);
@@ -149,11 +155,13 @@ class ode_adapter final : public engine_adapter {
     constexpr int max_contacts = 4;
     dContact contact[max_contacts];
     const int count = dCollide(a, b, max_contacts, &contact[0].geom, sizeof(dContact));
-    const double e =
-        std::max(*static_cast<double*>(dGeomGetData(a)), *static_cast<double*>(dGeomGetData(b)));
+    const geom_surface& sa = *static_cast<const geom_surface*>(dGeomGetData(a));
+    const geom_surface& sb = *static_cast<const geom_surface*>(dGeomGetData(b));
+    const double e = std::max(sa.restitution, sb.restitution);
+    const double mu = std::sqrt(sa.friction * sb.friction);
     for (int i = 0; i < count; ++i) {
-      contact[i].surface.mode = dContactBounce;
-      contact[i].surface.mu = 0;  // frictionless: ODE then adds no friction rows
+      contact[i].surface.mode = dContactBounce | dContactApprox1;
+      contact[i].surface.mu = mu;
       contact[i].surface.bounce = e;
       contact[i].surface.bounce_vel = restitution_threshold;
       const dJointID joint = dJointCreateContact(self.world_, self.contacts_, &contact[i]);
@@ -182,9 +190,13 @@ class ode_adapter final : public engine_adapter {
   dWorldID world_ = nullptr;
   dSpaceID space_ = nullptr;
   dJointGroupID contacts_ = nullptr;
-  std::vector<double> restitution_;
-  std::vector<dBodyID> bodies_;  // per scene body; null for static ones
-  std::vector<dGeomID> geoms_;   // per scene body; null without a shape
+  struct geom_surface {
+    double restitution;
+    double friction;
+  };
+  std::vector<geom_surface> surfaces_;  // per geom: the planes', then the spheres'
+  std::vector<dBodyID> bodies_;         // per scene body; null for static ones
+  std::vector<dGeomID> geoms_;          // per scene body; null without a shape
 };
 
 }  // namespace
@@ -207,9 +219,21 @@ engine ode_engine(ode_stepper stepper) {
              : "exact LCP solve, for reference; cost grows as n^3"},
       {"space", "dSweepAndPruneSpaceCreate(XYZ)", "a broad phase for M6"},
       {"contacts",
-       "dContactBounce, mu 0, bounce = max(e_a, e_b), bounce_vel " + number(restitution_threshold) +
-           " m/s",
-       "gaphys's restitution rule and threshold; frictionless"},
+       "dContactBounce | dContactApprox1, bounce = max(e_a, e_b), bounce_vel " +
+           number(restitution_threshold) + " m/s",
+       "gaphys's restitution rule and threshold"},
+      {"friction",
+       "mu = sqrt(mu_a mu_b) set in the near callback: 0 in M1-M6 (no friction rows), the "
+       "scene's mu in F1-F5",
+       "gaphys's geometric mean; both geoms get the scene's mu, so every pair gets mu"},
+      {"friction model",
+       "dContactApprox1: two rows along ODE's own tangent axes (dPlaneSpace of the normal; no "
+       "dContactFDir1), each bounded by mu times the normal force: a pyramid, up to sqrt(2) mu "
+       "along a diagonal",
+       "ODE's closest Coulomb law (without Approx1 mu bounds a force, whatever the load); ODE "
+       "has no cone; left as ODE gives it"},
+      {"rolling friction", "off (no dContactRolling)",
+       "the F scenes measure sliding friction only"},
       {"ERP / surface layer", number(position_correction) + " / " + number(linear_slop) + " m",
        "gaphys's 20% per step beyond 0.5 mm; ODE corrects through velocity (adds energy)"},
       {"CFM", number(constraint_force_mixing),

@@ -43,16 +43,20 @@ int to_count(const std::string& flag, const std::string& text) {
 const char* usage() {
   return "usage: compare_engines [flags]\n"
          "  --engines LIST        gaphys,bullet,ode-quick,ode-lcp (default: all)\n"
-         "  --metrics LIST        m1,m2,m3,m4,m5,m6 (default: all)\n"
+         "  --metrics LIST        m1,m2,m3,m4,m5,m6 (frictionless), f1,f2,f3,f4,f5 (friction)\n"
+         "                        (default: all)\n"
          "  --m1-steps N          free rotation steps (10000)\n"
          "  --m5-speeds LIST      projectile speeds, m/s (1,2,5,10,20,50,100,200,500)\n"
          "  --m6-sizes LIST       sphere counts (100,300,1000,3000,10000)\n"
+         "  --f5-sizes LIST       sphere counts of F5, M6 with friction 0.5 (1000,10000)\n"
          "  --m6-warmup N         steps before timing (120)\n"
          "  --m6-steps N          steps timed per size (100)\n"
          "  --m6-step-budget S    skip a size (and larger) when one step takes > S s (2)\n"
          "  --m6-size-budget S    stop timing a size after S s of timed steps (60)\n"
          "  --out-dir DIR         results.csv, results.json, plots (compare-results)\n"
-         "  --no-plots            do not run gnuplot\n";
+         "  --no-plots            do not run gnuplot\n"
+         "The --m6-warmup, --m6-steps and --m6-*-budget flags time F5 too; F1-F4 (one\n"
+         "ball each, at most 3 s of steps) have no flags.\n";
 }
 
 options parse_options(int argc, char** argv) {
@@ -81,6 +85,9 @@ options parse_options(int argc, char** argv) {
     } else if (flag == "--m6-sizes") {
       o.m6_sizes.clear();
       for (const std::string& item : split(value)) o.m6_sizes.push_back(to_count(flag, item));
+    } else if (flag == "--f5-sizes") {
+      o.f5_sizes.clear();
+      for (const std::string& item : split(value)) o.f5_sizes.push_back(to_count(flag, item));
     } else if (flag == "--m6-warmup") {
       o.m6_warmup = to_count(flag, value);
     } else if (flag == "--m6-steps") {

@@ -10,10 +10,12 @@ namespace gaphys_compare {
 
 struct options {
   std::vector<std::string> engines;  // empty: all
-  std::vector<std::string> metrics;  // empty: all (m1 .. m6)
+  std::vector<std::string> metrics;  // empty: all (m1 .. m6, f1 .. f5)
   int m1_steps = 10000;
   std::vector<double> m5_speeds{1, 2, 5, 10, 20, 50, 100, 200, 500};  // m/s
   std::vector<int> m6_sizes{100, 300, 1000, 3000, 10000};
+  std::vector<int> f5_sizes{1000, 10000};  // M6's scene with friction
+  // The timing settings below apply to M6 and F5 alike.
   int m6_warmup = 120;  // steps before timing: the spheres have landed
   int m6_steps = 100;   // steps timed per size
   // A size is skipped, with every larger one, when one of its steps takes

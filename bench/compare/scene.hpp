@@ -2,6 +2,10 @@
 // conventions, so that every engine starts from the same numbers (rounded to
 // float where the engine computes in float).
 // Every body starts with the identity attitude.
+// Friction is Coulomb's coefficient of the surface, 0 (frictionless) unless a
+// scene sets it; each adapter combines a pair's values so that two surfaces
+// of the same mu make a contact of mu. Rolling and spinning resistance are
+// always 0.
 #pragma once
 
 #include <string>
@@ -18,6 +22,7 @@ struct plane_description {
   vec3 normal;
   double offset = 0;
   double restitution = 0;
+  double friction = 0;
 };
 
 struct body_description {
@@ -28,6 +33,7 @@ struct body_description {
   vec3 velocity;          // m/s
   vec3 angular_velocity;  // rad/s, world frame (axis times rate)
   double restitution = 0;
+  double friction = 0;
   bool is_static = false;  // static spheres: targets that never move
 };
 

@@ -1,5 +1,6 @@
 #include "scenes.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "gaphys/scenes.hpp"
@@ -27,6 +28,10 @@ body_description sphere(double radius, double mass, const vec3& position, const 
   b.restitution = restitution;
   return b;
 }
+
+// The friction scenes' ball (scenes.hpp, sphere_on_floor).
+constexpr double ball_radius = 0.5, ball_mass = 1;
+constexpr double pi = 3.14159265358979323846;
 
 }  // namespace
 
@@ -107,6 +112,46 @@ scene projectile(double speed, bool sphere_target) {
 
 scene falling_spheres(int count) {
   return from_gaphys(gaphys::scenes::falling_spheres_in_box(count), "N " + number(count));
+}
+
+scene sphere_on_floor(const std::string& name, const vec3& velocity, const vec3& angular_velocity,
+                      double mu) {
+  scene s;
+  s.name = name;
+  s.gravity = {0, 0, -9.81};
+  s.planes.push_back({{0, 0, 1}, 0, 0, mu});
+  body_description ball = sphere(ball_radius, ball_mass, {0, 0, ball_radius}, velocity, 0);
+  ball.angular_velocity = angular_velocity;
+  ball.friction = mu;
+  s.bodies.push_back(ball);
+  return s;
+}
+
+vec3 down_the_incline(double degrees) {
+  const double angle = degrees * pi / 180;
+  return {-std::cos(angle), 0, -std::sin(angle)};
+}
+
+scene sphere_on_incline(double degrees, double mu) {
+  const double angle = degrees * pi / 180;
+  const vec3 normal{-std::sin(angle), 0, std::cos(angle)};
+  scene s;
+  s.name = number(degrees) + " deg, mu " + number(mu);
+  s.gravity = {0, 0, -9.81};
+  s.planes.push_back({normal, 0, 0, mu});
+  // Centre one radius out along the normal: touching, not overlapping.
+  body_description ball = sphere(ball_radius, ball_mass, ball_radius * normal, {}, 0);
+  ball.friction = mu;
+  s.bodies.push_back(ball);
+  return s;
+}
+
+scene with_friction(scene s, double mu) {
+  for (plane_description& p : s.planes) p.friction = mu;
+  for (body_description& b : s.bodies) {
+    if (b.radius > 0) b.friction = mu;
+  }
+  return s;
 }
 
 }  // namespace gaphys_compare

@@ -14,6 +14,8 @@ namespace gaphys_compare {
 // The bodies, planes and gravity of a gaphys world. Throws
 // std::invalid_argument for what the neutral description cannot hold
 // (a non-identity attitude, a non-diagonal inertia, a point shape).
+// Friction is not taken over: M1-M6 compare frictionless contacts, whatever
+// gaphys's scenes leave their shapes' friction at.
 scene from_gaphys(const gaphys::world& world, const std::string& name);
 
 // M1: principal inertia (1, 2, 3) kg m^2 spun at (1, 2, 3) rad/s, no gravity.
@@ -41,5 +43,22 @@ scene projectile(double speed, bool sphere_target);
 
 // M6: count spheres (r 0.1, e 0.3) falling into an open box of five planes.
 scene falling_spheres(int count);
+
+// F1, F2, F4: a solid sphere (r 0.5, 1 kg, e 0) resting on the floor plane
+// z = 0, touching it, launched with `velocity` and `angular_velocity`
+// (world frame, rad/s); sphere and floor have friction mu, under gravity.
+scene sphere_on_floor(const std::string& name, const vec3& velocity, const vec3& angular_velocity,
+                      double mu);
+
+// F3: the same sphere at rest, touching a static plane through the origin
+// tilted by `degrees` about the y axis (normal (-sin, 0, cos): the slope
+// falls towards -x), both with friction mu, under gravity.
+scene sphere_on_incline(double degrees, double mu);
+
+// The direction down the slope of sphere_on_incline(degrees, ...).
+vec3 down_the_incline(double degrees);
+
+// s with friction mu on every plane and sphere (F5: M6's scene with friction).
+scene with_friction(scene s, double mu);
 
 }  // namespace gaphys_compare

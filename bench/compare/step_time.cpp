@@ -3,10 +3,13 @@
 // median is the typical step; the 99th percentile shows the slow ones
 // (broad-phase rebuilds, solver spikes). Each engine times its whole step:
 // broad phase, narrow phase, solver and integration.
+// F5 is the same scene and timing with friction 0.5 on every sphere and
+// plane: the friction rows' cost at the same contact count.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <string>
 #include <vector>
 
 #include "metrics.hpp"
@@ -31,15 +34,15 @@ double percentile(const std::vector<double>& sorted, double p) {
   return sorted[std::max<std::size_t>(rank, 1) - 1];
 }
 
-}  // namespace
-
-void step_time(const engine& e, const options& o, recorder& out) {
+// Times the falling-spheres scene at each size with friction mu; `metric`
+// only names the progress lines.
+void time_steps(const engine& e, const options& o, recorder& out, const std::string& metric,
+                std::vector<int> sizes, double mu) {
   constexpr int min_timed_steps = 10;
   bool too_slow = false;
-  std::vector<int> sizes = o.m6_sizes;
   std::sort(sizes.begin(), sizes.end());
   for (const int count : sizes) {
-    const scene s = falling_spheres(count);
+    const scene s = with_friction(falling_spheres(count), mu);
     const scene_label label{s.name, static_cast<double>(count)};
     if (too_slow) {
       out.add_missing(label, "median ms/step", "skipped (too slow)");
@@ -47,7 +50,7 @@ void step_time(const engine& e, const options& o, recorder& out) {
       out.add_missing(label, "mean height at end (m)", "skipped");
       continue;
     }
-    std::cerr << "  M6 " << e.name << " " << s.name << "\n";
+    std::cerr << "  " << metric << " " << e.name << " " << s.name << "\n";
     auto adapter = e.make();
     adapter->build(s);
     std::vector<double> samples;
@@ -77,6 +80,16 @@ void step_time(const engine& e, const options& o, recorder& out) {
     for (std::size_t i = 0; i < s.bodies.size(); ++i) height += adapter->state(i).position.z;
     out.add(label, "mean height at end (m)", height / static_cast<double>(s.bodies.size()));
   }
+}
+
+}  // namespace
+
+void step_time(const engine& e, const options& o, recorder& out) {
+  time_steps(e, o, out, "M6", o.m6_sizes, 0);
+}
+
+void friction_step_time(const engine& e, const options& o, recorder& out) {
+  time_steps(e, o, out, "F5", o.f5_sizes, 0.5);
 }
 
 }  // namespace gaphys_compare

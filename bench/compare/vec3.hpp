@@ -15,6 +15,9 @@ inline vec3 operator-(const vec3& a, const vec3& b) { return {a.x - b.x, a.y - b
 inline vec3 operator*(double s, const vec3& a) { return {s * a.x, s * a.y, s * a.z}; }
 inline double dot(const vec3& a, const vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline double norm(const vec3& a) { return std::sqrt(dot(a, a)); }
+inline vec3 cross(const vec3& a, const vec3& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
 
 // Attitude as a quaternion w + x i + y j + z k, mapping body to world.
 // Adapters hand it over as the engine keeps it, so its norm shows how well
@@ -34,9 +37,6 @@ inline vec3 rotate(const quat& q, const vec3& v) {
   const double n = norm(q);
   const vec3 u{q.x / n, q.y / n, q.z / n};
   const double w = q.w / n;
-  const auto cross = [](const vec3& a, const vec3& b) {
-    return vec3{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-  };
   const vec3 t = 2 * cross(u, v);
   return v + w * t + cross(u, t);
 }
