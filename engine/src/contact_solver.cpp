@@ -88,62 +88,78 @@ std::optional<timed_impact> contact_solver::time_impact(const body& a, const bod
 
 // The terms of one contact that stay fixed while the sweeps run (attitudes do
 // not change, so neither do the world inertias).
-contact_solver::constraint contact_solver::make_constraint(const body& a, const body& b,
-                                                           const contact& c,
-                                                           const body_velocity& start_a,
-                                                           const body_velocity& start_b,
-                                                           real h) const {
+void contact_solver::add_constraint(const world_settings& settings, const body& a, const body& b,
+                                    const contact& c, const body_velocity& start_a,
+                                    const body_velocity& start_b, real h) {
   constraint k;
+  impact_terms impact;
   k.body_a = c.body_a;
   k.body_b = c.body_b;
-  k.inverse_masses = a.inverse_mass() + b.inverse_mass();
-  k.surface = c.material;
+  k.restitution = c.material.restitution;
   k.gap = -c.geometry.depth;
-  k.bounces = c.material.restitution > 0 &&
-              approach_speed(a, b, start_a, start_b, c) < -settings_.restitution_threshold;
+  k.bounces = k.restitution > 0 &&
+              approach_speed(a, b, start_a, start_b, c) < -settings.restitution_threshold;
   const bool central_a = central(a) || a.is_static();
   const bool central_b = central(b) || b.is_static();
   vector n = c.geometry.normal;
   if (k.bounces && central_a && central_b) {
     // Bounced at the moment the surfaces meet, along the normal then.
-    k.timing = time_impact(a, b, c, start_a, start_b, h);
-    if (k.timing) n = k.timing->normal;
+    impact.timing = time_impact(a, b, c, start_a, start_b, h);
+    if (impact.timing) n = impact.timing->normal;
   }
   // A bounce whose surfaces meet only in a later step waits for it.
-  k.waits = k.bounces && k.gap > 0 && !k.timing;
+  k.waits = k.bounces && k.gap > 0 && !impact.timing;
 
   const vector r_a = contact_offset(a, c, n, -1);
   const vector r_b = contact_offset(b, c, n, 1);
   // The denominator of eq. 3.20 / 4.7, with the inertias as linear maps:
   // 1/mA + 1/mB + n . (rA ⌋ I_A⁻¹(rA ∧ n)) + n . (rB ⌋ I_B⁻¹(rB ∧ n)).
-  k.normal = detail::linear_row(n, r_a, r_b, a, b);
-  k.normal.turns = !(central_a && central_b);
+  if (central_a && central_b) {
+    // Both arms zero (r_a and r_b along n): the impulse turns neither body.
+    k.normal.linear = n;
+    k.normal.turns = false;
+    k.normal.mass_inverse = a.inverse_mass() + b.inverse_mass();
+  } else {
+    k.normal = detail::linear_row(n, r_a, r_b, a, b);
+  }
   k.target_speed = k.gap > 0 ? -k.gap / h : real(0);
 
-  k.frame = tangents(n);
-  k.planes = {e3ga::op(n, k.frame[0]), e3ga::op(n, k.frame[1]),
-              e3ga::op(k.frame[0], k.frame[1])};
-  if (k.surface.friction > 0) {
-    k.friction.rows = {detail::linear_row(k.frame[0], r_a, r_b, a, b),
-                       detail::linear_row(k.frame[1], r_a, r_b, a, b)};
-    k.friction.prepare(k.inverse_masses);
+  const material& m = c.material;
+  const real radius = rolling_radius(a, b);
+  const bool rolls = m.rolling_resistance > 0 && radius > 0;
+  const bool spins = m.spinning_friction > 0 && radius > 0;
+  if (m.friction > 0 || rolls || spins) {
+    surface_terms t;
+    t.frame = tangents(n);
+    t.planes = {e3ga::op(n, t.frame[0]), e3ga::op(n, t.frame[1]), e3ga::op(t.frame[0], t.frame[1])};
+    const real inverse_masses = a.inverse_mass() + b.inverse_mass();
+    if (m.friction > 0) {
+      t.friction.rows = {detail::linear_row(t.frame[0], r_a, r_b, a, b),
+                         detail::linear_row(t.frame[1], r_a, r_b, a, b)};
+      t.friction.prepare(inverse_masses);
+      t.friction_coefficient = m.friction;
+    }
+    if (rolls) {
+      t.rolling.rows = {detail::angular_row(t.planes[0], a, b), detail::angular_row(t.planes[1], a, b)};
+      t.rolling.prepare(inverse_masses);
+      t.rolling_bound = m.rolling_resistance * radius;
+    }
+    if (spins) {
+      t.spinning = detail::angular_row(t.planes[2], a, b);
+      t.spinning_bound = m.spinning_friction * radius;
+    }
+    k.surface = static_cast<int>(surfaces_.size());
+    surfaces_.push_back(t);
   }
-  k.rolling_radius = rolling_radius(a, b);
-  if (k.surface.rolling_resistance > 0 && k.rolling_radius > 0) {
-    k.rolling.rows = {detail::angular_row(k.planes[0], a, b), detail::angular_row(k.planes[1], a, b)};
-    k.rolling.prepare(k.inverse_masses);
-  }
-  if (k.surface.spinning_friction > 0 && k.rolling_radius > 0) {
-    k.spinning = detail::angular_row(k.planes[2], a, b);
-  }
-  return k;
+  constraints_.push_back(k);
+  impacts_.push_back(impact);
 }
 
 // Over-relaxation speeds up coupled contacts (a row of balls, a stack),
 // whose impulses disturb each other; a contact alone on its dynamic bodies
 // is met exactly by one plain impulse, which relaxation would only turn
 // into a geometric approach.
-void contact_solver::set_relaxation(const std::vector<body>& bodies) {
+void contact_solver::set_relaxation(const world_settings& settings, const std::vector<body>& bodies) {
   contacts_per_body_.assign(bodies.size(), 0);
   for (const constraint& k : constraints_) {
     if (!bodies[k.body_a].is_static()) ++contacts_per_body_[k.body_a];
@@ -151,7 +167,7 @@ void contact_solver::set_relaxation(const std::vector<body>& bodies) {
   }
   for (constraint& k : constraints_) {
     if (contacts_per_body_[k.body_a] > 1 || contacts_per_body_[k.body_b] > 1) {
-      k.relaxation = settings_.solver_relaxation;
+      k.relaxation = settings.solver_relaxation;
     }
   }
 }
@@ -165,8 +181,10 @@ void contact_solver::set_relaxation(const std::vector<body>& bodies) {
 // (1 - e²) of the kinetic energy of the pair's approach and friction only
 // takes energy away, so the impacts of a step create none, whatever their
 // order.
-bool contact_solver::impact(constraint& k, real h) {
-  if (!(k.surface.restitution > 0) || !(k.normal.mass_inverse > 0)) return false;
+bool contact_solver::impact(std::size_t index, real threshold, real h) {
+  constraint& k = constraints_[index];
+  if (!(k.restitution > 0) || !(k.normal.mass_inverse > 0)) return false;
+  impact_terms& record = impacts_[index];
   solver_body& a = impact_bodies_[k.body_a];
   solver_body& b = impact_bodies_[k.body_b];
   const bool untouched = !impacted_[k.body_a] && !impacted_[k.body_b];
@@ -176,8 +194,8 @@ bool contact_solver::impact(constraint& k, real h) {
     // Nothing has struck either body this step: the start velocities and
     // the timing decide.
     if (!k.bounces || k.waits) return false;
-    if (k.timing) {
-      speed = k.timing->speed;
+    if (record.timing) {
+      speed = record.timing->speed;
       timed_now = true;
     } else {
       speed = -k.normal.speed(a, b);
@@ -186,31 +204,33 @@ bool contact_solver::impact(constraint& k, real h) {
     // Struck by an earlier impact: a contact that now approaches faster than
     // the threshold, and touches or closes its gap within the step, bounces.
     const real normal_speed = k.normal.speed(a, b);
-    if (!(normal_speed < -settings_.restitution_threshold)) return false;
+    if (!(normal_speed < -threshold)) return false;
     if (k.gap > 0 && !(k.gap <= -normal_speed * h)) return false;
     speed = -normal_speed;
   }
   if (!(speed > 0)) return false;
 
-  const real j = (1 + k.surface.restitution) * speed / k.normal.mass_inverse;
+  const real j = (1 + k.restitution) * speed / k.normal.mass_inverse;
   solver_body& solved_a = solver_bodies_[k.body_a];
   solver_body& solved_b = solver_bodies_[k.body_b];
   k.normal.apply(a, b, j);
   k.normal.apply(solved_a, solved_b, j);
-  k.impact_normal += j;
+  record.normal += j;
+  k.struck = true;
   vector linear_impulse = j * k.normal.linear;
-  if (k.friction.active()) {
-    const std::array<real, 2> total =
-        k.friction.stopping_total(a, b, k.impact_tangent, k.surface.friction * k.impact_normal);
-    const std::array<real, 2> step{total[0] - k.impact_tangent[0], total[1] - k.impact_tangent[1]};
-    k.friction.apply(a, b, step);
-    k.friction.apply(solved_a, solved_b, step);
-    k.impact_tangent = total;
-    linear_impulse = linear_impulse + step[0] * k.frame[0] + step[1] * k.frame[1];
+  if (k.surface >= 0 && surfaces_[k.surface].friction.active()) {
+    surface_terms& t = surfaces_[k.surface];
+    const std::array<real, 2> total = t.friction.stopping_total(
+        a, b, t.impact_tangent, t.friction_coefficient * record.normal);
+    const std::array<real, 2> step{total[0] - t.impact_tangent[0], total[1] - t.impact_tangent[1]};
+    t.friction.apply(a, b, step);
+    t.friction.apply(solved_a, solved_b, step);
+    t.impact_tangent = total;
+    linear_impulse = linear_impulse + step[0] * t.frame[0] + step[1] * t.frame[1];
   }
   if (timed_now) {
-    k.timed = true;
-    k.timed_impulse = linear_impulse;
+    record.timed = true;
+    record.timed_impulse = linear_impulse;
   }
   if (a.inverse_mass > 0) impacted_[k.body_a] = 1;
   if (b.inverse_mass > 0) impacted_[k.body_b] = 1;
@@ -222,10 +242,16 @@ bool contact_solver::impact(constraint& k, real h) {
 // impact (Newton's cradle: the far ball leaves, the rest stop), however
 // the contacts are ordered; sweeps that meet the row against its order
 // need one sweep per ball.
-void contact_solver::resolve_impacts(real h) {
-  for (int sweep = 0; sweep < settings_.impact_iterations; ++sweep) {
+void contact_solver::resolve_impacts(const world_settings& settings, real h) {
+  // Impacts start only at contacts that bounce from the start velocities.
+  const bool any_bounce = std::any_of(constraints_.begin(), constraints_.end(),
+                                      [](const constraint& k) { return k.bounces && !k.waits; });
+  if (!any_bounce) return;
+  for (int sweep = 0; sweep < settings.impact_iterations; ++sweep) {
     bool any = false;
-    for (constraint& k : constraints_) any = impact(k, h) || any;
+    for (std::size_t i = 0; i < constraints_.size(); ++i) {
+      any = impact(i, settings.restitution_threshold, h) || any;
+    }
     if (!any) break;
   }
 }
@@ -237,6 +263,11 @@ void contact_solver::resolve_impacts(real h) {
 // vectors and bivectors and read in the new contact frame.
 void contact_solver::warm_start(const std::vector<contact>& contacts,
                                 const std::vector<contact>& previous) {
+  const auto within = [](std::array<real, 2> v, real bound) {
+    const real length = std::hypot(v[0], v[1]);
+    if (length > bound) v = {v[0] * bound / length, v[1] * bound / length};
+    return v;
+  };
   auto old = previous.begin();
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const contact& c = contacts[i];
@@ -250,27 +281,23 @@ void contact_solver::warm_start(const std::vector<contact>& contacts,
     const contact_impulse& resting = old->resting;
     k.accumulated = resting.normal;
     k.normal.apply(a, b, k.accumulated);
-    const auto within = [](std::array<real, 2> v, real bound) {
-      const real length = std::hypot(v[0], v[1]);
-      if (length > bound) v = {v[0] * bound / length, v[1] * bound / length};
-      return v;
-    };
-    if (k.friction.active()) {
-      const std::array<real, 2> held{e3ga::scp(resting.tangent, k.frame[0]),
-                                     e3ga::scp(resting.tangent, k.frame[1])};
-      k.friction.start_from(a, b, within(held, k.surface.friction * k.accumulated));
+    if (k.surface < 0) continue;
+    surface_terms& t = surfaces_[k.surface];
+    if (t.friction.active()) {
+      const std::array<real, 2> held{e3ga::scp(resting.tangent, t.frame[0]),
+                                     e3ga::scp(resting.tangent, t.frame[1])};
+      t.friction.start_from(a, b, within(held, t.friction_coefficient * k.accumulated));
     }
     // An angular impulse L = Σ λ_i U_i on unit planes reads back λ_i = -L . U_i.
-    if (k.rolling.active()) {
-      const std::array<real, 2> held{-e3ga::scp(resting.angular, k.planes[0]),
-                                     -e3ga::scp(resting.angular, k.planes[1])};
-      k.rolling.start_from(
-          a, b, within(held, k.surface.rolling_resistance * k.rolling_radius * k.accumulated));
+    if (t.rolling.active()) {
+      const std::array<real, 2> held{-e3ga::scp(resting.angular, t.planes[0]),
+                                     -e3ga::scp(resting.angular, t.planes[1])};
+      t.rolling.start_from(a, b, within(held, t.rolling_bound * k.accumulated));
     }
-    if (k.spinning.mass_inverse > 0) {
-      const real bound = k.surface.spinning_friction * k.rolling_radius * k.accumulated;
-      k.spinning_accumulated = std::clamp(-e3ga::scp(resting.angular, k.planes[2]), -bound, bound);
-      k.spinning.apply(a, b, k.spinning_accumulated);
+    if (t.spinning.mass_inverse > 0) {
+      const real bound = t.spinning_bound * k.accumulated;
+      t.spinning_accumulated = std::clamp(-e3ga::scp(resting.angular, t.planes[2]), -bound, bound);
+      t.spinning.apply(a, b, t.spinning_accumulated);
     }
   }
 }
@@ -281,14 +308,14 @@ void contact_solver::warm_start(const std::vector<contact>& contacts,
 // towards no slip within the cone |λ_t| <= μ λ_n, and its rolling and
 // spin towards none within c ρ λ_n. A sweep that changes no speed by more
 // than the tolerance has converged, and ends the solve early.
-void contact_solver::solve_contacts() {
-  for (int sweep = 0; sweep < settings_.solver_iterations; ++sweep) {
+void contact_solver::solve_contacts(const world_settings& settings) {
+  for (int sweep = 0; sweep < settings.solver_iterations; ++sweep) {
     real largest_change = 0;
     // The last sweep is plain: it takes back what over-relaxation pushed
     // contacts apart beyond their targets.
-    const bool last = sweep + 1 == settings_.solver_iterations;
+    const bool last = sweep + 1 == settings.solver_iterations;
     for (constraint& k : constraints_) {
-      if (!(k.normal.mass_inverse > 0) || (k.waits && k.impact_normal == 0)) continue;
+      if (!(k.normal.mass_inverse > 0) || (k.waits && !k.struck)) continue;
       solver_body& a = solver_bodies_[k.body_a];
       solver_body& b = solver_bodies_[k.body_b];
       const real relaxation = last ? real(1) : k.relaxation;
@@ -299,30 +326,25 @@ void contact_solver::solve_contacts() {
       k.normal.apply(a, b, j);
       k.accumulated = total;
       largest_change = std::max(largest_change, std::fabs(j) * k.normal.mass_inverse);
-      if (!(k.accumulated > 0)) {
-        // Nothing pushes, so nothing rubs: any held friction goes too.
-        if (k.friction.accumulated[0] == 0 && k.friction.accumulated[1] == 0 &&
-            k.rolling.accumulated[0] == 0 && k.rolling.accumulated[1] == 0 &&
-            k.spinning_accumulated == 0) {
-          continue;
-        }
+      if (k.surface < 0) continue;
+      surface_terms& t = surfaces_[k.surface];
+      // Nothing pushes and nothing is held: nothing to rub (a speculative contact).
+      if (!(k.accumulated > 0) && t.holds_nothing()) continue;
+      if (t.friction.active()) {
+        const real change = t.friction.solve(a, b, t.friction_coefficient * k.accumulated);
+        largest_change = std::max(largest_change, change * t.friction.rows[0].mass_inverse);
       }
-      if (k.friction.active()) {
-        const real change = k.friction.solve(a, b, k.surface.friction * k.accumulated);
-        largest_change = std::max(largest_change, change * k.friction.rows[0].mass_inverse);
+      if (t.rolling.active()) {
+        const real change = t.rolling.solve(a, b, t.rolling_bound * k.accumulated);
+        largest_change = std::max(largest_change, change * t.rolling.rows[0].mass_inverse);
       }
-      const real resistance = k.rolling_radius * k.accumulated;
-      if (k.rolling.active()) {
-        const real change = k.rolling.solve(a, b, k.surface.rolling_resistance * resistance);
-        largest_change = std::max(largest_change, change * k.rolling.rows[0].mass_inverse);
-      }
-      if (k.spinning.mass_inverse > 0) {
-        const real change = detail::solve_bounded(k.spinning, k.spinning_accumulated, a, b,
-                                                  k.surface.spinning_friction * resistance);
-        largest_change = std::max(largest_change, change * k.spinning.mass_inverse);
+      if (t.spinning.mass_inverse > 0) {
+        const real change = detail::solve_bounded(t.spinning, t.spinning_accumulated, a, b,
+                                                  t.spinning_bound * k.accumulated);
+        largest_change = std::max(largest_change, change * t.spinning.mass_inverse);
       }
     }
-    if (largest_change <= settings_.solver_tolerance) break;
+    if (largest_change <= settings.solver_tolerance) break;
   }
 }
 
@@ -330,31 +352,33 @@ void contact_solver::store_impulses(std::vector<contact>& contacts) const {
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const constraint& k = constraints_[i];
     contact_impulse& resting = contacts[i].resting;
+    resting = contact_impulse{};
     resting.normal = k.accumulated;
-    resting.tangent = k.friction.accumulated[0] * k.frame[0] + k.friction.accumulated[1] * k.frame[1];
-    resting.angular = k.rolling.accumulated[0] * k.planes[0] +
-                      k.rolling.accumulated[1] * k.planes[1] +
-                      k.spinning_accumulated * k.planes[2];
     contact_impulse& total = contacts[i].impulse;
     total = resting;
-    total.normal += k.impact_normal;
-    total.tangent =
-        total.tangent + k.impact_tangent[0] * k.frame[0] + k.impact_tangent[1] * k.frame[1];
+    total.normal += impacts_[i].normal;
+    if (k.surface < 0) continue;
+    const surface_terms& t = surfaces_[k.surface];
+    resting.tangent = t.friction.accumulated[0] * t.frame[0] + t.friction.accumulated[1] * t.frame[1];
+    resting.angular = t.rolling.accumulated[0] * t.planes[0] +
+                      t.rolling.accumulated[1] * t.planes[1] + t.spinning_accumulated * t.planes[2];
+    total.tangent = resting.tangent + t.impact_tangent[0] * t.frame[0] + t.impact_tangent[1] * t.frame[1];
+    total.angular = resting.angular;
   }
 }
 
-void contact_solver::solve_velocities(std::vector<body>& bodies,
+void contact_solver::solve_velocities(const world_settings& settings, std::vector<body>& bodies,
                                       const std::vector<body_velocity>& start,
                                       std::vector<contact>& contacts,
                                       const std::vector<contact>& previous, real h) {
   constraints_.clear();
-  constraints_.reserve(contacts.size());
+  impacts_.clear();
+  surfaces_.clear();
   for (const contact& c : contacts) {
-    const body& a = bodies[c.body_a];
-    const body& b = bodies[c.body_b];
-    constraints_.push_back(make_constraint(a, b, c, start[c.body_a], start[c.body_b], h));
+    add_constraint(settings, bodies[c.body_a], bodies[c.body_b], c, start[c.body_a],
+                   start[c.body_b], h);
   }
-  set_relaxation(bodies);
+  set_relaxation(settings, bodies);
 
   solver_bodies_.resize(bodies.size());
   impact_bodies_.resize(bodies.size());
@@ -365,9 +389,9 @@ void contact_solver::solve_velocities(std::vector<body>& bodies,
   }
   impacted_.assign(bodies.size(), 0);
 
-  resolve_impacts(h);
+  resolve_impacts(settings, h);
   warm_start(contacts, previous);
-  solve_contacts();
+  solve_contacts(settings);
   store_impulses(contacts);
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     body& b = bodies[i];
@@ -377,18 +401,19 @@ void contact_solver::solve_velocities(std::vector<body>& bodies,
   }
 }
 
-void contact_solver::correct_positions(std::vector<body>& bodies,
+void contact_solver::correct_positions(const world_settings& settings, std::vector<body>& bodies,
                                        const std::vector<contact>& contacts, real h) const {
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const contact& c = contacts[i];
-    const constraint& k = constraints_[i];
     body& a = bodies[c.body_a];
     body& b = bodies[c.body_b];
-    if (!(k.inverse_masses > 0)) continue;
-    if (k.timed) {
+    const real inverse_masses = a.inverse_mass_ + b.inverse_mass_;
+    if (!(inverse_masses > 0)) continue;
+    const impact_terms& record = impacts_[i];
+    if (record.timed) {
       // The impulse J came at impact_time into the step, not at its start:
       // each body moved with its old velocity until then, t ΔV less far.
-      const vector shift = k.timing->time * k.timed_impulse;
+      const vector shift = record.timing->time * record.timed_impulse;
       a.position_ = a.position_ - a.inverse_mass_ * shift;
       b.position_ = b.position_ + b.inverse_mass_ * shift;
       continue;
@@ -401,10 +426,10 @@ void contact_solver::correct_positions(std::vector<body>& bodies,
     // narrow phase measured it.
     const vector& n = c.geometry.normal;
     const real depth = c.geometry.depth - h * e3ga::scp(a.velocity_ - b.velocity_, n);
-    const real push = settings_.position_correction * (depth - settings_.linear_slop);
+    const real push = settings.position_correction * (depth - settings.linear_slop);
     if (!(push > 0)) continue;
-    a.position_ = a.position_ + (push * a.inverse_mass_ / k.inverse_masses) * n;
-    b.position_ = b.position_ - (push * b.inverse_mass_ / k.inverse_masses) * n;
+    a.position_ = a.position_ + (push * a.inverse_mass_ / inverse_masses) * n;
+    b.position_ = b.position_ - (push * b.inverse_mass_ / inverse_masses) * n;
   }
 }
 

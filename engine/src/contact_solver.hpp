@@ -26,8 +26,6 @@ namespace gaphys {
 
 class contact_solver {
  public:
-  explicit contact_solver(const world_settings& settings) : settings_(settings) {}
-
   // Changes velocities so that no contact still approaches, each bouncing
   // contact separates at e times its impact speed and every tangential
   // impulse stays within its friction cone, and stores each contact's
@@ -44,63 +42,81 @@ class contact_solver {
   // bodies close the gap in this step of h seconds but no more: its target
   // is -gap / h, so a landing body ends the step touching. One that would
   // bounce but meets only in a later step is left out.
-  void solve_velocities(std::vector<body>& bodies, const std::vector<body_velocity>& start,
-                        std::vector<contact>& contacts, const std::vector<contact>& previous,
-                        real h);
+  void solve_velocities(const world_settings& settings, std::vector<body>& bodies,
+                        const std::vector<body_velocity>& start, std::vector<contact>& contacts,
+                        const std::vector<contact>& previous, real h);
 
-  // After the positions moved by h v: moves the bodies of a timed bounce by
-  // -t Δv (the impulse came t into the step), and pushes other overlapping
-  // bodies apart along the normal by a share of the depth beyond the slop.
-  void correct_positions(std::vector<body>& bodies, const std::vector<contact>& contacts,
-                         real h) const;
+  // After the positions moved by h v (and with the contacts of the last
+  // solve_velocities): moves the bodies of a timed bounce by -t Δv (the
+  // impulse came t into the step), and pushes other overlapping bodies apart
+  // along the normal by a share of the depth beyond the slop.
+  void correct_positions(const world_settings& settings, std::vector<body>& bodies,
+                         const std::vector<contact>& contacts, real h) const;
 
  private:
   using solver_body = detail::solver_body;
   using impulse_row = detail::impulse_row;
   using disk_block = detail::disk_block;
 
+  // What every sweep reads of a contact, kept small: the sweeps walk all of
+  // them, the rest of a contact's terms are looked up only where it has them.
   struct constraint {
     std::size_t body_a, body_b;
-    real inverse_masses;   // 1/m_A + 1/m_B
-    impulse_row normal;    // n, from B to A; mass_inverse 0: left out of the contact phase
-    disk_block friction;   // along two tangents t1, t2
-    disk_block rolling;    // turning in n ∧ t1 and n ∧ t2
-    impulse_row spinning;  // turning in t1 ∧ t2, about the normal
-    real spinning_accumulated = 0;
-    std::array<vector, 2> frame;  // t1, t2: unit tangents, (t1, t2, n) right-handed
-    std::array<bivector, 3> planes;  // n ∧ t1, n ∧ t2 (rolling) and t1 ∧ t2 (spin)
-    material surface;      // the contact's combined material
-    real rolling_radius = 0;
-    real target_speed = 0;  // normal separation speed wanted after the contact phase
-    real relaxation = 1;    // settings' over-relaxation where the contact shares a body, else 1
-    real accumulated = 0;   // the contact phase's normal impulse
-    real gap = 0;           // m, > 0 for a speculative contact
-
-    // The impact phase.
-    bool bounces = false;  // approached faster than the threshold at the start of the step
-    std::optional<timed_impact> timing;  // when and how fast, for a bounce within the step
-    bool waits = false;    // a bounce whose surfaces meet only in a later step: left out
-    real impact_normal = 0;              // the impulses the impact phase gave
-    std::array<real, 2> impact_tangent{};
-    bool timed = false;     // its first impact came at timing->time into the step
-    vector timed_impulse{}; // and was this impulse (N s); correct_positions moves the bodies by it
+    impulse_row normal;      // n, from B to A
+    real target_speed = 0;   // normal separation speed wanted after the contact phase
+    real relaxation = 1;     // settings' over-relaxation where the contact shares a body, else 1
+    real accumulated = 0;    // the contact phase's normal impulse
+    real restitution = 0;
+    real gap = 0;            // m, > 0 for a speculative contact
+    int surface = -1;        // its friction and resistance terms in surfaces_, or -1: none
+    bool bounces = false;    // approached faster than the threshold at the start of the step
+    bool waits = false;      // a bounce whose surfaces meet only in a later step: left out
+    bool struck = false;     // the impact phase gave it an impulse
   };
 
-  constraint make_constraint(const body& a, const body& b, const contact& c,
-                             const body_velocity& start_a, const body_velocity& start_b,
-                             real h) const;
+  // Friction, rolling resistance and spinning friction of one contact.
+  struct surface_terms {
+    std::array<vector, 2> frame;     // t1, t2: unit tangents, (t1, t2, n) right-handed
+    std::array<bivector, 3> planes;  // n ∧ t1, n ∧ t2 (rolling) and t1 ∧ t2 (spin)
+    disk_block friction;             // along t1, t2; inactive without friction
+    disk_block rolling;              // turning in n ∧ t1 and n ∧ t2
+    impulse_row spinning;            // turning in t1 ∧ t2, about the normal
+    real spinning_accumulated = 0;
+    real friction_coefficient = 0;   // μ
+    real rolling_bound = 0;          // c_r ρ: the rolling impulse per unit normal impulse
+    real spinning_bound = 0;         // c_s ρ
+    std::array<real, 2> impact_tangent{};  // the impact phase's friction impulse
+
+    bool holds_nothing() const {
+      return friction.accumulated == std::array<real, 2>{} &&
+             rolling.accumulated == std::array<real, 2>{} && spinning_accumulated == 0;
+    }
+  };
+
+  // What the impact phase knows and did of one contact.
+  struct impact_terms {
+    std::optional<timed_impact> timing;  // when and how fast, for a bounce within the step
+    real normal = 0;                     // the impulse the impact phase gave
+    bool timed = false;      // its first impact came at timing->time into the step
+    vector timed_impulse{};  // and was this impulse (N s); correct_positions moves the bodies by it
+  };
+
+  void add_constraint(const world_settings& settings, const body& a, const body& b,
+                      const contact& c, const body_velocity& start_a,
+                      const body_velocity& start_b, real h);
   static std::optional<timed_impact> time_impact(const body& a, const body& b, const contact& c,
                                                  const body_velocity& start_a,
                                                  const body_velocity& start_b, real h);
-  void set_relaxation(const std::vector<body>& bodies);
-  void resolve_impacts(real h);
-  bool impact(constraint& k, real h);
+  void set_relaxation(const world_settings& settings, const std::vector<body>& bodies);
+  void resolve_impacts(const world_settings& settings, real h);
+  bool impact(std::size_t index, real threshold, real h);
   void warm_start(const std::vector<contact>& contacts, const std::vector<contact>& previous);
-  void solve_contacts();
+  void solve_contacts(const world_settings& settings);
   void store_impulses(std::vector<contact>& contacts) const;
 
-  const world_settings& settings_;
   std::vector<constraint> constraints_;
+  std::vector<impact_terms> impacts_;        // one per constraint
+  std::vector<surface_terms> surfaces_;      // for the constraints that have them
   std::vector<int> contacts_per_body_;
   std::vector<solver_body> solver_bodies_;  // the velocities after the step's forces, as solved
   std::vector<solver_body> impact_bodies_;  // the start velocities plus the impact phase's impulses

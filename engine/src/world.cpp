@@ -58,7 +58,30 @@ double seconds(clock::time_point from, clock::time_point to) {
 }  // namespace
 
 world::world(const world_settings& settings)
-    : settings_(validated(settings)), space_(settings.broad_phase) {}
+    : settings_(validated(settings)),
+      space_(settings.broad_phase),
+      solver_(std::make_unique<contact_solver>()) {}
+
+world::world(const world& other)
+    : settings_(other.settings_),
+      bodies_(other.bodies_),
+      space_(other.space_),
+      pairs_(other.pairs_),
+      contacts_(other.contacts_),
+      previous_contacts_(other.previous_contacts_),
+      start_velocities_(other.start_velocities_),
+      timings_(other.timings_),
+      time_(other.time_),
+      solver_(std::make_unique<contact_solver>()) {}
+
+world& world::operator=(const world& other) {
+  if (this != &other) *this = world(other);
+  return *this;
+}
+
+world::world(world&&) noexcept = default;
+world& world::operator=(world&&) noexcept = default;
+world::~world() = default;
 
 body_id world::create_body(const body_definition& definition) {
   bodies_.emplace_back(definition);  // body's constructor validates, then nothing is added
@@ -116,12 +139,12 @@ void world::step(real h) {
   previous_contacts_.swap(contacts_);
   space_.find_contacts(bodies_, pairs_, contacts_, h, settings_.material_combine);
   const auto met = clock::now();
-  contact_solver solver(settings_);
-  solver.solve_velocities(bodies_, start_velocities_, contacts_, previous_contacts_, h);
+  if (!solver_) solver_ = std::make_unique<contact_solver>();  // a moved-from world
+  solver_->solve_velocities(settings_, bodies_, start_velocities_, contacts_, previous_contacts_, h);
   const auto solved = clock::now();
   integrate_positions(h);
   const auto moved = clock::now();
-  solver.correct_positions(bodies_, contacts_, h);
+  solver_->correct_positions(settings_, bodies_, contacts_, h);
   const auto corrected = clock::now();
 
   timings_.integration = seconds(start, integrated) + seconds(solved, moved);

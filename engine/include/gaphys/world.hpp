@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "gaphys/body.hpp"
@@ -49,10 +50,19 @@ struct step_timings {
   std::size_t candidate_pairs = 0;
 };
 
+class contact_solver;
+
 class world {
  public:
   // Throws invalid_input for settings out of range.
   explicit world(const world_settings& settings = world_settings{});
+  // A copy has the same bodies, contacts and settings, and steps as the
+  // original would.
+  world(const world& other);
+  world& operator=(const world& other);
+  world(world&&) noexcept;
+  world& operator=(world&&) noexcept;
+  ~world();
 
   // Throws invalid_input (see body) and then adds nothing.
   body_id create_body(const body_definition& definition);
@@ -93,6 +103,9 @@ class world {
   std::vector<body_velocity> start_velocities_;  // before this step's forces, for restitution
   step_timings timings_;
   real time_ = 0;
+  // The contact solver's working memory, kept from step to step (it holds
+  // nothing a later step reads, so a copy of the world starts a fresh one).
+  std::unique_ptr<contact_solver> solver_;
 };
 
 }  // namespace gaphys
