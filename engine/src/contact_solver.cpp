@@ -263,11 +263,6 @@ void contact_solver::resolve_impacts(const world_settings& settings, real h) {
 // vectors and bivectors and read in the new contact frame.
 void contact_solver::warm_start(const std::vector<contact>& contacts,
                                 const std::vector<contact>& previous) {
-  const auto within = [](std::array<real, 2> v, real bound) {
-    const real length = std::hypot(v[0], v[1]);
-    if (length > bound) v = {v[0] * bound / length, v[1] * bound / length};
-    return v;
-  };
   auto old = previous.begin();
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const contact& c = contacts[i];
@@ -286,13 +281,13 @@ void contact_solver::warm_start(const std::vector<contact>& contacts,
     if (t.friction.active()) {
       const std::array<real, 2> held{e3ga::scp(resting.tangent, t.frame[0]),
                                      e3ga::scp(resting.tangent, t.frame[1])};
-      t.friction.start_from(a, b, within(held, t.friction_coefficient * k.accumulated));
+      t.friction.start_from(a, b, detail::within_disk(held, t.friction_coefficient * k.accumulated));
     }
     // An angular impulse L = Σ λ_i U_i on unit planes reads back λ_i = -L . U_i.
     if (t.rolling.active()) {
       const std::array<real, 2> held{-e3ga::scp(resting.angular, t.planes[0]),
                                      -e3ga::scp(resting.angular, t.planes[1])};
-      t.rolling.start_from(a, b, within(held, t.rolling_bound * k.accumulated));
+      t.rolling.start_from(a, b, detail::within_disk(held, t.rolling_bound * k.accumulated));
     }
     if (t.spinning.mass_inverse > 0) {
       const real bound = t.spinning_bound * k.accumulated;
