@@ -19,34 +19,32 @@ shape shape::plane(const vector& normal, real offset) {
 
 shape shape::point() { return shape(shape_kind::point, 0, vector{}, 0); }
 
+shape shape::with(real material::*field, real value) const {
+  shape copy = *this;
+  copy.material_.*field = value;
+  return copy;
+}
+
 shape shape::with_restitution(real restitution) const {
   if (!(restitution >= 0 && restitution <= 1)) {
     detail::reject("restitution must be in [0, 1] (got ", restitution, ")");
   }
-  shape copy = *this;
-  copy.material_.restitution = restitution;
-  return copy;
+  return with(&material::restitution, restitution);
 }
 
 shape shape::with_friction(real mu) const {
   detail::require_non_negative(mu, "friction");
-  shape copy = *this;
-  copy.material_.friction = mu;
-  return copy;
+  return with(&material::friction, mu);
 }
 
 shape shape::with_rolling_resistance(real c) const {
   detail::require_non_negative(c, "rolling resistance");
-  shape copy = *this;
-  copy.material_.rolling_resistance = c;
-  return copy;
+  return with(&material::rolling_resistance, c);
 }
 
 shape shape::with_spinning_friction(real c) const {
   detail::require_non_negative(c, "spinning friction");
-  shape copy = *this;
-  copy.material_.spinning_friction = c;
-  return copy;
+  return with(&material::spinning_friction, c);
 }
 
 }  // namespace gaphys

@@ -119,6 +119,23 @@ TEST_F(friction_test, a_ball_on_an_incline_rolls_or_slides_as_mu_allows) {
   }
 }
 
+// The contact reports the impulses that hold the rolling ball on the slope:
+// per step the normal one carries m g cos θ h and friction m g sin θ h - m a h
+// = 2/7 m g sin θ h up the slope, and the next step starts from them.
+TEST_F(friction_test, a_rolling_contact_reports_its_normal_and_friction_impulses) {
+  const incline slope{pi / 6};
+  world w = scenes::sphere_on_incline(slope.angle, 0.5);
+  simulate(w, 240);
+  ASSERT_EQ(w.contacts().size(), 1u);
+  const contact& c = w.contacts()[0];
+  const real s = std::sin(slope.angle), co = std::cos(slope.angle);
+  // Body A is the plane (index 0), so the impulses are the ones on it.
+  EXPECT_NEAR(c.impulse.normal, g * co * h, 1e-12);
+  EXPECT_TRUE(near(-c.impulse.tangent, (-2.0 / 7 * g * s * h) * slope.down(), 1e-12));
+  EXPECT_NEAR(c.resting.normal, c.impulse.normal, 1e-15);
+  EXPECT_TRUE(near(c.resting.tangent, c.impulse.tangent, 1e-15));
+}
+
 // Friction is a cone, not a pyramid aligned with some axes: a ball sliding
 // in any direction over the floor slows at μ g. (ODE's pyramid gives √2 μ g
 // at 45°.)

@@ -70,48 +70,62 @@ TEST_F(resting_test, a_landing_sphere_stops_at_the_surface) {
 // falls with the ball below it, which the floor stops (with only the relative
 // speed counted, it fell g h^2 = 0.17 mm in and stayed there, below the slop).
 // After two seconds every sphere keeps its height: the stack neither sinks
-// nor grows.
+// nor grows. The same with friction on every ball and wall.
 TEST_F(resting_test, a_column_of_five_spheres_stands_for_ten_seconds) {
   const real radius = 0.5;
   const int count = 5;
-  world w = scenes::sphere_column(count, radius);
-  const std::size_t first_ball = w.body_count() - count;
-  real max_depth = 0;
-  std::vector<real> early(count, 0), late(count, 0);
-  simulate(w, 10 * steps_per_second, [&](int i) {
-    max_depth = std::max(max_depth, deepest(w));
+  for (real friction : {real(0), real(0.5)}) {
+    world w = scenes::sphere_column(count, radius, friction);
+    const std::size_t first_ball = w.body_count() - count;
+    real max_depth = 0;
+    std::vector<real> early(count, 0), late(count, 0);
+    simulate(w, 10 * steps_per_second, [&](int i) {
+      max_depth = std::max(max_depth, deepest(w));
+      for (int k = 0; k < count; ++k) {
+        const real height = z(w.at(first_ball + k).position());
+        if (i >= 2 * steps_per_second && i < 3 * steps_per_second) early[k] += height / steps_per_second;
+        if (i >= 9 * steps_per_second) late[k] += height / steps_per_second;
+      }
+    });
+    EXPECT_LT(max_depth, 1e-4 * radius) << "friction " << friction;
     for (int k = 0; k < count; ++k) {
-      const real height = z(w.at(first_ball + k).position());
-      if (i >= 2 * steps_per_second && i < 3 * steps_per_second) early[k] += height / steps_per_second;
-      if (i >= 9 * steps_per_second) late[k] += height / steps_per_second;
+      // Stacked: each centre a diameter above the one below.
+      EXPECT_NEAR(late[k], radius + 2 * radius * k, 1e-5 * radius * (k + 1))
+          << "sphere " << k << ", friction " << friction;
+      EXPECT_NEAR(late[k], early[k], 1e-4 * radius) << "sphere " << k << ", friction " << friction;
+      EXPECT_LT(length(w.at(first_ball + k).velocity()), 1e-3) << "sphere " << k << ", friction " << friction;
+      EXPECT_LT(length(w.at(first_ball + k).angular_velocity()), 1e-3)
+          << "sphere " << k << ", friction " << friction;
     }
-  });
-  EXPECT_LT(max_depth, 1e-4 * radius);
-  for (int k = 0; k < count; ++k) {
-    // Stacked: each centre a diameter above the one below.
-    EXPECT_NEAR(late[k], radius + 2 * radius * k, 1e-5 * radius * (k + 1)) << "sphere " << k;
-    EXPECT_NEAR(late[k], early[k], 1e-4 * radius) << "sphere " << k;
-    EXPECT_LT(length(w.at(first_ball + k).velocity()), 1e-3) << "sphere " << k;
   }
 }
 
 // Many spheres piled in a box settle into a heap whose contacts stay shallow.
 // Without friction the heap keeps rearranging for a while (spheres slide
-// off each other and the kinetic energy rises and falls), so it is given 6 s.
+// off each other and the kinetic energy rises and falls), so it is given 6 s;
+// with friction the balls also stop turning.
 TEST_F(resting_test, falling_spheres_settle_in_the_box) {
-  world w = scenes::falling_spheres_in_box(40);
-  const real radius = 0.1;
-  simulate(w, 6 * steps_per_second);
-  real max_depth = 0, max_speed = 0;
-  simulate(w, steps_per_second, [&](int) {
-    max_depth = std::max(max_depth, deepest(w));
-    for (const body& b : w.bodies()) max_speed = std::max(max_speed, length(b.velocity()));
-  });
-  EXPECT_LT(max_depth, 0.05 * radius);
-  EXPECT_LT(max_speed, 0.01);
-  for (const body& b : w.bodies()) {
-    if (b.is_static()) continue;
-    EXPECT_GT(z(b.position()), radius * 0.95);  // none fell through the floor
+  for (real friction : {real(0), real(0.5)}) {
+    world w = scenes::falling_spheres_in_box(40, 1, friction);
+    const real radius = 0.1;
+    simulate(w, 6 * steps_per_second);
+    real max_depth = 0, max_speed = 0, max_spin = 0;
+    simulate(w, steps_per_second, [&](int) {
+      max_depth = std::max(max_depth, deepest(w));
+      for (const body& b : w.bodies()) {
+        max_speed = std::max(max_speed, length(b.velocity()));
+        max_spin = std::max(max_spin, length(b.angular_velocity()) * radius);
+      }
+    });
+    EXPECT_LT(max_depth, 0.05 * radius) << "friction " << friction;
+    EXPECT_LT(max_speed, 0.01) << "friction " << friction;
+    if (friction > 0) {
+      EXPECT_LT(max_spin, 0.01) << "friction " << friction;
+    }
+    for (const body& b : w.bodies()) {
+      if (b.is_static()) continue;
+      EXPECT_GT(z(b.position()), radius * 0.95) << "friction " << friction;  // none fell through
+    }
   }
 }
 

@@ -42,6 +42,8 @@ class shape {
  private:
   shape(shape_kind kind, real radius, const vector& normal, real offset)
       : kind_(kind), radius_(radius), normal_(normal), offset_(offset) {}
+  // A copy with one material value changed (already validated).
+  shape with(real gaphys::material::*field, real value) const;
 
   shape_kind kind_;
   real radius_ = 0;
