@@ -11,7 +11,8 @@ for tool in cmake:cmake ninja:ninja-build g++:g++ pkg-config:pkg-config clang-fo
   command -v "${tool%%:*}" >/dev/null 2>&1 || missing+=("${tool##*:}")
 done
 # Bullet, ODE and gnuplot: bench/compare (gaphys against other engines).
-for package in libgtest-dev libgmock-dev libbenchmark-dev libbullet-dev libode-dev gnuplot-nox; do
+# Chromium: the demo_viewer test opens gaphys_demo --html pages headless.
+for package in libgtest-dev libgmock-dev libbenchmark-dev libbullet-dev libode-dev gnuplot-nox chromium; do
   dpkg -s "$package" >/dev/null 2>&1 || missing+=("$package")
 done
 python=$(bash tools/find-python.sh)
@@ -24,7 +25,8 @@ if [ ${#missing[@]} -gt 0 ]; then
   as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q "${missing[@]}"
 fi
 
-# The ganja.js oracle (tests), pinned by package-lock.json.
+# The ganja.js oracle (tests) and three.js (gaphys_demo --html), pinned by
+# package-lock.json.
 npm ci --no-audit --no-fund --loglevel=error
 python=$(bash tools/find-python.sh)
 

@@ -1,10 +1,13 @@
 // gaphys_demo: runs one of the shared scenes (gaphys::scenes) at its time step
-// and writes the trajectory of its dynamic bodies as CSV or JSON.
+// and writes the trajectory of its dynamic bodies as CSV or JSON, and as a
+// page that plays it in 3-D in a browser (viewer_page.hpp).
 #include <unistd.h>
 
 #include <charconv>
 #include <chrono>
+#include <cmath>
 #include <csignal>
+#include <cstdio>
 #include <iomanip>
 #include <iostream>
 #include <optional>
@@ -15,24 +18,36 @@
 #include "gaphys/error.hpp"
 #include "gaphys/scenes.hpp"
 #include "trajectory_writer.hpp"
+#include "viewer_page.hpp"
 
 namespace {
 
 constexpr const char* usage =
-    R"(usage: gaphys_demo [--scene NAME] [--spheres N] [--steps N] [--every K] [--out FILE]
+    R"(usage: gaphys_demo [--scene NAME] [--spheres N] [--steps N] [--every K]
+                   [--out FILE] [--html FILE]
        gaphys_demo --list | --help
 
 Runs a scene at h = 1/240 s and writes, at step 0 and every K-th step, each
 dynamic body's position (x y z) and attitude rotor (scalar e12 e13 e23).
+Progress goes to standard error: percent done and the time left (ETA).
 
   --scene NAME  a scene from --list (default falling_spheres)
   --spheres N   falling_spheres only: how many spheres (default 100, at most 10000)
   --steps N     steps to run (default 2400: 10 s)
   --every K     record every K-th step (default 10)
   --out FILE    FILE.csv or FILE.json, replaced only once complete
-                (default: CSV on standard output)
+                (default: CSV on standard output, unless --html is given)
+  --html FILE   also (without --out: only) write a web page that plays the
+                run in 3-D, replaced only once complete: every body with its
+                shape, play/pause, a time slider and a speed control. It holds
+                three.js and the data, so it opens from disk, offline. Drag:
+                orbit; wheel: zoom; right-drag: pan; double-click: reset view.
+                The address's #fragment sets the state, e.g. FILE#t=1.25&paused:
+                  t=SECONDS  paused  speed=FACTOR
+                  eye=X,Y,Z  target=X,Y,Z  fov=DEGREES   (a fixed camera, z up;
+                             default: fitted to the scene, 45 degrees)
   --list        print the scenes and exit
-  --help        print this help and exit
+  --help, -h    print this help and exit
 )";
 
 // A bad command line: reported with the usage, exit code 2.
@@ -48,7 +63,8 @@ struct options {
   std::optional<int> spheres;
   long long steps = 2400;
   long long every = 10;
-  std::string out;  // empty: standard output
+  std::string out;   // empty: standard output, unless html is given
+  std::string html;  // empty: no page
   demo::trajectory_format format = demo::trajectory_format::csv;
 };
 
@@ -95,7 +111,7 @@ options parse(int argc, char** argv) {
       continue;
     }
     if (option != "--scene" && option != "--spheres" && option != "--steps" &&
-        option != "--every" && option != "--out") {
+        option != "--every" && option != "--out" && option != "--html") {
       throw usage_error("unknown option '" + option + "'");
     }
     // "--out --steps 5" means a forgotten value, not a file named --steps.
@@ -111,8 +127,10 @@ options parse(int argc, char** argv) {
       o.steps = positive_count(option, value, max_steps);
     } else if (option == "--every") {
       o.every = positive_count(option, value, max_steps);
-    } else {
+    } else if (option == "--out") {
       o.out = value;
+    } else {
+      o.html = value;
     }
   }
   o.scene = &find_scene(scene);
@@ -124,6 +142,9 @@ options parse(int argc, char** argv) {
     if (!format) throw usage_error("--out needs a .csv or .json file, not '" + o.out + "'");
     o.format = *format;
   }
+  if (!o.html.empty() && o.html == o.out) {
+    throw usage_error("--out and --html need two different files, not both '" + o.out + "'");
+  }
   return o;
 }
 
@@ -133,25 +154,57 @@ void list_scenes() {
   }
 }
 
-// Percent done on stderr: rewritten in place on a terminal; elsewhere (a log,
-// a CI run) one line per 10%, so the log stays short.
+// "< 1 s", "12 s", "3 min 05 s" or "2 h 07 min": whole seconds, rounded up.
+std::string duration_text(double seconds) {
+  if (seconds < 1) return "< 1 s";
+  const long long whole = static_cast<long long>(std::ceil(seconds));
+  char text[48];
+  if (whole < 60) {
+    std::snprintf(text, sizeof text, "%lld s", whole);
+  } else if (whole < 3600) {
+    std::snprintf(text, sizeof text, "%lld min %02lld s", whole / 60, whole % 60);
+  } else {
+    std::snprintf(text, sizeof text, "%lld h %02lld min", whole / 3600, whole / 60 % 60);
+  }
+  return text;
+}
+
+// Percent done on stderr, with the time left at the rate so far ("42% (ETA
+// 12 s)"): rewritten in place on a terminal; elsewhere (a log, a CI run) one
+// line per 10%, so the log stays short.
 class progress {
  public:
-  explicit progress(long long total) : total_(total), in_place_(isatty(STDERR_FILENO) == 1) {}
+  using clock = std::chrono::steady_clock;
+
+  explicit progress(long long total)
+      : total_(total), in_place_(isatty(STDERR_FILENO) == 1), start_(clock::now()) {}
 
   void update(long long done) {
     const int percent = static_cast<int>(100.0 * double(done) / double(total_));
     const int shown = in_place_ ? percent : percent / 10 * 10;
     if (shown == shown_) return;
     shown_ = shown;
-    std::cerr << (in_place_ ? "\r" : "") << shown << '%' << (in_place_ ? "" : "\n") << std::flush;
+    std::string line = std::to_string(shown) + '%';
+    if (done < total_) {
+      const double elapsed = std::chrono::duration<double>(clock::now() - start_).count();
+      line += " (ETA " + duration_text(elapsed * double(total_ - done) / double(done)) + ")";
+    }
+    if (in_place_) {
+      // Blanks over what is left of a longer line before.
+      const std::size_t length = line.size();
+      if (length < width_) line.append(width_ - length, ' ');
+      width_ = length;
+      std::cerr << '\r' << line << std::flush;
+    } else {
+      std::cerr << line << '\n' << std::flush;
+    }
     line_open_ = in_place_;
   }
 
   // Clears the in-place line, so what follows (the summary, or an error while
   // unwinding) starts on a clean line.
   void finish() {
-    if (line_open_) std::cerr << "\r    \r";
+    if (line_open_) std::cerr << '\r' << std::string(width_, ' ') << '\r' << std::flush;
     line_open_ = false;
   }
   ~progress() { finish(); }
@@ -159,8 +212,10 @@ class progress {
  private:
   long long total_;
   bool in_place_;
+  clock::time_point start_;
   bool line_open_ = false;
-  int shown_ = 0;  // 0% is not worth a line
+  std::size_t width_ = 0;  // of the line on screen
+  int shown_ = 0;          // 0% is not worth a line
 };
 
 // Set by Ctrl-C or a kill: the run stops between steps and unwinds, so the
@@ -169,17 +224,36 @@ volatile std::sig_atomic_t stop_signal = 0;
 extern "C" void request_stop(int signal) { stop_signal = signal; }
 
 int run(const options& o) {
+  if (!o.html.empty()) demo::require_viewer();  // before any file is made
   std::signal(SIGINT, request_stop);
   std::signal(SIGTERM, request_stop);
   const gaphys::real h = gaphys::scenes::time_step;
   gaphys::world world =
       o.spheres ? gaphys::scenes::falling_spheres_in_box(*o.spheres) : o.scene->build();
 
-  // The file is opened before the run, so a bad path fails at once.
+  // Files are opened before the run, so a bad path fails at once.
   std::optional<demo::atomic_file> file;
-  std::ostream& out = o.out.empty() ? std::cout : file.emplace(o.out).stream();
-  demo::trajectory_writer writer(out, o.format, o.scene->name, h);
-  writer.write_frame(world);
+  std::optional<demo::trajectory_writer> writer;
+  if (!o.out.empty() || o.html.empty()) {
+    std::ostream& out = o.out.empty() ? std::cout : file.emplace(o.out).stream();
+    writer.emplace(out, o.format, o.scene->name, h);
+  }
+  // The page holds the same trajectory as a JSON --out.
+  std::optional<demo::atomic_file> page_file;
+  std::optional<demo::viewer_page> page;
+  std::optional<demo::trajectory_writer> page_writer;
+  if (!o.html.empty()) {
+    const std::string description = o.spheres
+                                        ? std::to_string(*o.spheres) + " spheres falling into a box"
+                                        : o.scene->description;
+    page.emplace(page_file.emplace(o.html).stream(), world, o.scene->name, description);
+    page_writer.emplace(page->trajectory(), demo::trajectory_format::json, o.scene->name, h);
+  }
+  const auto record = [&] {
+    if (writer) writer->write_frame(world);
+    if (page_writer) page_writer->write_frame(world);
+  };
+  record();
 
   // Only world::step is timed: ms/step is the engine's cost, not the writer's.
   progress bar(o.steps);
@@ -189,15 +263,20 @@ int run(const options& o) {
     const auto start = std::chrono::steady_clock::now();
     world.step(h);
     stepping += std::chrono::steady_clock::now() - start;
-    if (step % o.every == 0) writer.write_frame(world);
+    if (step % o.every == 0) record();
     bar.update(step);
   }
-  writer.finish();
+  if (writer) writer->finish();
+  if (page) {
+    page_writer->finish();
+    page->finish();
+  }
   if (file) {
     file->commit();
-  } else if (!std::cout.flush()) {
+  } else if (writer && !std::cout.flush()) {
     throw std::runtime_error("cannot write to standard output");
   }
+  if (page_file) page_file->commit();
   bar.finish();
 
   const double seconds = std::chrono::duration<double>(stepping).count();

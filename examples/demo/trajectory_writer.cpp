@@ -20,11 +20,10 @@ std::string number(double value) {
   return text;
 }
 
-// JSON has no NaN or infinity; a blown-up simulation still gives a document
-// that parses.
-std::string json_number(double value) { return std::isfinite(value) ? number(value) : "null"; }
-
 }  // namespace
+
+// A blown-up simulation still gives a document that parses.
+std::string json_number(double value) { return std::isfinite(value) ? number(value) : "null"; }
 
 std::optional<trajectory_format> format_of(const std::string& path) {
   if (ends_with(path, ".csv")) return trajectory_format::csv;

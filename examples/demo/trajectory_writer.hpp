@@ -16,6 +16,10 @@ enum class trajectory_format { csv, json };
 // From the file name's extension, .csv or .json; nothing for any other.
 std::optional<trajectory_format> format_of(const std::string& path);
 
+// A number as the JSON output writes it: nine significant digits, or null
+// when it is not finite (JSON has no NaN or infinity).
+std::string json_number(double value);
+
 class trajectory_writer {
  public:
   // Writes the CSV header or the opening of the JSON document.

@@ -2,6 +2,8 @@
 # two separate projects against it: examples/consumer (find_package(gaphys) and
 # gaphys_add_algebra() on the app's own spec) and examples/demo (the engine,
 # gaphys::scenes and gaphys::gaphys, checked through the trajectory it writes).
+# The demo is built without three.js, as a copy outside the gaphys tree would
+# be: it must build, and its --html must say how to get three.js.
 # Inputs: BUILD_DIR (gaphys's build), SOURCE_DIR, WORK_DIR, PYTHON, GENERATOR.
 file(REMOVE_RECURSE "${WORK_DIR}")
 function(run)
@@ -18,7 +20,7 @@ run("${CMAKE_COMMAND}" --build "${WORK_DIR}/build")
 run("${WORK_DIR}/build/consumer_app")
 
 run("${CMAKE_COMMAND}" -S "${SOURCE_DIR}/examples/demo" -B "${WORK_DIR}/demo" -G "${GENERATOR}"
-    "-DCMAKE_PREFIX_PATH=${WORK_DIR}/install")
+    "-DCMAKE_PREFIX_PATH=${WORK_DIR}/install" "-DGAPHYS_DEMO_THREE_JS=")
 run("${CMAKE_COMMAND}" --build "${WORK_DIR}/demo")
 # 10 spheres recorded at steps 0, 30 and 60: a header and 30 rows.
 set(demo "${WORK_DIR}/demo/gaphys_demo" --scene falling_spheres --spheres 10 --steps 60 --every 30)
@@ -41,6 +43,14 @@ endif()
 if(NOT first STREQUAL "{" OR bad OR NOT frames EQUAL 3 OR NOT bodies EQUAL 10)
   message(FATAL_ERROR "trajectory.json: expected an object of 3 frames of 10 bodies; got "
                       "'${first}...', ${frames} frames, ${bodies} bodies in the last (${bad})")
+endif()
+# --html without three.js: exit code 1, the way out, and no file made.
+execute_process(COMMAND ${demo} --html "${WORK_DIR}/page.html" RESULT_VARIABLE code
+                ERROR_VARIABLE errors OUTPUT_QUIET)
+if(NOT code EQUAL 1 OR NOT errors MATCHES "built without three.js: run npm ci"
+   OR EXISTS "${WORK_DIR}/page.html")
+  message(FATAL_ERROR "gaphys_demo --html built without three.js: exit code ${code}, expected 1 "
+                      "and 'built without three.js: run npm ci', and no page:\n${errors}")
 endif()
 file(GLOB temporaries "${WORK_DIR}/*.tmp.*")
 if(temporaries)
