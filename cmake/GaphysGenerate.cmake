@@ -14,17 +14,23 @@ if(NOT GAPHYS_GENERATOR_DIR)
   set(GAPHYS_GENERATOR_DIR "${CMAKE_CURRENT_LIST_DIR}/../generator")
 endif()
 
-# A Python 3 that can import jinja2 (found at file scope so callers see Python3_EXECUTABLE).
-find_package(Python3 COMPONENTS Interpreter REQUIRED)
-execute_process(COMMAND "${Python3_EXECUTABLE}" -c "import jinja2"
-                RESULT_VARIABLE _gaphys_no_jinja2 OUTPUT_QUIET ERROR_QUIET)
-if(_gaphys_no_jinja2)
-  message(FATAL_ERROR "gaphys: ${Python3_EXECUTABLE} cannot import jinja2. Install Debian's "
-                      "python3-jinja2 and pass -DPython3_EXECUTABLE=/usr/bin/python3, or use a "
-                      "Python that has Jinja2.")
-endif()
+# gaphys_find_generator_python(): a Python 3 that can import jinja2, in
+# Python3_EXECUTABLE of the caller's scope, or a configure error saying how
+# to get one. Only generating needs it: gaphys_add_algebra calls it, so an
+# app that links the installed engine or algebras needs no Python at all.
+macro(gaphys_find_generator_python)
+  find_package(Python3 COMPONENTS Interpreter REQUIRED)
+  execute_process(COMMAND "${Python3_EXECUTABLE}" -c "import jinja2"
+                  RESULT_VARIABLE _gaphys_no_jinja2 OUTPUT_QUIET ERROR_QUIET)
+  if(_gaphys_no_jinja2)
+    message(FATAL_ERROR "gaphys: ${Python3_EXECUTABLE} cannot import jinja2. Install Debian's "
+                        "python3-jinja2 and pass -DPython3_EXECUTABLE=/usr/bin/python3, or use a "
+                        "Python that has Jinja2.")
+  endif()
+endmacro()
 
 function(gaphys_add_algebra)
+  gaphys_find_generator_python()
   cmake_parse_arguments(ARG "" "TARGET;SPEC;VARIANT;NAMESPACE" "" ${ARGN})
   if(NOT ARG_TARGET OR NOT ARG_SPEC)
     message(FATAL_ERROR "gaphys_add_algebra: TARGET and SPEC are required")

@@ -30,7 +30,7 @@ fi
 npm ci --no-audit --no-fund --loglevel=error
 python=$(bash tools/find-python.sh)
 
-cmake -S . -B build -G Ninja -DPython3_EXECUTABLE="$python"
+bash tools/configure.sh
 cmake --build build
 ./build/examples/algebra_demo
 ./build/examples/demo/gaphys_demo --scene bouncing_sphere --steps 480 --every 240

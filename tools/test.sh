@@ -5,11 +5,11 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-python=$(bash tools/find-python.sh)
-cmake -S . -B build -G Ninja -DPython3_EXECUTABLE="$python"
+bash tools/configure.sh
 cmake --build build
 ctest --test-dir build --output-on-failure -j2
 
-
-# The same GoogleTest suites (reference and optimized) under ASan + UBSan.
+# The algebra and engine GoogleTest suites of the reference and optimized
+# variants, and algebra_variants_agree, built once with ASan + UBSan and run
+# there (tools/configure.sh leaves them out of the build above).
 bash tools/test-sanitized.sh
