@@ -5,7 +5,7 @@
 // the same values in the named types that hold them (".../named": the
 // straight-line kernels the spec asks for).
 // Benchmark names are <algebra>/<function>/<arguments>; bench/print_table.py
-// turns the JSON output into the README's table.
+// turns the JSON output into the table of docs/benchmarks.md.
 #include <c3ga/c3ga.hpp>
 #include <cstddef>
 #include <cstdio>

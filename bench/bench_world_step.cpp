@@ -8,7 +8,7 @@
 // Every repetition rebuilds the scene and runs the same warm-up and the same
 // number of steps, so each variant times exactly the same sequence of states
 // (the engine is deterministic) and their medians compare like for like.
-// bench/print_table.py --engine prints the README's table from the JSON.
+// bench/print_table.py --engine prints the table of docs/benchmarks.md from the JSON.
 #include <benchmark/benchmark.h>
 
 #include <cstdint>

@@ -6,7 +6,7 @@
 //   thesis table 5.1 (add, gp, lc, op, scp) on mv holding full multivectors,
 //   vectors, 2-blades and versors, and the c3ga kernels (sphere through four
 //   points, a motor on a point, the circle of two dual spheres) on mv, so the
-//   README's tables measure profiled code.
+//   tables of docs/benchmarks.md measure profiled code.
 // Every call count is fixed (the engine is deterministic), so the profile is
 // reproducible: tests/profiling checks that profiling/profiles/ is what this
 // program records.

@@ -338,7 +338,7 @@ class MvKernel:
 
 # A kernel larger than the arguments it serves costs more than the generic
 # path beyond this many operations per term the generic path visits: a generic
-# term costs 12-27 kernel operations (gp on full mv, c3ga and e3ga, README
+# term costs 12-27 kernel operations (gp on full mv, c3ga and e3ga, docs/benchmarks.md
 # benchmarks), so 8 leaves a margin.
 OPERATIONS_PER_GENERIC_TERM = 8
 
@@ -379,7 +379,7 @@ def mv_kernel(expander: Expander, function: str, argument_bits: tuple[int, ...],
 # coefficient (mv_algorithms.hpp, linear_combination), so a kernel can only
 # save the coefficients the arguments lack, and the dispatch to it costs more
 # than that in a small algebra: in e3ga (8 coefficients) the generic sum took
-# 2.1 ns per call and the dispatched kernels 3.7-5.0 (README, table 5.1);
+# 2.1 ns per call and the dispatched kernels 3.7-5.0 (docs/benchmarks.md, table 5.1);
 # in c3ga (32) the kernels win 1.6-4.3x. Sums are specialized only in
 # algebras with more coefficients than e3ga's.
 DENSE_SUM_LIMIT = 8
