@@ -5,6 +5,7 @@
 # The demo is built without three.js, as a copy outside the gaphys tree would
 # be: it must build, and its --html must say how to get three.js.
 # Inputs: BUILD_DIR (gaphys's build), SOURCE_DIR, WORK_DIR, PYTHON, GENERATOR.
+include("${CMAKE_CURRENT_LIST_DIR}/no_jinja2_python.cmake")
 file(REMOVE_RECURSE "${WORK_DIR}")
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE failed)
@@ -23,13 +24,7 @@ run("${WORK_DIR}/build/consumer_app")
 # build with no Python that has Jinja2: the only python3 on its PATH runs
 # without site-packages (-S), where Jinja2 lives, and comes first on its PATH.
 set(no_jinja2 "${WORK_DIR}/no_jinja2")
-file(WRITE "${no_jinja2}/python3" "#!/bin/sh\nexec \"${PYTHON}\" -S -E \"$@\"\n")
-file(CHMOD "${no_jinja2}/python3" PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
-execute_process(COMMAND "${no_jinja2}/python3" -c "import jinja2" RESULT_VARIABLE has_no_jinja2
-                OUTPUT_QUIET ERROR_QUIET)
-if(NOT has_no_jinja2)
-  message(FATAL_ERROR "${no_jinja2}/python3 can import jinja2; the check below would prove nothing")
-endif()
+gaphys_no_jinja2_python("${no_jinja2}" "${PYTHON}")
 run("${CMAKE_COMMAND}" -E env "PATH=${no_jinja2}:$ENV{PATH}"
     "${CMAKE_COMMAND}" -S "${SOURCE_DIR}/examples/demo" -B "${WORK_DIR}/demo" -G "${GENERATOR}"
     "-DCMAKE_PREFIX_PATH=${WORK_DIR}/install" "-DGAPHYS_DEMO_THREE_JS=")

@@ -4,6 +4,7 @@
 # It configures with no Python that has Jinja2 on its PATH, as nothing is
 # generated. Only configures and asks Ninja what `all` would build.
 # Inputs: SOURCE_DIR (gaphys), WORK_DIR, PYTHON, GENERATOR (Ninja), MAKE_PROGRAM (ninja).
+include("${CMAKE_CURRENT_LIST_DIR}/no_jinja2_python.cmake")
 file(REMOVE_RECURSE "${WORK_DIR}")
 file(WRITE "${WORK_DIR}/src/CMakeLists.txt" "cmake_minimum_required(VERSION 3.25)
 project(subproject CXX)
@@ -15,8 +16,7 @@ file(WRITE "${WORK_DIR}/src/main.cpp" "#include <gaphys/gaphys.hpp>
 int main() { gaphys::world w; w.step(0.01); return 0; }
 ")
 set(no_jinja2 "${WORK_DIR}/no_jinja2")
-file(WRITE "${no_jinja2}/python3" "#!/bin/sh\nexec \"${PYTHON}\" -S -E \"$@\"\n")
-file(CHMOD "${no_jinja2}/python3" PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
+gaphys_no_jinja2_python("${no_jinja2}" "${PYTHON}")
 execute_process(COMMAND "${CMAKE_COMMAND}" -E env "PATH=${no_jinja2}:$ENV{PATH}"
                         "${CMAKE_COMMAND}" -S "${WORK_DIR}/src" -B "${WORK_DIR}/build" -G "${GENERATOR}"
                 RESULT_VARIABLE failed OUTPUT_QUIET)
