@@ -11,8 +11,9 @@ for tool in cmake:cmake ninja:ninja-build g++:g++ pkg-config:pkg-config clang-fo
   command -v "${tool%%:*}" >/dev/null 2>&1 || missing+=("${tool##*:}")
 done
 # Bullet, ODE and gnuplot: bench/compare (gaphys against other engines).
+# libccd: the convex narrow phase's test oracle (GJK/EPA/MPR).
 # Chromium: the demo_viewer test opens gaphys_demo --html pages headless.
-for package in libgtest-dev libgmock-dev libbenchmark-dev libbullet-dev libode-dev gnuplot-nox chromium; do
+for package in libgtest-dev libgmock-dev libbenchmark-dev libbullet-dev libode-dev libccd-dev gnuplot-nox chromium; do
   dpkg -s "$package" >/dev/null 2>&1 || missing+=("$package")
 done
 python=$(bash tools/find-python.sh)

@@ -1,6 +1,9 @@
 #include "gaphys/body.hpp"
 
+#include <algorithm>
+#include <array>
 #include <limits>
+#include <utility>
 
 #include "validate.hpp"
 
@@ -22,41 +25,101 @@ void require_static_at_rest(bool is_static, bool at_rest, const char* what) {
 bool is_zero(const vector& v) { return v.e1() == 0 && v.e2() == 0 && v.e3() == 0; }
 bool is_zero(const bivector& b) { return b.e12() == 0 && b.e13() == 0 && b.e23() == 0; }
 
-inertia initial_inertia(const body_definition& d) {
-  if (d.inertia) return *d.inertia;
-  if (d.shape && d.shape->kind() == shape_kind::sphere) {
-    return inertia::solid_sphere(d.is_static ? 1 : d.mass, d.shape->radius());
+bool is_plane(const attached_shape& s) { return s.shape.kind() == shape_kind::plane; }
+
+// The definition's shapes in one list: `shape` first, at the body origin.
+std::vector<attached_shape> all_shapes(const body_definition& d) {
+  std::vector<attached_shape> shapes;
+  if (d.shape) shapes.push_back(attached_shape{*d.shape, vector{}, rotor{1, 0, 0, 0}});
+  shapes.insert(shapes.end(), d.shapes.begin(), d.shapes.end());
+  return shapes;
+}
+
+bool has_solid(const std::vector<attached_shape>& shapes) {
+  for (const attached_shape& s : shapes) {
+    if (s.shape.kind() != shape_kind::plane && s.shape.kind() != shape_kind::point) return true;
   }
-  if (d.is_static) return inertia::principal(1, 1, 1);  // never used: static bodies do not turn
-  detail::reject("a dynamic body without a sphere shape needs an explicit inertia");
+  return false;
 }
 
 // Validates everything before the body is built, so a throw leaves no trace.
 const body_definition& validated(const body_definition& d) {
   if (!d.is_static) detail::require_positive(d.mass, "body mass");
+  if (d.density) detail::require_positive(*d.density, "body density");
   detail::require_finite(d.position, "body position");
   detail::require_finite(d.velocity, "body velocity");
   detail::require_finite(d.angular_velocity, "body angular velocity");
   normalized(d.attitude, "body attitude");
   require_static_at_rest(d.is_static, is_zero(d.velocity), "velocity");
   require_static_at_rest(d.is_static, is_zero(d.angular_velocity), "angular velocity");
-  if (d.shape && d.shape->kind() == shape_kind::plane && !d.is_static) {
-    detail::reject("a plane shape needs a static body");
+  const std::vector<attached_shape> shapes = all_shapes(d);
+  for (const attached_shape& s : shapes) {
+    detail::require_finite(s.offset, "shape offset");
+    normalized(s.attitude, "shape attitude");
+    if (is_plane(s) && !d.is_static) detail::reject("a plane shape needs a static body");
+    // The broad phase bounds a plane's body by the plane alone.
+    if (is_plane(s) && shapes.size() > 1) detail::reject("a plane must be its body's only shape");
+  }
+  if (!d.is_static && !d.inertia && !has_solid(shapes)) {
+    detail::reject("a dynamic body without a solid shape needs an explicit inertia");
   }
   return d;
 }
 
+// The body's mass properties about the origin it will have: given, or those
+// of its solid shapes (by density, or scaled to the given mass), whose
+// centre then becomes the origin. Static bodies never turn or move: they
+// keep their frame, and their inertia is never used.
+struct initial_mass {
+  real inverse_mass;
+  gaphys::inertia inertia;
+  vector center;  // body frame: where the origin moves to
+};
+
+initial_mass initial_mass_properties(const body_definition& d,
+                                     const std::vector<attached_shape>& shapes) {
+  if (d.is_static) return {0, d.inertia.value_or(inertia::principal(1, 1, 1)), vector{}};
+  if (d.inertia) return {1 / d.mass, *d.inertia, vector{}};
+  const mass_properties solid = solid_mass_properties(shapes, d.density.value_or(1));
+  if (d.density) return {1 / solid.mass, solid.inertia, solid.center};
+  std::array<real, 9> rows = solid.inertia.rows();
+  for (real& x : rows) x *= d.mass / solid.mass;
+  return {1 / d.mass, inertia::tensor(rows), solid.center};
+}
+
+// The shapes about the new origin, and how far they reach from it.
+std::vector<attached_shape> recentred(std::vector<attached_shape> shapes, const vector& center) {
+  for (attached_shape& s : shapes) {
+    s.offset = s.offset - center;
+    s.attitude = normalized(s.attitude, "shape attitude");
+  }
+  return shapes;
+}
+
+real reach(const std::vector<attached_shape>& shapes) {
+  real radius = 0;
+  for (const attached_shape& s : shapes) {
+    radius = std::max(radius, e3ga::norm(s.offset) + s.shape.bounding_radius());
+  }
+  return radius;
+}
+
 }  // namespace
 
-body::body(const body_definition& definition)
-    : is_static_(validated(definition).is_static),
-      inverse_mass_(definition.is_static ? 0 : 1 / definition.mass),
-      inertia_(initial_inertia(definition)),
-      shape_(definition.shape),
-      position_(definition.position),
-      velocity_(definition.velocity),
-      attitude_(normalized(definition.attitude, "body attitude")),
-      angular_velocity_(definition.angular_velocity) {}
+body::body(const body_definition& definition) : inertia_(inertia::principal(1, 1, 1)) {
+  const body_definition& d = validated(definition);
+  std::vector<attached_shape> shapes = all_shapes(d);
+  const initial_mass m = initial_mass_properties(d, shapes);
+  is_static_ = d.is_static;
+  inverse_mass_ = m.inverse_mass;
+  inertia_ = m.inertia;
+  shapes_ = recentred(std::move(shapes), m.center);
+  bounding_radius_ = reach(shapes_);
+  attitude_ = normalized(d.attitude, "body attitude");
+  position_ = d.position + e3ga::apply(attitude_, m.center);
+  velocity_ = d.velocity;
+  angular_velocity_ = d.angular_velocity;
+}
 
 real body::mass() const {
   return is_static_ ? std::numeric_limits<real>::infinity() : 1 / inverse_mass_;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "convex_contact.hpp"
+
 namespace gaphys {
 
 namespace {
@@ -22,8 +24,14 @@ real support_height(const placed_shape& s, const vector& direction) {
       return e3ga::scp(s.center, direction);
     case shape_kind::plane:
       return s.offset;
+    default:  // the convex narrow phase's shapes never reach the meet
+      break;
   }
   return 0;
+}
+
+bool is_round(shape_kind kind) {
+  return kind == shape_kind::sphere || kind == shape_kind::plane || kind == shape_kind::point;
 }
 
 // Two spheres with the same centre and radius: their duals are equal, the
@@ -41,6 +49,7 @@ std::optional<contact_geometry> coincident_spheres(const placed_shape& a, const 
 
 placed_shape place(const shape& s, const vector& position, const rotor& attitude) {
   placed_shape placed{mv{}, s.kind(), position, vector{}, s.radius(), 0};
+  placed.attitude = attitude;
   const real half_square = real(0.5) * e3ga::scp(position, position);
   switch (s.kind()) {
     case shape_kind::sphere:  // σ = c - r^2/2 ni, c = no + x + x^2/2 ni
@@ -59,6 +68,17 @@ placed_shape place(const shape& s, const vector& position, const rotor& attitude
       placed.dual = c3ga::dual(c3ga::op(x, c3ga::ni()));
       break;
     }
+    case shape_kind::capsule:
+      placed.half_height = s.half_height();
+      placed.axis = e3ga::apply(attitude, vector{0, 0, 1});
+      break;
+    case shape_kind::box:
+      placed.half_extents = s.half_extents();
+      placed.polyhedron = s.polyhedron();
+      break;
+    case shape_kind::convex_hull:
+      placed.polyhedron = s.polyhedron();
+      break;
   }
   return placed;
 }
@@ -120,6 +140,20 @@ std::optional<contact_geometry> find_contact(const placed_shape& a, const placed
   const real centre_weight = -c3ga::scp(ni, centre);
   const vector point = to_e3ga(c3ga::euclidean_vector(centre)) / centre_weight;
   return contact_geometry{point, normal, depth, squared_radius};
+}
+
+void find_contacts(const placed_shape& a, const placed_shape& b, real lookahead,
+                   const vector& velocity_a, const vector& velocity_b, real margin,
+                   contact_manifold& out) {
+  out.count = 0;
+  if (!is_round(a.kind) || !is_round(b.kind)) {
+    detail::collide_convex(a, b, margin, out);
+    return;
+  }
+  if (auto geometry = find_contact(a, b, lookahead, velocity_a, velocity_b)) {
+    out.points[0] = contact_point{*geometry, 0};
+    out.count = 1;
+  }
 }
 
 }  // namespace gaphys

@@ -22,36 +22,72 @@ real approach_speed(const body& a, const body& b, const body_velocity& start_a,
 
 bool is_plane(const body& b) { return b.shape() && b.shape()->kind() == shape_kind::plane; }
 
-// Every shape's contact normal passes through the centre of a sphere or a
-// point (the line of centres, a plane's normal), so the arm n ∧ r of such a
-// body is zero; computed from the contact point it would be rounding only.
-bool central(const body& b) { return b.shape() && !is_plane(b); }
+// A body whose one shape is a sphere or a point about its centre: every
+// contact normal of such a shape passes through the centre (the line of
+// centres, a plane's normal), so its arm n ∧ r is zero; computed from the
+// contact point it would be rounding only.
+bool central(const body& b) {
+  if (b.shapes().size() != 1) return false;
+  const attached_shape& s = b.shapes().front();
+  const bool round = s.shape.kind() == shape_kind::sphere || s.shape.kind() == shape_kind::point;
+  return round && s.offset.e1() == 0 && s.offset.e2() == 0 && s.offset.e3() == 0;
+}
 
-// Where a body touches the other, from its centre: a sphere's surface point
-// along the normal (towards -n for A, which the normal points to, +n for
-// B), a point's centre. A plane's is the contact point (planes are static,
-// so it never turns them).
+// Where a body touches the other, from its centre: a central sphere's
+// surface point along the normal (towards -n for A, which the normal points
+// to, +n for B), a central point's centre; for every other shape the
+// contact point, midway between the two surfaces.
 vector contact_offset(const body& x, const contact& c, const vector& n, real side) {
-  const shape& s = *x.shape();
-  switch (s.kind()) {
-    case shape_kind::sphere:
-      return (side * s.radius()) * n;
-    case shape_kind::point:
-      return vector{};
-    case shape_kind::plane:
-      break;
+  if (central(x)) {
+    const shape& s = *x.shape();
+    return s.kind() == shape_kind::sphere ? (side * s.radius()) * n : vector{};
   }
   return c.geometry.point - x.position();
 }
 
-// The smaller radius of the contact's spheres; 0 when it has none.
-real rolling_radius(const body& a, const body& b) {
-  real radius = 0;
-  for (const body* x : {&a, &b}) {
-    if (x->shape()->kind() != shape_kind::sphere) continue;
-    radius = radius > 0 ? std::min(radius, x->shape()->radius()) : x->shape()->radius();
+// The radius a touching shape rolls on: a sphere's or a capsule's; 0 for
+// flat shapes.
+real rolling_radius_of(const shape& s) {
+  return s.kind() == shape_kind::sphere || s.kind() == shape_kind::capsule ? s.radius() : 0;
+}
+
+// The smaller rolling radius of the contact's two shapes; 0 when neither rolls.
+real rolling_radius(const body& a, const body& b, const contact& c) {
+  const real ra = rolling_radius_of(a.shapes()[c.shape_a].shape);
+  const real rb = rolling_radius_of(b.shapes()[c.shape_b].shape);
+  if (ra > 0 && rb > 0) return std::min(ra, rb);
+  return ra > 0 ? ra : rb;
+}
+
+// The last step's contact at the same point as c, searched in the run of
+// contacts from `run` on that share c's bodies: the same two shapes and the
+// same feature ids, or else (a feature the narrow phase names differently
+// now, such as a corner that crossed a side of the face it rests on by a
+// rounding error) the nearest point of the same two shapes within 5% of
+// the smaller shape's size. `end` when there is none.
+std::vector<contact>::const_iterator same_point(const contact& c,
+                                                std::vector<contact>::const_iterator run,
+                                                std::vector<contact>::const_iterator end,
+                                                const std::vector<body>& bodies) {
+  const auto same_bodies = [&](const contact& o) {
+    return o.body_a == c.body_a && o.body_b == c.body_b;
+  };
+  const auto same_shapes = [&](const contact& o) {
+    return o.shape_a == c.shape_a && o.shape_b == c.shape_b;
+  };
+  for (auto old = run; old != end && same_bodies(*old); ++old) {
+    if (same_shapes(*old) && old->feature == c.feature) return old;
   }
-  return radius;
+  const real size = std::min(bodies[c.body_a].shapes()[c.shape_a].shape.bounding_radius(),
+                             bodies[c.body_b].shapes()[c.shape_b].shape.bounding_radius());
+  real nearest = real(0.05) * size;
+  auto found = end;
+  for (auto old = run; old != end && same_bodies(*old); ++old) {
+    if (!same_shapes(*old)) continue;
+    const real distance = e3ga::norm(old->geometry.point - c.geometry.point);
+    if (distance < nearest) nearest = distance, found = old;
+  }
+  return found;
 }
 
 // Two unit tangents t1, t2 with (t1, t2, n) right-handed: t1 from the basis
@@ -72,8 +108,8 @@ std::array<vector, 2> tangents(const vector& n) {
 }  // namespace
 
 // When and along which normal the contact's surfaces meet in this step (see
-// timed_impact.hpp); only for central contacts, whose normal is a plane's or
-// the line of centres.
+// timed_impact.hpp); only for central contacts of round shapes, whose normal
+// is a plane's or the line of centres.
 std::optional<timed_impact> contact_solver::time_impact(const body& a, const body& b,
                                                         const contact& c,
                                                         const body_velocity& start_a,
@@ -102,7 +138,9 @@ void contact_solver::add_constraint(const world_settings& settings, const body& 
   const bool central_a = central(a) || a.is_static();
   const bool central_b = central(b) || b.is_static();
   vector n = c.geometry.normal;
-  if (k.bounces && central_a && central_b) {
+  // (Only a sphere or point about its centre, or a plane, moves with its
+  // body's centre as timed_impact assumes.)
+  if (k.bounces && (central(a) || is_plane(a)) && (central(b) || is_plane(b))) {
     // Bounced at the moment the surfaces meet, along the normal then.
     impact.timing = time_impact(a, b, c, start_a, start_b, h);
     if (impact.timing) n = impact.timing->normal;
@@ -122,10 +160,11 @@ void contact_solver::add_constraint(const world_settings& settings, const body& 
   } else {
     k.normal = detail::linear_row(n, r_a, r_b, a, b);
   }
+  k.normal_mass = k.normal.mass_inverse > 0 ? 1 / k.normal.mass_inverse : real(0);
   k.target_speed = k.gap > 0 ? -k.gap / h : real(0);
 
   const material& m = c.material;
-  const real radius = rolling_radius(a, b);
+  const real radius = rolling_radius(a, b, c);
   const bool rolls = m.rolling_resistance > 0 && radius > 0;
   const bool spins = m.spinning_friction > 0 && radius > 0;
   if (m.friction > 0 || rolls || spins) {
@@ -257,18 +296,21 @@ void contact_solver::resolve_impacts(const world_settings& settings, real h) {
 }
 
 // Warm start: both lists are sorted by body pair, so one merge finds the
-// contacts that persist. The sweeps correct the old impulses as needed (down
+// pairs that persist, and within a pair the same shapes' same feature ids
+// the points that do. The sweeps correct the old impulses as needed (down
 // to zero), so the result does not depend on them, only how fast the sweeps
 // get there. Friction and resistance impulses are kept as world-frame
 // vectors and bivectors and read in the new contact frame.
-void contact_solver::warm_start(const std::vector<contact>& contacts,
+void contact_solver::warm_start(const std::vector<body>& bodies,
+                                const std::vector<contact>& contacts,
                                 const std::vector<contact>& previous) {
-  auto old = previous.begin();
+  auto run = previous.begin();
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const contact& c = contacts[i];
     const auto key = std::make_pair(c.body_a, c.body_b);
-    while (old != previous.end() && std::make_pair(old->body_a, old->body_b) < key) ++old;
-    if (old == previous.end() || std::make_pair(old->body_a, old->body_b) != key) continue;
+    while (run != previous.end() && std::make_pair(run->body_a, run->body_b) < key) ++run;
+    const auto old = same_point(c, run, previous.end(), bodies);
+    if (old == previous.end()) continue;
     constraint& k = constraints_[i];
     if (!(k.normal.mass_inverse > 0) || k.waits) continue;
     solver_body& a = solver_bodies_[k.body_a];
@@ -314,8 +356,7 @@ void contact_solver::solve_contacts(const world_settings& settings) {
       solver_body& a = solver_bodies_[k.body_a];
       solver_body& b = solver_bodies_[k.body_b];
       const real relaxation = last ? real(1) : k.relaxation;
-      const real wanted =
-          relaxation * (k.target_speed - k.normal.speed(a, b)) / k.normal.mass_inverse;
+      const real wanted = relaxation * (k.target_speed - k.normal.speed(a, b)) * k.normal_mass;
       const real total = std::max(k.accumulated + wanted, real(0));
       const real j = total - k.accumulated;
       k.normal.apply(a, b, j);
@@ -385,7 +426,7 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   impacted_.assign(bodies.size(), 0);
 
   resolve_impacts(settings, h);
-  warm_start(contacts, previous);
+  warm_start(bodies, contacts, previous);
   solve_contacts(settings);
   store_impulses(contacts);
   for (std::size_t i = 0; i < bodies.size(); ++i) {
@@ -397,7 +438,8 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
 }
 
 void contact_solver::correct_positions(const world_settings& settings, std::vector<body>& bodies,
-                                       const std::vector<contact>& contacts, real h) const {
+                                       const std::vector<contact>& contacts, real h) {
+  bool any_turning = false;
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const contact& c = contacts[i];
     body& a = bodies[c.body_a];
@@ -417,6 +459,10 @@ void contact_solver::correct_positions(const world_settings& settings, std::vect
     // overlap now (one left to bounce in a later step), the next step meets
     // them for real.
     if (c.geometry.depth < 0) continue;
+    if (constraints_[i].normal.turns) {
+      any_turning = true;  // corrected below, turning the bodies too
+      continue;
+    }
     // The depth now, to first order: the positions moved by h v since the
     // narrow phase measured it.
     const vector& n = c.geometry.normal;
@@ -425,6 +471,74 @@ void contact_solver::correct_positions(const world_settings& settings, std::vect
     if (!(push > 0)) continue;
     a.position_ = a.position_ + (push * a.inverse_mass_ / inverse_masses) * n;
     b.position_ = b.position_ - (push * b.inverse_mass_ / inverse_masses) * n;
+  }
+  if (any_turning) correct_turning(settings, bodies, contacts, h);
+}
+
+// Contacts whose impulse turns a body (a box's corners, anything off a
+// centre) share their bodies' depth: four corners pushing each by its own
+// share would lift a box four times too far, and only a turn levels a
+// tilted face. So they are corrected together, by pseudo velocities: the
+// same sequential impulses as the contact phase, on velocities that start
+// at zero, aimed at moving each contact apart by its share of the excess
+// depth within the step; the bodies then move and turn by h times them and
+// keep their real velocities (no energy comes from the correction).
+void contact_solver::correct_turning(const world_settings& settings, std::vector<body>& bodies,
+                                     const std::vector<contact>& contacts, real h) {
+  pseudo_bodies_.resize(bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    pseudo_bodies_[i] = {vector{}, bivector{}, bodies[i].inverse_mass_};
+  }
+  pseudo_targets_.assign(contacts.size(), 0);
+  pseudo_accumulated_.assign(contacts.size(), 0);
+  // The depth now of each contact to correct (< 0: not corrected), to first
+  // order: the bodies moved and turned by h times their velocities since the
+  // narrow phase measured it.
+  std::vector<real>& depths = pseudo_depths_;
+  depths.assign(contacts.size(), -1);
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const constraint& k = constraints_[i];
+    const contact& c = contacts[i];
+    if (!k.normal.turns || impacts_[i].timed || c.geometry.depth < 0 ||
+        !(k.normal.mass_inverse > 0)) {
+      continue;
+    }
+    depths[i] = c.geometry.depth -
+                h * k.normal.speed(solver_bodies_[k.body_a], solver_bodies_[k.body_b]);
+  }
+  bool any = false;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const real excess = depths[i] - settings.linear_slop;
+    if (!(depths[i] >= 0) || !(excess > 0)) continue;
+    pseudo_targets_[i] = settings.position_correction * excess / h;
+    any = true;
+  }
+  if (!any) return;
+  for (int sweep = 0; sweep < settings.solver_iterations; ++sweep) {
+    real largest_change = 0;
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+      if (!(pseudo_targets_[i] > 0)) continue;
+      const constraint& k = constraints_[i];
+      solver_body& a = pseudo_bodies_[k.body_a];
+      solver_body& b = pseudo_bodies_[k.body_b];
+      const real wanted = (pseudo_targets_[i] - k.normal.speed(a, b)) / k.normal.mass_inverse;
+      const real total = std::max(pseudo_accumulated_[i] + wanted, real(0));
+      const real j = total - pseudo_accumulated_[i];
+      k.normal.apply(a, b, j);
+      pseudo_accumulated_[i] = total;
+      largest_change = std::max(largest_change, std::fabs(j) * k.normal.mass_inverse);
+    }
+    if (largest_change <= settings.solver_tolerance) break;
+  }
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    body& x = bodies[i];
+    const solver_body& p = pseudo_bodies_[i];
+    if (x.is_static_) continue;
+    x.position_ = x.position_ + h * p.velocity;
+    const bivector& w = p.angular_velocity;
+    if (w.e12() == 0 && w.e13() == 0 && w.e23() == 0) continue;
+    const rotor turned = e3ga::gp(e3ga::exp((-h / 2) * w), x.attitude_);
+    x.attitude_ = turned / e3ga::norm(turned);
   }
 }
 

@@ -50,8 +50,10 @@ class contact_solver {
   // solve_velocities): moves the bodies of a timed bounce by -t Δv (the
   // impulse came t into the step), and pushes other overlapping bodies apart
   // along the normal by a share of the depth beyond the slop.
+  // Contacts that turn a body (off-centre ones: boxes, capsules, hulls,
+  // compounds) are corrected together, moving and turning their bodies.
   void correct_positions(const world_settings& settings, std::vector<body>& bodies,
-                         const std::vector<contact>& contacts, real h) const;
+                         const std::vector<contact>& contacts, real h);
 
  private:
   using solver_body = detail::solver_body;
@@ -63,6 +65,7 @@ class contact_solver {
   struct constraint {
     std::size_t body_a, body_b;
     impulse_row normal;      // n, from B to A
+    real normal_mass = 0;    // 1 / normal.mass_inverse (0 when left out)
     real target_speed = 0;   // normal separation speed wanted after the contact phase
     real relaxation = 1;     // settings' over-relaxation where the contact shares a body, else 1
     real accumulated = 0;    // the contact phase's normal impulse
@@ -110,9 +113,12 @@ class contact_solver {
   void set_relaxation(const world_settings& settings, const std::vector<body>& bodies);
   void resolve_impacts(const world_settings& settings, real h);
   bool impact(std::size_t index, real threshold, real h);
-  void warm_start(const std::vector<contact>& contacts, const std::vector<contact>& previous);
+  void warm_start(const std::vector<body>& bodies, const std::vector<contact>& contacts,
+                  const std::vector<contact>& previous);
   void solve_contacts(const world_settings& settings);
   void store_impulses(std::vector<contact>& contacts) const;
+  void correct_turning(const world_settings& settings, std::vector<body>& bodies,
+                       const std::vector<contact>& contacts, real h);
 
   std::vector<constraint> constraints_;
   std::vector<impact_terms> impacts_;        // one per constraint
@@ -121,6 +127,8 @@ class contact_solver {
   std::vector<solver_body> solver_bodies_;  // the velocities after the step's forces, as solved
   std::vector<solver_body> impact_bodies_;  // the start velocities plus the impact phase's impulses
   std::vector<char> impacted_;              // bodies the impact phase has changed
+  std::vector<solver_body> pseudo_bodies_;  // correct_turning's pseudo velocities
+  std::vector<real> pseudo_targets_, pseudo_accumulated_, pseudo_depths_;  // per contact
 };
 
 }  // namespace gaphys

@@ -1,12 +1,17 @@
 #include "gaphys/shape.hpp"
 
+#include <limits>
+#include <memory>
+
 #include "validate.hpp"
 
 namespace gaphys {
 
 shape shape::sphere(real radius) {
   detail::require_positive(radius, "sphere radius");
-  return shape(shape_kind::sphere, radius, vector{}, 0);
+  shape s(shape_kind::sphere);
+  s.radius_ = radius;
+  return s;
 }
 
 shape shape::plane(const vector& normal, real offset) {
@@ -14,10 +19,52 @@ shape shape::plane(const vector& normal, real offset) {
   detail::require_finite(offset, "plane offset");
   const real length = e3ga::norm(normal);
   if (!(length > 0)) detail::reject("plane normal must be nonzero");
-  return shape(shape_kind::plane, 0, normal / length, offset);
+  shape s(shape_kind::plane);
+  s.normal_ = normal / length;
+  s.offset_ = offset;
+  return s;
 }
 
-shape shape::point() { return shape(shape_kind::point, 0, vector{}, 0); }
+shape shape::point() { return shape(shape_kind::point); }
+
+shape shape::box(const vector& half_extents) {
+  shape s(shape_kind::box);
+  s.polyhedron_ = std::make_shared<const convex_polyhedron>(convex_polyhedron::box(half_extents));
+  s.half_extents_ = half_extents;
+  return s;
+}
+
+shape shape::capsule(real half_height, real radius) {
+  detail::require_non_negative(half_height, "capsule half height");
+  detail::require_positive(radius, "capsule radius");
+  shape s(shape_kind::capsule);
+  s.half_height_ = half_height;
+  s.radius_ = radius;
+  return s;
+}
+
+shape shape::convex_hull(const std::vector<vector>& points) {
+  shape s(shape_kind::convex_hull);
+  s.polyhedron_ = std::make_shared<const convex_polyhedron>(convex_polyhedron::hull(points));
+  return s;
+}
+
+real shape::bounding_radius() const {
+  switch (kind_) {
+    case shape_kind::sphere:
+      return radius_;
+    case shape_kind::plane:
+      return std::numeric_limits<real>::infinity();
+    case shape_kind::point:
+      return 0;
+    case shape_kind::capsule:
+      return half_height_ + radius_;
+    case shape_kind::box:
+    case shape_kind::convex_hull:
+      return polyhedron_->bounding_radius;
+  }
+  return 0;
+}
 
 shape shape::with(real material::*field, real value) const {
   shape copy = *this;

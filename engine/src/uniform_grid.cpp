@@ -29,9 +29,9 @@ std::uint64_t hash(std::int64_t x, std::int64_t y, std::int64_t z) {
 }  // namespace
 
 bool uniform_grid::find_pairs(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped,
-                              real lookahead, std::vector<index_pair>& pairs) {
+                              real lookahead, real margin, std::vector<index_pair>& pairs) {
   pairs.clear();
-  collect(bodies, shaped, lookahead);
+  collect(bodies, shaped, lookahead, margin);
   if (!sort_into_cells()) return false;
   pair_cells(pairs);
   pair_large(pairs);
@@ -59,7 +59,7 @@ void uniform_grid::sort_pairs(std::size_t body_count, std::vector<index_pair>& p
 // Bounds for spheres and points, and the cell size: the widest bound that
 // is not "large" (wider than twice the median width).
 void uniform_grid::collect(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped,
-                           real lookahead) {
+                           real lookahead, real margin) {
   bounds_.clear();
   planes_.clear();
   large_.clear();
@@ -71,8 +71,11 @@ void uniform_grid::collect(const std::vector<body>& bodies, const std::vector<st
       continue;
     }
     const vector& c = b.position();
-    const real r = b.shape()->radius();
-    const real sweep = lookahead * e3ga::norm(b.velocity());
+    const real r = b.bounding_radius();
+    // As far as the body can move or turn within the lookahead, and half
+    // the margin (two bounds then overlap when their gap is up to it).
+    const real sweep =
+        lookahead * (e3ga::norm(b.velocity()) + e3ga::norm(b.angular_velocity()) * r) + margin / 2;
     const real reach = r + sweep + relative_margin * (1 + largest_magnitude(c) + r + sweep);
     bounds_.push_back(bound{c, reach, index, b.is_static()});
     widths_.push_back(2 * reach);

@@ -43,6 +43,7 @@ const world_settings& validated(const world_settings& s) {
     detail::reject("position correction must be in [0, 1] (got ", s.position_correction, ")");
   }
   detail::require_non_negative(s.linear_slop, "linear slop");
+  detail::require_non_negative(s.contact_margin, "contact margin");
   if (s.broad_phase != broad_phase_kind::uniform_grid && s.broad_phase != broad_phase_kind::all_pairs) {
     detail::reject("broad phase must be uniform_grid or all_pairs");
   }
@@ -134,10 +135,11 @@ void world::step(real h) {
   // Pairs that may touch by the end of the step: contacts up to h |v| apart
   // are speculative, so a landing body stops at the surface instead of
   // sinking in by up to h |v| first.
-  space_.candidate_pairs(bodies_, pairs_, h);
+  space_.candidate_pairs(bodies_, pairs_, h, settings_.contact_margin);
   const auto paired = clock::now();
   previous_contacts_.swap(contacts_);
-  space_.find_contacts(bodies_, pairs_, contacts_, h, settings_.material_combine);
+  space_.find_contacts(bodies_, pairs_, contacts_, h, settings_.material_combine,
+                       settings_.contact_margin);
   const auto met = clock::now();
   if (!solver_) solver_ = std::make_unique<contact_solver>();  // a moved-from world
   solver_->solve_velocities(settings_, bodies_, start_velocities_, contacts_, previous_contacts_, h);

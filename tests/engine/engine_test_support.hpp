@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <random>
+#include <string>
 
 #include "gaphys/gaphys.hpp"
 #include "gaphys/scenes.hpp"
@@ -34,6 +35,24 @@ inline ::testing::AssertionResult near(const bivector& actual, const bivector& e
   if (error <= tolerance) return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << "|" << e3ga::mv(actual) << " - " << e3ga::mv(expected)
                                        << "| = " << error << " > " << tolerance;
+}
+
+// Runs `bad`, which must throw invalid_input whose message mentions `what`.
+template <class Action>
+::testing::AssertionResult rejects(Action&& bad, const std::string& what) {
+  try {
+    bad();
+  } catch (const invalid_input& e) {
+    const std::string message = e.what();
+    if (message.find(what) == std::string::npos) {
+      return ::testing::AssertionFailure()
+             << "message \"" << message << "\" does not mention \"" << what << "\"";
+    }
+    return ::testing::AssertionSuccess();
+  } catch (const std::exception& e) {
+    return ::testing::AssertionFailure() << "threw something else: " << e.what();
+  }
+  return ::testing::AssertionFailure() << "accepted input that should be rejected (" << what << ")";
 }
 
 class engine_test : public ::testing::Test {

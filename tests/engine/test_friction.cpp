@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "engine_test_support.hpp"
+#include "impulse_row.hpp"
 
 namespace gaphys::testing {
 namespace {
@@ -343,6 +344,48 @@ TEST_F(friction_test, friction_never_adds_kinetic_energy) {
       ASSERT_LE(kinetic_energy(w), before + 1e-9 * e0) << "scene " << scene << ", step " << i;
     }
     EXPECT_LT(kinetic_energy(w), e0) << "scene " << scene;
+  }
+}
+
+// A sliding contact's friction impulse is the point of the disk nearest to
+// the sticking impulse λ* in the metric of the rows' effective mass K:
+// on the circle, with the slip it leaves, K (λ - λ*), against it (Coulomb's
+// most dissipation), and no point of the circle nearer in K's metric.
+TEST_F(friction_test, a_sliding_impulse_is_the_disk_point_nearest_in_the_effective_mass_metric) {
+  for (int trial = 0; trial < 2000; ++trial) {
+    detail::disk_block block;
+    const real k00 = uniform(0.2, 3), k11 = uniform(0.2, 3);
+    const real k01 = uniform(-0.9, 0.9) * std::sqrt(k00 * k11);
+    // Rows whose coupling is k01: the effective-mass matrix the block builds.
+    block.rows[0].linear = vector{1, 0, 0};
+    block.rows[1].linear = vector{k01 / std::sqrt(k00 * k11), 0, 0};
+    block.rows[1].linear = block.rows[1].linear +
+                           vector{0, std::sqrt(1 - x(block.rows[1].linear) * x(block.rows[1].linear)), 0};
+    block.rows[0].linear = std::sqrt(k00) * block.rows[0].linear;
+    block.rows[1].linear = std::sqrt(k11) * block.rows[1].linear;
+    block.rows[0].turns = block.rows[1].turns = false;
+    block.rows[0].mass_inverse = k00;
+    block.rows[1].mass_inverse = k11;
+    block.prepare(1);
+    ASSERT_NEAR(block.rows[0].coupling(block.rows[1], 1), k01, 1e-12);
+    const std::array<real, 2> outside{uniform(-3, 3), uniform(-3, 3)};
+    const real bound = 0.5;
+    if (outside[0] * outside[0] + outside[1] * outside[1] <= bound * bound) continue;
+    const std::array<real, 2> l = block.nearest_on_disk(outside, bound);
+    ASSERT_NEAR(std::sqrt(l[0] * l[0] + l[1] * l[1]), bound, 1e-12);
+    const std::array<real, 2> d{l[0] - outside[0], l[1] - outside[1]};
+    const std::array<real, 2> slip{k00 * d[0] + k01 * d[1], k01 * d[0] + k11 * d[1]};
+    // slip = -ν λ with ν >= 0: parallel to λ and opposite.
+    EXPECT_NEAR(slip[0] * l[1] - slip[1] * l[0], 0, 1e-9 * (1 + std::fabs(slip[0]) + std::fabs(slip[1])));
+    EXPECT_LE(slip[0] * l[0] + slip[1] * l[1], 1e-12);
+    const auto energy = [&](real a0, real a1) {
+      const real e0 = a0 - outside[0], e1 = a1 - outside[1];
+      return k00 * e0 * e0 + 2 * k01 * e0 * e1 + k11 * e1 * e1;
+    };
+    for (int i = 0; i < 360; ++i) {
+      const real angle = 2 * pi * i / 360;
+      ASSERT_LE(energy(l[0], l[1]), energy(bound * std::cos(angle), bound * std::sin(angle)) + 1e-12);
+    }
   }
 }
 

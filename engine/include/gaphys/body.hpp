@@ -10,9 +10,11 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "gaphys/algebra.hpp"
 #include "gaphys/inertia.hpp"
+#include "gaphys/mass_properties.hpp"
 #include "gaphys/shape.hpp"
 
 namespace gaphys {
@@ -20,15 +22,25 @@ namespace gaphys {
 struct body_definition {
   // kg, finite and > 0; ignored for static bodies, which have infinite mass.
   real mass = 1;
-  // Body-frame inertia. Default: a solid sphere of the shape's radius, which
-  // a dynamic body without a sphere shape must replace.
+  // kg/m^3: when set, the mass is density times the shapes' volume instead.
+  std::optional<real> density;
+  // Body-frame inertia about the body's origin, its centre of mass. Default:
+  // the exact inertia of the solid shapes (solid_mass_properties) at the
+  // body's mass; a dynamic body without a solid shape must give one.
   std::optional<gaphys::inertia> inertia;
   bool is_static = false;
+  // Where the body's frame is. With the inertia computed from the shapes,
+  // the body's origin is moved to their centre of mass: position() is then
+  // this point plus the centre's offset (turned by the attitude), and each
+  // shape's offset is kept relative to the centre (body::shapes()).
   vector position{};
   vector velocity{};
   rotor attitude{1, 0, 0, 0};  // normalized on creation; must be nonzero
   bivector angular_velocity{};
+  // One shape centred on the body, or several at body-frame poses (a
+  // compound body); both may be given. Planes only on static bodies.
   std::optional<gaphys::shape> shape;
+  std::vector<attached_shape> shapes;
 };
 
 // A body's linear and angular velocity at one instant.
@@ -51,7 +63,12 @@ class body {
   real mass() const;  // infinity for static bodies
   real inverse_mass() const { return inverse_mass_; }
   const gaphys::inertia& body_inertia() const { return inertia_; }
-  const std::optional<gaphys::shape>& shape() const { return shape_; }
+  // The body's shapes about its centre of mass (the definition's `shape`
+  // first, at the origin); shape() is the first, or nullptr.
+  const std::vector<attached_shape>& shapes() const { return shapes_; }
+  const gaphys::shape* shape() const { return shapes_.empty() ? nullptr : &shapes_.front().shape; }
+  // The largest distance of the shapes' solids from the centre of mass.
+  real bounding_radius() const { return bounding_radius_; }
 
   const vector& position() const { return position_; }
   const vector& velocity() const { return velocity_; }
@@ -88,7 +105,8 @@ class body {
   bool is_static_ = false;
   real inverse_mass_ = 0;
   gaphys::inertia inertia_;
-  std::optional<gaphys::shape> shape_;
+  std::vector<attached_shape> shapes_;
+  real bounding_radius_ = 0;
 
   vector position_{};
   vector velocity_{};

@@ -2,7 +2,9 @@
 // for every pair of shapes.
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 
 #include "gaphys/algebra.hpp"
@@ -22,8 +24,16 @@ struct placed_shape {
   vector normal{};  // world-frame outward normal (planes)
   real radius = 0;
   real offset = 0;  // world-frame: the plane is normal . x = offset
+  // Boxes, capsules and hulls: `center` is the shape frame's origin in the
+  // world and `attitude` its turn (x_world = center + R x_shape ~R).
+  rotor attitude{1, 0, 0, 0};
+  vector half_extents{};  // box
+  real half_height = 0;   // capsule: its segment is center +- half_height axis
+  vector axis{};          // capsule: R e3 ~R
+  const convex_polyhedron* polyhedron = nullptr;  // box and hull, in the shape frame
 };
 
+// The shape at the pose of its frame in the world.
 placed_shape place(const shape& s, const vector& position, const rotor& attitude);
 
 struct contact_geometry {
@@ -52,6 +62,31 @@ std::optional<contact_geometry> find_contact(const placed_shape& a, const placed
                                              const vector& velocity_a = vector{},
                                              const vector& velocity_b = vector{});
 
+// Up to four contact points between two shapes, all with one normal: one for
+// round shapes (spheres, points, planes, a capsule's cap), two for a
+// capsule's side lying on a face, up to four for a face lying on a face.
+// Each point's feature id names the features that made it (a corner, an
+// edge crossing a side of a face) so that the same point of a resting box
+// has the same id step after step, and the solver warm starts it.
+struct contact_point {
+  contact_geometry geometry;
+  std::uint32_t feature = 0;
+};
+
+struct contact_manifold {
+  std::array<contact_point, 4> points;
+  int count = 0;
+};
+
+// Every pair of shapes: A and B overlapping, touching, or apart by at most
+// `margin` (a speculative contact, depth = -gap). Round pairs (spheres,
+// points, planes) are met as find_contact above, with the margin their
+// velocities close within the lookahead; the others by the convex narrow
+// phase. Fills `out` (count 0: no contact).
+void find_contacts(const placed_shape& a, const placed_shape& b, real lookahead,
+                   const vector& velocity_a, const vector& velocity_b, real margin,
+                   contact_manifold& out);
+
 // The impulses of one contact over a step, all acting on A (B gets their
 // opposites): along the normal, in the tangent plane (friction), and the
 // angular impulse of rolling resistance and spinning friction.
@@ -66,6 +101,11 @@ struct contact {
   std::size_t body_a;
   std::size_t body_b;
   contact_geometry geometry;
+  // Which of each body's shapes touch (indices into body::shapes()), and
+  // the point's feature id within their manifold.
+  std::uint32_t shape_a = 0;
+  std::uint32_t shape_b = 0;
+  std::uint32_t feature = 0;
   gaphys::material material;  // the two shapes' values, combined by world_settings' rules
   // What the solver gave this contact in its step; impulse.normal / h is the
   // mean normal force. Of it, `resting` is what the contact solve (not the

@@ -17,6 +17,11 @@ namespace gaphys {
 
 class inertia {
  public:
+  // The unit tensor, 1 kg m^2 about every axis: a valid value for a holder
+  // such as mass_properties{} until it is given a real one.
+  inertia()
+      : tensor_{1, 0, 0, 0, 1, 0, 0, 0, 1}, inverse_{1, 0, 0, 0, 1, 0, 0, 0, 1}, isotropic_(true) {}
+
   // Principal moments about the body's x, y and z axes (kg m^2): the planes
   // e23, e31 and e12. Each must be finite and positive.
   static inertia principal(real about_x, real about_y, real about_z);

@@ -2,12 +2,16 @@
 // to; the shape only knows its body-frame parameters and its material.
 #pragma once
 
+#include <memory>
+#include <vector>
+
 #include "gaphys/algebra.hpp"
+#include "gaphys/convex_polyhedron.hpp"
 #include "gaphys/material.hpp"
 
 namespace gaphys {
 
-enum class shape_kind { sphere, plane, point };
+enum class shape_kind { sphere, plane, point, box, capsule, convex_hull };
 
 class shape {
  public:
@@ -20,6 +24,17 @@ class shape {
   // A point at the body's centre (a flat point in c3ga, thesis 4.2.1). Points
   // collide with spheres.
   static shape point();
+  // A box centred on the body, its edges along the body frame's axes, with
+  // these half extents (each finite and > 0).
+  static shape box(const vector& half_extents);
+  // The points within `radius` of the segment from -half_height e3 to
+  // +half_height e3 of the body frame (radius finite and > 0, half_height
+  // finite and >= 0; 0 is a sphere).
+  static shape capsule(real half_height, real radius);
+  // The convex hull of the points (body frame; convex_polyhedron::hull says
+  // how). Throws invalid_input for a non-finite point, fewer than 4 points,
+  // or points all (nearly) in one plane.
+  static shape convex_hull(const std::vector<vector>& points);
 
   // The surface's material (material.hpp says what each value does and how
   // a contact combines its two shapes' values). Each returns a copy with the
@@ -30,7 +45,14 @@ class shape {
   shape with_spinning_friction(real c) const;      // finite, >= 0; default 0
 
   shape_kind kind() const { return kind_; }
-  real radius() const { return radius_; }
+  real radius() const { return radius_; }                       // sphere, capsule
+  const vector& half_extents() const { return half_extents_; }  // box
+  real half_height() const { return half_height_; }             // capsule
+  // The faces, edges and corners of a box or a convex hull; nullptr otherwise.
+  const convex_polyhedron* polyhedron() const { return polyhedron_.get(); }
+  // The largest distance of the shape's solid from the body origin
+  // (infinite for a plane).
+  real bounding_radius() const;
   const vector& normal() const { return normal_; }
   real offset() const { return offset_; }
   const gaphys::material& material() const { return material_; }
@@ -40,8 +62,7 @@ class shape {
   real spinning_friction() const { return material_.spinning_friction; }
 
  private:
-  shape(shape_kind kind, real radius, const vector& normal, real offset)
-      : kind_(kind), radius_(radius), normal_(normal), offset_(offset) {}
+  explicit shape(shape_kind kind) : kind_(kind) {}
   // A copy with one material value changed (already validated).
   shape with(real gaphys::material::*field, real value) const;
 
@@ -49,6 +70,9 @@ class shape {
   real radius_ = 0;
   vector normal_{};
   real offset_ = 0;
+  vector half_extents_{};
+  real half_height_ = 0;
+  std::shared_ptr<const convex_polyhedron> polyhedron_;  // immutable, shared by copies
   gaphys::material material_;
 };
 

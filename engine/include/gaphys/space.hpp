@@ -29,26 +29,32 @@ class space {
   void set_broad_phase(broad_phase_kind kind) { kind_ = kind; }
 
   // Pairs of shaped bodies, not both static, that may touch within
-  // `lookahead` seconds at their present velocities: a superset of those
-  // that do. Pairs are (a, b) with a < b, in increasing order.
+  // `lookahead` seconds at their present velocities, or are within
+  // `margin` metres: a superset of those that do. Pairs are (a, b) with
+  // a < b, in increasing order.
   void candidate_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs,
-                       real lookahead = 0);
+                       real lookahead = 0, real margin = 0);
 
-  // Places every shape once, then meets each candidate pair. Pairs whose
-  // gap their velocities close within lookahead seconds make speculative
-  // contacts (depth < 0). Each contact's material combines its shapes' by
-  // `rules`.
+  // Places every shape once, then meets each candidate pair's shapes. Shapes
+  // whose gap their velocities close within lookahead seconds make
+  // speculative contacts (depth < 0); boxes, capsules and hulls also within
+  // `margin` metres. Contacts come in pair order, then by shape pair, then
+  // as each manifold lists them. Each contact's material combines its
+  // shapes' by `rules`.
   void find_contacts(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
                      std::vector<contact>& contacts, real lookahead = 0,
-                     const material_combine_rules& rules = {});
+                     const material_combine_rules& rules = {}, real margin = 0);
 
  private:
   void all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs) const;
+  void place_shapes(const std::vector<body>& bodies);
 
   broad_phase_kind kind_;
   detail::uniform_grid grid_;
   std::vector<std::size_t> shaped_bodies_;
-  std::vector<placed_shape> placed_;  // indexed by body; reused between steps
+  // Every shape at its pose: body i's are placed_[first_shape_[i], first_shape_[i + 1]).
+  std::vector<placed_shape> placed_;  // reused between steps
+  std::vector<std::size_t> first_shape_;
 };
 
 }  // namespace gaphys

@@ -1,5 +1,4 @@
-// Replay: runs every catalogue scene (falling spheres with 100 spheres,
-// column, elastic collision, spinning body, bouncing sphere) for a number
+// Replay: runs the catalogue scenes (all but the box pyramid) for a number
 // of steps and prints, per scene, the state hash and every body's state in
 // full precision. compare_replays.py runs it twice per variant (reruns must
 // agree to the bit) and compares the variants with each other.
@@ -17,6 +16,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   for (const gaphys::scenes::entry& scene : gaphys::scenes::catalogue()) {
+    // 400 box contacts: 1200 steps of the reference variant take ~10 s, and
+    // the scene's contacts are the tower's kind (engine_stack_tests runs it).
+    if (scene.name == "box_pyramid") continue;
     gaphys::world w = scene.build();
     for (long i = 0; i < steps; ++i) w.step(gaphys::scenes::time_step);
     std::printf("scene %s %016llx\n", scene.name.c_str(),

@@ -2,8 +2,8 @@
 // pairs from a uniform grid of cells, so a step costs O(N) for spheres of
 // similar size at a bounded density instead of the O(N^2) of all pairs.
 //
-// Each sphere or point is bounded by a sphere (its own, widened by a
-// rounding margin) and lands in the cell of its centre. Cells are as wide as
+// Each body is bounded by a sphere about its centre of mass (reaching its
+// shapes' farthest point, widened by a rounding margin) and lands in the cell of its centre. Cells are as wide as
 // the widest ordinary bound, so two bounds that overlap have their centres
 // in the same or adjacent cells: each cell is compared with itself and its
 // 13 "forward" neighbours, and every two bounds that overlap make a
@@ -32,11 +32,12 @@ class uniform_grid {
  public:
   // Appends to `pairs` (cleared first) every candidate among `shaped`
   // (indices into bodies), not both static, as (a, b) with a < b, sorted;
-  // each bound reaches lookahead |v| further, for speculative contacts.
+  // each bound reaches lookahead (|v| + |Ω| r) + margin / 2 further, for
+  // speculative contacts.
   // Returns false, adding nothing, when coordinates are too far out for
   // integer cells (|x| / cell > 2^50); the caller then uses all pairs.
   bool find_pairs(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped,
-                  real lookahead, std::vector<index_pair>& pairs);
+                  real lookahead, real margin, std::vector<index_pair>& pairs);
 
  private:
   struct bound {  // a bounding sphere
@@ -58,7 +59,7 @@ class uniform_grid {
   };
 
   void collect(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped,
-               real lookahead);
+               real lookahead, real margin);
   bool sort_into_cells();
   void sort_dense(std::size_t cells);
   void sort_hashed();

@@ -59,6 +59,31 @@ world newtons_cradle(int released, int count = 5, real speed = 1);
 // (restitution threshold 0): a gas whose kinetic energy is constant.
 world sphere_gas(int count = 300, std::uint64_t seed = 1, real speed = 2);
 
+// `count` unit cubes (1 kg, e = 0) stacked on a static floor at z = 0, each
+// resting on the one below; cubes and floor with friction μ.
+world box_tower(int count = 10, real friction = real(0.5));
+
+// A two-dimensional pyramid of unit cubes (1 kg, e = 0, μ = 0.5) on a floor:
+// `base` cubes in the bottom row, 5 cm apart, and one fewer in each row above,
+// each resting across two below; base (base + 1) / 2 cubes in all.
+world box_pyramid(int base = 10);
+
+// `count` dominoes (0.1 x 0.5 x 1 m boxes, 1 kg, e = 0, μ = 0.5) standing in a
+// row along e1, 0.5 m apart, on a floor; the first is tipped 15° towards the
+// second about its leading bottom edge, so that each knocks over the next.
+world dominoes(int count = 20);
+
+// A table (a 1.5 x 0.9 x 0.06 m top on four 0.7 m legs: one compound body of
+// five boxes, 10 kg, e = 0, μ = 0.5), tilted 3° about e1 and dropped with its
+// feet 0.2 m above a floor, and a 0.4 m cube (1 kg) dropped onto its top.
+world compound_table();
+
+// `count` bodies (1 kg, e = 0.2, μ = 0.5), in turn a box, a capsule, a
+// convex hull of 10 random points and a sphere, of random sizes (about
+// 0.1 to 0.25 m across) and attitudes, dropped in layers into an open box
+// of five static planes, 3 m wide.
+world shape_mix(int count = 24, std::uint64_t seed = 1);
+
 // The scenes by name, with their default sizes, for programs that pick one.
 struct entry {
   std::string name;
