@@ -19,7 +19,7 @@ set(at "@")
 foreach(wanted IN ITEMS "<!DOCTYPE html>" "</html>" "REVISION"
                         "{\"scene\": \"bouncing_sphere\", \"description\": "
                         "{\"id\": 0, \"static\": true, \"shape\": {\"kind\": \"plane\", \"normal\": [0, 0, 1], \"offset\": 0}"
-                        "{\"id\": 1, \"static\": false, \"shape\": {\"kind\": \"sphere\", \"radius\": 0.5}"
+                        "{\"id\": 1, \"static\": false, \"shape\": {\"kind\": \"sphere\", \"radius\": 0.5}, \"shapes\": [{\"kind\": \"sphere\", \"radius\": 0.5, \"position\": [0, 0, 0], \"attitude\": [1, 0, 0, 0]}]"
                         "{\"scene\": \"bouncing_sphere\", \"time_step\": "
                         "{\"time\": 0.1, \"bodies\": [{\"id\": 1, ")
   string(FIND "${text}" "${wanted}" where)

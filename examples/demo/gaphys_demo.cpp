@@ -29,6 +29,9 @@ constexpr const char* usage =
 
 Runs a scene at h = 1/240 s and writes, at step 0 and every K-th step, each
 dynamic body's position (x y z) and attitude rotor (scalar e12 e13 e23).
+JSON also lists every body first (static ones too): its shapes (sphere,
+plane, point, box, capsule, convex hull), each with its position and
+attitude in the body's frame, and the body's starting pose.
 Progress goes to standard error: percent done and the time left (ETA).
 
   --scene NAME  a scene from --list (default falling_spheres)
@@ -236,9 +239,10 @@ int run(const options& o) {
   std::optional<demo::trajectory_writer> writer;
   if (!o.out.empty() || o.html.empty()) {
     std::ostream& out = o.out.empty() ? std::cout : file.emplace(o.out).stream();
-    writer.emplace(out, o.format, o.scene->name, h);
+    writer.emplace(out, o.format, o.scene->name, h, &world);
   }
-  // The page holds the same trajectory as a JSON --out.
+  // The page holds the same trajectory as a JSON --out; its scene holds the
+  // bodies' shapes.
   std::optional<demo::atomic_file> page_file;
   std::optional<demo::viewer_page> page;
   std::optional<demo::trajectory_writer> page_writer;

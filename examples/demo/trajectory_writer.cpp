@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "shape_json.hpp"
+
 namespace demo {
 
 namespace {
@@ -34,14 +36,22 @@ std::optional<trajectory_format> format_of(const std::string& path) {
 // The scene names come from gaphys::scenes::catalogue() (lower case and
 // underscores), so the JSON string needs no escaping.
 trajectory_writer::trajectory_writer(std::ostream& out, trajectory_format format,
-                                     const std::string& scene, gaphys::real time_step)
+                                     const std::string& scene, gaphys::real time_step,
+                                     const gaphys::world* bodies_of)
     : out_(out), format_(format) {
   if (format_ == trajectory_format::csv) {
     out_ << "time,body,x,y,z,r_scalar,r_e12,r_e13,r_e23\n";
-  } else {
-    out_ << "{\"scene\": \"" << scene << "\", \"time_step\": " << json_number(time_step)
-         << ", \"frames\": [";
+    return;
   }
+  out_ << "{\"scene\": \"" << scene << "\", \"time_step\": " << json_number(time_step);
+  if (bodies_of) {
+    out_ << ", \"bodies\": [";
+    for (gaphys::body_id id = 0; id < bodies_of->body_count(); ++id) {
+      out_ << (id == 0 ? "\n" : ",\n") << json_body(bodies_of->at(id), id);
+    }
+    out_ << "\n]";
+  }
+  out_ << ", \"frames\": [";
 }
 
 void trajectory_writer::write_frame(const gaphys::world& world) {

@@ -1,6 +1,8 @@
 // The demo's output: at each recorded step, the time and every dynamic body's
-// position and attitude rotor, as CSV rows or as one JSON document. Frames are
-// written as the simulation goes, so a long run does not keep them in memory.
+// position and attitude rotor, as CSV rows or as one JSON document. The JSON
+// document can also start with every body's shapes (shape_json.hpp), so that
+// it holds all a reader needs to draw the run. Frames are written as the
+// simulation goes, so a long run does not keep them in memory.
 #pragma once
 
 #include <optional>
@@ -22,9 +24,12 @@ std::string json_number(double value);
 
 class trajectory_writer {
  public:
-  // Writes the CSV header or the opening of the JSON document.
+  // Writes the CSV header or the opening of the JSON document. With a world
+  // (JSON only), the opening lists its bodies, static ones included, with
+  // their shapes and starting poses ("bodies", one a line); the viewer page
+  // passes none, as its scene holds them already.
   trajectory_writer(std::ostream& out, trajectory_format format, const std::string& scene,
-                    gaphys::real time_step);
+                    gaphys::real time_step, const gaphys::world* bodies_of = nullptr);
 
   // One frame: the world's time and the pose of each non-static body, named
   // by its body id (its index in the world).

@@ -1,12 +1,12 @@
 #include "viewer_page.hpp"
 
 #include <cstdio>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 
 #include "embedded.hpp"
+#include "shape_json.hpp"
 #include "trajectory_writer.hpp"
 
 namespace demo {
@@ -69,43 +69,14 @@ std::string json_string(const std::string& text) {
   return quoted + '"';
 }
 
-std::string json_vector(const gaphys::vector& v) {
-  return "[" + json_number(v.e1()) + ", " + json_number(v.e2()) + ", " + json_number(v.e3()) + "]";
-}
-
-std::string json_rotor(const gaphys::rotor& r) {
-  return "[" + json_number(r.scalar()) + ", " + json_number(r.e12()) + ", " + json_number(r.e13()) +
-         ", " + json_number(r.e23()) + "]";
-}
-
-// A shape in its body's frame, or null for a body without one.
-std::string json_shape(const std::optional<gaphys::shape>& s) {
-  if (!s) return "null";
-  switch (s->kind()) {
-    case gaphys::shape_kind::sphere:
-      return "{\"kind\": \"sphere\", \"radius\": " + json_number(s->radius()) + "}";
-    case gaphys::shape_kind::plane:
-      return "{\"kind\": \"plane\", \"normal\": " + json_vector(s->normal()) +
-             ", \"offset\": " + json_number(s->offset()) + "}";
-    case gaphys::shape_kind::point:
-      return "{\"kind\": \"point\"}";
-  }
-  throw std::logic_error("unknown shape kind");
-}
-
-// The scene: its names and every body, one a line, with its shape and its
+// The scene: its names and every body, one a line, with its shapes and its
 // pose at the start (a static body keeps it; the trajectory moves the others).
 void write_scene(std::ostream& out, const gaphys::world& world, const std::string& scene,
                  const std::string& description) {
   out << "{\"scene\": " << json_string(scene) << ", \"description\": " << json_string(description)
       << ", \"gravity\": " << json_vector(world.settings().gravity) << ", \"bodies\": [";
   for (gaphys::body_id id = 0; id < world.body_count(); ++id) {
-    const gaphys::body& b = world.bodies()[id];
-    out << (id == 0 ? "\n" : ",\n") << "{\"id\": " << id
-        << ", \"static\": " << (b.is_static() ? "true" : "false")
-        << ", \"shape\": " << json_shape(b.shape())
-        << ", \"position\": " << json_vector(b.position())
-        << ", \"attitude\": " << json_rotor(b.attitude()) << "}";
+    out << (id == 0 ? "\n" : ",\n") << json_body(world.at(id), id);
   }
   out << "\n]}";
 }

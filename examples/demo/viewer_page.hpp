@@ -1,6 +1,6 @@
 // The --html output: one self-contained page that plays a run in 3-D in a
 // browser, opened from disk with no server or network. It is viewer.html.in
-// with three.js, the scene (every body's shape and starting pose, static
+// with three.js, the scene (every body's shapes and starting pose, static
 // bodies included) and the trajectory (trajectory_writer's JSON document)
 // put in place of its placeholders. The page is written as the run goes: the
 // constructor writes everything before the trajectory, the caller streams the

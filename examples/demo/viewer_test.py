@@ -15,6 +15,17 @@
    <pre id="gaphys-state">, which --dump-dom prints. The images of the body's
    axes there must be those of the CSV's rotor R, x_world = R x_body ~R,
    computed here with a geometric product of its own.
+3. Compound bodies. compound_table (a table of five boxes as one body, and a
+   cube) is run with --out JSON, whose "bodies" give each body's shapes and
+   their poses in it; the JSON must hold the table as the scene describes it.
+   The paused page must hold one mesh per shape (and one per plane), and draw
+   each shape's centre at x + R p ~R: the body's pose from the JSON's frame,
+   the shape's offset p in the body from its "bodies".
+4. Boxes. box_pyramid is run for a moment (it stands still) with --out CSV
+   and --html; a screenshot with a fixed camera, the eye at the floor's
+   height, must show a box at the projected centre of some of the 55, and the
+   background just above the top one and beside the rows.
+Every page must load without a JavaScript error (Chromium's console log).
 
 Python 3 standard library only (the PNG decoder is below).
 """
@@ -43,6 +54,16 @@ TARGET = (0.6, 0.0, 1.6)
 FOV = 40.0
 SPHERE_RADIUS = 0.5  # gaphys::scenes::bouncing_sphere
 SPHERE_ID = 1        # after the floor
+# gaphys::scenes::compound_table: the top's half extents, and each leg's
+# centre relative to the top's (the legs 0.7 m long under a 0.06 m top).
+TABLE_TOP = (0.75, 0.45, 0.03)
+TABLE_LEGS = [(x, y, -0.38) for x in (-0.68, 0.68) for y in (-0.38, 0.38)]
+# gaphys::scenes::box_pyramid: 55 unit cubes; seen from the front with the
+# eye at the floor's height, the whole pyramid between the page's overlays.
+PYRAMID_BOXES = 55
+PYRAMID_EYE = (4.0, -30.0, 0.0)
+PYRAMID_TARGET = (0.0, 0.0, 4.5)
+PYRAMID_FOV = 45.0
 
 
 class Failure(Exception):
@@ -127,15 +148,15 @@ def unit(a):
     return tuple(x / n for x in a)
 
 
-def project(point, width, height):
-    """Pixel (x right, y down) and depth of a world point, for a camera at EYE
-    looking at TARGET with up +z and a vertical field of view FOV."""
-    forward = unit(sub(TARGET, EYE))
+def project(point, width, height, eye=EYE, target=TARGET, fov=FOV):
+    """Pixel (x right, y down) and depth of a world point, for a camera at eye
+    looking at target with up +z and a vertical field of view fov."""
+    forward = unit(sub(target, eye))
     right = unit(cross(forward, (0.0, 0.0, 1.0)))
     up = cross(right, forward)
-    offset = sub(point, EYE)
+    offset = sub(point, eye)
     depth = dot(offset, forward)
-    focal = (height / 2) / math.tan(math.radians(FOV) / 2)
+    focal = (height / 2) / math.tan(math.radians(fov) / 2)
     return (width / 2 + focal * dot(offset, right) / depth,
             height / 2 - focal * dot(offset, up) / depth, depth, focal)
 
@@ -174,6 +195,22 @@ def run(command, **kwargs):
     return result.stdout
 
 
+def run_page(chromium, work, *arguments):
+    """Chromium on a page with its console logged to stderr; the standard
+    output (the DOM with --dump-dom). A JavaScript error, uncaught or logged
+    (three.js logs failed shaders as errors), fails the test."""
+    command = chromium_command(chromium, work) + ["--enable-logging=stderr", "--v=0",
+                                                  *arguments]
+    result = subprocess.run(command, capture_output=True, text=True, timeout=120)
+    if result.returncode != 0:
+        raise Failure(f"{' '.join(command)} failed ({result.returncode}):\n{result.stderr}")
+    errors = [line for line in result.stderr.splitlines()
+              if ":CONSOLE" in line and ("Uncaught" in line or "Error" in line)]
+    if errors:
+        raise Failure(f"{arguments[-1]} logged JavaScript errors:\n" + "\n".join(errors))
+    return result.stdout
+
+
 def chromium_command(chromium, work):
     """Headless Chromium with WebGL on SwiftShader, its CPU renderer (the GPU,
     if any, is not used: the pixels are the same on every machine). Without a
@@ -184,6 +221,29 @@ def chromium_command(chromium, work):
             "--no-default-browser-check", "--disable-extensions", "--disable-dev-shm-usage",
             f"--user-data-dir={os.path.join(work, 'chromium-profile')}",
             f"--window-size={WIDTH},{HEIGHT}"]
+
+
+def page_state(chromium, work, page, fragment):
+    """What the paused page writes into <pre id="gaphys-state">."""
+    dom = run_page(chromium, work, "--dump-dom", page_url(page, fragment))
+    found = re.search(r'<pre id="gaphys-state"[^>]*>(.*?)</pre>', dom, re.S)
+    if not found or not found.group(1).strip():
+        raise Failure(f"{page}#{fragment} wrote no state")
+    return json.loads(html.unescape(found.group(1)))
+
+
+def screenshot(chromium, work, page, fragment, name):
+    """The page's pixels, rows[y][x]."""
+    path = os.path.join(work, name)
+    if os.path.exists(path):
+        os.remove(path)
+    run_page(chromium, work, f"--screenshot={path}", page_url(page, fragment))
+    if not os.path.exists(path):
+        raise Failure(f"Chromium took no screenshot of {page}#{fragment}")
+    width, height, rows = read_png(path)
+    if (width, height) != (WIDTH, HEIGHT):
+        raise Failure(f"{path} is {width}x{height}, not {WIDTH}x{HEIGHT}")
+    return rows
 
 
 def page_url(page, fragment):
@@ -227,22 +287,14 @@ def check_sphere_positions(args, work):
         raise Failure(f"the sphere moved too little to be told apart: {centres}")
     camera = "eye={},{},{}&target={},{},{}&fov={}".format(*EYE, *TARGET, FOV)
     for k, t in enumerate(times):
-        screenshot = os.path.join(work, f"bouncing_{k}.png")
-        if os.path.exists(screenshot):
-            os.remove(screenshot)
-        url = page_url(page, f"t={t!r}&paused&{camera}")
-        run(chromium_command(args.chromium, work) + [f"--screenshot={screenshot}", url])
-        if not os.path.exists(screenshot):
-            raise Failure(f"Chromium took no screenshot of {url}")
-        width, height, rows = read_png(screenshot)
-        if (width, height) != (WIDTH, HEIGHT):
-            raise Failure(f"{screenshot} is {width}x{height}, not {WIDTH}x{HEIGHT}")
-        u, v, depth, focal = project(centres[k], width, height)
+        rows = screenshot(args.chromium, work, page, f"t={t!r}&paused&{camera}",
+                          f"bouncing_{k}.png")
+        u, v, depth, focal = project(centres[k], WIDTH, HEIGHT)
         radius = focal * SPHERE_RADIUS / depth  # in pixels, near enough
         inside = [(u, v)] + [(u + 0.5 * radius * dx, v + 0.5 * radius * dy)
                              for dx, dy in ((1, 0), (-1, 0), (0, 1), (0, -1))]
         outside = [(u + 1.6 * radius, v), (u - 1.6 * radius, v), (u, v - 1.6 * radius)]
-        other = project(centres[1 - k], width, height)
+        other = project(centres[1 - k], WIDTH, HEIGHT)
         outside.append((other[0], other[1]))
         print(f"t = {t}: sphere at {centres[k]}, projected to ({u:.1f}, {v:.1f}), "
               f"radius {radius:.1f} px")
@@ -250,7 +302,7 @@ def check_sphere_positions(args, work):
         for points, expected in ((inside, "sphere"), (outside, "background")):
             for x, y in points:
                 px, py = int(round(x)), int(round(y))
-                if not (0 <= px < width and TOP_MARGIN <= py < height - BOTTOM_MARGIN):
+                if not (0 <= px < WIDTH and TOP_MARGIN <= py < HEIGHT - BOTTOM_MARGIN):
                     raise Failure(f"the test's camera puts ({px}, {py}) off the checked area")
                 colour = rows[py][px]
                 # Background within 12 of the page's; sphere more than 40 away.
@@ -261,7 +313,7 @@ def check_sphere_positions(args, work):
                 wrong += not good
                 print(f"  ({px}, {py}): {colour}, {expected} expected{'' if good else ' <- WRONG'}")
         if wrong:
-            raise Failure(f"{screenshot} does not show the sphere where it is at t = {t}")
+            raise Failure(f"bouncing_{k}.png does not show the sphere where it is at t = {t}")
 
 
 def check_attitudes(args, work):
@@ -271,12 +323,7 @@ def check_attitudes(args, work):
     poses = trajectory(csv_path, 0)
     for wanted in (0.5, 0.9):
         t = nearest(poses, wanted)
-        dom = run(chromium_command(args.chromium, work) + ["--dump-dom",
-                                                           page_url(page, f"t={t!r}&paused")])
-        found = re.search(r'<pre id="gaphys-state"[^>]*>(.*?)</pre>', dom, re.S)
-        if not found or not found.group(1).strip():
-            raise Failure(f"the page at t = {t} wrote no state")
-        state = json.loads(html.unescape(found.group(1)))
+        state = page_state(args.chromium, work, page, f"t={t!r}&paused")
         (body,) = state["bodies"]
         position, rotor = poses[t]
         worst = max(abs(a - b) for a, b in zip(body["position"], position))
@@ -290,6 +337,97 @@ def check_attitudes(args, work):
                           f"{rotor} (off by {worst})")
 
 
+def check_compound(args, work):
+    json_path, page = os.path.join(work, "table.json"), os.path.join(work, "table.html")
+    run([args.demo, "--scene", "compound_table", "--steps", "240", "--every", "24",
+         "--out", json_path, "--html", page])
+    with open(json_path) as f:
+        document = json.load(f)
+    bodies = {body["id"]: body for body in document["bodies"]}
+    tables = [body for body in bodies.values() if len(body["shapes"]) == 5]
+    if len(tables) != 1:
+        raise Failure(f"{json_path}: {len(tables)} bodies of five shapes, not one table")
+    top, *legs = tables[0]["shapes"]
+    worst = max(abs(a - b) for a, b in zip(top["half_extents"], TABLE_TOP))
+    for leg, expected in zip(legs, TABLE_LEGS):
+        worst = max(worst, *(abs(a - b - c) for a, b, c in
+                             zip(leg["position"], top["position"], expected)))
+    kinds = [shape["kind"] for shape in tables[0]["shapes"]]
+    if kinds != ["box"] * 5 or worst > 1e-6:
+        raise Failure(f"{json_path} holds a table of {kinds}, top {top}, legs {legs}: not the "
+                      f"scene's (off by {worst})")
+    print(f"the table's top and legs are where the scene puts them (within {worst:.2g} m)")
+
+    for wanted in (0.3, 1.0):  # falling; then landed, the cube on it
+        frame = min(document["frames"], key=lambda frame: abs(frame["time"] - wanted))
+        t = frame["time"]
+        state = page_state(args.chromium, work, page, f"t={t!r}&paused")
+        # One mesh per shape; a plane, its body's only shape, is one mesh too.
+        meshes = sum(len(body["shapes"]) for body in bodies.values())
+        if state["meshes"] != meshes:
+            raise Failure(f"at t = {t} the page holds {state['meshes']} meshes, not {meshes}")
+        if len(state["bodies"]) != len(frame["bodies"]):
+            raise Failure(f"at t = {t} the page draws {len(state['bodies'])} moving bodies, "
+                          f"not {len(frame['bodies'])}")
+        worst = 0.0
+        for drawn, pose in zip(state["bodies"], frame["bodies"]):
+            shapes = bodies[pose["id"]]["shapes"]
+            kinds = [part["kind"] for part in drawn["parts"]]
+            if drawn["id"] != pose["id"] or kinds != [shape["kind"] for shape in shapes]:
+                raise Failure(f"at t = {t} body {drawn['id']} is drawn as {kinds}; body "
+                              f"{pose['id']} has {[shape['kind'] for shape in shapes]}")
+            for part, shape in zip(drawn["parts"], shapes):
+                offset = rotate(pose["attitude"], shape["position"])
+                expected = [x + r for x, r in zip(pose["position"], offset)]
+                worst = max(worst, *(abs(a - b) for a, b in zip(part["position"], expected)))
+        print(f"t = {t}: {state['meshes']} meshes; each shape drawn at x + R p ~R "
+              f"(within {worst:.2g} m)")
+        if worst > 1e-5:
+            raise Failure(f"at t = {t} the page draws shapes off their poses by {worst} m")
+
+
+def check_boxes(args, work):
+    csv_path, page = os.path.join(work, "pyramid.csv"), os.path.join(work, "pyramid.html")
+    run([args.demo, "--scene", "box_pyramid", "--steps", "48", "--every", "24",
+         "--out", csv_path, "--html", page])
+    with open(csv_path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    t = max(float(row["time"]) for row in rows)
+    centres = [tuple(float(row[k]) for k in ("x", "y", "z"))
+               for row in rows if float(row["time"]) == t]
+    if len(centres) != PYRAMID_BOXES:
+        raise Failure(f"{csv_path} has {len(centres)} boxes at t = {t}, not {PYRAMID_BOXES}")
+    fragment = f"t={t!r}&paused&eye={{}},{{}},{{}}&target={{}},{{}},{{}}&fov={{}}".format(
+        *PYRAMID_EYE, *PYRAMID_TARGET, PYRAMID_FOV)
+    state = page_state(args.chromium, work, page, fragment)
+    if state["meshes"] != PYRAMID_BOXES + 1:  # and the floor
+        raise Failure(f"the pyramid's page holds {state['meshes']} meshes, not "
+                      f"{PYRAMID_BOXES + 1}")
+    pixels = screenshot(args.chromium, work, page, fragment, "pyramid.png")
+    bottom = [c for c in centres if c[2] < 1]
+    top = max(centres, key=lambda c: c[2])
+    middle_row = [c for c in centres if 5 < c[2] < 6]
+    boxes = [min(bottom), max(bottom), top, min(centres, key=lambda c: math.dist(c, (0, 0, 5)))]
+    # 0.7 m above the top cube, and 1.2 m beside the ends of the row at 5.5 m.
+    background = [(top[0], top[1], top[2] + 1.2),
+                  (min(middle_row)[0] - 1.2, 0.0, 5.5), (max(middle_row)[0] + 1.2, 0.0, 5.5)]
+    wrong = 0
+    for points, expected in ((boxes, "box"), (background, "background")):
+        for point in points:
+            u, v, _, _ = project(point, WIDTH, HEIGHT, PYRAMID_EYE, PYRAMID_TARGET, PYRAMID_FOV)
+            px, py = int(round(u)), int(round(v))
+            if not (0 <= px < WIDTH and TOP_MARGIN <= py < HEIGHT - BOTTOM_MARGIN):
+                raise Failure(f"the test's camera puts ({px}, {py}) off the checked area")
+            colour = pixels[py][px]
+            good = (far_from(colour, BACKGROUND, 40) if expected == "box"
+                    else not far_from(colour, BACKGROUND, 12))
+            wrong += not good
+            print(f"  {tuple(round(x, 3) for x in point)} at ({px}, {py}): {colour}, {expected} "
+                  f"expected{'' if good else ' <- WRONG'}")
+    if wrong:
+        raise Failure(f"pyramid.png does not show the boxes where they are at t = {t}")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--demo", required=True, help="gaphys_demo")
@@ -301,10 +439,13 @@ def main():
     try:
         check_sphere_positions(args, args.work)
         check_attitudes(args, args.work)
+        check_compound(args, args.work)
+        check_boxes(args, args.work)
     except Failure as failure:
         print(f"FAILED: {failure}", file=sys.stderr)
         return 1
-    print("the viewer draws the sphere where it is and turns bodies as their rotors do")
+    print("the viewer draws the sphere where it is, turns bodies as their rotors do, puts each "
+          "shape of a compound body at its pose, and draws boxes where they are")
     return 0
 
 
