@@ -2,6 +2,7 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -41,7 +42,8 @@ struct bullet_scene {
   btCollisionDispatcher dispatcher{&configuration};
   btDbvtBroadphase broadphase;
   btSequentialImpulseConstraintSolver solver;
-  std::map<double, std::unique_ptr<btSphereShape>> spheres;  // one shape per radius
+  std::map<double, std::unique_ptr<btSphereShape>> spheres;            // one shape per radius
+  std::map<std::array<double, 3>, std::unique_ptr<btBoxShape>> boxes;  // one per size
   std::vector<std::unique_ptr<btCollisionShape>> other_shapes;
   std::vector<std::unique_ptr<btRigidBody>> bodies;  // planes first, then the scene's bodies
   std::unique_ptr<btDiscreteDynamicsWorld> world;
@@ -81,13 +83,17 @@ class bullet_adapter final : public engine_adapter {
         auto& sphere = b.spheres[d.radius];
         if (!sphere) sphere = std::make_unique<btSphereShape>(btScalar(d.radius));
         shape = sphere.get();
+      } else if (d.is_box()) {
+        auto& box = b.boxes[{d.half_extents.x, d.half_extents.y, d.half_extents.z}];
+        if (!box) box = std::make_unique<btBoxShape>(to_bullet(d.half_extents));
+        shape = box.get();
       } else {
         // A body without a shape: Bullet needs one, the empty shape collides with nothing.
         b.other_shapes.push_back(std::make_unique<btEmptyShape>());
         shape = b.other_shapes.back().get();
       }
       add_body(d.is_static ? 0 : d.mass, shape, d.inertia, d.position, d.velocity,
-               d.angular_velocity, d.restitution, d.friction);
+               d.angular_velocity, d.restitution, d.friction, d.attitude);
     }
   }
 
@@ -108,11 +114,13 @@ class bullet_adapter final : public engine_adapter {
  private:
   void add_body(double mass, btCollisionShape* shape, const vec3& inertia, const vec3& position,
                 const vec3& velocity, const vec3& angular_velocity, double restitution,
-                double friction) {
+                double friction, const quat& attitude = {}) {
     btRigidBody::btRigidBodyConstructionInfo info(
         btScalar(mass), nullptr, shape, mass > 0 ? to_bullet(inertia) : btVector3(0, 0, 0));
     info.m_startWorldTransform.setIdentity();
     info.m_startWorldTransform.setOrigin(to_bullet(position));
+    info.m_startWorldTransform.setRotation(btQuaternion(
+        btScalar(attitude.x), btScalar(attitude.y), btScalar(attitude.z), btScalar(attitude.w)));
     // Sliding friction as the scene says (0 unless an F scene sets it; Bullet's
     // default would be 0.5); rolling and spinning friction never.
     info.m_friction = friction_of(friction);
@@ -141,6 +149,7 @@ class bullet_adapter final : public engine_adapter {
 engine bullet_engine() {
   const btSphereShape sphere(btScalar(0.1));
   const btStaticPlaneShape plane(btVector3(0, 0, 1), 0);
+  const btBoxShape box(btVector3(btScalar(0.5), btScalar(0.5), btScalar(0.5)));
   const btContactSolverInfo defaults;
   const btRigidBody::btRigidBodyConstructionInfo default_body(1, nullptr, nullptr);
   const double default_friction = default_body.m_friction;
@@ -166,8 +175,8 @@ engine bullet_engine() {
        {"friction",
         "sqrt(mu) per shape (0 in M1-M6, Bullet default " + number(default_friction) +
             "); Bullet multiplies the pair's values",
-        "product = mu for every pair in F1-F5 (all shapes of a scene share mu), as gaphys's "
-        "geometric mean gives"},
+        "product = mu for every pair in F1-F5 and B1-B5 (all shapes of a scene share mu), as "
+        "gaphys's geometric mean gives"},
        {"friction model",
         "one friction row per contact point, along its slip before the solve (below sqrt("
         "SIMD_EPSILON) = " +
@@ -179,8 +188,10 @@ engine bullet_engine() {
        {"gyroscopic", "BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY", "Bullet's default, for M1"},
        {"margins",
         "sphere " + number(sphere.getMargin()) + " m (= r: the whole sphere is margin), plane " +
-            number(plane.getMargin()) + " m",
-        "shape defaults"},
+            number(plane.getMargin()) + " m, box " + number(box.getMargin()) +
+            " m inside its half extents (the box keeps its size; its edges and corners are "
+            "rounded by the margin where Bullet uses support points, as against planes)",
+        "shape defaults; btBoxShape(half extents)"},
        {"warm starting", "factor " + number(defaults.m_warmstartingFactor), "default"},
        {"CCD", "off", "default; gaphys and ODE have none"}},
       [] { return std::make_unique<bullet_adapter>(); }};

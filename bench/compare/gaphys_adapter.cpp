@@ -20,6 +20,9 @@ vec3 to_vec3(const gaphys::vector& v) { return {v.c[0], v.c[1], v.c[2]}; }
 // then sqrt(R ~R), the rotor's norm.
 quat to_quat(const gaphys::rotor& r) { return {r.c[0], -r.c[3], r.c[2], -r.c[1]}; }
 
+// The inverse of to_quat: (w, x, y, z) -> (w, e12 = -z, e13 = y, e23 = -x).
+gaphys::rotor to_rotor(const quat& q) { return {q.w, -q.z, q.y, -q.x}; }
+
 // ω = ωx e23 + ωy e31 + ωz e12 as a bivector with coordinates (e12, e13, e23).
 gaphys::bivector to_bivector(const vec3& w) { return {w.z, -w.y, w.x}; }
 vec3 axis_of(const gaphys::bivector& b) { return {b.c[2], -b.c[1], b.c[0]}; }
@@ -56,10 +59,14 @@ class gaphys_adapter final : public engine_adapter {
         d.inertia = gaphys::inertia::principal(b.inertia.x, b.inertia.y, b.inertia.z);
       }
       d.position = to_gaphys(b.position);
+      d.attitude = to_rotor(b.attitude);
       d.velocity = to_gaphys(b.velocity);
       d.angular_velocity = to_bivector(b.angular_velocity);
       if (b.radius > 0) {
         d.shape = with_surface(gaphys::shape::sphere(b.radius), b.restitution, b.friction);
+      } else if (b.is_box()) {
+        d.shape =
+            with_surface(gaphys::shape::box(to_gaphys(b.half_extents)), b.restitution, b.friction);
       }
       world_->create_body(d);
     }
@@ -111,9 +118,13 @@ engine gaphys_engine() {
         number(100 * defaults.position_correction) + "% of depth beyond " +
             number(1000 * defaults.linear_slop) + " mm per step, positions only",
         "default; adds no kinetic energy"},
+       {"shapes",
+        "shape::sphere, shape::box(half extents), shape::plane; the inertia of each body is "
+        "given (the solid's, which is also gaphys's default)",
+        "the scene's shapes, no margin"},
        {"friction",
-        "with_friction(mu) on every sphere and plane: 0 in M1-M6, the scene's mu in F1-F5; a "
-        "pair's mu is the " +
+        "with_friction(mu) on every shape and plane: 0 in M1-M6, the scene's mu in F1-F5 and "
+        "B1-B5; a pair's mu is the " +
             rule_name(defaults.material_combine.friction) +
             " of its shapes'; Coulomb cone |impulse_t| <= mu impulse_n (material.hpp)",
         "default combine rule; both shapes get the scene's mu, so every pair gets mu"},

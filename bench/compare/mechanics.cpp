@@ -1,7 +1,5 @@
 #include "mechanics.hpp"
 
-#include <algorithm>
-
 namespace gaphys_compare {
 
 vec3 angular_momentum(const body_description& body, const body_state& state) {
@@ -31,23 +29,6 @@ double total_kinetic_energy(const scene& s, const std::vector<body_state>& state
     energy += kinetic_energy(s.bodies[i], states[i]);
   }
   return energy;
-}
-
-double deepest_overlap(const scene& s, const std::vector<body_state>& states) {
-  double deepest = 0;
-  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
-    const double r = s.bodies[i].radius;
-    if (r == 0) continue;
-    for (const plane_description& p : s.planes) {
-      deepest = std::max(deepest, r - (dot(p.normal, states[i].position) - p.offset));
-    }
-    for (std::size_t j = i + 1; j < s.bodies.size(); ++j) {
-      if (s.bodies[j].radius == 0) continue;
-      const double gap = norm(states[i].position - states[j].position);
-      deepest = std::max(deepest, r + s.bodies[j].radius - gap);
-    }
-  }
-  return deepest;
 }
 
 vec3 contact_slip(const body_description& sphere, const body_state& state,

@@ -1,4 +1,4 @@
-// Energies, momenta and overlaps computed from body states, one way for every
+// Energies, momenta and contact slip computed from body states, one way for every
 // engine: the engines' own energy reports (where they have one) differ in
 // what they include, so the harness never asks for them.
 #pragma once
@@ -19,11 +19,6 @@ double kinetic_energy(const body_description& body, const body_state& state);
 // Sums over the scene's dynamic bodies.
 vec3 total_momentum(const scene& s, const std::vector<body_state>& states);
 double total_kinetic_energy(const scene& s, const std::vector<body_state>& states);
-
-// The deepest overlap of any sphere with a plane or another sphere (m,
-// >= 0): r - (n · x - offset) for a plane, r_a + r_b - |x_a - x_b| for two
-// spheres. All pairs: for the small scenes it is used on.
-double deepest_overlap(const scene& s, const std::vector<body_state>& states);
 
 // The velocity, in the plane's tangent plane, of the sphere's point nearest
 // the (static) plane: v + ω × (-r n), its normal part removed. Zero when the

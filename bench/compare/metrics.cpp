@@ -20,6 +20,14 @@ const std::vector<metric>& all_metrics() {
        friction_isotropy},
       {"f5", "F5", "M6 with friction 0.5 on every sphere and plane: wall time per step",
        friction_step_time},
+      {"b1", "B1", "unit box (1 kg) on a 20 deg slope: held (mu 0.5, 5 s), sliding (mu 0.2, 2 s)",
+       box_incline},
+      {"b2", "B2", "unit box sliding at 3 m/s on a floor, mu 0.4, to a stop (3 s)", sliding_box},
+      {"b3", "B3", "tower of 10 unit boxes, exactly touching, mu 0.5: drift", box_tower},
+      {"b4", "B4", "pyramid of 55 unit boxes (base 10, 5 mm gaps in a row), mu 0.5: drift",
+       box_pyramid},
+      {"b5", "B5", "N boxes (half extent 0.25, mu 0.5) falling into M6's box: wall time per step",
+       falling_boxes},
   };
   return metrics;
 }

@@ -1,6 +1,6 @@
 // The metrics of the comparison, each written once against engine_adapter
 // and run on every engine with the same scene and step: M1-M6 frictionless,
-// F1-F5 with Coulomb friction.
+// F1-F5 with Coulomb friction, B1-B5 boxes (with friction).
 #pragma once
 
 #include <functional>
@@ -40,6 +40,16 @@ void incline(const engine& e, const options& o, recorder& out);
 void friction_isotropy(const engine& e, const options& o, recorder& out);
 // F5: M6's wall time per step with friction 0.5 on every shape.
 void friction_step_time(const engine& e, const options& o, recorder& out);
+// B1: a unit box on a 20 degree slope: held (mu 0.5) or sliding (mu 0.2).
+void box_incline(const engine& e, const options& o, recorder& out);
+// B2: a unit box sliding to a stop, along a face normal and at 45 degrees.
+void sliding_box(const engine& e, const options& o, recorder& out);
+// B3: a tower of 10 unit boxes: drift over --stack-seconds.
+void box_tower(const engine& e, const options& o, recorder& out);
+// B4: a pyramid of 55 unit boxes: drift over --stack-seconds.
+void box_pyramid(const engine& e, const options& o, recorder& out);
+// B5: N boxes falling into M6's box: wall time per step, depth, energy.
+void falling_boxes(const engine& e, const options& o, recorder& out);
 
 struct metric {
   std::string id;     // "m1": the --metrics name

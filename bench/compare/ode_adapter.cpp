@@ -28,6 +28,10 @@ constexpr double linear_slop = 0.0005;         // m: ODE's contact surface layer
 // energy lost in the head-on impact and 17% of the apex over 20 elastic
 // bounces, so it would blur exactly what M2 and M3 measure.
 constexpr double constraint_force_mixing = 1e-10;
+// Contact points asked of dCollide per pair: a box's face on a face needs 4
+// (dBoxBox finds up to 8 and, asked for fewer, keeps the deepest and others
+// spread around it).
+constexpr int max_contacts = 4;
 
 // ODE prints solver trouble ("LCP internal error") as messages and carries
 // on without the failed contact forces. They are counted here and reported
@@ -63,6 +67,10 @@ class ode_adapter final : public engine_adapter {
   void build(const scene& s) override {
     clear();
     scene_name_ = s.name;
+    // QuickStep reorders its constraints at random, from a generator shared
+    // by the whole process; starting it from its initial seed (0) in every
+    // scene makes ODE's numbers independent of which scenes ran before.
+    dRandSetSeed(0);
     world_ = dWorldCreate();
     dWorldSetGravity(world_, s.gravity.x, s.gravity.y, s.gravity.z);
     dWorldSetERP(world_, position_correction);
@@ -121,20 +129,27 @@ class ode_adapter final : public engine_adapter {
       dMassSetParameters(&mass, d.mass, 0, 0, 0, d.inertia.x, d.inertia.y, d.inertia.z, 0, 0, 0);
       dBodySetMass(body, &mass);
       dBodySetPosition(body, d.position.x, d.position.y, d.position.z);
+      const dQuaternion attitude{d.attitude.w, d.attitude.x, d.attitude.y, d.attitude.z};
+      dBodySetQuaternion(body, attitude);
       dBodySetLinearVel(body, d.velocity.x, d.velocity.y, d.velocity.z);
       dBodySetAngularVel(body, d.angular_velocity.x, d.angular_velocity.y, d.angular_velocity.z);
       dBodySetAutoDisableFlag(body, 0);
       dBodySetGyroscopicMode(body, 1);  // ODE 0.16's default, stated because M1 depends on it
     }
     dGeomID geom = nullptr;
-    if (d.radius > 0) {
-      geom = dCreateSphere(space_, d.radius);
+    if (d.has_shape()) {
+      // dCreateBox takes the full side lengths.
+      geom = d.is_box() ? dCreateBox(space_, 2 * d.half_extents.x, 2 * d.half_extents.y,
+                                     2 * d.half_extents.z)
+                        : dCreateSphere(space_, d.radius);
       surfaces_.push_back({d.restitution, d.friction});
       dGeomSetData(geom, &surfaces_.back());
       if (body) {
         dGeomSetBody(geom, body);
       } else {
         dGeomSetPosition(geom, d.position.x, d.position.y, d.position.z);
+        const dQuaternion attitude{d.attitude.w, d.attitude.x, d.attitude.y, d.attitude.z};
+        dGeomSetQuaternion(geom, attitude);
       }
     }
     bodies_.push_back(body);
@@ -152,7 +167,6 @@ class ode_adapter final : public engine_adapter {
     auto& self = *static_cast<ode_adapter*>(data);
     const dBodyID body_a = dGeomGetBody(a), body_b = dGeomGetBody(b);
     if (!body_a && !body_b) return;
-    constexpr int max_contacts = 4;
     dContact contact[max_contacts];
     const int count = dCollide(a, b, max_contacts, &contact[0].geom, sizeof(dContact));
     const geom_surface& sa = *static_cast<const geom_surface*>(dGeomGetData(a));
@@ -194,7 +208,7 @@ class ode_adapter final : public engine_adapter {
     double restitution;
     double friction;
   };
-  std::vector<geom_surface> surfaces_;  // per geom: the planes', then the spheres'
+  std::vector<geom_surface> surfaces_;  // per geom: the planes', then the bodies'
   std::vector<dBodyID> bodies_;         // per scene body; null for static ones
   std::vector<dGeomID> geoms_;          // per scene body; null without a shape
 };
@@ -217,14 +231,19 @@ engine ode_engine(ode_stepper stepper) {
              : "dWorldStep (direct LCP per island)",
        quick ? "the iterative stepper applications use; 20 = gaphys's sweeps"
              : "exact LCP solve, for reference; cost grows as n^3"},
-      {"space", "dSweepAndPruneSpaceCreate(XYZ)", "a broad phase for M6"},
+      {"space", "dSweepAndPruneSpaceCreate(XYZ)", "a broad phase for M6 and B5"},
+      {"shapes",
+       "dCreateSphere, dCreateBox (full side lengths), dCreatePlane; mass and principal inertia "
+       "by dMassSetParameters (a box's equal dMassSetBox's); at most " +
+           number(max_contacts) + " contact points per pair",
+       "the scene's shapes; 4 points hold a face on a face"},
       {"contacts",
        "dContactBounce | dContactApprox1, bounce = max(e_a, e_b), bounce_vel " +
            number(restitution_threshold) + " m/s",
        "gaphys's restitution rule and threshold"},
       {"friction",
        "mu = sqrt(mu_a mu_b) set in the near callback: 0 in M1-M6 (no friction rows), the "
-       "scene's mu in F1-F5",
+       "scene's mu in F1-F5 and B1-B5",
        "gaphys's geometric mean; both geoms get the scene's mu, so every pair gets mu"},
       {"friction model",
        "dContactApprox1: two rows along ODE's own tangent axes (dPlaneSpace of the normal; no "
@@ -234,6 +253,9 @@ engine ode_engine(ode_stepper stepper) {
        "has no cone; left as ODE gives it"},
       {"rolling friction", "off (no dContactRolling)",
        "the F scenes measure sliding friction only"},
+      {"random seed", "dRandSetSeed(0) as each scene is built",
+       "QuickStep shuffles constraints with ODE's process-wide generator: the same numbers "
+       "whatever ran before"},
       {"ERP / surface layer", number(position_correction) + " / " + number(linear_slop) + " m",
        "gaphys's 20% per step beyond 0.5 mm; ODE corrects through velocity (adds energy)"},
       {"CFM", number(constraint_force_mixing),

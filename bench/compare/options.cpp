@@ -43,8 +43,8 @@ int to_count(const std::string& flag, const std::string& text) {
 const char* usage() {
   return "usage: compare_engines [flags]\n"
          "  --engines LIST        gaphys,bullet,ode-quick,ode-lcp (default: all)\n"
-         "  --metrics LIST        m1,m2,m3,m4,m5,m6 (frictionless), f1,f2,f3,f4,f5 (friction)\n"
-         "                        (default: all)\n"
+         "  --metrics LIST        m1,m2,m3,m4,m5,m6 (frictionless), f1,f2,f3,f4,f5 (friction),\n"
+         "                        b1,b2,b3,b4,b5 (boxes) (default: all)\n"
          "  --m1-steps N          free rotation steps (10000)\n"
          "  --m5-speeds LIST      projectile speeds, m/s (1,2,5,10,20,50,100,200,500)\n"
          "  --m6-sizes LIST       sphere counts (100,300,1000,3000,10000)\n"
@@ -53,10 +53,16 @@ const char* usage() {
          "  --m6-steps N          steps timed per size (100)\n"
          "  --m6-step-budget S    skip a size (and larger) when one step takes > S s (2)\n"
          "  --m6-size-budget S    stop timing a size after S s of timed steps (60)\n"
+         "  --stack-seconds S     simulated time of the box tower and pyramid, B3 and B4 (10)\n"
+         "  --b5-sizes LIST       box counts of B5, boxes falling into M6's box (100,1000)\n"
+         "  --b5-warmup N         B5 steps before timing (360)\n"
+         "  --b5-steps N          B5 steps timed (360)\n"
+         "  --box-budget S        skip a B3-B5 run (and larger B5 sizes) after S s of wall time\n"
+         "                        or a step longer than --m6-step-budget (60)\n"
          "  --out-dir DIR         results.csv, results.json, plots (compare-results)\n"
          "  --no-plots            do not run gnuplot\n"
          "The --m6-warmup, --m6-steps and --m6-*-budget flags time F5 too; F1-F4 (one\n"
-         "ball each, at most 3 s of steps) have no flags.\n";
+         "ball each, at most 3 s of steps) and B1-B2 (one box, at most 5 s) have no flags.\n";
 }
 
 options parse_options(int argc, char** argv) {
@@ -96,6 +102,17 @@ options parse_options(int argc, char** argv) {
       o.m6_step_budget = to_number(flag, value);
     } else if (flag == "--m6-size-budget") {
       o.m6_size_budget = to_number(flag, value);
+    } else if (flag == "--stack-seconds") {
+      o.stack_seconds = to_number(flag, value);
+    } else if (flag == "--b5-sizes") {
+      o.b5_sizes.clear();
+      for (const std::string& item : split(value)) o.b5_sizes.push_back(to_count(flag, item));
+    } else if (flag == "--b5-warmup") {
+      o.b5_warmup = to_count(flag, value);
+    } else if (flag == "--b5-steps") {
+      o.b5_steps = to_count(flag, value);
+    } else if (flag == "--box-budget") {
+      o.box_budget = to_number(flag, value);
     } else if (flag == "--out-dir") {
       o.out_dir = value;
     } else {

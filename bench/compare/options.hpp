@@ -10,7 +10,7 @@ namespace gaphys_compare {
 
 struct options {
   std::vector<std::string> engines;  // empty: all
-  std::vector<std::string> metrics;  // empty: all (m1 .. m6, f1 .. f5)
+  std::vector<std::string> metrics;  // empty: all (m1 .. m6, f1 .. f5, b1 .. b5)
   int m1_steps = 10000;
   std::vector<double> m5_speeds{1, 2, 5, 10, 20, 50, 100, 200, 500};  // m/s
   std::vector<int> m6_sizes{100, 300, 1000, 3000, 10000};
@@ -23,6 +23,16 @@ struct options {
   // 10 steps) once its timed steps add up to m6_size_budget seconds.
   double m6_step_budget = 2;
   double m6_size_budget = 60;
+  // The box scenes: B3 and B4 stand for stack_seconds; B5 runs b5_warmup
+  // steps (the boxes land), then times b5_steps more. A B3-B5 run whose
+  // wall time passes box_budget seconds, or one of whose steps takes longer
+  // than m6_step_budget, is abandoned and reported as skipped (with every
+  // larger B5 size), since numbers from a shorter run would not compare.
+  double stack_seconds = 10;
+  std::vector<int> b5_sizes{100, 1000};
+  int b5_warmup = 360;  // 1.5 s
+  int b5_steps = 360;   // 1.5 s
+  double box_budget = 60;
   std::string out_dir = "compare-results";
   bool plots = true;
   bool help = false;

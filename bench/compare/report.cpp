@@ -133,7 +133,10 @@ void write_json(const std::string& path, const options& o, const std::vector<eng
   file << "  \"options\": {\"m1_steps\": " << o.m1_steps << ", \"m6_warmup\": " << o.m6_warmup
        << ", \"m6_steps\": " << o.m6_steps
        << ", \"m6_step_budget\": " << json_number(o.m6_step_budget)
-       << ", \"m6_size_budget\": " << json_number(o.m6_size_budget) << "},\n";
+       << ", \"m6_size_budget\": " << json_number(o.m6_size_budget)
+       << ", \"stack_seconds\": " << json_number(o.stack_seconds)
+       << ", \"b5_warmup\": " << o.b5_warmup << ", \"b5_steps\": " << o.b5_steps
+       << ", \"box_budget\": " << json_number(o.box_budget) << "},\n";
   file << "  \"engines\": [";
   for (std::size_t i = 0; i < engines.size(); ++i) {
     const engine& e = engines[i];

@@ -6,6 +6,7 @@
 
 #include "mechanics.hpp"
 #include "metrics.hpp"
+#include "overlap.hpp"
 #include "scenes.hpp"
 
 namespace gaphys_compare {

@@ -58,7 +58,34 @@ scene sphere_on_incline(double degrees, double mu);
 // The direction down the slope of sphere_on_incline(degrees, ...).
 vec3 down_the_incline(double degrees);
 
-// s with friction mu on every plane and sphere (F5: M6's scene with friction).
+// s with friction mu on every plane and shape (F5: M6's scene with friction).
 scene with_friction(scene s, double mu);
+
+// The box scenes (B1-B5): solid boxes of 1 kg, e 0, friction mu on every
+// box and plane, under gravity 9.81 along -z. A "unit box" has half extents 0.5.
+
+// B1: a unit box at rest with a face flat on a static plane through the
+// origin tilted by `degrees` about y (the plane of sphere_on_incline),
+// touching it: the box is turned by the same angle.
+scene box_on_incline(double degrees, double mu);
+
+// B2: a unit box resting on the floor z = 0, turned by `yaw_degrees` about z,
+// sliding at `speed` along x without spin.
+scene sliding_box(double speed, double yaw_degrees, double mu);
+
+// B3: count unit boxes stacked on the floor, exactly touching (centres at
+// z = 0.5 + i), aligned with the axes.
+scene box_tower(int count, double mu);
+
+// B4: a pyramid of unit boxes in the x-z plane: rows of base, base - 1, ...,
+// 1 boxes, neighbours in a row `gap` apart, each box centred over the gap
+// between the two below it and touching them (no vertical gap).
+scene box_pyramid(int base, double gap, double mu);
+
+// B5: count boxes (half extents 0.25) falling into M6's open box of five
+// planes, spawned as M6 spawns its spheres with the sphere's radius replaced
+// by the box's circumradius (so no two start overlapping, whatever their
+// attitudes): a jittered grid of pitch 3 r, at random attitudes.
+scene falling_boxes(int count, double mu, unsigned seed = 1);
 
 }  // namespace gaphys_compare

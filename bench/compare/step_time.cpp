@@ -6,7 +6,6 @@
 // F5 is the same scene and timing with friction 0.5 on every sphere and
 // plane: the friction rows' cost at the same contact count.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <string>
@@ -15,24 +14,11 @@
 #include "metrics.hpp"
 #include "number.hpp"
 #include "scenes.hpp"
+#include "timing.hpp"
 
 namespace gaphys_compare {
 
 namespace {
-
-using clock = std::chrono::steady_clock;
-
-double timed_step(engine_adapter& adapter) {
-  const auto start = clock::now();
-  adapter.step(time_step);
-  return std::chrono::duration<double>(clock::now() - start).count();
-}
-
-// The nearest-rank percentile of sorted samples.
-double percentile(const std::vector<double>& sorted, double p) {
-  const auto rank = static_cast<std::size_t>(std::ceil(p * static_cast<double>(sorted.size())));
-  return sorted[std::max<std::size_t>(rank, 1) - 1];
-}
 
 // Times the falling-spheres scene at each size with friction mu; `metric`
 // only names the progress lines.
@@ -56,7 +42,7 @@ void time_steps(const engine& e, const options& o, recorder& out, const std::str
     std::vector<double> samples;
     double timed = 0;
     for (int i = 0; i < o.m6_warmup + o.m6_steps && !too_slow; ++i) {
-      const double seconds = timed_step(*adapter);
+      const double seconds = timed_step(*adapter, time_step);
       too_slow = seconds > o.m6_step_budget;
       if (i < o.m6_warmup) continue;
       samples.push_back(seconds);
@@ -70,7 +56,6 @@ void time_steps(const engine& e, const options& o, recorder& out, const std::str
       out.add_missing(label, "mean height at end (m)", "skipped");
       continue;
     }
-    std::sort(samples.begin(), samples.end());
     out.add(label, "median ms/step", 1e3 * percentile(samples, 0.5));
     out.add(label, "p99 ms/step", 1e3 * percentile(samples, 0.99));
     out.add_detail(label, "steps timed", static_cast<double>(samples.size()));

@@ -43,4 +43,23 @@ inline vec3 rotate(const quat& q, const vec3& v) {
 
 inline quat conjugate(const quat& q) { return {q.w, -q.x, -q.y, -q.z}; }
 
+// The rotation by angle (rad) about the unit axis: cos(angle/2) + sin(angle/2) axis.
+inline quat about_axis(const vec3& axis, double angle) {
+  const double s = std::sin(angle / 2);
+  return {std::cos(angle / 2), s * axis.x, s * axis.y, s * axis.z};
+}
+
+// a b: b's rotation first, then a's.
+inline quat operator*(const quat& a, const quat& b) {
+  return {
+      a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+      a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
+}
+
+// The angle (rad, in [0, pi]) between two nonzero vectors, accurate near 0
+// where acos of the cosine is not.
+inline double angle_between(const vec3& a, const vec3& b) {
+  return std::atan2(norm(cross(a, b)), dot(a, b));
+}
+
 }  // namespace gaphys_compare
