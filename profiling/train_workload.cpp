@@ -79,6 +79,10 @@ void engine_scenes() {
   run(scenes::elastic_collision(), 1.5);
   run(scenes::bouncing_sphere(0.8), 2);
   run(scenes::spinning_body(), 1);
+  // Boxes, capsules, hulls and a compound: the manifolds' turning contacts.
+  run(scenes::box_tower(4), 0.5);
+  run(scenes::compound_table(), 1);
+  run(scenes::shape_mix(12), 1);
 }
 
 }  // namespace
