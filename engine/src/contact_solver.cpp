@@ -169,26 +169,33 @@ void contact_solver::add_constraint(const world_settings& settings, const body& 
   const bool spins = m.spinning_friction > 0 && radius > 0;
   if (m.friction > 0 || rolls || spins) {
     surface_terms t;
-    t.frame = tangents(n);
-    t.planes = {e3ga::op(n, t.frame[0]), e3ga::op(n, t.frame[1]), e3ga::op(t.frame[0], t.frame[1])};
+    surface_frame f;
+    f.frame = tangents(n);
+    f.planes = {e3ga::op(n, f.frame[0]), e3ga::op(n, f.frame[1]), e3ga::op(f.frame[0], f.frame[1])};
     const real inverse_masses = a.inverse_mass() + b.inverse_mass();
     if (m.friction > 0) {
-      t.friction.rows = {detail::linear_row(t.frame[0], r_a, r_b, a, b),
-                         detail::linear_row(t.frame[1], r_a, r_b, a, b)};
+      t.friction.rows = {detail::linear_row(f.frame[0], r_a, r_b, a, b),
+                         detail::linear_row(f.frame[1], r_a, r_b, a, b)};
       t.friction.prepare(inverse_masses);
       t.friction_coefficient = m.friction;
     }
-    if (rolls) {
-      t.rolling.rows = {detail::angular_row(t.planes[0], a, b), detail::angular_row(t.planes[1], a, b)};
-      t.rolling.prepare(inverse_masses);
-      t.rolling_bound = m.rolling_resistance * radius;
-    }
-    if (spins) {
-      t.spinning = detail::angular_row(t.planes[2], a, b);
-      t.spinning_bound = m.spinning_friction * radius;
+    if (rolls || spins) {
+      resistance_terms r;
+      if (rolls) {
+        r.rolling.rows = {detail::angular_row(f.planes[0], a, b), detail::angular_row(f.planes[1], a, b)};
+        r.rolling.prepare(inverse_masses);
+        r.rolling_bound = m.rolling_resistance * radius;
+      }
+      if (spins) {
+        r.spinning = detail::angular_row(f.planes[2], a, b);
+        r.spinning_bound = m.spinning_friction * radius;
+      }
+      t.resistance = static_cast<int>(resistances_.size());
+      resistances_.push_back(r);
     }
     k.surface = static_cast<int>(surfaces_.size());
     surfaces_.push_back(t);
+    frames_.push_back(f);
   }
   constraints_.push_back(k);
   impacts_.push_back(impact);
@@ -259,13 +266,14 @@ bool contact_solver::impact(std::size_t index, real threshold, real h) {
   vector linear_impulse = j * k.normal.linear;
   if (k.surface >= 0 && surfaces_[k.surface].friction.active()) {
     surface_terms& t = surfaces_[k.surface];
+    surface_frame& f = frames_[k.surface];
     const std::array<real, 2> total = t.friction.stopping_total(
-        a, b, t.impact_tangent, t.friction_coefficient * record.normal);
-    const std::array<real, 2> step{total[0] - t.impact_tangent[0], total[1] - t.impact_tangent[1]};
+        a, b, f.impact_tangent, t.friction_coefficient * record.normal);
+    const std::array<real, 2> step{total[0] - f.impact_tangent[0], total[1] - f.impact_tangent[1]};
     t.friction.apply(a, b, step);
     t.friction.apply(solved_a, solved_b, step);
-    t.impact_tangent = total;
-    linear_impulse = linear_impulse + step[0] * t.frame[0] + step[1] * t.frame[1];
+    f.impact_tangent = total;
+    linear_impulse = linear_impulse + step[0] * f.frame[0] + step[1] * f.frame[1];
   }
   if (timed_now) {
     record.timed = true;
@@ -320,21 +328,24 @@ void contact_solver::warm_start(const std::vector<body>& bodies,
     k.normal.apply(a, b, k.accumulated);
     if (k.surface < 0) continue;
     surface_terms& t = surfaces_[k.surface];
+    const surface_frame& f = frames_[k.surface];
     if (t.friction.active()) {
-      const std::array<real, 2> held{e3ga::scp(resting.tangent, t.frame[0]),
-                                     e3ga::scp(resting.tangent, t.frame[1])};
+      const std::array<real, 2> held{e3ga::scp(resting.tangent, f.frame[0]),
+                                     e3ga::scp(resting.tangent, f.frame[1])};
       t.friction.start_from(a, b, detail::within_disk(held, t.friction_coefficient * k.accumulated));
     }
+    if (t.resistance < 0) continue;
+    resistance_terms& r = resistances_[t.resistance];
     // An angular impulse L = Σ λ_i U_i on unit planes reads back λ_i = -L . U_i.
-    if (t.rolling.active()) {
-      const std::array<real, 2> held{-e3ga::scp(resting.angular, t.planes[0]),
-                                     -e3ga::scp(resting.angular, t.planes[1])};
-      t.rolling.start_from(a, b, detail::within_disk(held, t.rolling_bound * k.accumulated));
+    if (r.rolling.active()) {
+      const std::array<real, 2> held{-e3ga::scp(resting.angular, f.planes[0]),
+                                     -e3ga::scp(resting.angular, f.planes[1])};
+      r.rolling.start_from(a, b, detail::within_disk(held, r.rolling_bound * k.accumulated));
     }
-    if (t.spinning.mass_inverse > 0) {
-      const real bound = t.spinning_bound * k.accumulated;
-      t.spinning_accumulated = std::clamp(-e3ga::scp(resting.angular, t.planes[2]), -bound, bound);
-      t.spinning.apply(a, b, t.spinning_accumulated);
+    if (r.spinning.mass_inverse > 0) {
+      const real bound = r.spinning_bound * k.accumulated;
+      r.spinning_accumulated = std::clamp(-e3ga::scp(resting.angular, f.planes[2]), -bound, bound);
+      r.spinning.apply(a, b, r.spinning_accumulated);
     }
   }
 }
@@ -365,19 +376,21 @@ void contact_solver::solve_contacts(const world_settings& settings) {
       if (k.surface < 0) continue;
       surface_terms& t = surfaces_[k.surface];
       // Nothing pushes and nothing is held: nothing to rub (a speculative contact).
-      if (!(k.accumulated > 0) && t.holds_nothing()) continue;
+      if (!(k.accumulated > 0) && holds_nothing(t)) continue;
       if (t.friction.active()) {
         const real change = t.friction.solve(a, b, t.friction_coefficient * k.accumulated);
         largest_change = std::max(largest_change, change * t.friction.rows[0].mass_inverse);
       }
-      if (t.rolling.active()) {
-        const real change = t.rolling.solve(a, b, t.rolling_bound * k.accumulated);
-        largest_change = std::max(largest_change, change * t.rolling.rows[0].mass_inverse);
+      if (t.resistance < 0) continue;
+      resistance_terms& r = resistances_[t.resistance];
+      if (r.rolling.active()) {
+        const real change = r.rolling.solve(a, b, r.rolling_bound * k.accumulated);
+        largest_change = std::max(largest_change, change * r.rolling.rows[0].mass_inverse);
       }
-      if (t.spinning.mass_inverse > 0) {
-        const real change = detail::solve_bounded(t.spinning, t.spinning_accumulated, a, b,
-                                                  t.spinning_bound * k.accumulated);
-        largest_change = std::max(largest_change, change * t.spinning.mass_inverse);
+      if (r.spinning.mass_inverse > 0) {
+        const real change = detail::solve_bounded(r.spinning, r.spinning_accumulated, a, b,
+                                                  r.spinning_bound * k.accumulated);
+        largest_change = std::max(largest_change, change * r.spinning.mass_inverse);
       }
     }
     if (largest_change <= settings.solver_tolerance) break;
@@ -395,10 +408,14 @@ void contact_solver::store_impulses(std::vector<contact>& contacts) const {
     total.normal += impacts_[i].normal;
     if (k.surface < 0) continue;
     const surface_terms& t = surfaces_[k.surface];
-    resting.tangent = t.friction.accumulated[0] * t.frame[0] + t.friction.accumulated[1] * t.frame[1];
-    resting.angular = t.rolling.accumulated[0] * t.planes[0] +
-                      t.rolling.accumulated[1] * t.planes[1] + t.spinning_accumulated * t.planes[2];
-    total.tangent = resting.tangent + t.impact_tangent[0] * t.frame[0] + t.impact_tangent[1] * t.frame[1];
+    const surface_frame& f = frames_[k.surface];
+    resting.tangent = t.friction.accumulated[0] * f.frame[0] + t.friction.accumulated[1] * f.frame[1];
+    if (t.resistance >= 0) {
+      const resistance_terms& r = resistances_[t.resistance];
+      resting.angular = r.rolling.accumulated[0] * f.planes[0] +
+                        r.rolling.accumulated[1] * f.planes[1] + r.spinning_accumulated * f.planes[2];
+    }
+    total.tangent = resting.tangent + f.impact_tangent[0] * f.frame[0] + f.impact_tangent[1] * f.frame[1];
     total.angular = resting.angular;
   }
 }
@@ -410,6 +427,8 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   constraints_.clear();
   impacts_.clear();
   surfaces_.clear();
+  frames_.clear();
+  resistances_.clear();
   for (const contact& c : contacts) {
     add_constraint(settings, bodies[c.body_a], bodies[c.body_b], c, start[c.body_a],
                    start[c.body_b], h);
