@@ -40,7 +40,7 @@ gaphys::shape with_surface(const gaphys::shape& shape, double restitution, doubl
 class gaphys_adapter final : public engine_adapter {
  public:
   void build(const scene& s) override {
-    gaphys::world_settings settings;  // defaults: 20 sweeps, threshold 0.5 m/s
+    gaphys::world_settings settings;  // defaults: 30 sweeps, threshold 0.5 m/s
     settings.gravity = to_gaphys(s.gravity);
     world_.emplace(settings);
     for (const plane_description& p : s.planes) {

@@ -46,6 +46,7 @@ bool has_solid(const std::vector<attached_shape>& shapes) {
 const body_definition& validated(const body_definition& d) {
   if (!d.is_static) detail::require_positive(d.mass, "body mass");
   if (d.density) detail::require_positive(*d.density, "body density");
+  if (d.density && d.inertia) detail::reject("give a body density or an inertia, not both");
   detail::require_finite(d.position, "body position");
   detail::require_finite(d.velocity, "body velocity");
   detail::require_finite(d.angular_velocity, "body angular velocity");
@@ -59,6 +60,11 @@ const body_definition& validated(const body_definition& d) {
     if (is_plane(s) && !d.is_static) detail::reject("a plane shape needs a static body");
     // The broad phase bounds a plane's body by the plane alone.
     if (is_plane(s) && shapes.size() > 1) detail::reject("a plane must be its body's only shape");
+    const bool posed = !is_zero(s.offset) || s.attitude.c[1] != 0 || s.attitude.c[2] != 0 ||
+                       s.attitude.c[3] != 0;
+    if (is_plane(s) && posed) {
+      detail::reject("a plane shape takes no offset or attitude: give them in its normal and offset");
+    }
   }
   if (!d.is_static && !d.inertia && !has_solid(shapes)) {
     detail::reject("a dynamic body without a solid shape needs an explicit inertia");
@@ -106,7 +112,7 @@ real reach(const std::vector<attached_shape>& shapes) {
 
 }  // namespace
 
-body::body(const body_definition& definition) : inertia_(inertia::principal(1, 1, 1)) {
+body::body(const body_definition& definition) {
   const body_definition& d = validated(definition);
   std::vector<attached_shape> shapes = all_shapes(d);
   const initial_mass m = initial_mass_properties(d, shapes);

@@ -60,32 +60,32 @@ real rolling_radius(const body& a, const body& b, const contact& c) {
 }
 
 // The last step's contact at the same point as c, searched in the run of
-// contacts from `run` on that share c's bodies: the same two shapes and the
-// same feature ids, or else (a feature the narrow phase names differently
-// now, such as a corner that crossed a side of the face it rests on by a
-// rounding error) the nearest point of the same two shapes within 5% of
-// the smaller shape's size. `end` when there is none.
-std::vector<contact>::const_iterator same_point(const contact& c,
-                                                std::vector<contact>::const_iterator run,
-                                                std::vector<contact>::const_iterator end,
-                                                const std::vector<body>& bodies) {
-  const auto same_bodies = [&](const contact& o) {
-    return o.body_a == c.body_a && o.body_b == c.body_b;
+// contacts from `run` on that share c's bodies and have not warm started a
+// contact yet (`used`): the same two shapes and the same feature ids, or
+// else (a feature the narrow phase names differently now, such as a corner
+// that crossed a side of the face it rests on by a rounding error) the
+// nearest point of the same two shapes within 5% of the smaller shape's
+// size. `end` when there is none.
+std::size_t same_point(const contact& c, std::size_t run, const std::vector<contact>& previous,
+                       const std::vector<char>& used, const std::vector<body>& bodies) {
+  const std::size_t end = previous.size();
+  const auto candidate = [&](std::size_t i) {
+    return i < end && previous[i].body_a == c.body_a && previous[i].body_b == c.body_b;
   };
   const auto same_shapes = [&](const contact& o) {
     return o.shape_a == c.shape_a && o.shape_b == c.shape_b;
   };
-  for (auto old = run; old != end && same_bodies(*old); ++old) {
-    if (same_shapes(*old) && old->feature == c.feature) return old;
+  for (std::size_t i = run; candidate(i); ++i) {
+    if (!used[i] && same_shapes(previous[i]) && previous[i].feature == c.feature) return i;
   }
   const real size = std::min(bodies[c.body_a].shapes()[c.shape_a].shape.bounding_radius(),
                              bodies[c.body_b].shapes()[c.shape_b].shape.bounding_radius());
   real nearest = real(0.05) * size;
-  auto found = end;
-  for (auto old = run; old != end && same_bodies(*old); ++old) {
-    if (!same_shapes(*old)) continue;
-    const real distance = e3ga::norm(old->geometry.point - c.geometry.point);
-    if (distance < nearest) nearest = distance, found = old;
+  std::size_t found = end;
+  for (std::size_t i = run; candidate(i); ++i) {
+    if (used[i] || !same_shapes(previous[i])) continue;
+    const real distance = e3ga::norm(previous[i].geometry.point - c.geometry.point);
+    if (distance < nearest) nearest = distance, found = i;
   }
   return found;
 }
@@ -312,13 +312,21 @@ void contact_solver::resolve_impacts(const world_settings& settings, real h) {
 void contact_solver::warm_start(const std::vector<body>& bodies,
                                 const std::vector<contact>& contacts,
                                 const std::vector<contact>& previous) {
-  auto run = previous.begin();
+  // Each old contact warm starts one new one at most: two new points near
+  // one old one would both take its whole impulse.
+  previous_used_.assign(previous.size(), 0);
+  std::size_t run = 0;
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const contact& c = contacts[i];
     const auto key = std::make_pair(c.body_a, c.body_b);
-    while (run != previous.end() && std::make_pair(run->body_a, run->body_b) < key) ++run;
-    const auto old = same_point(c, run, previous.end(), bodies);
-    if (old == previous.end()) continue;
+    while (run < previous.size() &&
+           std::make_pair(previous[run].body_a, previous[run].body_b) < key) {
+      ++run;
+    }
+    const std::size_t match = same_point(c, run, previous, previous_used_, bodies);
+    if (match == previous.size()) continue;
+    previous_used_[match] = 1;
+    const contact* old = &previous[match];
     constraint& k = constraints_[i];
     if (!(k.normal.mass_inverse > 0) || k.waits) continue;
     solver_body& a = solver_bodies_[k.body_a];

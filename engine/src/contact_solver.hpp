@@ -35,8 +35,9 @@ class contact_solver {
   // fast, is read from `start` and the step's earlier impacts: taken after
   // gravity, a ball dropped with e = 1 would leave each bounce h g faster
   // than it came and climb 1.3% higher every time. Contacts between the
-  // same two bodies in `previous` (the last step's, sorted by body pair like
-  // `contacts`) start from their old resting impulses.
+  // same two shapes in `previous` (the last step's, sorted by body pair like
+  // `contacts`) with the same feature id, or else the nearest within 5% of
+  // the smaller shape's size, start from their old resting impulses.
   //
   // A speculative contact (depth = -gap < 0) that does not bounce lets its
   // bodies close the gap in this step of h seconds but no more: its target
@@ -141,6 +142,7 @@ class contact_solver {
   std::vector<solver_body> solver_bodies_;  // the velocities after the step's forces, as solved
   std::vector<solver_body> impact_bodies_;  // the start velocities plus the impact phase's impulses
   std::vector<char> impacted_;              // bodies the impact phase has changed
+  std::vector<char> previous_used_;         // the last step's contacts already warm starting one
   std::vector<solver_body> pseudo_bodies_;  // correct_turning's pseudo velocities
   std::vector<real> pseudo_targets_, pseudo_accumulated_, pseudo_depths_;  // per contact
 };

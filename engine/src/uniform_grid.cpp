@@ -32,6 +32,7 @@ bool uniform_grid::find_pairs(const std::vector<body>& bodies, const std::vector
                               real lookahead, real margin, std::vector<index_pair>& pairs) {
   pairs.clear();
   collect(bodies, shaped, lookahead, margin);
+  plane_margin_ = margin / 2;
   if (!sort_into_cells()) return false;
   pair_cells(pairs);
   pair_large(pairs);
@@ -56,7 +57,7 @@ void uniform_grid::sort_pairs(std::size_t body_count, std::vector<index_pair>& p
   pairs.swap(sorted_);
 }
 
-// Bounds for spheres and points, and the cell size: the widest bound that
+// Bounds of the shaped bodies, and the cell size: the widest bound that
 // is not "large" (wider than twice the median width).
 void uniform_grid::collect(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped,
                            real lookahead, real margin) {
@@ -227,7 +228,8 @@ void uniform_grid::pair_large(std::vector<index_pair>& pairs) const {
 }
 
 // A plane against each dynamic bound, exactly: the sphere reaches the
-// solid side n . x <= d when n . c - r <= d.
+// solid side n . x <= d when n . c - r <= d; within the contact margin when
+// n . c - r <= d + margin (the bound holds half of it already).
 void uniform_grid::pair_planes(const std::vector<body>& bodies, std::vector<index_pair>& pairs) const {
   for (std::size_t index : planes_) {
     const body& p = bodies[index];
@@ -235,7 +237,7 @@ void uniform_grid::pair_planes(const std::vector<body>& bodies, std::vector<inde
     const real d = p.shape()->offset() + e3ga::scp(n, p.position());
     for (const bound& b : bounds_) {
       if (b.is_static) continue;  // planes are static too
-      if (e3ga::scp(n, b.centre) - b.radius <= d) {
+      if (e3ga::scp(n, b.centre) - b.radius <= d + plane_margin_) {
         pairs.emplace_back(std::min(index, b.body), std::max(index, b.body));
       }
     }

@@ -159,6 +159,15 @@ TEST_F(bad_input_test, create_body_rejects_bad_definitions_and_adds_nothing) {
   EXPECT_TRUE(rejects_definition(d, "a plane must be its body's only shape"));
   d = valid_sphere();
   d.is_static = true;
+  d.shape.reset();
+  d.shapes.push_back({shape::plane(vector{0, 0, 1}, 0), vector{0, 0, 1}, rotor{1, 0, 0, 0}});
+  EXPECT_TRUE(rejects_definition(d, "a plane shape takes no offset or attitude"));
+  d = valid_sphere();
+  d.density = 1000;
+  d.inertia = inertia::principal(1, 1, 1);
+  EXPECT_TRUE(rejects_definition(d, "density or an inertia, not both"));
+  d = valid_sphere();
+  d.is_static = true;
   d.velocity = vector{1, 0, 0};
   EXPECT_TRUE(rejects_definition(d, "static body cannot have a nonzero velocity"));
   d = valid_sphere();

@@ -26,7 +26,8 @@ class broad_phase_test : public engine_test {
     }
     for (int i = 0; i < spheres; ++i) {
       body_definition d;
-      d.position = vector{uniform(-extent, extent), uniform(-extent, extent), uniform(-extent, extent)};
+      d.position =
+          vector{uniform(-extent, extent), uniform(-extent, extent), uniform(-extent, extent)};
       const real pick = uniform(0, 1);
       if (pick < 0.05) {
         d.shape = shape::sphere(uniform(1, 3));  // large: far wider than the median
@@ -98,7 +99,8 @@ TEST_F(broad_phase_test, touching_spheres_on_cell_boundaries_are_found) {
   const auto from_all = contacts_of(all, bodies, all_pairs);
   EXPECT_EQ(from_all.size(), 39u);
   ASSERT_EQ(from_grid.size(), from_all.size());
-  for (std::size_t i = 0; i < from_all.size(); ++i) EXPECT_TRUE(same_bits(from_grid[i], from_all[i]));
+  for (std::size_t i = 0; i < from_all.size(); ++i)
+    EXPECT_TRUE(same_bits(from_grid[i], from_all[i]));
 }
 
 TEST_F(broad_phase_test, coincident_and_far_away_bodies_are_handled) {
@@ -119,7 +121,8 @@ TEST_F(broad_phase_test, coincident_and_far_away_bodies_are_handled) {
   // 1e300 the conformal embedding (|x|^2 / 2) overflows, so the meet sees
   // nothing: finite, never NaN, and the same with either broad phase.
   EXPECT_EQ(from_all.size(), 45u);
-  for (std::size_t i = 0; i < from_all.size(); ++i) EXPECT_TRUE(same_bits(from_grid[i], from_all[i]));
+  for (std::size_t i = 0; i < from_all.size(); ++i)
+    EXPECT_TRUE(same_bits(from_grid[i], from_all[i]));
 }
 
 // Whole runs: 100 spheres falling into the box for 1.5 s, with either broad
@@ -136,6 +139,42 @@ TEST_F(broad_phase_test, simulations_agree_to_the_bit) {
     ASSERT_EQ(grid.contacts().size(), all.contacts().size()) << "step " << i + 1;
   }
   EXPECT_GT(grid.contacts().size(), 100u);
+}
+
+// Boxes, capsules, hulls and spheres falling into a box of planes: the grid
+// bounds each body by a sphere about its centre reaching its shapes, grown by
+// its turning and half the contact margin, and a plane reaches a bound within
+// the other half: the same contacts as all pairs, to the bit.
+TEST_F(broad_phase_test, simulations_of_every_shape_agree_to_the_bit) {
+  world grid = scenes::shape_mix(24, 3);
+  world all = scenes::shape_mix(24, 3);
+  all.set_broad_phase(broad_phase_kind::all_pairs);
+  for (int i = 0; i < 480; ++i) {
+    grid.step(h);
+    all.step(h);
+    ASSERT_EQ(grid.state_hash(), all.state_hash()) << "step " << i + 1;
+    ASSERT_EQ(grid.contacts().size(), all.contacts().size()) << "step " << i + 1;
+  }
+  EXPECT_GT(grid.contacts().size(), 24u);
+}
+
+// An upright capsule at rest 0.7 mm above a floor: within the 1 mm contact
+// margin, more than the half of it a bound holds. Both broad phases hand the
+// pair to the narrow phase, which makes a speculative contact.
+TEST_F(broad_phase_test, a_plane_reaches_bounds_within_the_whole_contact_margin) {
+  for (broad_phase_kind kind : {broad_phase_kind::uniform_grid, broad_phase_kind::all_pairs}) {
+    world w = make_world(vector{});
+    w.set_broad_phase(kind);
+    add_floor(w);
+    body_definition capsule;
+    capsule.position = vector{0, 0, real(0.5) + real(0.25) + real(0.0007)};
+    capsule.shape = shape::capsule(0.5, 0.25);
+    w.create_body(capsule);
+    w.step(h);
+    ASSERT_EQ(w.contacts().size(), 1u)
+        << (kind == broad_phase_kind::all_pairs ? "all pairs" : "grid");
+    EXPECT_NEAR(w.contacts()[0].geometry.depth, -0.0007, 1e-12);
+  }
 }
 
 }  // namespace

@@ -22,7 +22,8 @@ namespace gaphys {
 struct body_definition {
   // kg, finite and > 0; ignored for static bodies, which have infinite mass.
   real mass = 1;
-  // kg/m^3: when set, the mass is density times the shapes' volume instead.
+  // kg/m^3: when set, the mass is density times the shapes' volume instead
+  // (and the inertia theirs: not with an explicit inertia).
   std::optional<real> density;
   // Body-frame inertia about the body's origin, its centre of mass. Default:
   // the exact inertia of the solid shapes (solid_mass_properties) at the

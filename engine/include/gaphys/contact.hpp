@@ -1,5 +1,6 @@
-// Contact generation through the conformal meet (thesis 4.2.1), one code path
-// for every pair of shapes.
+// Contact generation: through the conformal meet (thesis 4.2.1), one code
+// path for every pair of round shapes (spheres, points, planes); boxes,
+// capsules and hulls through the convex narrow phase (convex_contact.hpp).
 #pragma once
 
 #include <array>
@@ -20,7 +21,7 @@ struct placed_shape {
   // spheres and planes orient alike), a point the dual of the flat point x ^ ni.
   c3ga::mv dual;
   shape_kind kind;
-  vector center{};  // body position (spheres and points)
+  vector center{};  // the shape frame's origin in the world (a sphere's centre)
   vector normal{};  // world-frame outward normal (planes)
   real radius = 0;
   real offset = 0;  // world-frame: the plane is normal . x = offset
@@ -37,7 +38,8 @@ struct placed_shape {
 placed_shape place(const shape& s, const vector& position, const rotor& attitude);
 
 struct contact_geometry {
-  // Thesis eq. 4.10: C ni C, normalized: the centre of the meet's round. Two
+  // Round pairs, thesis eq. 4.10: C ni C, normalized: the centre of the
+  // meet's round (other pairs: midway between the two surfaces). Two
   // spheres: the centre of their intersection circle; a sphere and a plane:
   // the sphere's centre projected on the plane; a point: the point. When one
   // solid holds the other whole the circle is imaginary and its centre is on

@@ -15,16 +15,17 @@ enum class shape_kind { sphere, plane, point, box, capsule, convex_hull };
 
 class shape {
  public:
-  // A solid sphere of this radius (finite, > 0) centred on the body.
+  // A solid sphere of this radius (finite, > 0) centred on the shape's frame
+  // (the body's origin, or its attached_shape pose).
   static shape sphere(real radius);
   // The half-space {x : n . x <= offset} of the body frame, n = normal / |normal|
   // (normal finite and nonzero; offset is the signed distance of the boundary
   // plane from the body origin along n). Only static bodies may carry one.
   static shape plane(const vector& normal, real offset);
-  // A point at the body's centre (a flat point in c3ga, thesis 4.2.1). Points
-  // collide with spheres.
+  // A point at the shape frame's origin (a flat point in c3ga, thesis
+  // 4.2.1). Points collide with spheres, boxes, capsules and hulls.
   static shape point();
-  // A box centred on the body, its edges along the body frame's axes, with
+  // A box centred on the shape's frame, its edges along the frame's axes, with
   // these half extents (each finite and > 0).
   static shape box(const vector& half_extents);
   // The points within `radius` of the segment from -half_height e3 to
@@ -50,7 +51,7 @@ class shape {
   real half_height() const { return half_height_; }             // capsule
   // The faces, edges and corners of a box or a convex hull; nullptr otherwise.
   const convex_polyhedron* polyhedron() const { return polyhedron_.get(); }
-  // The largest distance of the shape's solid from the body origin
+  // The largest distance of the shape's solid from its frame's origin
   // (infinite for a plane).
   real bounding_radius() const;
   const vector& normal() const { return normal_; }

@@ -1,9 +1,10 @@
 // The broad phase behind space (space.hpp), not an API of its own: candidate
-// pairs from a uniform grid of cells, so a step costs O(N) for spheres of
+// pairs from a uniform grid of cells, so a step costs O(N) for bodies of
 // similar size at a bounded density instead of the O(N^2) of all pairs.
 //
 // Each body is bounded by a sphere about its centre of mass (reaching its
-// shapes' farthest point, widened by a rounding margin) and lands in the cell of its centre. Cells are as wide as
+// shapes' farthest point, widened by a rounding margin) and lands in the
+// cell of its centre. Cells are as wide as
 // the widest ordinary bound, so two bounds that overlap have their centres
 // in the same or adjacent cells: each cell is compared with itself and its
 // 13 "forward" neighbours, and every two bounds that overlap make a
@@ -83,6 +84,7 @@ class uniform_grid {
   std::vector<std::size_t> starts_, fill_;
   std::vector<index_pair> sorted_;
   real cell_size_ = 1;
+  real plane_margin_ = 0;  // the half of the contact margin bounds do not hold against planes
 };
 
 }  // namespace gaphys::detail
