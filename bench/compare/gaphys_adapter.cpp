@@ -40,7 +40,7 @@ gaphys::shape with_surface(const gaphys::shape& shape, double restitution, doubl
 class gaphys_adapter final : public engine_adapter {
  public:
   void build(const scene& s) override {
-    gaphys::world_settings settings;  // defaults: 30 sweeps, threshold 0.5 m/s
+    gaphys::world_settings settings;  // defaults: 20 sweeps (+10 for turning contacts), threshold 0.5 m/s
     settings.gravity = to_gaphys(s.gravity);
     world_.emplace(settings);
     for (const plane_description& p : s.planes) {
@@ -110,7 +110,9 @@ engine gaphys_engine() {
       "this tree",
       "double",
       {{"world", "gaphys::world, default world_settings", "the engine as documented"},
-       {"solver sweeps", std::to_string(defaults.solver_iterations), "default"},
+       {"solver sweeps", std::to_string(defaults.solver_iterations) + " (+" +
+                             std::to_string(defaults.turning_iterations) + " for contacts that turn a body)",
+        "default"},
        {"restitution",
         "max(e_a, e_b) per contact, threshold " + number(defaults.restitution_threshold) + " m/s",
         "default; the scenes give every shape the same e"},

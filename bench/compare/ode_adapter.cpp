@@ -17,8 +17,8 @@ namespace gaphys_compare {
 
 namespace {
 
-// Matched to gaphys::world_settings' defaults (the sweeps to its 20 before
-// the box tower made them 30: the published tables compare at 20).
+// Matched to gaphys::world_settings' defaults (its 20 sweeps; gaphys gives
+// contacts that turn a body 10 more).
 constexpr int solver_iterations = 20;          // QuickStep sweeps
 constexpr double restitution_threshold = 0.5;  // m/s: ODE's bounce_vel
 constexpr double position_correction = 0.2;    // ERP: share of the depth per step
@@ -230,7 +230,7 @@ engine ode_engine(ode_stepper stepper) {
       {"stepper",
        quick ? "dWorldQuickStep, " + number(solver_iterations) + " iterations, SOR w " + number(sor)
              : "dWorldStep (direct LCP per island)",
-       quick ? "the iterative stepper applications use; 20 = gaphys's sweeps before boxes (now 30)"
+       quick ? "the iterative stepper applications use; 20 = gaphys's sweeps (+10 on its turning contacts)"
              : "exact LCP solve, for reference; cost grows as n^3"},
       {"space", "dSweepAndPruneSpaceCreate(XYZ)", "a broad phase for M6 and B5"},
       {"shapes",

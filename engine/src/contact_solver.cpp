@@ -365,13 +365,22 @@ void contact_solver::warm_start(const std::vector<body>& bodies,
 // spin towards none within c ρ λ_n. A sweep that changes no speed by more
 // than the tolerance has converged, and ends the solve early.
 void contact_solver::solve_contacts(const world_settings& settings) {
-  for (int sweep = 0; sweep < settings.solver_iterations; ++sweep) {
+  // Every contact gets solver_iterations sweeps; contacts that turn a body
+  // get turning_iterations more (a stack of boxes converges slowly).
+  const int sweeps = settings.solver_iterations + settings.turning_iterations;
+  for (int sweep = 0; sweep < sweeps; ++sweep) {
     real largest_change = 0;
-    // The last sweep is plain: it takes back what over-relaxation pushed
-    // contacts apart beyond their targets.
-    const bool last = sweep + 1 == settings.solver_iterations;
+    const bool turning_only = sweep >= settings.solver_iterations;
+    // The last sweep of a contact is plain: it takes back what
+    // over-relaxation pushed contacts apart beyond their targets.
+    const bool last_of_all = sweep + 1 == settings.solver_iterations;
+    const bool last_of_turning = sweep + 1 == sweeps;
+    bool any = false;
     for (constraint& k : constraints_) {
       if (!(k.normal.mass_inverse > 0) || (k.waits && !k.struck)) continue;
+      if (turning_only && !k.normal.turns) continue;
+      any = true;
+      const bool last = k.normal.turns ? last_of_turning : last_of_all;
       solver_body& a = solver_bodies_[k.body_a];
       solver_body& b = solver_bodies_[k.body_b];
       const real relaxation = last ? real(1) : k.relaxation;
@@ -401,7 +410,7 @@ void contact_solver::solve_contacts(const world_settings& settings) {
         largest_change = std::max(largest_change, change * r.spinning.mass_inverse);
       }
     }
-    if (largest_change <= settings.solver_tolerance) break;
+    if (!any || largest_change <= settings.solver_tolerance) break;
   }
 }
 

@@ -151,6 +151,11 @@ struct disk_block {
     if (!(bound > real(1e-9) * (std::fabs(total[0]) + std::fabs(total[1])))) {
       return within_disk(total, bound);
     }
+    // An isotropic K (a contact through a sphere's centre): the nearest
+    // point is λ* scaled onto the disk, no root to find.
+    if (!(eigenvalues[0] - eigenvalues[1] > real(1e-9) * eigenvalues[0])) {
+      return within_disk(total, bound);
+    }
     return nearest_on_disk(total, bound);
   }
 

@@ -29,6 +29,7 @@ const world_settings& validated(const world_settings& s) {
   detail::require_non_negative(s.linear_damping, "linear damping");
   detail::require_non_negative(s.angular_damping, "angular damping");
   if (s.solver_iterations < 1) detail::reject("solver iterations must be >= 1");
+  if (s.turning_iterations < 0) detail::reject("turning iterations must be >= 0");
   if (s.impact_iterations < 1) detail::reject("impact iterations must be >= 1");
   detail::require_non_negative(s.solver_tolerance, "solver tolerance");
   if (!(s.solver_relaxation > 0 && s.solver_relaxation < 2)) {

@@ -21,9 +21,12 @@ struct world_settings {
   // Damping rates (1/s, >= 0): each step scales v by 1 / (1 + h c).
   real linear_damping = 0;
   real angular_damping = 0;
-  // Most sequential impulse sweeps per step. 30: a tower of ten boxes
-  // stands within 0.4 mm for 10 s; at 20 it walks 5 mm (docs/engine.md).
-  int solver_iterations = 30;
+  int solver_iterations = 20;         // most sequential impulse sweeps per step
+  // More sweeps, after those, for the contacts that turn a body (boxes,
+  // capsules, hulls, compounds: off-centre contacts). With them a tower of
+  // ten boxes stands within 0.4 mm for 10 s; without, it walks 5 mm
+  // (docs/engine.md). Spheres alone never pay for them.
+  int turning_iterations = 10;
   real solver_tolerance = 1e-9;       // m/s: a sweep changing no normal speed more ends the solve
   // Over-relaxation (projected SOR), in (0, 2): each impulse is this multiple
   // of the one that would meet its contact's target. 1 is plain
