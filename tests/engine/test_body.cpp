@@ -3,44 +3,10 @@
 #include <array>
 
 #include "engine_test_support.hpp"
+#include "matrix3.hpp"
 
 namespace gaphys::testing {
 namespace {
-
-using matrix = std::array<real, 9>;  // row-major
-using triple = std::array<real, 3>;
-
-// A rotation axis as its plane: about x is e23, about y e31 = -e13,
-// about z e12 (the engine's documented correspondence, checked below).
-bivector plane_of(const triple& a) { return bivector{a[2], -a[1], a[0]}; }
-
-triple times(const matrix& m, const triple& v) {
-  return {m[0] * v[0] + m[1] * v[1] + m[2] * v[2], m[3] * v[0] + m[4] * v[1] + m[5] * v[2],
-          m[6] * v[0] + m[7] * v[1] + m[8] * v[2]};
-}
-
-matrix product(const matrix& a, const matrix& b) {
-  matrix p{};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k) p[3 * i + j] += a[3 * i + k] * b[3 * k + j];
-  return p;
-}
-
-matrix transposed(const matrix& m) { return {m[0], m[3], m[6], m[1], m[4], m[7], m[2], m[5], m[8]}; }
-
-// Rodrigues' rotation matrix: angle about the unit axis, right-handed.
-matrix rotation(const triple& axis, real angle) {
-  const real c = std::cos(angle), s = std::sin(angle), t = 1 - c;
-  const real x = axis[0], y = axis[1], z = axis[2];
-  return {t * x * x + c,     t * x * y - s * z, t * x * z + s * y,
-          t * x * y + s * z, t * y * y + c,     t * y * z - s * x,
-          t * x * z - s * y, t * y * z + s * x, t * z * z + c};
-}
-
-// The rotor of the same rotation: R = exp(-angle/2 B) with B the plane of
-// the axis, so that x_world = R x ~R turns by +angle about the axis.
-rotor rotor_of(const triple& axis, real angle) { return e3ga::exp((-angle / 2) * plane_of(axis)); }
 
 class body_test : public engine_test {
  protected:
@@ -70,7 +36,8 @@ TEST_F(body_test, rotors_turn_vectors_like_rotation_matrices) {
     d.shape = shape::sphere(1);
     d.attitude = rotor_of(axis, angle);
     const body b(d);
-    EXPECT_TRUE(near(b.to_world(vector{p[0], p[1], p[2]}), vector{expected[0], expected[1], expected[2]}, 1e-12));
+    EXPECT_TRUE(near(b.to_world(vector{p[0], p[1], p[2]}),
+                     vector{expected[0], expected[1], expected[2]}, 1e-12));
   }
 }
 

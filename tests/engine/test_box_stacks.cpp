@@ -10,25 +10,13 @@
 #include <utility>
 #include <vector>
 
+#include "box_helpers.hpp"
 #include "engine_test_support.hpp"
 
 namespace gaphys::testing {
 namespace {
 
-class box_stack_test : public engine_test {
- protected:
-  static body_id add_box(world& w, const vector& position, const vector& half_extents) {
-    body_definition box;
-    box.position = position;
-    box.shape = shape::box(half_extents).with_restitution(0).with_friction(0.5);
-    return w.create_body(box);
-  }
-
-  static real tilt(const body& b) {
-    const vector up = e3ga::apply(b.attitude(), vector{0, 0, 1});
-    return std::acos(std::clamp(z(up), real(-1), real(1)));
-  }
-};
+using box_stack_test = engine_test;
 
 // Ten unit boxes stacked on a floor stand for 10 s: the top one moves less
 // than 1 mm.

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "box_helpers.hpp"
 #include "engine_test_support.hpp"
 
 namespace gaphys::testing {
@@ -23,12 +24,6 @@ rotor turn(real angle, const bivector& plane) { return e3ga::exp((-angle / 2) * 
 const bivector e31{0, -1, 0};  // e3 ∧ e1 = -e13: turns e3 towards e1, about the y axis
 const bivector e12{1, 0, 0};   // turns e1 towards e2, about the z axis
 
-// How far a body's e3 axis leans from the world's.
-real tilt(const body& b) {
-  const vector up = e3ga::apply(b.attitude(), vector{0, 0, 1});
-  return std::acos(std::clamp(z(up), real(-1), real(1)));
-}
-
 // The angle between two attitudes.
 real angle_between(const rotor& a, const rotor& b) {
   const real cosine = std::fabs(e3ga::scp(a, e3ga::reverse(b)));
@@ -37,18 +32,6 @@ real angle_between(const rotor& a, const rotor& b) {
 
 class box_test : public engine_test {
  protected:
-  static body_id add_box(world& w, const vector& position, const vector& half_extents,
-                         const rotor& attitude = rotor{1, 0, 0, 0},
-                         const vector& velocity = vector{}, real friction = 0.5, real mass = 1) {
-    body_definition box;
-    box.mass = mass;
-    box.position = position;
-    box.attitude = attitude;
-    box.velocity = velocity;
-    box.shape = shape::box(half_extents).with_restitution(0).with_friction(friction);
-    return w.create_body(box);
-  }
-
   static body_id add_plane(world& w, const vector& normal, real friction) {
     body_definition plane;
     plane.is_static = true;

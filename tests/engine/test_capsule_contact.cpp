@@ -6,11 +6,11 @@
 // distance along the segment).
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <vector>
 
 #include "capsule_contact.hpp"
 #include "engine_test_support.hpp"
+#include "placed_shape_test.hpp"
 
 namespace gaphys::testing {
 namespace {
@@ -31,26 +31,13 @@ rotor turning(const vector& from, const vector& to) {
   return e3ga::unit(identity + e3ga::gp(to, from));
 }
 
-class capsule_contact_test : public engine_test {
+class capsule_contact_test : public placed_shape_test {
  protected:
   // A capsule whose segment runs from centre - h axis (end 0) to centre + h
   // axis (end 1).
   static placed_shape capsule(const vector& centre, const vector& axis, real half_height,
                               real radius) {
     return place(shape::capsule(half_height, radius), centre, turning(e3, axis));
-  }
-  // A placed box or hull points into its shape's polyhedron: the test keeps
-  // the shape.
-  placed_shape keep_placed(const shape& s, const vector& centre, const rotor& attitude) {
-    shapes_.push_back(s);
-    return place(shapes_.back(), centre, attitude);
-  }
-  placed_shape box(const vector& centre, const vector& half_extents,
-                   const rotor& attitude = identity) {
-    return keep_placed(shape::box(half_extents), centre, attitude);
-  }
-  static placed_shape floor(real height = 0) {
-    return place(shape::plane(e3, height), vector{}, identity);
   }
   static contact_manifold collide(const placed_shape& a, const placed_shape& b, real margin = 0) {
     contact_manifold m;
@@ -72,9 +59,6 @@ class capsule_contact_test : public engine_test {
   vector random_point(real extent) {
     return vector{uniform(-extent, extent), uniform(-extent, extent), uniform(-extent, extent)};
   }
-
- private:
-  std::deque<shape> shapes_;
 };
 
 // A pair and the same pair swapped: the same points and depths, the normals

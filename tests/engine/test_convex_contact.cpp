@@ -7,13 +7,13 @@
 // (oracle/test_libccd_oracle.cpp).
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <set>
 #include <vector>
 
 #include "convex_contact.hpp"
 #include "engine_test_support.hpp"
 #include "gjk.hpp"
+#include "placed_shape_test.hpp"
 #include "vec3.hpp"
 
 namespace gaphys::testing {
@@ -32,28 +32,8 @@ rotor about(const vector& axis, real angle) {
   return e3ga::exp(real(-0.5) * angle * e3ga::dual(axis));
 }
 
-class convex_contact_test : public engine_test {
+class convex_contact_test : public placed_shape_test {
  protected:
-  // A placed box or hull points into its shape's polyhedron: the test keeps
-  // the shape.
-  placed_shape keep_placed(const shape& s, const vector& centre, const rotor& attitude) {
-    shapes_.push_back(s);
-    return place(shapes_.back(), centre, attitude);
-  }
-  placed_shape box(const vector& centre, const vector& half_extents,
-                   const rotor& attitude = identity) {
-    return keep_placed(shape::box(half_extents), centre, attitude);
-  }
-  placed_shape hull(const std::vector<vector>& points, const vector& centre,
-                    const rotor& attitude = identity) {
-    return keep_placed(shape::convex_hull(points), centre, attitude);
-  }
-  static placed_shape floor(real height = 0) {
-    return place(shape::plane(e3, height), vector{}, identity);
-  }
-  static placed_shape sphere(const vector& centre, real radius) {
-    return place(shape::sphere(radius), centre, identity);
-  }
   static contact_manifold collide(const placed_shape& a, const placed_shape& b, real margin = 0) {
     contact_manifold m;
     m.count = -1;  // collide_convex must set it
@@ -70,9 +50,6 @@ class convex_contact_test : public engine_test {
     for (int i = 0; i < m.count; ++i) s.insert(m.points[i].feature);
     return s;
   }
-
- private:
-  std::deque<shape> shapes_;
 };
 
 // The suites, by the pair of features they meet.

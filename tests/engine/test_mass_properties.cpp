@@ -11,49 +11,13 @@
 #include <vector>
 
 #include "engine_test_support.hpp"
+#include "matrix3.hpp"
 
 namespace gaphys::testing {
 namespace {
 
 constexpr real pi = 3.14159265358979323846;
 constexpr real nan = std::numeric_limits<real>::quiet_NaN();
-
-using matrix = std::array<real, 9>;  // row-major
-using triple = std::array<real, 3>;
-
-matrix diagonal(real a, real b, real c) { return {a, 0, 0, 0, b, 0, 0, 0, c}; }
-
-matrix product(const matrix& a, const matrix& b) {
-  matrix p{};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k) p[3 * i + j] += a[3 * i + k] * b[3 * k + j];
-  return p;
-}
-
-matrix transposed(const matrix& m) {
-  return {m[0], m[3], m[6], m[1], m[4], m[7], m[2], m[5], m[8]};
-}
-
-matrix plus(const matrix& a, const matrix& b) {
-  matrix s;
-  for (int i = 0; i < 9; ++i) s[i] = a[i] + b[i];
-  return s;
-}
-
-// Rodrigues' rotation matrix: `angle` about the unit `axis`, right-handed.
-matrix rotation(const triple& axis, real angle) {
-  const real c = std::cos(angle), s = std::sin(angle), t = 1 - c;
-  const real x = axis[0], y = axis[1], z = axis[2];
-  return {t * x * x + c,     t * x * y - s * z, t * x * z + s * y, t * x * y + s * z, t * y * y + c,
-          t * y * z - s * x, t * x * z - s * y, t * y * z + s * x, t * z * z + c};
-}
-
-// The rotor of the same turn (x_world = R x ~R turns by +angle about axis;
-// test_body checks this convention against the matrix).
-rotor rotor_of(const triple& axis, real angle) {
-  return e3ga::exp((-angle / 2) * bivector{axis[2], -axis[1], axis[0]});
-}
 
 triple unit(real x, real y, real z) {
   const real l = std::sqrt(x * x + y * y + z * z);
