@@ -11,13 +11,6 @@ namespace gaphys {
 
 namespace {
 
-rotor normalized(const rotor& r, const char* what) {
-  detail::require_finite(r, what);
-  const real length = e3ga::norm(r);
-  if (!(length > 0)) detail::reject(what, " must be a nonzero rotor");
-  return r / length;
-}
-
 void require_static_at_rest(bool is_static, bool at_rest, const char* what) {
   if (is_static && !at_rest) detail::reject("a static body cannot have a nonzero ", what);
 }
@@ -36,10 +29,8 @@ std::vector<attached_shape> all_shapes(const body_definition& d) {
 }
 
 bool has_solid(const std::vector<attached_shape>& shapes) {
-  for (const attached_shape& s : shapes) {
-    if (s.shape.kind() != shape_kind::plane && s.shape.kind() != shape_kind::point) return true;
-  }
-  return false;
+  return std::any_of(shapes.begin(), shapes.end(),
+                     [](const attached_shape& s) { return is_solid(s.shape); });
 }
 
 // Validates everything before the body is built, so a throw leaves no trace.
@@ -50,13 +41,13 @@ const body_definition& validated(const body_definition& d) {
   detail::require_finite(d.position, "body position");
   detail::require_finite(d.velocity, "body velocity");
   detail::require_finite(d.angular_velocity, "body angular velocity");
-  normalized(d.attitude, "body attitude");
+  detail::unit_rotor(d.attitude, "body attitude");
   require_static_at_rest(d.is_static, is_zero(d.velocity), "velocity");
   require_static_at_rest(d.is_static, is_zero(d.angular_velocity), "angular velocity");
   const std::vector<attached_shape> shapes = all_shapes(d);
   for (const attached_shape& s : shapes) {
     detail::require_finite(s.offset, "shape offset");
-    normalized(s.attitude, "shape attitude");
+    detail::unit_rotor(s.attitude, "shape attitude");
     if (is_plane(s) && !d.is_static) detail::reject("a plane shape needs a static body");
     // The broad phase bounds a plane's body by the plane alone.
     if (is_plane(s) && shapes.size() > 1) detail::reject("a plane must be its body's only shape");
@@ -97,7 +88,7 @@ initial_mass initial_mass_properties(const body_definition& d,
 std::vector<attached_shape> recentred(std::vector<attached_shape> shapes, const vector& center) {
   for (attached_shape& s : shapes) {
     s.offset = s.offset - center;
-    s.attitude = normalized(s.attitude, "shape attitude");
+    s.attitude = detail::unit_rotor(s.attitude, "shape attitude");
   }
   return shapes;
 }
@@ -121,7 +112,7 @@ body::body(const body_definition& definition) {
   inertia_ = m.inertia;
   shapes_ = recentred(std::move(shapes), m.center);
   bounding_radius_ = reach(shapes_);
-  attitude_ = normalized(d.attitude, "body attitude");
+  attitude_ = detail::unit_rotor(d.attitude, "body attitude");
   position_ = d.position + e3ga::apply(attitude_, m.center);
   velocity_ = d.velocity;
   angular_velocity_ = d.angular_velocity;
@@ -142,7 +133,7 @@ void body::set_velocity(const vector& velocity) {
   velocity_ = velocity;
 }
 
-void body::set_attitude(const rotor& attitude) { attitude_ = normalized(attitude, "body attitude"); }
+void body::set_attitude(const rotor& attitude) { attitude_ = detail::unit_rotor(attitude, "body attitude"); }
 
 void body::set_angular_velocity(const bivector& angular_velocity) {
   detail::require_finite(angular_velocity, "body angular velocity");

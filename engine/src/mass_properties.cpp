@@ -98,10 +98,6 @@ unit_solid polyhedron(const convex_polyhedron& p) {
   return {volume, vector{px + centroid[0], py + centroid[1], pz + centroid[2]}, inertia};
 }
 
-bool is_solid(const shape& s) {
-  return s.kind() != shape_kind::plane && s.kind() != shape_kind::point;
-}
-
 unit_solid unit_solid_of(const shape& s) {
   switch (s.kind()) {
     case shape_kind::sphere:
@@ -131,14 +127,11 @@ gaphys::inertia inertia_of(const matrix& m) {
   return inertia::tensor(symmetric);
 }
 
-rotor unit_attitude(const rotor& r) {
-  detail::require_finite(r, "shape attitude");
-  const real length = e3ga::norm(r);
-  if (!(length > 0)) detail::reject("shape attitude must be a nonzero rotor");
-  return r / length;
-}
-
 }  // namespace
+
+bool is_solid(const shape& s) {
+  return s.kind() != shape_kind::plane && s.kind() != shape_kind::point;
+}
 
 real volume(const shape& s) { return is_solid(s) ? unit_solid_of(s).volume : 0; }
 
@@ -165,7 +158,7 @@ mass_properties solid_mass_properties(const std::vector<attached_shape>& shapes,
   vector weighted{};
   for (const attached_shape& s : shapes) {
     detail::require_finite(s.offset, "shape offset");
-    const rotor r = unit_attitude(s.attitude);
+    const rotor r = detail::unit_rotor(s.attitude, "shape attitude");
     if (!is_solid(s.shape)) continue;
     const unit_solid unit = unit_solid_of(s.shape);
     const vector columns[3] = {e3ga::apply(r, vector{1, 0, 0}), e3ga::apply(r, vector{0, 1, 0}),

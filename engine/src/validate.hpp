@@ -38,4 +38,12 @@ void require_finite(const Named& value, const char* what) {
   }
 }
 
+// The rotor scaled to unit length; a non-finite or zero rotor is rejected.
+inline rotor unit_rotor(const rotor& r, const char* what) {
+  require_finite(r, what);
+  const real length = e3ga::norm(r);
+  if (!(length > 0)) reject(what, " must be a nonzero rotor");
+  return r / length;
+}
+
 }  // namespace gaphys::detail

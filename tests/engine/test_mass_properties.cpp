@@ -56,6 +56,18 @@ triple components(const vector& v) { return {x(v), y(v), z(v)}; }
 
 class MassPropertiesTest : public engine_test {};
 
+TEST_F(MassPropertiesTest, solids_are_the_shapes_with_a_volume) {
+  for (const shape& s : {shape::sphere(0.5), shape::box(vector{1, 2, 3}), shape::capsule(1, 0.5),
+                         shape::convex_hull({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}})}) {
+    EXPECT_TRUE(is_solid(s));
+    EXPECT_GT(volume(s), 0);
+  }
+  for (const shape& s : {shape::plane(vector{0, 0, 1}, 0), shape::point()}) {
+    EXPECT_FALSE(is_solid(s));
+    EXPECT_EQ(volume(s), 0);
+  }
+}
+
 TEST_F(MassPropertiesTest, of_a_sphere) {
   const mass_properties p = solid_mass_properties(shape::sphere(0.5), 2000);
   const real mass = 2000 * 4 * pi * 0.125 / 3;

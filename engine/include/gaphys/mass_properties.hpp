@@ -35,6 +35,9 @@ mass_properties solid_mass_properties(const shape& s, real density);
 // points among them add nothing; with no solid part, invalid_input.
 mass_properties solid_mass_properties(const std::vector<attached_shape>& shapes, real density);
 
+// Whether the shape encloses a volume: every shape but planes and points.
+bool is_solid(const shape& s);
+
 // The solid's volume (m^3); 0 for planes and points.
 real volume(const shape& s);
 
