@@ -18,6 +18,10 @@ void require_static_at_rest(bool is_static, bool at_rest, const char* what) {
 bool is_zero(const vector& v) { return v.e1() == 0 && v.e2() == 0 && v.e3() == 0; }
 bool is_zero(const bivector& b) { return b.e12() == 0 && b.e13() == 0 && b.e23() == 0; }
 
+void require_damping(const std::optional<real>& rate, const char* what) {
+  if (rate) detail::require_non_negative(*rate, what);
+}
+
 bool is_plane(const attached_shape& s) { return s.shape.kind() == shape_kind::plane; }
 
 // The definition's shapes in one list: `shape` first, at the body origin.
@@ -42,6 +46,9 @@ const body_definition& validated(const body_definition& d) {
   detail::require_finite(d.velocity, "body velocity");
   detail::require_finite(d.angular_velocity, "body angular velocity");
   detail::unit_rotor(d.attitude, "body attitude");
+  detail::require_finite(d.gravity_scale, "body gravity scale");
+  require_damping(d.linear_damping, "body linear damping");
+  require_damping(d.angular_damping, "body angular damping");
   require_static_at_rest(d.is_static, is_zero(d.velocity), "velocity");
   require_static_at_rest(d.is_static, is_zero(d.angular_velocity), "angular velocity");
   const std::vector<attached_shape> shapes = all_shapes(d);
@@ -116,6 +123,9 @@ body::body(const body_definition& definition) {
   position_ = d.position + e3ga::apply(attitude_, m.center);
   velocity_ = d.velocity;
   angular_velocity_ = d.angular_velocity;
+  gravity_scale_ = d.gravity_scale;
+  linear_damping_ = d.linear_damping;
+  angular_damping_ = d.angular_damping;
 }
 
 real body::mass() const {
@@ -149,9 +159,39 @@ void body::apply_force(const vector& force, const vector& offset) {
   torque_ = torque_ + e3ga::op(e3ga::apply(attitude_, offset), force);
 }
 
+void body::apply_force_at_world_point(const vector& force, const vector& world_point) {
+  detail::require_finite(force, "force");
+  detail::require_finite(world_point, "force point");
+  force_ = force_ + force;
+  torque_ = torque_ + e3ga::op(world_point - position_, force);
+}
+
 void body::apply_torque(const bivector& torque) {
   detail::require_finite(torque, "torque");
   torque_ = torque_ + torque;
+}
+
+// The angular momentum changes by r ∧ J; Ω = I_w⁻¹(L) is linear in L, so
+// Ω changes by I_w⁻¹(r ∧ J), as a contact impulse changes it.
+void body::apply_impulse(const vector& impulse, const vector& world_point) {
+  detail::require_finite(impulse, "impulse");
+  detail::require_finite(world_point, "impulse point");
+  if (is_static_) return;
+  velocity_ = velocity_ + inverse_mass_ * impulse;
+  angular_velocity_ =
+      angular_velocity_ + world_inverse_inertia(e3ga::op(world_point - position_, impulse));
+}
+
+void body::set_gravity_scale(real scale) {
+  detail::require_finite(scale, "body gravity scale");
+  gravity_scale_ = scale;
+}
+
+void body::set_damping(std::optional<real> linear, std::optional<real> angular) {
+  require_damping(linear, "body linear damping");
+  require_damping(angular, "body angular damping");
+  linear_damping_ = linear;
+  angular_damping_ = angular;
 }
 
 bivector body::world_inertia(const bivector& b) const {

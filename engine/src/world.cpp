@@ -4,7 +4,9 @@
 #include <chrono>
 #include <cstring>
 
+#include "contact_events.hpp"
 #include "contact_solver.hpp"
+#include "query_index.hpp"
 #include "validate.hpp"
 
 namespace gaphys {
@@ -71,6 +73,7 @@ world::world(const world& other)
       pairs_(other.pairs_),
       contacts_(other.contacts_),
       previous_contacts_(other.previous_contacts_),
+      events_(other.events_),
       start_velocities_(other.start_velocities_),
       timings_(other.timings_),
       time_(other.time_),
@@ -87,12 +90,14 @@ world::~world() = default;
 
 body_id world::create_body(const body_definition& definition) {
   bodies_.emplace_back(definition);  // body's constructor validates, then nothing is added
+  ++geometry_version_;
   if (bodies_.back().shape()) space_.add(bodies_.size() - 1);
   return bodies_.size() - 1;
 }
 
 body& world::at(body_id id) {
   if (id >= bodies_.size()) detail::reject("no body with id ", id);
+  ++geometry_version_;  // the caller may move it
   return bodies_[id];
 }
 
@@ -128,6 +133,7 @@ void world::set_material_combine(const material_combine_rules& rules) {
 
 void world::step(real h) {
   detail::require_positive(h, "time step");
+  ++geometry_version_;
   const auto start = clock::now();
   start_velocities_.clear();
   for (const body& b : bodies_) start_velocities_.push_back({b.velocity_, b.angular_velocity_});
@@ -155,20 +161,28 @@ void world::step(real h) {
   timings_.narrow_phase = seconds(paired, met);
   timings_.response = seconds(met, solved) + seconds(moved, corrected);
   timings_.candidate_pairs = pairs_.size();
+  detail::find_events(previous_contacts_, contacts_, events_);
   time_ += h;
 }
 
 // Semi-implicit Euler, velocity half (thesis eqs. 3.12 and 4.4). The angular
 // part integrates the world-frame angular momentum, L' = L + h τ, and reads Ω
 // back through the inertia; the gyroscopic term is in integrate_positions.
+// Each body's gravity is scaled by its gravity_scale and its damping rates
+// are its own where set: a body with neither (scale 1 multiplies exactly)
+// steps bit for bit as before they existed.
 void world::integrate_velocities(real h) {
-  const real linear_decay = 1 / (1 + h * settings_.linear_damping);
-  const real angular_decay = 1 / (1 + h * settings_.angular_damping);
+  const auto decay = [h](real rate) { return 1 / (1 + h * rate); };
+  const real linear_decay = decay(settings_.linear_damping);
+  const real angular_decay = decay(settings_.angular_damping);
   for (body& b : bodies_) {
     if (!b.is_static_) {
-      b.velocity_ = linear_decay * (b.velocity_ + h * (settings_.gravity + b.inverse_mass_ * b.force_));
+      const real linear = b.linear_damping_ ? decay(*b.linear_damping_) : linear_decay;
+      const real angular = b.angular_damping_ ? decay(*b.angular_damping_) : angular_decay;
+      const vector gravity = b.gravity_scale_ * settings_.gravity;
+      b.velocity_ = linear * (b.velocity_ + h * (gravity + b.inverse_mass_ * b.force_));
       const bivector momentum = b.world_inertia(b.angular_velocity_) + h * b.torque_;
-      b.angular_velocity_ = angular_decay * b.world_inverse_inertia(momentum);
+      b.angular_velocity_ = angular * b.world_inverse_inertia(momentum);
     }
     b.force_ = vector{};
     b.torque_ = bivector{};

@@ -42,6 +42,15 @@ struct body_definition {
   // compound body); both may be given. Planes only on static bodies.
   std::optional<gaphys::shape> shape;
   std::vector<attached_shape> shapes;
+  // Finite: this body falls with gravity_scale times the world's gravity.
+  // 0 floats; a negative scale rises against gravity (a balloon), as in
+  // Box2D. Static bodies ignore it.
+  real gravity_scale = 1;
+  // Damping rates (1/s, finite, >= 0) for this body in place of the
+  // world's (world_settings::linear_damping, angular_damping); unset, the
+  // body follows the world's.
+  std::optional<real> linear_damping;
+  std::optional<real> angular_damping;
 };
 
 // A body's linear and angular velocity at one instant.
@@ -86,9 +95,27 @@ class body {
   // Accumulated until the next world::step, then cleared. force is in the
   // world frame, offset in the body frame (zero: no torque).
   void apply_force(const vector& force, const vector& offset = vector{});
+  // The same with the point of application in the world frame: the torque
+  // is (world_point - position()) ∧ force.
+  void apply_force_at_world_point(const vector& force, const vector& world_point);
   void apply_torque(const bivector& torque);
   const vector& accumulated_force() const { return force_; }
   const bivector& accumulated_torque() const { return torque_; }
+
+  // An impulse (N s, world frame) at a world point, changing the velocities
+  // now: v += impulse / m and Ω += I_w⁻¹(r ∧ impulse), r = world_point -
+  // position(). Static bodies ignore it (as in Box2D and Bullet); bad input
+  // is rejected on them too.
+  void apply_impulse(const vector& impulse, const vector& world_point);
+
+  // Per-body gravity scale and damping (see body_definition); validated,
+  // nothing changes when they throw. std::nullopt returns a rate to the
+  // world's.
+  real gravity_scale() const { return gravity_scale_; }
+  void set_gravity_scale(real scale);
+  const std::optional<real>& linear_damping() const { return linear_damping_; }
+  const std::optional<real>& angular_damping() const { return angular_damping_; }
+  void set_damping(std::optional<real> linear, std::optional<real> angular);
 
   // World-frame inertia: I_w(B) = R I(~R B R) ~R, and its inverse (zero for
   // static bodies).
@@ -116,6 +143,10 @@ class body {
 
   vector force_{};
   bivector torque_{};
+
+  real gravity_scale_ = 1;
+  std::optional<real> linear_damping_;
+  std::optional<real> angular_damping_;
 };
 
 }  // namespace gaphys

@@ -4,6 +4,7 @@
 #include "gaphys/algebra.hpp"
 #include "gaphys/body.hpp"
 #include "gaphys/contact.hpp"
+#include "gaphys/conversions.hpp"
 #include "gaphys/error.hpp"
 #include "gaphys/inertia.hpp"
 #include "gaphys/material.hpp"

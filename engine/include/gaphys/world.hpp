@@ -6,15 +6,16 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "gaphys/body.hpp"
 #include "gaphys/contact.hpp"
+#include "gaphys/contact_events.hpp"
+#include "gaphys/queries.hpp"
 #include "gaphys/space.hpp"
 
 namespace gaphys {
-
-using body_id = std::size_t;
 
 struct world_settings {
   vector gravity{0, 0, -9.81};  // m/s^2
@@ -60,6 +61,9 @@ struct step_timings {
 };
 
 class contact_solver;
+namespace detail {
+class query_index;
+}
 
 class world {
  public:
@@ -92,7 +96,31 @@ class world {
 
   real time() const { return time_; }
   const std::vector<contact>& contacts() const { return contacts_; }
+  // The pairs that began touching in the last step, that touched in the
+  // step before and still do, and that stopped (contact_events.hpp).
+  const contact_events& events() const { return events_; }
   const step_timings& last_step_timings() const { return timings_; }
+
+  // Spatial queries, against every body's shapes where they are now (after
+  // the last step and any setter), through a grid of their bounds rebuilt
+  // when bodies have moved (docs/engine.md, "Queries"). Directions need not
+  // be unit; max_distance is finite or infinite and >= 0. A ray that starts
+  // inside (or on) a solid hits it at distance 0 with the normal -direction;
+  // point shapes are never hit. Throws invalid_input for a non-finite origin
+  // or direction, a zero direction or a negative or NaN distance.
+  // The nearest hit within max_distance (ties: the lower body id, then shape).
+  std::optional<ray_hit> ray_cast(const vector& origin, const vector& direction,
+                                  real max_distance) const;
+  // Every shape the ray enters within max_distance, nearest first (one hit
+  // per shape).
+  std::vector<ray_hit> ray_cast_all(const vector& origin, const vector& direction,
+                                    real max_distance) const;
+  // The bodies, in increasing id, with a shape that overlaps or touches the
+  // solid sphere (radius finite, > 0), or the box at a pose (half extents
+  // finite, > 0; attitude nonzero, normalized).
+  std::vector<body_id> overlap_sphere(const vector& centre, real radius) const;
+  std::vector<body_id> overlap_box(const vector& centre, const vector& half_extents,
+                                   const rotor& attitude = rotor{1, 0, 0, 0}) const;
 
   // FNV-1a over the bits of every body's position, velocity, attitude and
   // angular velocity, and of the last step's contact impulses (the next step
@@ -109,12 +137,18 @@ class world {
   std::vector<body_pair> pairs_;
   std::vector<contact> contacts_;
   std::vector<contact> previous_contacts_;  // the last step's, for warm starting
+  contact_events events_;
   std::vector<body_velocity> start_velocities_;  // before this step's forces, for restitution
   step_timings timings_;
   real time_ = 0;
   // The contact solver's working memory, kept from step to step (it holds
   // nothing a later step reads, so a copy of the world starts a fresh one).
   std::unique_ptr<contact_solver> solver_;
+  // The queries' index of the shapes, built when a query finds it older than
+  // the bodies' poses: geometry_version_ counts the changes (steps, new
+  // bodies, and every non-const at(), through which a pose may change).
+  mutable std::unique_ptr<detail::query_index> queries_;
+  std::uint64_t geometry_version_ = 0;
 };
 
 }  // namespace gaphys

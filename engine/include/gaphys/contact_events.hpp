@@ -1,0 +1,31 @@
+// Which pairs of bodies began touching in a step, which touched before it
+// and still do, and which stopped: world::events(), after each step.
+#pragma once
+
+#include <vector>
+
+#include "gaphys/algebra.hpp"
+#include "gaphys/queries.hpp"
+
+namespace gaphys {
+
+// A pair touches in a step when one of its contacts overlapped as the step
+// began (depth >= 0) or pushed during it (a normal impulse > 0): a
+// speculative contact that a landing body closes counts, one it only
+// approached does not.
+struct contact_event {
+  body_id body_a, body_b;  // body_a < body_b, as in world::contacts()
+  vector point;            // the pair's deepest contact point
+  vector normal;           // its normal, from B towards A
+  real impulse;            // N s: the pair's total normal impulse in the step
+};
+
+// Each list sorted by (body_a, body_b). An ended pair's point, normal and
+// impulse are those of the last step in which it touched.
+struct contact_events {
+  std::vector<contact_event> began;
+  std::vector<contact_event> persisted;
+  std::vector<contact_event> ended;
+};
+
+}  // namespace gaphys

@@ -1,0 +1,16 @@
+// The touching pairs of two consecutive steps' contacts, compared.
+#pragma once
+
+#include <vector>
+
+#include "gaphys/contact.hpp"
+#include "gaphys/contact_events.hpp"
+
+namespace gaphys::detail {
+
+// Both lists sorted by body pair (as the narrow phase makes them), each
+// contact holding its step's impulses.
+void find_events(const std::vector<contact>& previous, const std::vector<contact>& current,
+                 contact_events& events);
+
+}  // namespace gaphys::detail

@@ -1,0 +1,110 @@
+// world::events() against what the contact list and free fall say: a ball
+// dropped on a floor begins touching it in the step that free fall puts its
+// landing in, keeps touching while it rests (pushing its weight times the
+// step), and once it is thrown up its pair ends, with the event of the last
+// step it touched in; an elastic ball begins and ends once per bounce.
+#include <cmath>
+#include <vector>
+
+#include "engine_test_support.hpp"
+
+namespace gaphys::testing {
+namespace {
+
+class contact_events_test : public engine_test {
+ protected:
+  // Whether the pair touches in the last step, read from the contact list
+  // as contact_events.hpp defines it.
+  static bool touching(const world& w, body_id a, body_id b) {
+    for (const contact& c : w.contacts()) {
+      if (c.body_a == a && c.body_b == b && (c.geometry.depth >= 0 || c.impulse.normal > 0))
+        return true;
+    }
+    return false;
+  }
+  static int count(const std::vector<contact_event>& events, body_id a, body_id b) {
+    int n = 0;
+    for (const contact_event& e : events) n += e.body_a == a && e.body_b == b;
+    return n;
+  }
+};
+
+TEST_F(contact_events_test, a_dropped_ball_begins_touching_when_free_fall_lands_it_and_rests) {
+  world w = make_world();
+  const body_id floor = add_floor(w);
+  const real radius = 0.5, drop = 1.2;  // falls 1.2 m before touching
+  const body_id ball = add_sphere(w, vector{0, 0, radius + drop}, radius, 2);
+  const real landing = std::sqrt(2 * drop / 9.81);  // s
+  int began_at = -1;
+  bool was_touching = false;
+  for (int step = 0; step < 480; ++step) {
+    w.step(h);
+    const contact_events& e = w.events();
+    const bool now = touching(w, floor, ball);
+    EXPECT_EQ(count(e.began, floor, ball), now && !was_touching ? 1 : 0) << "step " << step;
+    EXPECT_EQ(count(e.persisted, floor, ball), now && was_touching ? 1 : 0) << "step " << step;
+    EXPECT_EQ(count(e.ended, floor, ball), !now && was_touching ? 1 : 0) << "step " << step;
+    if (count(e.began, floor, ball) == 1 && began_at < 0) began_at = step;
+    was_touching = now;
+  }
+  // The step whose end first reaches the landing time (semi-implicit Euler
+  // lands within a step of it).
+  ASSERT_GE(began_at, 0);
+  EXPECT_NEAR(began_at + 1, landing / h, 1.5);
+  // Resting: the floor pushes the ball's weight over the step, along +z.
+  const contact_events& e = w.events();
+  ASSERT_EQ(e.persisted.size(), 1u);
+  EXPECT_NEAR(e.persisted[0].impulse, 2 * 9.81 * h, 1e-9);
+  EXPECT_TRUE(
+      near(e.persisted[0].normal, vector{0, 0, -1}, 1e-12));  // from B (ball) towards A (floor)
+  EXPECT_NEAR(z(e.persisted[0].point), 0, 1e-3);
+
+  // Thrown up: the pair, still overlapping by the slop as the next step
+  // begins, touches in it and ends in the one after, carrying the event of
+  // the last step it touched in.
+  w.at(ball).set_velocity(vector{0, 0, 5});
+  w.step(h);
+  ASSERT_EQ(w.events().persisted.size(), 1u);
+  const contact_event last = w.events().persisted[0];
+  w.step(h);
+  ASSERT_EQ(w.events().ended.size(), 1u);
+  EXPECT_EQ(w.events().ended[0].body_b, ball);
+  EXPECT_EQ(w.events().ended[0].impulse, last.impulse);
+  EXPECT_TRUE(near(w.events().ended[0].point, last.point, 0));
+  EXPECT_TRUE(w.events().began.empty());
+  EXPECT_TRUE(w.events().persisted.empty());
+}
+
+TEST_F(contact_events_test, an_elastic_ball_begins_and_ends_once_per_bounce) {
+  world w = make_world();
+  const body_id floor = add_floor(w, 0, 1);
+  const body_id ball = add_sphere(w, vector{0, 0, 1.5}, 0.5, 1, vector{}, 1);
+  int began = 0, ended = 0;
+  simulate(w, 3 * 240, [&](int) {
+    began += count(w.events().began, floor, ball);
+    ended += count(w.events().ended, floor, ball);
+  });
+  // Falling 1 m takes 0.4515 s; a bounce period is twice that: 3 s hold
+  // bounces at 0.45, 1.35, 2.26 s (and the pair is apart between them).
+  EXPECT_EQ(began, 3);
+  EXPECT_GE(ended, began - 1);
+  EXPECT_LE(ended, began);
+}
+
+TEST_F(contact_events_test, events_are_sorted_by_pair_and_a_copied_world_keeps_them) {
+  world w = make_world();
+  add_floor(w);
+  for (int i = 0; i < 5; ++i) add_sphere(w, vector{real(2 * i), 0, real(0.5)}, 0.5);
+  w.step(h);
+  const std::vector<contact_event>& began = w.events().began;
+  ASSERT_EQ(began.size(), 5u);
+  for (std::size_t i = 1; i < began.size(); ++i) {
+    EXPECT_LT(std::make_pair(began[i - 1].body_a, began[i - 1].body_b),
+              std::make_pair(began[i].body_a, began[i].body_b));
+  }
+  const world copy = w;
+  EXPECT_EQ(copy.events().began.size(), 5u);
+}
+
+}  // namespace
+}  // namespace gaphys::testing
