@@ -5,7 +5,7 @@
 
 An input is OK when it loads or stops with the loader's own `file: message`
 (and `gaphys-gen report` / `merge` then fail cleanly and write nothing);
-anything else (an exception, over --limit seconds, a partial merge) is a
+anything else (an exception, over --limit processor seconds, a partial merge) is a
 failure, saved under --corpus. Exit status 1 if any failed.
 """
 

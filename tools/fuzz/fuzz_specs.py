@@ -4,7 +4,7 @@
     python3 tools/fuzz/fuzz_specs.py --seed 1 --count 100000
 
 An input is OK when it generates or stops with a spec error located inside it;
-anything else (an exception, over --limit seconds, a half-written output
+anything else (an exception, over --limit processor seconds, a half-written output
 folder) is a failure, saved under --corpus. Exit status 1 if any failed.
 """
 

@@ -101,7 +101,7 @@ def parse_arguments(target, argv: list[str]) -> argparse.Namespace:
     parser.add_argument("--seed", type=int, default=1, help="makes the run reproducible (default 1)")
     parser.add_argument("--count", type=int, default=1000, help="inputs to check (default 1000)")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1, help="worker processes (default: cores)")
-    parser.add_argument("--limit", type=float, default=1.0, help="seconds one input may take (default 1)")
+    parser.add_argument("--limit", type=float, default=1.0, help="processor seconds one input may take (default 1)")
     parser.add_argument("--cli-every", type=int, default=200,
                         help="also run every Nth input through the command line (0: never; default 200)")
     parser.add_argument("--cli-timeout", type=float, default=60.0, help="seconds one command-line run may take")
