@@ -33,8 +33,9 @@ std::vector<attached_shape> all_shapes(const body_definition& d) {
 }
 
 bool has_solid(const std::vector<attached_shape>& shapes) {
-  return std::any_of(shapes.begin(), shapes.end(),
-                     [](const attached_shape& s) { return is_solid(s.shape); });
+  return std::any_of(shapes.begin(), shapes.end(), [](const attached_shape& s) {
+    return is_solid(s.shape) && !s.shape.is_sensor();
+  });
 }
 
 // Validates everything before the body is built, so a throw leaves no trace.
@@ -49,6 +50,7 @@ const body_definition& validated(const body_definition& d) {
   detail::require_finite(d.gravity_scale, "body gravity scale");
   require_damping(d.linear_damping, "body linear damping");
   require_damping(d.angular_damping, "body angular damping");
+  if (d.is_static && d.is_kinematic) detail::reject("a body cannot be both static and kinematic");
   require_static_at_rest(d.is_static, is_zero(d.velocity), "velocity");
   require_static_at_rest(d.is_static, is_zero(d.angular_velocity), "angular velocity");
   const std::vector<attached_shape> shapes = all_shapes(d);
@@ -58,13 +60,14 @@ const body_definition& validated(const body_definition& d) {
     if (is_plane(s) && !d.is_static) detail::reject("a plane shape needs a static body");
     // The broad phase bounds a plane's body by the plane alone.
     if (is_plane(s) && shapes.size() > 1) detail::reject("a plane must be its body's only shape");
-    const bool posed = !is_zero(s.offset) || s.attitude.c[1] != 0 || s.attitude.c[2] != 0 ||
-                       s.attitude.c[3] != 0;
+    const bool posed =
+        !is_zero(s.offset) || s.attitude.c[1] != 0 || s.attitude.c[2] != 0 || s.attitude.c[3] != 0;
     if (is_plane(s) && posed) {
-      detail::reject("a plane shape takes no offset or attitude: give them in its normal and offset");
+      detail::reject(
+          "a plane shape takes no offset or attitude: give them in its normal and offset");
     }
   }
-  if (!d.is_static && !d.inertia && !has_solid(shapes)) {
+  if (!d.is_static && !d.is_kinematic && !d.inertia && !has_solid(shapes)) {
     detail::reject("a dynamic body without a solid shape needs an explicit inertia");
   }
   return d;
@@ -82,7 +85,9 @@ struct initial_mass {
 
 initial_mass initial_mass_properties(const body_definition& d,
                                      const std::vector<attached_shape>& shapes) {
-  if (d.is_static) return {0, d.inertia.value_or(inertia::principal(1, 1, 1)), vector{}};
+  if (d.is_static || d.is_kinematic) {
+    return {0, d.inertia.value_or(inertia::principal(1, 1, 1)), vector{}};
+  }
   if (d.inertia) return {1 / d.mass, *d.inertia, vector{}};
   const mass_properties solid = solid_mass_properties(shapes, d.density.value_or(1));
   if (d.density) return {1 / solid.mass, solid.inertia, solid.center};
@@ -115,6 +120,7 @@ body::body(const body_definition& definition) {
   std::vector<attached_shape> shapes = all_shapes(d);
   const initial_mass m = initial_mass_properties(d, shapes);
   is_static_ = d.is_static;
+  is_kinematic_ = d.is_kinematic;
   inverse_mass_ = m.inverse_mass;
   inertia_ = m.inertia;
   shapes_ = recentred(std::move(shapes), m.center);
@@ -129,7 +135,7 @@ body::body(const body_definition& definition) {
 }
 
 real body::mass() const {
-  return is_static_ ? std::numeric_limits<real>::infinity() : 1 / inverse_mass_;
+  return is_dynamic() ? 1 / inverse_mass_ : std::numeric_limits<real>::infinity();
 }
 
 void body::set_position(const vector& position) {
@@ -143,7 +149,23 @@ void body::set_velocity(const vector& velocity) {
   velocity_ = velocity;
 }
 
-void body::set_attitude(const rotor& attitude) { attitude_ = detail::unit_rotor(attitude, "body attitude"); }
+// The position moves by h v; the attitude turns by exp(-h Ω / 2) (as
+// world::step moves a kinematic body), which is the target's T ~R when
+// Ω = -(2 / h) log(T ~R), with T's sign taken for the shorter turn.
+void body::move_to(const vector& position, const rotor& attitude, real h) {
+  detail::require_finite(position, "target position");
+  const rotor target = detail::unit_rotor(attitude, "target attitude");
+  detail::require_positive(h, "time step");
+  if (!is_kinematic_) detail::reject("move_to needs a kinematic body");
+  rotor turn = e3ga::gp(target, e3ga::reverse(attitude_));
+  if (turn.c[0] < 0) turn = -turn;
+  velocity_ = (1 / h) * (position - position_);
+  angular_velocity_ = (-2 / h) * e3ga::log(turn);
+}
+
+void body::set_attitude(const rotor& attitude) {
+  attitude_ = detail::unit_rotor(attitude, "body attitude");
+}
 
 void body::set_angular_velocity(const bivector& angular_velocity) {
   detail::require_finite(angular_velocity, "body angular velocity");
@@ -176,7 +198,7 @@ void body::apply_torque(const bivector& torque) {
 void body::apply_impulse(const vector& impulse, const vector& world_point) {
   detail::require_finite(impulse, "impulse");
   detail::require_finite(world_point, "impulse point");
-  if (is_static_) return;
+  if (!is_dynamic()) return;
   velocity_ = velocity_ + inverse_mass_ * impulse;
   angular_velocity_ =
       angular_velocity_ + world_inverse_inertia(e3ga::op(world_point - position_, impulse));
@@ -195,13 +217,13 @@ void body::set_damping(std::optional<real> linear, std::optional<real> angular) 
 }
 
 bivector body::world_inertia(const bivector& b) const {
-  if (is_static_) return bivector{};
+  if (!is_dynamic()) return bivector{};
   if (inertia_.is_isotropic()) return inertia_.isotropic_moment() * b;
   return e3ga::apply(attitude_, inertia_(e3ga::apply(e3ga::reverse(attitude_), b)));
 }
 
 bivector body::world_inverse_inertia(const bivector& l) const {
-  if (is_static_) return bivector{};
+  if (!is_dynamic()) return bivector{};
   if (inertia_.is_isotropic()) return (1 / inertia_.isotropic_moment()) * l;
   return e3ga::apply(attitude_, inertia_.inverse(e3ga::apply(e3ga::reverse(attitude_), l)));
 }
@@ -213,7 +235,7 @@ vector body::velocity_at(const vector& world_point) const {
 // Bivectors square to minus their squared magnitude, hence the sign of the
 // rotational term: E = 1/2 m v^2 + 1/2 <Ω ~L>.
 real body::kinetic_energy() const {
-  if (is_static_) return 0;
+  if (!is_dynamic()) return 0;  // infinite mass: none to speak of
   const real linear = e3ga::scp(velocity_, velocity_) / inverse_mass_;
   const real angular = e3ga::scp(angular_velocity_, e3ga::reverse(angular_momentum()));
   return real(0.5) * (linear + angular);

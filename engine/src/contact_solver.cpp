@@ -208,8 +208,8 @@ void contact_solver::add_constraint(const world_settings& settings, const body& 
 void contact_solver::set_relaxation(const world_settings& settings, const std::vector<body>& bodies) {
   contacts_per_body_.assign(bodies.size(), 0);
   for (const constraint& k : constraints_) {
-    if (!bodies[k.body_a].is_static()) ++contacts_per_body_[k.body_a];
-    if (!bodies[k.body_b].is_static()) ++contacts_per_body_[k.body_b];
+    if (bodies[k.body_a].is_dynamic()) ++contacts_per_body_[k.body_a];
+    if (bodies[k.body_b].is_dynamic()) ++contacts_per_body_[k.body_b];
   }
   for (constraint& k : constraints_) {
     if (contacts_per_body_[k.body_a] > 1 || contacts_per_body_[k.body_b] > 1) {
@@ -467,7 +467,7 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   store_impulses(contacts);
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     body& b = bodies[i];
-    if (b.is_static()) continue;
+    if (!b.is_dynamic()) continue;  // contacts never change a static or kinematic body
     b.velocity_ = solver_bodies_[i].velocity;
     b.angular_velocity_ = solver_bodies_[i].angular_velocity;
   }
@@ -569,7 +569,7 @@ void contact_solver::correct_turning(const world_settings& settings, std::vector
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     body& x = bodies[i];
     const solver_body& p = pseudo_bodies_[i];
-    if (x.is_static_) continue;
+    if (!x.is_dynamic()) continue;
     x.position_ = x.position_ + h * p.velocity;
     const bivector& w = p.angular_velocity;
     if (w.e12() == 0 && w.e13() == 0 && w.e23() == 0) continue;

@@ -159,7 +159,7 @@ mass_properties solid_mass_properties(const std::vector<attached_shape>& shapes,
   for (const attached_shape& s : shapes) {
     detail::require_finite(s.offset, "shape offset");
     const rotor r = detail::unit_rotor(s.attitude, "shape attitude");
-    if (!is_solid(s.shape)) continue;
+    if (!is_solid(s.shape) || s.shape.is_sensor()) continue;  // sensors add no mass
     const unit_solid unit = unit_solid_of(s.shape);
     const vector columns[3] = {e3ga::apply(r, vector{1, 0, 0}), e3ga::apply(r, vector{0, 1, 0}),
                                e3ga::apply(r, vector{0, 0, 1})};
@@ -185,7 +185,8 @@ mass_properties solid_mass_properties(const std::vector<attached_shape>& shapes,
     weighted = weighted + part_mass * center;
   }
   if (parts.empty()) {
-    detail::reject("solid mass properties need a solid shape (planes and points have no volume)");
+    detail::reject(
+        "solid mass properties need a solid shape (planes and points have no volume, sensors no mass)");
   }
   const vector center = weighted / mass;
   matrix total{};

@@ -21,6 +21,7 @@ void query_index::build(const std::vector<body>& bodies, std::uint64_t version) 
     const body& x = bodies[b];
     for (std::size_t s = 0; s < x.shapes().size(); ++s) {
       const attached_shape& a = x.shapes()[s];
+      if (a.shape.is_sensor()) continue;  // queries pass through sensors
       const rotor attitude = e3ga::gp(x.attitude(), a.attitude);
       const vector centre = x.to_world(a.offset);
       placed_.push_back(place(a.shape, centre, attitude));

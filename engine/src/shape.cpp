@@ -66,6 +66,21 @@ real shape::bounding_radius() const {
   return 0;
 }
 
+shape shape::with_filter(std::uint32_t category, std::uint32_t mask) const {
+  shape copy = *this;
+  copy.filter_ = collision_filter{category, mask};
+  return copy;
+}
+
+shape shape::as_sensor() const {
+  if (kind_ == shape_kind::plane || kind_ == shape_kind::point) {
+    detail::reject("a sensor needs a volume: a plane or a point cannot be one");
+  }
+  shape copy = *this;
+  copy.sensor_ = true;
+  return copy;
+}
+
 shape shape::with(real material::*field, real value) const {
   shape copy = *this;
   copy.material_.*field = value;

@@ -5,6 +5,19 @@
 
 namespace gaphys {
 
+namespace {
+
+// Whether two placed shapes overlap or touch: the narrow phase at no margin.
+bool overlap(const placed_shape& a, const placed_shape& b, contact_manifold& manifold) {
+  find_contacts(a, b, 0, vector{}, vector{}, 0, manifold);
+  for (int k = 0; k < manifold.count; ++k) {
+    if (manifold.points[k].geometry.depth >= 0) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 void space::candidate_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs,
                             real lookahead, real margin) {
   // The grid declines coordinates too far out for integer cells.
@@ -22,7 +35,7 @@ void space::all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& p
     const std::size_t a = shaped_bodies_[i];
     for (std::size_t j = i + 1; j < shaped_bodies_.size(); ++j) {
       const std::size_t b = shaped_bodies_[j];
-      if (bodies[a].is_static() && bodies[b].is_static()) continue;
+      if (!bodies[a].is_dynamic() && !bodies[b].is_dynamic()) continue;  // neither can move the other
       pairs.emplace_back(std::min(a, b), std::max(a, b));
     }
   }
@@ -38,8 +51,7 @@ static real turning_speed(const body& x) {
 
 static real closing_reach(const body& a, const body& b, real lookahead, real margin) {
   const real turning = turning_speed(a) + turning_speed(b);
-  return margin +
-         lookahead * (e3ga::norm(a.velocity()) + e3ga::norm(b.velocity()) + turning);
+  return margin + lookahead * (e3ga::norm(a.velocity()) + e3ga::norm(b.velocity()) + turning);
 }
 
 void space::place_shapes(const std::vector<body>& bodies) {
@@ -62,9 +74,11 @@ void space::place_shapes(const std::vector<body>& bodies) {
 
 void space::find_contacts(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
                           std::vector<contact>& contacts, real lookahead,
-                          const material_combine_rules& rules, real margin) {
+                          const material_combine_rules& rules, real margin,
+                          std::vector<sensor_overlap>* sensors) {
   place_shapes(bodies);
   contacts.clear();
+  if (sensors) sensors->clear();
   contact_manifold manifold;
   for (const auto& [a, b] : pairs) {
     const body& body_a = bodies[a];
@@ -82,8 +96,17 @@ void space::find_contacts(const std::vector<body>& bodies, const std::vector<bod
         // bounded again here, each by its own sphere.
         if (compound && shape_a.kind != shape_kind::plane && shape_b.kind != shape_kind::plane) {
           const real apart = e3ga::norm(shape_a.center - shape_b.center) -
-                             attached_a.shape.bounding_radius() - attached_b.shape.bounding_radius();
+                             attached_a.shape.bounding_radius() -
+                             attached_b.shape.bounding_radius();
           if (apart > reach) continue;
+        }
+        if (!attached_a.shape.filter().meets(attached_b.shape.filter())) continue;
+        if (attached_a.shape.is_sensor() || attached_b.shape.is_sensor()) {
+          if (sensors && overlap(shape_a, shape_b, manifold)) {
+            const bool a_senses = attached_a.shape.is_sensor();
+            sensors->push_back(a_senses ? sensor_overlap{a, i, b, j} : sensor_overlap{b, j, a, i});
+          }
+          continue;
         }
         gaphys::find_contacts(shape_a, shape_b, lookahead, body_a.velocity(), body_b.velocity(),
                               reach, manifold);

@@ -78,7 +78,7 @@ void uniform_grid::collect(const std::vector<body>& bodies, const std::vector<st
     const real sweep =
         lookahead * (e3ga::norm(b.velocity()) + e3ga::norm(b.angular_velocity()) * r) + margin / 2;
     const real reach = r + sweep + relative_margin * (1 + largest_magnitude(c) + r + sweep);
-    bounds_.push_back(bound{c, reach, index, b.is_static()});
+    bounds_.push_back(bound{c, reach, index, !b.is_dynamic()});
     widths_.push_back(2 * reach);
   }
   if (bounds_.empty()) return;
@@ -236,7 +236,7 @@ void uniform_grid::pair_planes(const std::vector<body>& bodies, std::vector<inde
     const vector n = e3ga::apply(p.attitude(), p.shape()->normal());
     const real d = p.shape()->offset() + e3ga::scp(n, p.position());
     for (const bound& b : bounds_) {
-      if (b.is_static) continue;  // planes are static too
+      if (b.infinite_mass) continue;  // planes are static too
       if (e3ga::scp(n, b.centre) - b.radius <= d + plane_margin_) {
         pairs.emplace_back(std::min(index, b.body), std::max(index, b.body));
       }
@@ -247,7 +247,7 @@ void uniform_grid::pair_planes(const std::vector<body>& bodies, std::vector<inde
 // Bounds overlap when |cA - cB| <= rA + rB (radii widened by the margin).
 void uniform_grid::add_if_overlapping(const bound& a, const bound& b,
                                       std::vector<index_pair>& pairs) const {
-  if (a.is_static && b.is_static) return;
+  if (a.infinite_mass && b.infinite_mass) return;
   const vector d = a.centre - b.centre;
   const real reach = a.radius + b.radius;
   if (e3ga::scp(d, d) > reach * reach) return;

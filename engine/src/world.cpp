@@ -74,6 +74,7 @@ world::world(const world& other)
       contacts_(other.contacts_),
       previous_contacts_(other.previous_contacts_),
       events_(other.events_),
+      sensor_overlaps_(other.sensor_overlaps_),
       start_velocities_(other.start_velocities_),
       timings_(other.timings_),
       time_(other.time_),
@@ -146,7 +147,7 @@ void world::step(real h) {
   const auto paired = clock::now();
   previous_contacts_.swap(contacts_);
   space_.find_contacts(bodies_, pairs_, contacts_, h, settings_.material_combine,
-                       settings_.contact_margin);
+                       settings_.contact_margin, &sensor_overlaps_);
   const auto met = clock::now();
   if (!solver_) solver_ = std::make_unique<contact_solver>();  // a moved-from world
   solver_->solve_velocities(settings_, bodies_, start_velocities_, contacts_, previous_contacts_, h);
@@ -176,7 +177,7 @@ void world::integrate_velocities(real h) {
   const real linear_decay = decay(settings_.linear_damping);
   const real angular_decay = decay(settings_.angular_damping);
   for (body& b : bodies_) {
-    if (!b.is_static_) {
+    if (b.is_dynamic()) {
       const real linear = b.linear_damping_ ? decay(*b.linear_damping_) : linear_decay;
       const real angular = b.angular_damping_ ? decay(*b.angular_damping_) : angular_decay;
       const vector gravity = b.gravity_scale_ * settings_.gravity;
@@ -204,6 +205,11 @@ void world::integrate_positions(real h) {
   for (body& b : bodies_) {
     if (b.is_static_) continue;
     b.position_ = b.position_ + h * b.velocity_;
+    if (b.is_kinematic_) {  // turns as it is told
+      const rotor attitude = e3ga::gp(e3ga::exp((-h / 2) * b.angular_velocity_), b.attitude_);
+      b.attitude_ = attitude / e3ga::norm(attitude);
+      continue;
+    }
     const bivector momentum = b.world_inertia(b.angular_velocity_);
     const rotor start = b.attitude_;
     bivector omega = b.angular_velocity_;

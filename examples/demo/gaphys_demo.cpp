@@ -262,11 +262,13 @@ int run(const options& o) {
   // Only world::step is timed: ms/step is the engine's cost, not the writer's.
   progress bar(o.steps);
   std::chrono::steady_clock::duration stepping{};
+  long long touches_began = 0;  // pairs that began touching, from the contact events
   for (long long step = 1; step <= o.steps; ++step) {
     if (stop_signal) throw std::runtime_error("interrupted at step " + std::to_string(step));
     const auto start = std::chrono::steady_clock::now();
     world.step(h);
     stepping += std::chrono::steady_clock::now() - start;
+    touches_began += static_cast<long long>(world.events().began.size());
     if (step % o.every == 0) record();
     bar.update(step);
   }
@@ -287,7 +289,13 @@ int run(const options& o) {
   std::cerr << o.scene->name << ": " << o.steps << " steps, " << world.time() << " s simulated, "
             << std::fixed << std::setprecision(3) << seconds << " s wall, "
             << 1000 * seconds / double(o.steps) << " ms/step, " << world.contacts().size()
-            << " contacts in the last step\n";
+            << " contacts in the last step, " << touches_began << " touches began\n";
+  // What a ray straight down the middle of the scene meets at the end.
+  if (const std::optional<gaphys::ray_hit> hit =
+          world.ray_cast(gaphys::vector{0, 0, 100}, gaphys::vector{0, 0, -1}, 200)) {
+    std::cerr << "a ray down the z axis from 100 m meets body " << hit->body << " at z = "
+              << std::setprecision(4) << hit->point.e3() << "\n";
+  }
   return 0;
 }
 

@@ -30,6 +30,12 @@ struct body_definition {
   // body's mass; a dynamic body without a solid shape must give one.
   std::optional<gaphys::inertia> inertia;
   bool is_static = false;
+  // A kinematic body has infinite mass like a static one but moves, at the
+  // velocities the user gives it (or to the poses body::move_to aims at):
+  // gravity, forces, impulses and contacts never change them, and it pushes
+  // dynamic bodies without being pushed. Its frame is where it is given (no
+  // centre of mass is sought). Not with is_static; no planes.
+  bool is_kinematic = false;
   // Where the body's frame is. With the inertia computed from the shapes,
   // the body's origin is moved to their centre of mass: position() is then
   // this point plus the centre's offset (turned by the attitude), and each
@@ -70,7 +76,9 @@ class body {
   explicit body(const body_definition& definition);
 
   bool is_static() const { return is_static_; }
-  real mass() const;  // infinity for static bodies
+  bool is_kinematic() const { return is_kinematic_; }
+  bool is_dynamic() const { return !is_static_ && !is_kinematic_; }
+  real mass() const;  // infinity for static and kinematic bodies
   real inverse_mass() const { return inverse_mass_; }
   const gaphys::inertia& body_inertia() const { return inertia_; }
   // The body's shapes about its centre of mass (the definition's `shape`
@@ -91,6 +99,10 @@ class body {
   void set_velocity(const vector& velocity);
   void set_attitude(const rotor& attitude);
   void set_angular_velocity(const bivector& angular_velocity);
+  // A kinematic body: sets the velocities that carry it to this pose (the
+  // attitude normalized, by the shorter turn) in the next step of h seconds
+  // (finite, > 0). Throws invalid_input on other bodies.
+  void move_to(const vector& position, const rotor& attitude, real h);
 
   // Accumulated until the next world::step, then cleared. force is in the
   // world frame, offset in the body frame (zero: no torque).
@@ -131,6 +143,7 @@ class body {
   friend class contact_solver;
 
   bool is_static_ = false;
+  bool is_kinematic_ = false;
   real inverse_mass_ = 0;
   gaphys::inertia inertia_;
   std::vector<attached_shape> shapes_;

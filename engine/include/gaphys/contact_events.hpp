@@ -2,6 +2,7 @@
 // and still do, and which stopped: world::events(), after each step.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "gaphys/algebra.hpp"
@@ -26,6 +27,16 @@ struct contact_events {
   std::vector<contact_event> began;
   std::vector<contact_event> persisted;
   std::vector<contact_event> ended;
+};
+
+// A sensor shape and a shape it overlaps or touches after a step (neither
+// pushes the other): bodies and shape indices into body::shapes(). When
+// both are sensors, the lower body is `sensor`.
+struct sensor_overlap {
+  body_id sensor;
+  std::size_t sensor_shape;
+  body_id other;
+  std::size_t other_shape;
 };
 
 }  // namespace gaphys

@@ -31,8 +31,9 @@ mass_properties solid_mass_properties(const shape& s, real density);
 // Of shapes at their poses, each of the same density: the parts' masses add,
 // their centres average by mass and their inertias, turned by their
 // attitudes, move to the common centre (parallel axes). Offsets must be
-// finite and attitudes finite and nonzero (they are normalized). Planes and
-// points among them add nothing; with no solid part, invalid_input.
+// finite and attitudes finite and nonzero (they are normalized). Planes,
+// points and sensors among them add nothing; with no solid part,
+// invalid_input.
 mass_properties solid_mass_properties(const std::vector<attached_shape>& shapes, real density);
 
 // Whether the shape encloses a volume: every shape but planes and points.

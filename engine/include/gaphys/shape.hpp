@@ -2,6 +2,7 @@
 // to; the shape only knows its body-frame parameters and its material.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -12,6 +13,19 @@
 namespace gaphys {
 
 enum class shape_kind { sphere, plane, point, box, capsule, convex_hull };
+
+// Which shapes meet, by category and mask bits (as Box2D's): two shapes make
+// contacts, or a sensor reports the other, only when each one's category
+// shares a bit with the other's mask. By default every shape is in category
+// 1 and meets every category.
+struct collision_filter {
+  std::uint32_t category = 1;
+  std::uint32_t mask = 0xffffffff;
+
+  bool meets(const collision_filter& other) const {
+    return (category & other.mask) != 0 && (other.category & mask) != 0;
+  }
+};
 
 class shape {
  public:
@@ -44,6 +58,13 @@ class shape {
   shape with_friction(real mu) const;              // finite, >= 0; default 0.5
   shape with_rolling_resistance(real c) const;     // finite, >= 0; default 0
   shape with_spinning_friction(real c) const;      // finite, >= 0; default 0
+  // A copy in these categories, meeting shapes of these (collision_filter).
+  shape with_filter(std::uint32_t category, std::uint32_t mask) const;
+  // A copy that is a sensor: it reports the shapes it overlaps
+  // (world::sensor_overlaps) and never pushes them, adds no mass to its
+  // body, and ray casts and overlap queries pass through it. A plane or a
+  // point cannot be one (invalid_input): a sensor needs a volume.
+  shape as_sensor() const;
 
   shape_kind kind() const { return kind_; }
   real radius() const { return radius_; }                       // sphere, capsule
@@ -56,6 +77,8 @@ class shape {
   real bounding_radius() const;
   const vector& normal() const { return normal_; }
   real offset() const { return offset_; }
+  const collision_filter& filter() const { return filter_; }
+  bool is_sensor() const { return sensor_; }
   const gaphys::material& material() const { return material_; }
   real restitution() const { return material_.restitution; }
   real friction() const { return material_.friction; }
@@ -75,6 +98,8 @@ class shape {
   real half_height_ = 0;
   std::shared_ptr<const convex_polyhedron> polyhedron_;  // immutable, shared by copies
   gaphys::material material_;
+  collision_filter filter_;
+  bool sensor_ = false;
 };
 
 }  // namespace gaphys

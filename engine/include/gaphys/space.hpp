@@ -8,6 +8,7 @@
 
 #include "gaphys/body.hpp"
 #include "gaphys/contact.hpp"
+#include "gaphys/contact_events.hpp"
 #include "gaphys/detail/uniform_grid.hpp"
 
 namespace gaphys {
@@ -28,7 +29,7 @@ class space {
   broad_phase_kind broad_phase() const { return kind_; }
   void set_broad_phase(broad_phase_kind kind) { kind_ = kind; }
 
-  // Pairs of shaped bodies, not both static, that may touch within
+  // Pairs of shaped bodies, not both static or kinematic, that may touch within
   // `lookahead` seconds at their present velocities, or are within
   // `margin` metres: a superset of those that do. Pairs are (a, b) with
   // a < b, in increasing order.
@@ -41,9 +42,13 @@ class space {
   // `margin` metres. Contacts come in pair order, then by shape pair, then
   // as each manifold lists them. Each contact's material combines its
   // shapes' by `rules`.
+  // Shapes whose filters do not meet make none; a pair with a sensor makes
+  // no contact but, when they overlap or touch, a sensor_overlap in
+  // `sensors` (cleared first; none kept when it is null).
   void find_contacts(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
                      std::vector<contact>& contacts, real lookahead = 0,
-                     const material_combine_rules& rules = {}, real margin = 0);
+                     const material_combine_rules& rules = {}, real margin = 0,
+                     std::vector<sensor_overlap>* sensors = nullptr);
 
  private:
   void all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs) const;

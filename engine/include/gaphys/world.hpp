@@ -99,6 +99,9 @@ class world {
   // The pairs that began touching in the last step, that touched in the
   // step before and still do, and that stopped (contact_events.hpp).
   const contact_events& events() const { return events_; }
+  // The sensor shapes and the shapes they overlap or touch, as the last
+  // step's narrow phase found them (in body pair order).
+  const std::vector<sensor_overlap>& sensor_overlaps() const { return sensor_overlaps_; }
   const step_timings& last_step_timings() const { return timings_; }
 
   // Spatial queries, against every body's shapes where they are now (after
@@ -138,6 +141,7 @@ class world {
   std::vector<contact> contacts_;
   std::vector<contact> previous_contacts_;  // the last step's, for warm starting
   contact_events events_;
+  std::vector<sensor_overlap> sensor_overlaps_;
   std::vector<body_velocity> start_velocities_;  // before this step's forces, for restitution
   step_timings timings_;
   real time_ = 0;

@@ -32,7 +32,7 @@ using index_pair = std::pair<std::size_t, std::size_t>;
 class uniform_grid {
  public:
   // Appends to `pairs` (cleared first) every candidate among `shaped`
-  // (indices into bodies), not both static, as (a, b) with a < b, sorted;
+  // (indices into bodies), not both static or kinematic, as (a, b) with a < b, sorted;
   // each bound reaches lookahead (|v| + |Ω| r) + margin / 2 further, for
   // speculative contacts.
   // Returns false, adding nothing, when coordinates are too far out for
@@ -45,7 +45,7 @@ class uniform_grid {
     vector centre;
     real radius;
     std::size_t body;
-    bool is_static;
+    bool infinite_mass;  // static or kinematic: two such never make a pair
   };
   struct entry {  // an ordinary bound in its cell
     std::int64_t x, y, z;
@@ -78,7 +78,7 @@ class uniform_grid {
   std::vector<entry> unsorted_, entries_;
   bool dense_ = true;
   std::int64_t origin_[3] = {0, 0, 0}, extent_[3] = {0, 0, 0};  // the occupied block of cells
-  std::vector<std::size_t> cell_starts_, cell_fill_;           // dense: runs by cell index
+  std::vector<std::size_t> cell_starts_, cell_fill_;            // dense: runs by cell index
   std::vector<cell> table_;  // sparse: open addressing, power-of-two size
   std::vector<real> widths_;
   std::vector<std::size_t> starts_, fill_;
