@@ -124,7 +124,7 @@ void query_index_build(benchmark::State& state) {
   scene s(static_cast<int>(state.range(0)));
   gaphys::world& w = s.world();
   for (auto _ : state) {
-    w.at(1).set_position(w.bodies()[1].position());  // through at(): the index is out of date
+    w.at(1).set_position(w.bodies()[1].position());  // a pose setter: the index is out of date
     const ray& r = s.next_ray();
     benchmark::DoNotOptimize(w.ray_cast(r.origin, r.direction, reach));
   }

@@ -1,13 +1,26 @@
 #include "gaphys/body.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <array>
 #include <limits>
 #include <utility>
 
+#include "pose_changes.hpp"
 #include "validate.hpp"
 
 namespace gaphys {
+
+namespace detail {
+
+namespace {
+std::atomic<std::uint64_t> pose_change_count{0};
+}  // namespace
+
+std::uint64_t pose_changes() { return pose_change_count.load(std::memory_order_relaxed); }
+void note_pose_change() { pose_change_count.fetch_add(1, std::memory_order_relaxed); }
+
+}  // namespace detail
 
 namespace {
 
@@ -141,6 +154,7 @@ real body::mass() const {
 void body::set_position(const vector& position) {
   detail::require_finite(position, "body position");
   position_ = position;
+  detail::note_pose_change();
 }
 
 void body::set_velocity(const vector& velocity) {
@@ -165,6 +179,7 @@ void body::move_to(const vector& position, const rotor& attitude, real h) {
 
 void body::set_attitude(const rotor& attitude) {
   attitude_ = detail::unit_rotor(attitude, "body attitude");
+  detail::note_pose_change();
 }
 
 void body::set_angular_velocity(const bivector& angular_velocity) {

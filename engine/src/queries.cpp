@@ -5,6 +5,7 @@
 #include <tuple>
 
 #include "gaphys/world.hpp"
+#include "pose_changes.hpp"
 #include "query_index.hpp"
 #include "ray_shape.hpp"
 #include "validate.hpp"
@@ -13,7 +14,7 @@ namespace gaphys {
 
 namespace detail {
 
-void query_index::build(const std::vector<body>& bodies, std::uint64_t version) {
+void query_index::build(const std::vector<body>& bodies, version_type version) {
   placed_.clear();
   owner_.clear();
   std::vector<query_grid::bound> bounds;
@@ -79,8 +80,11 @@ bool nearer(const ray_hit& a, const ray_hit& b) {
 
 namespace {
 
+// The index, rebuilt when a step, a new body or a body setter (through any
+// reference) came after it.
 const detail::query_index& current(std::unique_ptr<detail::query_index>& index,
-                                   const std::vector<body>& bodies, std::uint64_t version) {
+                                   const std::vector<body>& bodies, std::uint64_t world_version) {
+  const detail::query_index::version_type version{world_version, detail::pose_changes()};
   if (!index) index = std::make_unique<detail::query_index>();
   if (index->version() != version || index->size() == 0) index->build(bodies, version);
   return *index;

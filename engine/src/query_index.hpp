@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "gaphys/body.hpp"
@@ -14,8 +15,11 @@ namespace gaphys::detail {
 
 class query_index {
  public:
-  void build(const std::vector<body>& bodies, std::uint64_t version);
-  std::uint64_t version() const { return version_; }
+  // `version`: what the world and the body setters have changed, as
+  // (the world's count, detail::pose_changes()) when it is built.
+  using version_type = std::pair<std::uint64_t, std::uint64_t>;
+  void build(const std::vector<body>& bodies, version_type version);
+  version_type version() const { return version_; }
 
   std::size_t size() const { return placed_.size(); }
   const placed_shape& shape(std::size_t i) const { return placed_[i]; }
@@ -36,7 +40,7 @@ class query_index {
   std::vector<placed_shape> placed_;
   std::vector<owner> owner_;
   query_grid grid_;
-  std::uint64_t version_ = 0;
+  version_type version_{};
   mutable std::vector<std::uint32_t> marks_;
   mutable std::uint32_t mark_ = 0;
 };

@@ -98,7 +98,7 @@ body_id world::create_body(const body_definition& definition) {
 
 body& world::at(body_id id) {
   if (id >= bodies_.size()) detail::reject("no body with id ", id);
-  ++geometry_version_;  // the caller may move it
+  ++geometry_version_;  // the caller may assign a whole body through it
   return bodies_[id];
 }
 

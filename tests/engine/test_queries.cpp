@@ -369,6 +369,14 @@ TEST_F(query_test, a_query_sees_the_bodies_where_they_are_now) {
   EXPECT_NEAR(w.ray_cast(vector{3, 0, 10}, down, 20)->distance, 10 - (z + 0.5), 1e-12);
   const body_id added = add_sphere(w, vector{3, 0, 8}, 0.5);
   EXPECT_EQ(w.ray_cast(vector{3, 0, 10}, down, 20)->body, added);
+  // Moved through a reference kept from before the query.
+  body& kept = w.at(added);
+  ASSERT_EQ(w.ray_cast(vector{3, 0, 10}, down, 20)->body, added);
+  kept.set_position(vector{-3, 0, 8});
+  EXPECT_EQ(w.ray_cast(vector{-3, 0, 10}, down, 20)->body, added);
+  EXPECT_NE(w.ray_cast(vector{3, 0, 10}, down, 20)->body, added);
+  kept.set_attitude(rotor{0, 1, 0, 0});  // a turn counts too (a sphere looks the same)
+  EXPECT_EQ(w.ray_cast(vector{-3, 0, 10}, down, 20)->body, added);
 }
 
 TEST_F(query_test, overlaps_are_the_bodies_whose_shapes_touch_the_query_shape) {

@@ -106,7 +106,8 @@ class world {
 
   // Spatial queries, against every body's shapes where they are now (after
   // the last step and any setter), through a grid of their bounds rebuilt
-  // when bodies have moved (docs/engine.md, "Queries"). Directions need not
+  // when bodies have moved (docs/engine.md, "Queries"); not safe to call
+  // from two threads at once on one world. Directions need not
   // be unit; max_distance is finite or infinite and >= 0. A ray that starts
   // inside (or on) a solid hits it at distance 0 with the normal -direction;
   // point shapes are never hit. Throws invalid_input for a non-finite origin
@@ -149,8 +150,9 @@ class world {
   // nothing a later step reads, so a copy of the world starts a fresh one).
   std::unique_ptr<contact_solver> solver_;
   // The queries' index of the shapes, built when a query finds it older than
-  // the bodies' poses: geometry_version_ counts the changes (steps, new
-  // bodies, and every non-const at(), through which a pose may change).
+  // the bodies' poses: geometry_version_ counts this world's steps, new
+  // bodies and non-const at() (a body may be assigned through it); body
+  // setters count their changes apart (pose_changes.hpp).
   mutable std::unique_ptr<detail::query_index> queries_;
   std::uint64_t geometry_version_ = 0;
 };
