@@ -94,6 +94,7 @@ const detail::query_index& current(std::unique_ptr<detail::query_index>& index,
 template <class Found>
 void test_shape(const detail::query_index& index, std::size_t i, std::uint32_t mark, const ray& r,
                 real within, Found&& found) {
+  // (The hit names the body by index; the world turns it into its id.)
   if (!index.first_visit(i, mark)) return;
   const std::optional<detail::shape_hit> hit =
       detail::cast_ray(index.shape(i), r.origin, r.direction, within);
@@ -125,6 +126,7 @@ std::optional<ray_hit> world::ray_cast(const vector& origin, const vector& direc
                        }
                        return !(best && best->distance <= leaves);
                      });
+  if (best) best->body = id_of(best->body);
   return best;
 }
 
@@ -144,6 +146,7 @@ std::vector<ray_hit> world::ray_cast_all(const vector& origin, const vector& dir
                        return true;
                      });
   std::sort(hits.begin(), hits.end(), nearer);
+  for (ray_hit& hit : hits) hit.body = id_of(hit.body);
   return hits;
 }
 
@@ -183,7 +186,10 @@ std::vector<body_id> world::overlap_sphere(const vector& centre, real radius) co
   detail::require_finite(centre, "overlap sphere centre");
   detail::require_positive(radius, "overlap sphere radius");
   const detail::query_index& index = current(queries_, bodies_, geometry_version_);
-  return overlapping(index, place(shape::sphere(radius), centre, rotor{1, 0, 0, 0}), radius);
+  std::vector<body_id> found =
+      overlapping(index, place(shape::sphere(radius), centre, rotor{1, 0, 0, 0}), radius);
+  for (body_id& b : found) b = id_of(b);
+  return found;
 }
 
 std::vector<body_id> world::overlap_box(const vector& centre, const vector& half_extents,
@@ -192,7 +198,10 @@ std::vector<body_id> world::overlap_box(const vector& centre, const vector& half
   const shape box = shape::box(half_extents);  // validates the half extents
   const rotor unit = detail::unit_rotor(attitude, "overlap box attitude");
   const detail::query_index& index = current(queries_, bodies_, geometry_version_);
-  return overlapping(index, place(box, centre, unit), e3ga::norm(half_extents));
+  std::vector<body_id> found =
+      overlapping(index, place(box, centre, unit), e3ga::norm(half_extents));
+  for (body_id& b : found) b = id_of(b);
+  return found;
 }
 
 }  // namespace gaphys

@@ -72,6 +72,14 @@ void space::place_shapes(const std::vector<body>& bodies) {
   }
 }
 
+void space::remove(std::size_t body_index) {
+  std::vector<std::size_t> kept;
+  for (const std::size_t index : shaped_bodies_) {
+    if (index != body_index) kept.push_back(index > body_index ? index - 1 : index);
+  }
+  shaped_bodies_.swap(kept);
+}
+
 void space::find_contacts(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
                           std::vector<contact>& contacts, real lookahead,
                           const material_combine_rules& rules, real margin,

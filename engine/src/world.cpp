@@ -1,8 +1,10 @@
 #include "gaphys/world.hpp"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstring>
+#include <limits>
 
 #include "contact_events.hpp"
 #include "contact_solver.hpp"
@@ -47,7 +49,8 @@ const world_settings& validated(const world_settings& s) {
   }
   detail::require_non_negative(s.linear_slop, "linear slop");
   detail::require_non_negative(s.contact_margin, "contact margin");
-  if (s.broad_phase != broad_phase_kind::uniform_grid && s.broad_phase != broad_phase_kind::all_pairs) {
+  if (s.broad_phase != broad_phase_kind::uniform_grid &&
+      s.broad_phase != broad_phase_kind::all_pairs) {
     detail::reject("broad phase must be uniform_grid or all_pairs");
   }
   return s;
@@ -69,6 +72,10 @@ world::world(const world_settings& settings)
 world::world(const world& other)
     : settings_(other.settings_),
       bodies_(other.bodies_),
+      slot_of_index_(other.slot_of_index_),
+      index_of_slot_(other.index_of_slot_),
+      generation_of_slot_(other.generation_of_slot_),
+      free_slots_(other.free_slots_),
       space_(other.space_),
       pairs_(other.pairs_),
       contacts_(other.contacts_),
@@ -89,23 +96,105 @@ world::world(world&&) noexcept = default;
 world& world::operator=(world&&) noexcept = default;
 world::~world() = default;
 
+namespace {
+
+constexpr std::size_t no_index = std::numeric_limits<std::size_t>::max();
+constexpr std::size_t slot_bits = 32;
+constexpr std::size_t slot_mask = (std::size_t{1} << slot_bits) - 1;
+static_assert(sizeof(std::size_t) >= 8, "body ids pack a slot and a generation into 64 bits");
+
+// Drops a removed body's contacts from a pair-sorted list and renumbers
+// the bodies after it; the order stays sorted.
+void forget(std::vector<contact>& contacts, std::size_t index) {
+  std::vector<contact> kept;
+  kept.reserve(contacts.size());
+  for (contact c : contacts) {
+    if (c.body_a == index || c.body_b == index) continue;
+    if (c.body_a > index) --c.body_a;
+    if (c.body_b > index) --c.body_b;
+    kept.push_back(c);
+  }
+  contacts.swap(kept);
+}
+
+}  // namespace
+
 body_id world::create_body(const body_definition& definition) {
   bodies_.emplace_back(definition);  // body's constructor validates, then nothing is added
   ++geometry_version_;
-  if (bodies_.back().shape()) space_.add(bodies_.size() - 1);
-  return bodies_.size() - 1;
+  const std::size_t index = bodies_.size() - 1;
+  std::size_t slot;
+  if (!free_slots_.empty()) {
+    slot = free_slots_.back();
+    free_slots_.pop_back();
+    index_of_slot_[slot] = index;
+  } else {
+    slot = index_of_slot_.size();
+    index_of_slot_.push_back(index);
+    generation_of_slot_.push_back(0);
+  }
+  slot_of_index_.push_back(slot);
+  if (bodies_.back().shape()) space_.add(index);
+  return id_of(index);
+}
+
+body_id world::id_of(std::size_t index) const {
+  if (index >= bodies_.size()) detail::reject("no body at index ", index);
+  const std::size_t slot = slot_of_index_[index];
+  return slot | (static_cast<std::size_t>(generation_of_slot_[slot]) << slot_bits);
+}
+
+std::size_t world::index_of(body_id id) const {
+  const std::size_t slot = id & slot_mask;
+  const std::size_t generation = id >> slot_bits;
+  if (slot >= index_of_slot_.size() || generation_of_slot_[slot] != generation ||
+      index_of_slot_[slot] == no_index) {
+    detail::reject("no body with id ", id, " (removed, or never created)");
+  }
+  return index_of_slot_[slot];
+}
+
+bool world::contains(body_id id) const {
+  const std::size_t slot = id & slot_mask;
+  return slot < index_of_slot_.size() && generation_of_slot_[slot] == id >> slot_bits &&
+         index_of_slot_[slot] != no_index;
+}
+
+void world::remove_body(body_id id) {
+  const std::size_t index = index_of(id);
+  const std::size_t slot = slot_of_index_[index];
+  bodies_.erase(bodies_.begin() + static_cast<std::ptrdiff_t>(index));
+  slot_of_index_.erase(slot_of_index_.begin() + static_cast<std::ptrdiff_t>(index));
+  index_of_slot_[slot] = no_index;
+  for (std::size_t& i : index_of_slot_) {
+    if (i != no_index && i > index) --i;
+  }
+  // A slot whose generation would wrap is retired, so no id ever comes back.
+  if (generation_of_slot_[slot] < std::numeric_limits<std::uint32_t>::max()) {
+    ++generation_of_slot_[slot];
+    free_slots_.push_back(slot);
+  }
+  space_.remove(index);
+  forget(contacts_, index);
+  forget(previous_contacts_, index);
+  const auto names_it = [id](const contact_event& e) { return e.body_a == id || e.body_b == id; };
+  for (std::vector<contact_event>* list : {&events_.began, &events_.persisted, &events_.ended}) {
+    list->erase(std::remove_if(list->begin(), list->end(), names_it), list->end());
+  }
+  sensor_overlaps_.erase(
+      std::remove_if(sensor_overlaps_.begin(), sensor_overlaps_.end(),
+                     [id](const sensor_overlap& o) { return o.sensor == id || o.other == id; }),
+      sensor_overlaps_.end());
+  ++geometry_version_;
 }
 
 body& world::at(body_id id) {
-  if (id >= bodies_.size()) detail::reject("no body with id ", id);
+  const std::size_t index = index_of(id);
   ++geometry_version_;  // the caller may assign a whole body through it
-  return bodies_[id];
+  return bodies_[index];
 }
 
-const body& world::at(body_id id) const {
-  if (id >= bodies_.size()) detail::reject("no body with id ", id);
-  return bodies_[id];
-}
+const body& world::at(body_id id) const { return bodies_[index_of(id)]; }
 
 void world::set_gravity(const vector& gravity) {
   detail::require_finite(gravity, "gravity");
@@ -150,7 +239,8 @@ void world::step(real h) {
                        settings_.contact_margin, &sensor_overlaps_);
   const auto met = clock::now();
   if (!solver_) solver_ = std::make_unique<contact_solver>();  // a moved-from world
-  solver_->solve_velocities(settings_, bodies_, start_velocities_, contacts_, previous_contacts_, h);
+  solver_->solve_velocities(settings_, bodies_, start_velocities_, contacts_, previous_contacts_,
+                            h);
   const auto solved = clock::now();
   integrate_positions(h);
   const auto moved = clock::now();
@@ -163,6 +253,11 @@ void world::step(real h) {
   timings_.response = seconds(met, solved) + seconds(moved, corrected);
   timings_.candidate_pairs = pairs_.size();
   detail::find_events(previous_contacts_, contacts_, events_);
+  // Contacts name bodies by index; the events and sensor overlaps by id.
+  for (std::vector<contact_event>* list : {&events_.began, &events_.persisted, &events_.ended}) {
+    for (contact_event& e : *list) e.body_a = id_of(e.body_a), e.body_b = id_of(e.body_b);
+  }
+  for (sensor_overlap& o : sensor_overlaps_) o.sensor = id_of(o.sensor), o.other = id_of(o.other);
   time_ += h;
 }
 

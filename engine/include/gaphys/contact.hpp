@@ -100,6 +100,8 @@ struct contact_impulse {
 
 // A contact between two bodies, as the solver uses it.
 struct contact {
+  // Indices into world::bodies() (world::id_of gives their ids; without
+  // removals the two are equal), body_a < body_b.
   std::size_t body_a;
   std::size_t body_b;
   contact_geometry geometry;

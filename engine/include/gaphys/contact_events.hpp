@@ -15,13 +15,13 @@ namespace gaphys {
 // speculative contact that a landing body closes counts, one it only
 // approached does not.
 struct contact_event {
-  body_id body_a, body_b;  // body_a < body_b, as in world::contacts()
+  body_id body_a, body_b;  // ids; body_a created before body_b
   vector point;            // the pair's deepest contact point
   vector normal;           // its normal, from B towards A
   real impulse;            // N s: the pair's total normal impulse in the step
 };
 
-// Each list sorted by (body_a, body_b). An ended pair's point, normal and
+// Each list in the order of the pairs in world::contacts(). An ended pair's point, normal and
 // impulse are those of the last step in which it touched.
 struct contact_events {
   std::vector<contact_event> began;

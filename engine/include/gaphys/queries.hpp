@@ -8,6 +8,9 @@
 
 namespace gaphys {
 
+// A body's handle: world::create_body gives it, world::at takes it. It
+// stays valid until the body is removed, and a removed body's id never
+// names another body (docs/engine.md, "Bodies and their ids").
 using body_id = std::size_t;
 
 // Where a ray enters a body's shape.

@@ -25,6 +25,8 @@ class space {
   explicit space(broad_phase_kind kind = broad_phase_kind::uniform_grid) : kind_(kind) {}
 
   void add(std::size_t body_index) { shaped_bodies_.push_back(body_index); }
+  // Forgets the body at this index; the bodies after it move down one.
+  void remove(std::size_t body_index);
   std::size_t shape_count() const { return shaped_bodies_.size(); }
   broad_phase_kind broad_phase() const { return kind_; }
   void set_broad_phase(broad_phase_kind kind) { kind_ = kind; }

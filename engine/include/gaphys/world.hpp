@@ -22,25 +22,25 @@ struct world_settings {
   // Damping rates (1/s, >= 0): each step scales v by 1 / (1 + h c).
   real linear_damping = 0;
   real angular_damping = 0;
-  int solver_iterations = 20;         // most sequential impulse sweeps per step
+  int solver_iterations = 20;  // most sequential impulse sweeps per step
   // More sweeps, after those, for the contacts that turn a body (boxes,
   // capsules, hulls, compounds: off-centre contacts). With them a tower of
   // ten boxes stands within 0.4 mm for 10 s; without, it walks 5 mm
   // (docs/engine.md). Spheres alone never pay for them.
   int turning_iterations = 10;
-  real solver_tolerance = 1e-9;       // m/s: a sweep changing no normal speed more ends the solve
+  real solver_tolerance = 1e-9;  // m/s: a sweep changing no normal speed more ends the solve
   // Over-relaxation (projected SOR), in (0, 2): each impulse is this multiple
   // of the one that would meet its contact's target. 1 is plain
   // Gauss-Seidel; above 1 converges faster along chains of contacts.
   real solver_relaxation = 1.3;
-  real restitution_threshold = 0.5;   // m/s: slower approaches do not bounce
+  real restitution_threshold = 0.5;  // m/s: slower approaches do not bounce
   // Most sweeps of the impact phase per step (docs/engine.md): a row of N
   // touching bodies struck against the order of the contact list needs N.
   int impact_iterations = 64;
   // How a contact combines its two shapes' material values (material.hpp).
   material_combine_rules material_combine{};
-  real position_correction = 0.2;     // share of the excess depth removed per step
-  real linear_slop = 0.0005;          // m of depth left uncorrected
+  real position_correction = 0.2;  // share of the excess depth removed per step
+  real linear_slop = 0.0005;       // m of depth left uncorrected
   // m: boxes, capsules and hulls this close make (speculative) contacts, so
   // a resting face keeps its contact points, and their warm start, from
   // step to step even where the correction lifts it clear for a moment.
@@ -79,10 +79,21 @@ class world {
 
   // Throws invalid_input (see body) and then adds nothing.
   body_id create_body(const body_definition& definition);
+  // Removes the body, its contacts and their warm-start data; the others
+  // step on as if it had never been there. Its id, and every reference to
+  // it, is dead: at() throws invalid_input for the id, and ids given later
+  // never equal it. Throws invalid_input for an id of no body.
+  void remove_body(body_id id);
+  // The body of a live id; invalid_input for a removed or unknown one. A
+  // reference stays valid until the next create_body or remove_body.
   body& at(body_id id);
   const body& at(body_id id) const;
+  bool contains(body_id id) const;
+  // The bodies in creation order, without the removed ones: bodies()[i] is
+  // the body id_of(i); contacts name bodies by these indices.
   const std::vector<body>& bodies() const { return bodies_; }
   std::size_t body_count() const { return bodies_.size(); }
+  body_id id_of(std::size_t index) const;
 
   const world_settings& settings() const { return settings_; }
   void set_gravity(const vector& gravity);
@@ -112,14 +123,15 @@ class world {
   // inside (or on) a solid hits it at distance 0 with the normal -direction;
   // point shapes are never hit. Throws invalid_input for a non-finite origin
   // or direction, a zero direction or a negative or NaN distance.
-  // The nearest hit within max_distance (ties: the lower body id, then shape).
+  // The nearest hit within max_distance (ties: the body created first, then
+  // the lower shape index).
   std::optional<ray_hit> ray_cast(const vector& origin, const vector& direction,
                                   real max_distance) const;
   // Every shape the ray enters within max_distance, nearest first (one hit
   // per shape).
   std::vector<ray_hit> ray_cast_all(const vector& origin, const vector& direction,
                                     real max_distance) const;
-  // The bodies, in increasing id, with a shape that overlaps or touches the
+  // The bodies, in creation order, with a shape that overlaps or touches the
   // solid sphere (radius finite, > 0), or the box at a pose (half extents
   // finite, > 0; attitude nonzero, normalized).
   std::vector<body_id> overlap_sphere(const vector& centre, real radius) const;
@@ -136,7 +148,16 @@ class world {
   void integrate_positions(real h);
 
   world_settings settings_;
+  std::size_t index_of(body_id id) const;  // or throws invalid_input
+
   std::vector<body> bodies_;
+  // Ids: a slot (the low 32 bits) and its generation (the high 32), which
+  // grows each time the slot's body is removed. Without removals the id is
+  // the index.
+  std::vector<std::size_t> slot_of_index_;
+  std::vector<std::size_t> index_of_slot_;  // npos for a slot whose body was removed
+  std::vector<std::uint32_t> generation_of_slot_;
+  std::vector<std::size_t> free_slots_;
   gaphys::space space_;
   std::vector<body_pair> pairs_;
   std::vector<contact> contacts_;
