@@ -156,4 +156,12 @@ void find_contacts(const placed_shape& a, const placed_shape& b, real lookahead,
   }
 }
 
+bool touching(const placed_shape& a, const placed_shape& b, contact_manifold& scratch) {
+  find_contacts(a, b, 0, vector{}, vector{}, 0, scratch);
+  for (int k = 0; k < scratch.count; ++k) {
+    if (scratch.points[k].geometry.depth >= 0) return true;
+  }
+  return false;
+}
+
 }  // namespace gaphys

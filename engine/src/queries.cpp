@@ -153,20 +153,15 @@ std::vector<ray_hit> world::ray_cast_all(const vector& origin, const vector& dir
 namespace {
 
 // The bodies with a shape the query shape overlaps or touches, through the
-// narrow phase (the contacts of the pair at no margin), in increasing id.
+// narrow phase (touching()), by index in increasing order.
 std::vector<body_id> overlapping(const detail::query_index& index, const placed_shape& query,
                                  real reach) {
   std::vector<body_id> found;
   const std::uint32_t mark = index.new_mark();
   contact_manifold manifold;
   const auto test = [&](std::size_t i) {
-    if (!index.first_visit(i, mark)) return;
-    find_contacts(query, index.shape(i), 0, vector{}, vector{}, 0, manifold);
-    for (int k = 0; k < manifold.count; ++k) {
-      if (manifold.points[k].geometry.depth >= 0) {
-        found.push_back(index.body_of(i));
-        break;
-      }
+    if (index.first_visit(i, mark) && touching(query, index.shape(i), manifold)) {
+      found.push_back(index.body_of(i));
     }
   };
   for (const std::size_t i : index.grid().unbounded()) test(i);

@@ -75,8 +75,8 @@ void query_grid::within(const vector& low, const vector& high, Visit&& visit) co
   for (int axis = 0; axis < 3; ++axis) {
     const real first = std::floor(lo[axis] / cell_size_), last = std::floor(hi[axis] / cell_size_);
     if (!(last >= static_cast<real>(low_[axis]) && first <= static_cast<real>(high_[axis]))) return;
-    from[axis] = std::max(low_[axis], static_cast<std::int64_t>(std::max(first, real(low_[axis]))));
-    to[axis] = std::min(high_[axis], static_cast<std::int64_t>(std::min(last, real(high_[axis]))));
+    from[axis] = static_cast<std::int64_t>(std::max(first, real(low_[axis])));
+    to[axis] = static_cast<std::int64_t>(std::min(last, real(high_[axis])));
   }
   for (std::int64_t x = from[0]; x <= to[0]; ++x)
     for (std::int64_t y = from[1]; y <= to[1]; ++y)

@@ -5,19 +5,6 @@
 
 namespace gaphys {
 
-namespace {
-
-// Whether two placed shapes overlap or touch: the narrow phase at no margin.
-bool overlap(const placed_shape& a, const placed_shape& b, contact_manifold& manifold) {
-  find_contacts(a, b, 0, vector{}, vector{}, 0, manifold);
-  for (int k = 0; k < manifold.count; ++k) {
-    if (manifold.points[k].geometry.depth >= 0) return true;
-  }
-  return false;
-}
-
-}  // namespace
-
 void space::candidate_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs,
                             real lookahead, real margin) {
   // The grid declines coordinates too far out for integer cells.
@@ -35,7 +22,8 @@ void space::all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& p
     const std::size_t a = shaped_bodies_[i];
     for (std::size_t j = i + 1; j < shaped_bodies_.size(); ++j) {
       const std::size_t b = shaped_bodies_[j];
-      if (!bodies[a].is_dynamic() && !bodies[b].is_dynamic()) continue;  // neither can move the other
+      // Neither can move the other.
+      if (!bodies[a].is_dynamic() && !bodies[b].is_dynamic()) continue;
       pairs.emplace_back(std::min(a, b), std::max(a, b));
     }
   }
@@ -110,7 +98,7 @@ void space::find_contacts(const std::vector<body>& bodies, const std::vector<bod
         }
         if (!attached_a.shape.filter().meets(attached_b.shape.filter())) continue;
         if (attached_a.shape.is_sensor() || attached_b.shape.is_sensor()) {
-          if (sensors && overlap(shape_a, shape_b, manifold)) {
+          if (sensors && touching(shape_a, shape_b, manifold)) {
             const bool a_senses = attached_a.shape.is_sensor();
             sensors->push_back(a_senses ? sensor_overlap{a, i, b, j} : sensor_overlap{b, j, a, i});
           }

@@ -89,6 +89,11 @@ void find_contacts(const placed_shape& a, const placed_shape& b, real lookahead,
                    const vector& velocity_a, const vector& velocity_b, real margin,
                    contact_manifold& out);
 
+// Whether A and B overlap or touch: find_contacts at no margin, some point
+// at depth >= 0 (`scratch` holds the manifold). Sensors and the overlap
+// queries use it.
+bool touching(const placed_shape& a, const placed_shape& b, contact_manifold& scratch);
+
 // The impulses of one contact over a step, all acting on A (B gets their
 // opposites): along the normal, in the tangent plane (friction), and the
 // angular impulse of rolling resistance and spinning friction.
