@@ -186,7 +186,7 @@ engine bullet_engine() {
             " m/s: a fixed tangent), bounded by mu times the point's normal impulse; warm started",
         "Bullet's default solver mode (no SOLVER_USE_2_FRICTION_DIRECTIONS)"},
        {"rolling / spinning friction", "0 / 0", "the F scenes measure sliding friction only"},
-       {"damping / sleeping", "0 / DISABLE_DEACTIVATION", "gaphys has neither"},
+       {"damping / sleeping", "0 / DISABLE_DEACTIVATION", "gaphys: none / sleeping off"},
        {"gyroscopic", "BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY", "Bullet's default, for M1"},
        {"margins",
         "sphere " + number(sphere.getMargin()) + " m (= r: the whole sphere is margin), plane " +

@@ -42,6 +42,7 @@ class gaphys_adapter final : public engine_adapter {
   void build(const scene& s) override {
     gaphys::world_settings settings;  // defaults: 20 sweeps (+10 for turning contacts), threshold 0.5 m/s
     settings.gravity = to_gaphys(s.gravity);
+    settings.sleeping = false;  // as Bullet and ODE run here: every body steps every step
     world_.emplace(settings);
     for (const plane_description& p : s.planes) {
       gaphys::body_definition plane;
@@ -109,7 +110,8 @@ engine gaphys_engine() {
       "gaphys",
       "this tree",
       "double",
-      {{"world", "gaphys::world, default world_settings", "the engine as documented"},
+      {{"world", "gaphys::world, default world_settings but sleeping off",
+        "the engine as documented; no engine sleeps here"},
        {"solver sweeps", std::to_string(defaults.solver_iterations) + " (+" +
                              std::to_string(defaults.turning_iterations) + " for contacts that turn a body)",
         "default"},

@@ -77,7 +77,7 @@ class ode_adapter final : public engine_adapter {
     dWorldSetERP(world_, position_correction);
     dWorldSetCFM(world_, constraint_force_mixing);
     dWorldSetContactSurfaceLayer(world_, linear_slop);
-    dWorldSetAutoDisableFlag(world_, 0);  // no sleeping, as in gaphys
+    dWorldSetAutoDisableFlag(world_, 0);  // no sleeping, as gaphys runs here
     dWorldSetQuickStepNumIterations(world_, solver_iterations);
     space_ = dSweepAndPruneSpaceCreate(nullptr, dSAP_AXES_XYZ);
     contacts_ = dJointGroupCreate(0);

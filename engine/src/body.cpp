@@ -145,6 +145,7 @@ body::body(const body_definition& definition) {
   gravity_scale_ = d.gravity_scale;
   linear_damping_ = d.linear_damping;
   angular_damping_ = d.angular_damping;
+  can_sleep_ = d.can_sleep;
 }
 
 real body::mass() const {
@@ -155,12 +156,14 @@ void body::set_position(const vector& position) {
   detail::require_finite(position, "body position");
   position_ = position;
   detail::note_pose_change();
+  wake_up();
 }
 
 void body::set_velocity(const vector& velocity) {
   detail::require_finite(velocity, "body velocity");
   require_static_at_rest(is_static_, is_zero(velocity), "velocity");
   velocity_ = velocity;
+  wake_up();
 }
 
 // The position moves by h v; the attitude turns by exp(-h Ω / 2) (as
@@ -175,17 +178,20 @@ void body::move_to(const vector& position, const rotor& attitude, real h) {
   if (turn.c[0] < 0) turn = -turn;
   velocity_ = (1 / h) * (position - position_);
   angular_velocity_ = (-2 / h) * e3ga::log(turn);
+  wake_up();
 }
 
 void body::set_attitude(const rotor& attitude) {
   attitude_ = detail::unit_rotor(attitude, "body attitude");
   detail::note_pose_change();
+  wake_up();
 }
 
 void body::set_angular_velocity(const bivector& angular_velocity) {
   detail::require_finite(angular_velocity, "body angular velocity");
   require_static_at_rest(is_static_, is_zero(angular_velocity), "angular velocity");
   angular_velocity_ = angular_velocity;
+  wake_up();
 }
 
 void body::apply_force(const vector& force, const vector& offset) {
@@ -194,6 +200,7 @@ void body::apply_force(const vector& force, const vector& offset) {
   force_ = force_ + force;
   // τ = r ∧ f with r the offset turned into the world frame.
   torque_ = torque_ + e3ga::op(e3ga::apply(attitude_, offset), force);
+  wake_dynamic();
 }
 
 void body::apply_force_at_world_point(const vector& force, const vector& world_point) {
@@ -201,11 +208,13 @@ void body::apply_force_at_world_point(const vector& force, const vector& world_p
   detail::require_finite(world_point, "force point");
   force_ = force_ + force;
   torque_ = torque_ + e3ga::op(world_point - position_, force);
+  wake_dynamic();
 }
 
 void body::apply_torque(const bivector& torque) {
   detail::require_finite(torque, "torque");
   torque_ = torque_ + torque;
+  wake_dynamic();
 }
 
 // The angular momentum changes by r ∧ J; Ω = I_w⁻¹(L) is linear in L, so
@@ -214,6 +223,7 @@ void body::apply_impulse(const vector& impulse, const vector& world_point) {
   detail::require_finite(impulse, "impulse");
   detail::require_finite(world_point, "impulse point");
   if (!is_dynamic()) return;
+  wake_up();
   velocity_ = velocity_ + inverse_mass_ * impulse;
   angular_velocity_ =
       angular_velocity_ + world_inverse_inertia(e3ga::op(world_point - position_, impulse));
@@ -222,6 +232,7 @@ void body::apply_impulse(const vector& impulse, const vector& world_point) {
 void body::set_gravity_scale(real scale) {
   detail::require_finite(scale, "body gravity scale");
   gravity_scale_ = scale;
+  wake_dynamic();
 }
 
 void body::set_damping(std::optional<real> linear, std::optional<real> angular) {
@@ -229,6 +240,25 @@ void body::set_damping(std::optional<real> linear, std::optional<real> angular) 
   require_damping(angular, "body angular damping");
   linear_damping_ = linear;
   angular_damping_ = angular;
+  wake_dynamic();
+}
+
+// The world sees woken_ at the next step: it wakes the body's island, or,
+// for a static or kinematic body, the sleeping bodies it now reaches.
+void body::wake_up() {
+  asleep_ = false;
+  still_time_ = 0;
+  woken_ = true;
+}
+
+// Forces and settings that move nothing but a dynamic body.
+void body::wake_dynamic() {
+  if (is_dynamic()) wake_up();
+}
+
+void body::set_can_sleep(bool can_sleep) {
+  can_sleep_ = can_sleep;
+  if (!can_sleep) wake_up();
 }
 
 bivector body::world_inertia(const bivector& b) const {

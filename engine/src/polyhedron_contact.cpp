@@ -718,6 +718,9 @@ void collide_polyhedra(const placed_shape& a, const placed_shape& b, real margin
   rigid_frame world;
   sat_result sat;
   if (!test_pair(a, b, margin, s, world, sat) || sat.apart) return;
+  // No face was chosen only when every gap is NaN: a pose gone NaN (a
+  // finite but huge angular velocity overflows the attitude) meets nothing.
+  if (sat.face_a.face < 0 || sat.face_b.face < 0) return;
 
   const real bias = axis_bias(a, b);
   const bool b_is_reference = sat.face_b.gap > sat.face_a.gap + bias;

@@ -15,7 +15,8 @@ void space::candidate_pairs(const std::vector<body>& bodies, std::vector<body_pa
   all_pairs(bodies, pairs);
 }
 
-// The thesis's candidates: every two shaped bodies not both static.
+// The thesis's candidates: every two shaped bodies that may meet (not both
+// static, say).
 void space::all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs) const {
   pairs.clear();
   for (std::size_t i = 0; i < shaped_bodies_.size(); ++i) {
@@ -23,7 +24,7 @@ void space::all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& p
     for (std::size_t j = i + 1; j < shaped_bodies_.size(); ++j) {
       const std::size_t b = shaped_bodies_[j];
       // Neither can move the other.
-      if (!bodies[a].is_dynamic() && !bodies[b].is_dynamic()) continue;
+      if (!detail::may_meet(detail::motion_of(bodies[a]), detail::motion_of(bodies[b]))) continue;
       pairs.emplace_back(std::min(a, b), std::max(a, b));
     }
   }
@@ -42,22 +43,73 @@ static real closing_reach(const body& a, const body& b, real lookahead, real mar
   return margin + lookahead * (e3ga::norm(a.velocity()) + e3ga::norm(b.velocity()) + turning);
 }
 
-void space::place_shapes(const std::vector<body>& bodies) {
+// Only the bodies of some pair: with most bodies asleep, the others are not
+// placed at all.
+void space::place_shapes(const std::vector<body>& bodies, const std::vector<body_pair>& pairs) {
   first_shape_.assign(bodies.size() + 1, 0);
   for (std::size_t index : shaped_bodies_) first_shape_[index + 1] = bodies[index].shapes().size();
   for (std::size_t i = 0; i < bodies.size(); ++i) first_shape_[i + 1] += first_shape_[i];
   placed_.resize(first_shape_.back());
+  in_pairs_.assign(bodies.size(), 0);
+  for (const auto& [a, b] : pairs) in_pairs_[a] = in_pairs_[b] = 1;
   for (std::size_t index : shaped_bodies_) {
+    if (!in_pairs_[index]) continue;
     const body& b = bodies[index];
     placed_shape* out = &placed_[first_shape_[index]];
-    for (const attached_shape& s : b.shapes()) {
-      const bool centred = s.offset.e1() == 0 && s.offset.e2() == 0 && s.offset.e3() == 0;
-      const vector position = centred ? b.position() : b.to_world(s.offset);
-      const bool turned = s.attitude.c[1] != 0 || s.attitude.c[2] != 0 || s.attitude.c[3] != 0;
-      const rotor attitude = turned ? e3ga::gp(b.attitude(), s.attitude) : b.attitude();
-      *out++ = place(s.shape, position, attitude);
+    for (const attached_shape& s : b.shapes()) *out++ = placed(b, s);
+  }
+}
+
+placed_shape space::placed(const body& b, const attached_shape& s) {
+  const bool centred = s.offset.e1() == 0 && s.offset.e2() == 0 && s.offset.e3() == 0;
+  const vector position = centred ? b.position() : b.to_world(s.offset);
+  const bool turned = s.attitude.c[1] != 0 || s.attitude.c[2] != 0 || s.attitude.c[3] != 0;
+  const rotor attitude = turned ? e3ga::gp(b.attitude(), s.attitude) : b.attitude();
+  return place(s.shape, position, attitude);
+}
+
+// Shape i of A against shape j of B, as find_contacts meets them: culled
+// by their bounds in a compound, by their filters, a sensor's overlap, or
+// the contact manifold (count 0: none).
+space::met space::meet(const body& body_a, const body& body_b, std::size_t i, std::size_t j,
+                       const placed_shape& shape_a, const placed_shape& shape_b, real lookahead,
+                       real reach, contact_manifold& manifold) {
+  const attached_shape& attached_a = body_a.shapes()[i];
+  const attached_shape& attached_b = body_b.shapes()[j];
+  const bool compound = body_a.shapes().size() > 1 || body_b.shapes().size() > 1;
+  // The broad phase bounded whole bodies; a compound's parts are
+  // bounded again here, each by its own sphere.
+  if (compound && shape_a.kind != shape_kind::plane && shape_b.kind != shape_kind::plane) {
+    const real apart = e3ga::norm(shape_a.center - shape_b.center) -
+                       attached_a.shape.bounding_radius() - attached_b.shape.bounding_radius();
+    if (apart > reach) return met::nothing;
+  }
+  if (!attached_a.shape.filter().meets(attached_b.shape.filter())) return met::nothing;
+  if (attached_a.shape.is_sensor() || attached_b.shape.is_sensor()) {
+    return touching(shape_a, shape_b, manifold) ? met::sensed : met::nothing;
+  }
+  gaphys::find_contacts(shape_a, shape_b, lookahead, body_a.velocity(), body_b.velocity(), reach,
+                        manifold);
+  return manifold.count > 0 ? met::contacts : met::nothing;
+}
+
+bool space::make_contact(const std::vector<body>& bodies, std::size_t a, std::size_t b,
+                         real lookahead, real margin) const {
+  const body& body_a = bodies[a];
+  const body& body_b = bodies[b];
+  const real reach = closing_reach(body_a, body_b, lookahead, margin);
+  contact_manifold manifold;
+  for (std::size_t i = 0; i < body_a.shapes().size(); ++i) {
+    const placed_shape shape_a = placed(body_a, body_a.shapes()[i]);
+    for (std::size_t j = 0; j < body_b.shapes().size(); ++j) {
+      const placed_shape shape_b = placed(body_b, body_b.shapes()[j]);
+      if (meet(body_a, body_b, i, j, shape_a, shape_b, lookahead, reach, manifold) ==
+          met::contacts) {
+        return true;
+      }
     }
   }
+  return false;
 }
 
 void space::remove(std::size_t body_index) {
@@ -72,7 +124,7 @@ void space::find_contacts(const std::vector<body>& bodies, const std::vector<bod
                           std::vector<contact>& contacts, real lookahead,
                           const material_combine_rules& rules, real margin,
                           std::vector<sensor_overlap>* sensors) {
-  place_shapes(bodies);
+  place_shapes(bodies, pairs);
   contacts.clear();
   if (sensors) sensors->clear();
   contact_manifold manifold;
@@ -80,7 +132,6 @@ void space::find_contacts(const std::vector<body>& bodies, const std::vector<bod
     const body& body_a = bodies[a];
     const body& body_b = bodies[b];
     const std::size_t shapes_a = body_a.shapes().size(), shapes_b = body_b.shapes().size();
-    const bool compound = shapes_a > 1 || shapes_b > 1;
     const real reach = closing_reach(body_a, body_b, lookahead, margin);
     for (std::size_t i = 0; i < shapes_a; ++i) {
       const placed_shape& shape_a = placed_[first_shape_[a] + i];
@@ -88,25 +139,12 @@ void space::find_contacts(const std::vector<body>& bodies, const std::vector<bod
       for (std::size_t j = 0; j < shapes_b; ++j) {
         const placed_shape& shape_b = placed_[first_shape_[b] + j];
         const attached_shape& attached_b = body_b.shapes()[j];
-        // The broad phase bounded whole bodies; a compound's parts are
-        // bounded again here, each by its own sphere.
-        if (compound && shape_a.kind != shape_kind::plane && shape_b.kind != shape_kind::plane) {
-          const real apart = e3ga::norm(shape_a.center - shape_b.center) -
-                             attached_a.shape.bounding_radius() -
-                             attached_b.shape.bounding_radius();
-          if (apart > reach) continue;
+        const met what = meet(body_a, body_b, i, j, shape_a, shape_b, lookahead, reach, manifold);
+        if (what == met::sensed && sensors) {
+          const bool a_senses = attached_a.shape.is_sensor();
+          sensors->push_back(a_senses ? sensor_overlap{a, i, b, j} : sensor_overlap{b, j, a, i});
         }
-        if (!attached_a.shape.filter().meets(attached_b.shape.filter())) continue;
-        if (attached_a.shape.is_sensor() || attached_b.shape.is_sensor()) {
-          if (sensors && touching(shape_a, shape_b, manifold)) {
-            const bool a_senses = attached_a.shape.is_sensor();
-            sensors->push_back(a_senses ? sensor_overlap{a, i, b, j} : sensor_overlap{b, j, a, i});
-          }
-          continue;
-        }
-        gaphys::find_contacts(shape_a, shape_b, lookahead, body_a.velocity(), body_b.velocity(),
-                              reach, manifold);
-        if (manifold.count == 0) continue;
+        if (what != met::contacts) continue;
         const material m = combine(rules, attached_a.shape.material(), attached_b.shape.material());
         for (int k = 0; k < manifold.count; ++k) {
           contact c{};

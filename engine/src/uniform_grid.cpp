@@ -78,7 +78,7 @@ void uniform_grid::collect(const std::vector<body>& bodies, const std::vector<st
     const real sweep =
         lookahead * (e3ga::norm(b.velocity()) + e3ga::norm(b.angular_velocity()) * r) + margin / 2;
     const real reach = r + sweep + relative_margin * (1 + largest_magnitude(c) + r + sweep);
-    bounds_.push_back(bound{c, reach, index, !b.is_dynamic()});
+    bounds_.push_back(bound{c, reach, index, motion_of(b)});
     widths_.push_back(2 * reach);
   }
   if (bounds_.empty()) return;
@@ -233,10 +233,11 @@ void uniform_grid::pair_large(std::vector<index_pair>& pairs) const {
 void uniform_grid::pair_planes(const std::vector<body>& bodies, std::vector<index_pair>& pairs) const {
   for (std::size_t index : planes_) {
     const body& p = bodies[index];
+    const motion plane_moves = motion_of(p);
     const vector n = e3ga::apply(p.attitude(), p.shape()->normal());
     const real d = p.shape()->offset() + e3ga::scp(n, p.position());
     for (const bound& b : bounds_) {
-      if (b.infinite_mass) continue;  // planes are static too
+      if (!may_meet(plane_moves, b.moves)) continue;
       if (e3ga::scp(n, b.centre) - b.radius <= d + plane_margin_) {
         pairs.emplace_back(std::min(index, b.body), std::max(index, b.body));
       }
@@ -247,7 +248,7 @@ void uniform_grid::pair_planes(const std::vector<body>& bodies, std::vector<inde
 // Bounds overlap when |cA - cB| <= rA + rB (radii widened by the margin).
 void uniform_grid::add_if_overlapping(const bound& a, const bound& b,
                                       std::vector<index_pair>& pairs) const {
-  if (a.infinite_mass && b.infinite_mass) return;
+  if (!may_meet(a.moves, b.moves)) return;
   const vector d = a.centre - b.centre;
   const real reach = a.radius + b.radius;
   if (e3ga::scp(d, d) > reach * reach) return;

@@ -32,9 +32,18 @@ const world_settings& validated(const world_settings& s) {
   detail::require_finite(s.gravity, "gravity");
   detail::require_non_negative(s.linear_damping, "linear damping");
   detail::require_non_negative(s.angular_damping, "angular damping");
-  if (s.solver_iterations < 1) detail::reject("solver iterations must be >= 1");
-  if (s.turning_iterations < 0) detail::reject("turning iterations must be >= 0");
-  if (s.impact_iterations < 1) detail::reject("impact iterations must be >= 1");
+  // (At most a million sweeps each: more would never end a step, and the
+  // solver adds the first two as ints.)
+  constexpr int most_sweeps = 1'000'000;
+  if (s.solver_iterations < 1 || s.solver_iterations > most_sweeps) {
+    detail::reject("solver iterations must be in [1, 1000000] (got ", s.solver_iterations, ")");
+  }
+  if (s.turning_iterations < 0 || s.turning_iterations > most_sweeps) {
+    detail::reject("turning iterations must be in [0, 1000000] (got ", s.turning_iterations, ")");
+  }
+  if (s.impact_iterations < 1 || s.impact_iterations > most_sweeps) {
+    detail::reject("impact iterations must be in [1, 1000000] (got ", s.impact_iterations, ")");
+  }
   detail::require_non_negative(s.solver_tolerance, "solver tolerance");
   if (!(s.solver_relaxation > 0 && s.solver_relaxation < 2)) {
     detail::reject("solver relaxation must be in (0, 2) (got ", s.solver_relaxation, ")");
@@ -49,6 +58,9 @@ const world_settings& validated(const world_settings& s) {
   }
   detail::require_non_negative(s.linear_slop, "linear slop");
   detail::require_non_negative(s.contact_margin, "contact margin");
+  detail::require_non_negative(s.sleep_linear_speed, "sleep linear speed");
+  detail::require_non_negative(s.sleep_angular_speed, "sleep angular speed");
+  detail::require_non_negative(s.time_to_sleep, "time to sleep");
   if (s.broad_phase != broad_phase_kind::uniform_grid &&
       s.broad_phase != broad_phase_kind::all_pairs) {
     detail::reject("broad phase must be uniform_grid or all_pairs");
@@ -80,6 +92,8 @@ world::world(const world& other)
       pairs_(other.pairs_),
       contacts_(other.contacts_),
       previous_contacts_(other.previous_contacts_),
+      sleeping_contacts_(other.sleeping_contacts_),
+      next_island_(other.next_island_),
       events_(other.events_),
       sensor_overlaps_(other.sensor_overlaps_),
       start_velocities_(other.start_velocities_),
@@ -117,10 +131,26 @@ void forget(std::vector<contact>& contacts, std::size_t index) {
   contacts.swap(kept);
 }
 
+// Merges `from` into the pair-sorted `into`; a pair's contacts are all in
+// one of the two lists, so ordering by pair keeps them in the narrow
+// phase's order.
+void merge_by_pair(std::vector<contact>& into, const std::vector<contact>& from) {
+  if (from.empty()) return;
+  std::vector<contact> merged;
+  merged.reserve(into.size() + from.size());
+  std::merge(into.begin(), into.end(), from.begin(), from.end(), std::back_inserter(merged),
+             [](const contact& x, const contact& y) {
+               return std::tie(x.body_a, x.body_b) < std::tie(y.body_a, y.body_b);
+             });
+  into.swap(merged);
+}
+
 }  // namespace
 
 body_id world::create_body(const body_definition& definition) {
   bodies_.emplace_back(definition);  // body's constructor validates, then nothing is added
+  // A new body, even a static one, wakes the sleeping bodies it overlaps.
+  bodies_.back().woken_ = true;
   ++geometry_version_;
   const std::size_t index = bodies_.size() - 1;
   std::size_t slot;
@@ -162,6 +192,18 @@ bool world::contains(body_id id) const {
 
 void world::remove_body(body_id id) {
   const std::size_t index = index_of(id);
+  // What it touched, and its own island, wake: they may fall or slide now.
+  std::vector<std::uint64_t> islands;
+  if (bodies_[index].island_ != 0) islands.push_back(bodies_[index].island_);
+  for (const contact& c : sleeping_contacts_) {
+    if (c.body_a == index) islands.push_back(bodies_[c.body_b].island_);
+    if (c.body_b == index) islands.push_back(bodies_[c.body_a].island_);
+  }
+  wake_islands(islands);
+  for (const contact& c : contacts_) {
+    if (c.body_a == index) bodies_[c.body_b].still_time_ = 0;
+    if (c.body_b == index) bodies_[c.body_a].still_time_ = 0;
+  }
   const std::size_t slot = slot_of_index_[index];
   bodies_.erase(bodies_.begin() + static_cast<std::ptrdiff_t>(index));
   slot_of_index_.erase(slot_of_index_.begin() + static_cast<std::ptrdiff_t>(index));
@@ -177,6 +219,8 @@ void world::remove_body(body_id id) {
   space_.remove(index);
   forget(contacts_, index);
   forget(previous_contacts_, index);
+  forget(sleeping_contacts_, index);
+  merged_current_ = false;
   const auto names_it = [id](const contact_event& e) { return e.body_a == id || e.body_b == id; };
   for (std::vector<contact_event>* list : {&events_.began, &events_.persisted, &events_.ended}) {
     list->erase(std::remove_if(list->begin(), list->end(), names_it), list->end());
@@ -198,7 +242,59 @@ const body& world::at(body_id id) const { return bodies_[index_of(id)]; }
 
 void world::set_gravity(const vector& gravity) {
   detail::require_finite(gravity, "gravity");
+  const bool changed = gravity.e1() != settings_.gravity.e1() ||
+                       gravity.e2() != settings_.gravity.e2() ||
+                       gravity.e3() != settings_.gravity.e3();
   settings_.gravity = gravity;
+  if (changed) wake_all();
+}
+
+void world::set_sleeping(bool sleeping) {
+  settings_.sleeping = sleeping;
+  if (!sleeping) wake_all();
+}
+
+const std::vector<contact>& world::contacts() const {
+  if (sleeping_contacts_.empty()) return contacts_;
+  if (!merged_current_) {
+    merged_contacts_ = contacts_;
+    merge_by_pair(merged_contacts_, sleeping_contacts_);
+    merged_current_ = true;
+  }
+  return merged_contacts_;
+}
+
+// Every body of the islands labelled in `labels` wakes, still for no time,
+// and its island's contacts rejoin the awake ones (where the next solve
+// warm starts from them). The bodies woken are listed in woken_bodies_.
+void world::wake_islands(std::vector<std::uint64_t>& labels) {
+  woken_bodies_.clear();
+  labels.erase(std::remove(labels.begin(), labels.end(), std::uint64_t{0}), labels.end());
+  if (labels.empty()) return;
+  std::sort(labels.begin(), labels.end());
+  labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    body& b = bodies_[i];
+    if (b.island_ == 0 || !std::binary_search(labels.begin(), labels.end(), b.island_)) continue;
+    b.asleep_ = false;
+    b.still_time_ = 0;
+    b.island_ = 0;
+    woken_bodies_.push_back(i);
+  }
+  std::vector<contact> still_asleep, awake;
+  for (const contact& c : sleeping_contacts_) {
+    const bool asleep = bodies_[c.body_a].asleep_ || bodies_[c.body_b].asleep_;
+    (asleep ? still_asleep : awake).push_back(c);
+  }
+  sleeping_contacts_.swap(still_asleep);
+  merge_by_pair(contacts_, awake);
+  merged_current_ = false;
+}
+
+void world::wake_all() {
+  std::vector<std::uint64_t> labels;
+  for (const body& b : bodies_) labels.push_back(b.island_);
+  wake_islands(labels);
 }
 
 void world::set_damping(real linear, real angular) {
@@ -224,41 +320,177 @@ void world::set_material_combine(const material_combine_rules& rules) {
 void world::step(real h) {
   detail::require_positive(h, "time step");
   ++geometry_version_;
+  merged_current_ = false;
   const auto start = clock::now();
+  // The islands of the bodies the user woke since the last step wake whole.
+  std::vector<std::uint64_t> islands;
+  bool any_moves = false;  // a body that may meet another: else no pair at all
+  for (const body& b : bodies_) {
+    if (b.woken_ && b.island_ != 0) islands.push_back(b.island_);
+    const detail::motion m = detail::motion_of(b);
+    any_moves = any_moves || m == detail::motion::awake || m == detail::motion::mover;
+  }
+  wake_islands(islands);
+  any_moves = any_moves || !woken_bodies_.empty();
   start_velocities_.clear();
   for (const body& b : bodies_) start_velocities_.push_back({b.velocity_, b.angular_velocity_});
   integrate_velocities(h);
   const auto integrated = clock::now();
   // Pairs that may touch by the end of the step: contacts up to h |v| apart
   // are speculative, so a landing body stops at the surface instead of
-  // sinking in by up to h |v| first.
-  space_.candidate_pairs(bodies_, pairs_, h, settings_.contact_margin);
+  // sinking in by up to h |v| first. A sleeping body that makes a contact
+  // with a moving one wakes its island, whose bodies then take this step's
+  // gravity and forces as if they had been awake, and the pairs are found
+  // again with them.
+  pairs_.clear();
+  while (any_moves) {
+    space_.candidate_pairs(bodies_, pairs_, h, settings_.contact_margin);
+    islands.clear();
+    for (const auto& [a, b] : pairs_) {
+      const std::size_t sleeper = bodies_[a].asleep_ ? a : bodies_[b].asleep_ ? b : no_index;
+      if (sleeper == no_index) continue;
+      if (space_.make_contact(bodies_, a, b, h, settings_.contact_margin)) {
+        islands.push_back(bodies_[sleeper].island_);
+      }
+    }
+    wake_islands(islands);
+    if (woken_bodies_.empty()) break;
+    for (std::size_t i : woken_bodies_) integrate_velocity(bodies_[i], h);
+  }
   const auto paired = clock::now();
   previous_contacts_.swap(contacts_);
+  std::vector<sensor_overlap> sleeping_overlaps = unchanged_sensor_overlaps();
   space_.find_contacts(bodies_, pairs_, contacts_, h, settings_.material_combine,
                        settings_.contact_margin, &sensor_overlaps_);
+  merge_sensor_overlaps(sleeping_overlaps);
   const auto met = clock::now();
   if (!solver_) solver_ = std::make_unique<contact_solver>();  // a moved-from world
-  solver_->solve_velocities(settings_, bodies_, start_velocities_, contacts_, previous_contacts_,
-                            h);
+  // (Without contacts the solver would copy every velocity out and back.)
+  if (!contacts_.empty()) {
+    solver_->solve_velocities(settings_, bodies_, start_velocities_, contacts_,
+                              previous_contacts_, h);
+  }
   const auto solved = clock::now();
   integrate_positions(h);
   const auto moved = clock::now();
-  solver_->correct_positions(settings_, bodies_, contacts_, h);
+  if (!contacts_.empty()) solver_->correct_positions(settings_, bodies_, contacts_, h);
   const auto corrected = clock::now();
-
-  timings_.integration = seconds(start, integrated) + seconds(solved, moved);
-  timings_.pairs = seconds(integrated, paired);
-  timings_.narrow_phase = seconds(paired, met);
-  timings_.response = seconds(met, solved) + seconds(moved, corrected);
-  timings_.candidate_pairs = pairs_.size();
+  // Events before the islands that fall asleep set their contacts aside.
   detail::find_events(previous_contacts_, contacts_, events_);
   // Contacts name bodies by index; the events and sensor overlaps by id.
   for (std::vector<contact_event>* list : {&events_.began, &events_.persisted, &events_.ended}) {
     for (contact_event& e : *list) e.body_a = id_of(e.body_a), e.body_b = id_of(e.body_b);
   }
   for (sensor_overlap& o : sensor_overlaps_) o.sensor = id_of(o.sensor), o.other = id_of(o.other);
+  const auto reported = clock::now();
+  fall_asleep(h);
+  for (body& b : bodies_) b.woken_ = false;
+  const auto slept = clock::now();
+
+  timings_.integration =
+      seconds(start, integrated) + seconds(solved, moved) + seconds(reported, slept);
+  timings_.pairs = seconds(integrated, paired);
+  timings_.narrow_phase = seconds(paired, met);
+  timings_.response = seconds(met, solved) + seconds(moved, corrected);
+  timings_.candidate_pairs = pairs_.size();
   time_ += h;
+}
+
+// The sensor overlaps of the last step (ids) whose two bodies cannot meet
+// this step (asleep, or static against asleep): they stand as they were.
+// Returned with body indices, in pair order.
+std::vector<sensor_overlap> world::unchanged_sensor_overlaps() const {
+  std::vector<sensor_overlap> kept;
+  for (const sensor_overlap& o : sensor_overlaps_) {
+    const std::size_t s = index_of(o.sensor), other = index_of(o.other);
+    if (detail::may_meet(detail::motion_of(bodies_[s]), detail::motion_of(bodies_[other]))) {
+      continue;
+    }
+    kept.push_back(sensor_overlap{s, o.sensor_shape, other, o.other_shape});
+  }
+  return kept;
+}
+
+void world::merge_sensor_overlaps(const std::vector<sensor_overlap>& kept) {
+  if (kept.empty()) return;
+  const auto pair_of = [](const sensor_overlap& o) {
+    return std::make_pair(std::min(o.sensor, o.other), std::max(o.sensor, o.other));
+  };
+  std::vector<sensor_overlap> merged;
+  merged.reserve(kept.size() + sensor_overlaps_.size());
+  std::merge(sensor_overlaps_.begin(), sensor_overlaps_.end(), kept.begin(), kept.end(),
+             std::back_inserter(merged),
+             [&](const sensor_overlap& x, const sensor_overlap& y) { return pair_of(x) < pair_of(y); });
+  sensor_overlaps_.swap(merged);
+}
+
+// Islands: the awake dynamic bodies joined by contacts (static and
+// kinematic bodies join nothing, or a floor would make one island of
+// everything). An island sleeps when every body in it has been still
+// (below both sleep speeds, and allowed to sleep) for time_to_sleep and
+// none touches a moving kinematic body: velocities zeroed, its contacts
+// set aside with their impulses for the warm start when it wakes.
+void world::fall_asleep(real h) {
+  if (!settings_.sleeping) return;
+  const std::size_t n = bodies_.size();
+  const auto awake = [this](std::size_t i) {
+    return bodies_[i].is_dynamic() && !bodies_[i].asleep_;
+  };
+  bool any_awake = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!awake(i)) continue;
+    any_awake = true;
+    body& b = bodies_[i];
+    const bool still = b.can_sleep_ && e3ga::norm(b.velocity_) <= settings_.sleep_linear_speed &&
+                       e3ga::norm(b.angular_velocity_) <= settings_.sleep_angular_speed;
+    b.still_time_ = still ? b.still_time_ + h : 0;
+  }
+  if (!any_awake) return;
+  std::vector<std::size_t>& parent = island_parent_;
+  parent.resize(n);
+  for (std::size_t i = 0; i < n; ++i) parent[i] = i;
+  const auto root = [&parent](std::size_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (const contact& c : contacts_) {
+    const bool awake_a = awake(c.body_a), awake_b = awake(c.body_b);
+    if (awake_a && awake_b) {
+      const std::size_t a = root(c.body_a), b = root(c.body_b);
+      parent[std::max(a, b)] = std::min(a, b);
+    } else if (awake_a && detail::motion_of(bodies_[c.body_b]) == detail::motion::mover) {
+      bodies_[c.body_a].still_time_ = 0;
+    } else if (awake_b && detail::motion_of(bodies_[c.body_a]) == detail::motion::mover) {
+      bodies_[c.body_b].still_time_ = 0;
+    }
+  }
+  std::vector<real>& least_still = island_still_;
+  least_still.assign(n, std::numeric_limits<real>::infinity());
+  for (std::size_t i = 0; i < n; ++i) {
+    if (awake(i)) least_still[root(i)] = std::min(least_still[root(i)], bodies_[i].still_time_);
+  }
+  std::vector<std::uint64_t>& label = island_label_;
+  label.assign(n, 0);
+  bool any_asleep = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!awake(i) || !(least_still[root(i)] >= settings_.time_to_sleep)) continue;
+    if (label[root(i)] == 0) label[root(i)] = next_island_++;
+    body& b = bodies_[i];
+    b.asleep_ = true;
+    b.island_ = label[root(i)];
+    b.velocity_ = vector{};
+    b.angular_velocity_ = bivector{};
+    any_asleep = true;
+  }
+  if (!any_asleep) return;
+  std::vector<contact> asleep, kept;
+  for (const contact& c : contacts_) {
+    const bool sleeps = bodies_[c.body_a].asleep_ || bodies_[c.body_b].asleep_;
+    (sleeps ? asleep : kept).push_back(c);
+  }
+  contacts_.swap(kept);
+  merge_by_pair(sleeping_contacts_, asleep);
+  merged_current_ = false;
 }
 
 // Semi-implicit Euler, velocity half (thesis eqs. 3.12 and 4.4). The angular
@@ -268,21 +500,23 @@ void world::step(real h) {
 // are its own where set: a body with neither (scale 1 multiplies exactly)
 // steps bit for bit as before they existed.
 void world::integrate_velocities(real h) {
-  const auto decay = [h](real rate) { return 1 / (1 + h * rate); };
-  const real linear_decay = decay(settings_.linear_damping);
-  const real angular_decay = decay(settings_.angular_damping);
   for (body& b : bodies_) {
-    if (b.is_dynamic()) {
-      const real linear = b.linear_damping_ ? decay(*b.linear_damping_) : linear_decay;
-      const real angular = b.angular_damping_ ? decay(*b.angular_damping_) : angular_decay;
-      const vector gravity = b.gravity_scale_ * settings_.gravity;
-      b.velocity_ = linear * (b.velocity_ + h * (gravity + b.inverse_mass_ * b.force_));
-      const bivector momentum = b.world_inertia(b.angular_velocity_) + h * b.torque_;
-      b.angular_velocity_ = angular * b.world_inverse_inertia(momentum);
-    }
-    b.force_ = vector{};
-    b.torque_ = bivector{};
+    if (!b.asleep_) integrate_velocity(b, h);
   }
+}
+
+void world::integrate_velocity(body& b, real h) const {
+  if (b.is_dynamic()) {
+    const auto decay = [h](real rate) { return 1 / (1 + h * rate); };
+    const real linear = decay(b.linear_damping_.value_or(settings_.linear_damping));
+    const real angular = decay(b.angular_damping_.value_or(settings_.angular_damping));
+    const vector gravity = b.gravity_scale_ * settings_.gravity;
+    b.velocity_ = linear * (b.velocity_ + h * (gravity + b.inverse_mass_ * b.force_));
+    const bivector momentum = b.world_inertia(b.angular_velocity_) + h * b.torque_;
+    b.angular_velocity_ = angular * b.world_inverse_inertia(momentum);
+  }
+  b.force_ = vector{};
+  b.torque_ = bivector{};
 }
 
 // Position half (thesis eqs. 3.13, 4.5, 4.6): x' = x + h v and
@@ -298,7 +532,8 @@ void world::integrate_velocities(real h) {
 void world::integrate_positions(real h) {
   constexpr int midpoint_sweeps = 4;
   for (body& b : bodies_) {
-    if (b.is_static_) continue;
+    // Sleeping bodies and kinematic ones at rest stay exactly where they are.
+    if (b.is_static_ || b.asleep_ || detail::motion_of(b) == detail::motion::fixed) continue;
     b.position_ = b.position_ + h * b.velocity_;
     if (b.is_kinematic_) {  // turns as it is told
       const rotor attitude = e3ga::gp(e3ga::exp((-h / 2) * b.angular_velocity_), b.attitude_);
@@ -335,9 +570,11 @@ std::uint64_t world::state_hash() const {
     mix(b.velocity_.c);
     mix(b.attitude_.c);
     mix(b.angular_velocity_.c);
+    // When it falls asleep, too.
+    mix(std::array<real, 2>{b.still_time_, real(b.asleep_ ? 1 : 0)});
   }
   // The last impulses too: the next step starts from them.
-  for (const contact& c : contacts_) {
+  for (const contact& c : contacts()) {
     for (const contact_impulse& i : {c.impulse, c.resting}) {
       mix(std::array<real, 1>{i.normal});
       mix(i.tangent.c);

@@ -24,7 +24,7 @@ namespace {
 
 constexpr const char* usage =
     R"(usage: gaphys_demo [--scene NAME] [--spheres N] [--steps N] [--every K]
-                   [--out FILE] [--html FILE]
+                   [--remove-at S] [--out FILE] [--html FILE]
        gaphys_demo --list | --help
 
 Runs a scene at h = 1/240 s and writes, at step 0 and every K-th step, each
@@ -38,6 +38,10 @@ Progress goes to standard error: percent done and the time left (ETA).
   --spheres N   falling_spheres only: how many spheres (default 100, at most 10000)
   --steps N     steps to run (default 2400: 10 s)
   --every K     record every K-th step (default 10)
+  --remove-at S after step S, cast a ray down the z axis from 100 m and
+                remove the dynamic body it hits first (say, the top box of
+                a tower): the rest go on without it, and it leaves the
+                output from then on
   --out FILE    FILE.csv or FILE.json, replaced only once complete
                 (default: CSV on standard output, unless --html is given)
   --html FILE   also (without --out: only) write a web page that plays the
@@ -66,6 +70,7 @@ struct options {
   std::optional<int> spheres;
   long long steps = 2400;
   long long every = 10;
+  std::optional<long long> remove_at;  // the step after which the ray's body goes
   std::string out;   // empty: standard output, unless html is given
   std::string html;  // empty: no page
   demo::trajectory_format format = demo::trajectory_format::csv;
@@ -114,7 +119,8 @@ options parse(int argc, char** argv) {
       continue;
     }
     if (option != "--scene" && option != "--spheres" && option != "--steps" &&
-        option != "--every" && option != "--out" && option != "--html") {
+        option != "--every" && option != "--remove-at" && option != "--out" &&
+        option != "--html") {
       throw usage_error("unknown option '" + option + "'");
     }
     // "--out --steps 5" means a forgotten value, not a file named --steps.
@@ -130,6 +136,8 @@ options parse(int argc, char** argv) {
       o.steps = positive_count(option, value, max_steps);
     } else if (option == "--every") {
       o.every = positive_count(option, value, max_steps);
+    } else if (option == "--remove-at") {
+      o.remove_at = positive_count(option, value, max_steps);
     } else if (option == "--out") {
       o.out = value;
     } else {
@@ -221,6 +229,30 @@ class progress {
   int shown_ = 0;          // 0% is not worth a line
 };
 
+std::size_t asleep(const gaphys::world& world) {
+  std::size_t count = 0;
+  for (const gaphys::body& b : world.bodies()) count += b.is_sleeping();
+  return count;
+}
+
+// What a ray straight down the middle of the scene meets first.
+std::optional<gaphys::ray_hit> ray_down_the_middle(const gaphys::world& world) {
+  return world.ray_cast(gaphys::vector{0, 0, 100}, gaphys::vector{0, 0, -1}, 200);
+}
+
+// Removes the dynamic body the ray down the middle hits, if any.
+void remove_what_the_ray_hits(gaphys::world& world) {
+  const std::optional<gaphys::ray_hit> hit = ray_down_the_middle(world);
+  if (!hit || !world.at(hit->body).is_dynamic()) {
+    std::cerr << "--remove-at: the ray down the z axis hits no dynamic body at t = "
+              << world.time() << " s\n";
+    return;
+  }
+  world.remove_body(hit->body);
+  std::cerr << "removed body " << hit->body << ", hit by the ray down the z axis at z = "
+            << hit->point.e3() << " m, t = " << world.time() << " s\n";
+}
+
 // Set by Ctrl-C or a kill: the run stops between steps and unwinds, so the
 // output's temporary file is removed instead of left behind.
 volatile std::sig_atomic_t stop_signal = 0;
@@ -269,6 +301,7 @@ int run(const options& o) {
     world.step(h);
     stepping += std::chrono::steady_clock::now() - start;
     touches_began += static_cast<long long>(world.events().began.size());
+    if (o.remove_at && step == *o.remove_at) remove_what_the_ray_hits(world);
     if (step % o.every == 0) record();
     bar.update(step);
   }
@@ -289,10 +322,9 @@ int run(const options& o) {
   std::cerr << o.scene->name << ": " << o.steps << " steps, " << world.time() << " s simulated, "
             << std::fixed << std::setprecision(3) << seconds << " s wall, "
             << 1000 * seconds / double(o.steps) << " ms/step, " << world.contacts().size()
-            << " contacts in the last step, " << touches_began << " touches began\n";
-  // What a ray straight down the middle of the scene meets at the end.
-  if (const std::optional<gaphys::ray_hit> hit =
-          world.ray_cast(gaphys::vector{0, 0, 100}, gaphys::vector{0, 0, -1}, 200)) {
+            << " contacts in the last step, " << touches_began << " touches began, "
+            << asleep(world) << " of " << world.body_count() << " bodies asleep\n";
+  if (const std::optional<gaphys::ray_hit> hit = ray_down_the_middle(world)) {
     std::cerr << "a ray down the z axis from 100 m meets body " << hit->body << " at z = "
               << std::setprecision(4) << hit->point.e3() << "\n";
   }

@@ -46,8 +46,8 @@ trajectory_writer::trajectory_writer(std::ostream& out, trajectory_format format
   out_ << "{\"scene\": \"" << scene << "\", \"time_step\": " << json_number(time_step);
   if (bodies_of) {
     out_ << ", \"bodies\": [";
-    for (gaphys::body_id id = 0; id < bodies_of->body_count(); ++id) {
-      out_ << (id == 0 ? "\n" : ",\n") << json_body(bodies_of->at(id), id);
+    for (std::size_t i = 0; i < bodies_of->body_count(); ++i) {
+      out_ << (i == 0 ? "\n" : ",\n") << json_body(bodies_of->bodies()[i], bodies_of->id_of(i));
     }
     out_ << "\n]";
   }
@@ -65,12 +65,12 @@ void trajectory_writer::write_frame(const gaphys::world& world) {
 
 void trajectory_writer::write_csv_frame(const gaphys::world& world) {
   const std::string time = number(world.time());
-  for (gaphys::body_id id = 0; id < world.body_count(); ++id) {
-    const gaphys::body& b = world.at(id);
+  for (std::size_t i = 0; i < world.body_count(); ++i) {
+    const gaphys::body& b = world.bodies()[i];
     if (b.is_static()) continue;
     const gaphys::vector& x = b.position();
     const gaphys::rotor& r = b.attitude();
-    out_ << time << ',' << id << ',' << number(x.e1()) << ',' << number(x.e2()) << ','
+    out_ << time << ',' << world.id_of(i) << ',' << number(x.e1()) << ',' << number(x.e2()) << ','
          << number(x.e3()) << ',' << number(r.scalar()) << ',' << number(r.e12()) << ','
          << number(r.e13()) << ',' << number(r.e23()) << '\n';
   }
@@ -81,12 +81,12 @@ void trajectory_writer::write_json_frame(const gaphys::world& world) {
   out_ << (first_frame_ ? "\n" : ",\n") << "{\"time\": " << json_number(world.time())
        << ", \"bodies\": [";
   bool first_body = true;
-  for (gaphys::body_id id = 0; id < world.body_count(); ++id) {
-    const gaphys::body& b = world.at(id);
+  for (std::size_t i = 0; i < world.body_count(); ++i) {
+    const gaphys::body& b = world.bodies()[i];
     if (b.is_static()) continue;
     const gaphys::vector& x = b.position();
     const gaphys::rotor& r = b.attitude();
-    out_ << (first_body ? "" : ", ") << "{\"id\": " << id << ", \"position\": ["
+    out_ << (first_body ? "" : ", ") << "{\"id\": " << world.id_of(i) << ", \"position\": ["
          << json_number(x.e1()) << ", " << json_number(x.e2()) << ", " << json_number(x.e3())
          << "], \"attitude\": [" << json_number(r.scalar()) << ", " << json_number(r.e12()) << ", "
          << json_number(r.e13()) << ", " << json_number(r.e23()) << "]}";

@@ -32,7 +32,7 @@ class trajectory_writer {
                     gaphys::real time_step, const gaphys::world* bodies_of = nullptr);
 
   // One frame: the world's time and the pose of each non-static body, named
-  // by its body id (its index in the world).
+  // by its body id (a removed body is in no later frame).
   void write_frame(const gaphys::world& world);
 
   // Closes the JSON document (CSV needs nothing).

@@ -75,8 +75,8 @@ void write_scene(std::ostream& out, const gaphys::world& world, const std::strin
                  const std::string& description) {
   out << "{\"scene\": " << json_string(scene) << ", \"description\": " << json_string(description)
       << ", \"gravity\": " << json_vector(world.settings().gravity) << ", \"bodies\": [";
-  for (gaphys::body_id id = 0; id < world.body_count(); ++id) {
-    out << (id == 0 ? "\n" : ",\n") << json_body(world.at(id), id);
+  for (std::size_t i = 0; i < world.body_count(); ++i) {
+    out << (i == 0 ? "\n" : ",\n") << json_body(world.bodies()[i], world.id_of(i));
   }
   out << "\n]}";
 }

@@ -243,6 +243,12 @@ TEST_F(bad_input_test, world_settings_are_checked) {
   s.impact_iterations = 0;
   EXPECT_TRUE(rejects_settings(s, "impact iterations"));
   s = {};
+  s.solver_iterations = 1'000'001;
+  EXPECT_TRUE(rejects_settings(s, "solver iterations"));
+  s = {};
+  s.turning_iterations = std::numeric_limits<int>::max();
+  EXPECT_TRUE(rejects_settings(s, "turning iterations"));
+  s = {};
   s.solver_tolerance = -1e-6;
   EXPECT_TRUE(rejects_settings(s, "solver tolerance"));
   s = {};

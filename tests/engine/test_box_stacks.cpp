@@ -16,12 +16,21 @@
 namespace gaphys::testing {
 namespace {
 
-using box_stack_test = engine_test;
+// Each stack with sleeping on (the default: it stands still until it falls
+// asleep) and off (the solver alone holds it for the whole 10 s).
+class box_stack_test : public engine_test, public ::testing::WithParamInterface<bool> {
+ protected:
+  world make_stack_world() const {
+    world_settings settings;
+    settings.sleeping = GetParam();
+    return world(settings);
+  }
+};
 
 // Ten unit boxes stacked on a floor stand for 10 s: the top one moves less
 // than 1 mm.
-TEST_F(box_stack_test, a_tower_of_ten_boxes_stands) {
-  world w = make_world();
+TEST_P(box_stack_test, a_tower_of_ten_boxes_stands) {
+  world w = make_stack_world();
   add_floor(w);
   body_id top = 0;
   for (int i = 0; i < 10; ++i) top = add_box(w, vector{0, 0, real(0.5) + i}, vector{0.5, 0.5, 0.5});
@@ -33,8 +42,8 @@ TEST_F(box_stack_test, a_tower_of_ten_boxes_stands) {
 
 // A pyramid of 55 unit boxes (rows of 10 down to 1, 1 cm apart in a row)
 // stands for 10 s and comes to rest.
-TEST_F(box_stack_test, a_pyramid_of_fifty_five_boxes_stands_and_comes_to_rest) {
-  world w = make_world();
+TEST_P(box_stack_test, a_pyramid_of_fifty_five_boxes_stands_and_comes_to_rest) {
+  world w = make_stack_world();
   add_floor(w);
   const real gap = 0.01;
   std::vector<std::pair<body_id, vector>> boxes;
@@ -53,6 +62,11 @@ TEST_F(box_stack_test, a_pyramid_of_fifty_five_boxes_stands_and_comes_to_rest) {
   EXPECT_LE(drift, 1e-2);
   EXPECT_LE(kinetic_energy(w), 1e-6);
 }
+
+INSTANTIATE_TEST_SUITE_P(sleeping, box_stack_test, ::testing::Values(true, false),
+                         [](const ::testing::TestParamInfo<bool>& info) {
+                           return info.param ? "sleeping_on" : "sleeping_off";
+                         });
 
 }  // namespace
 }  // namespace gaphys::testing

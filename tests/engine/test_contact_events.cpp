@@ -30,7 +30,9 @@ class contact_events_test : public engine_test {
 };
 
 TEST_F(contact_events_test, a_dropped_ball_begins_touching_when_free_fall_lands_it_and_rests) {
-  world w = make_world();
+  world_settings settings;
+  settings.sleeping = false;  // asleep, a pair is silent (test_sleeping.cpp)
+  world w(settings);
   const body_id floor = add_floor(w);
   const real radius = 0.5, drop = 1.2;  // falls 1.2 m before touching
   const body_id ball = add_sphere(w, vector{0, 0, radius + drop}, radius, 2);

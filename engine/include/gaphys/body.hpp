@@ -9,6 +9,7 @@
 //   which is also what Ω = e12 and R' = exp(-h Ω / 2) R do.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -18,6 +19,14 @@
 #include "gaphys/shape.hpp"
 
 namespace gaphys {
+
+class body;
+
+namespace detail {
+struct snapshot_access;  // snapshot.cpp: reads and writes every field
+enum class motion : unsigned char { fixed, sleeping, mover, awake };
+motion motion_of(const body& b);
+}  // namespace detail
 
 struct body_definition {
   // kg, finite and > 0; ignored for static bodies, which have infinite mass.
@@ -57,6 +66,9 @@ struct body_definition {
   // body follows the world's.
   std::optional<real> linear_damping;
   std::optional<real> angular_damping;
+  // Whether the body may sleep (world_settings::sleeping says when); false
+  // keeps it, and every island it touches, awake (a player, a vehicle).
+  bool can_sleep = true;
 };
 
 // A body's linear and angular velocity at one instant.
@@ -129,6 +141,18 @@ class body {
   const std::optional<real>& angular_damping() const { return angular_damping_; }
   void set_damping(std::optional<real> linear, std::optional<real> angular);
 
+  // Sleeping (world_settings::sleeping, docs/engine.md "Sleeping"). Only
+  // dynamic bodies sleep: a sleeping body has zero velocities and the world
+  // skips it until something wakes its island. Every setter, force, torque
+  // and impulse above wakes the body (and restarts the time it has been
+  // still), and the world wakes the rest of its island at the next step.
+  // A static or kinematic body given a pose or a velocity (or wake_up())
+  // wakes the sleeping bodies it then reaches.
+  bool is_sleeping() const { return asleep_; }
+  void wake_up();
+  bool can_sleep() const { return can_sleep_; }
+  void set_can_sleep(bool can_sleep);  // false wakes the body
+
   // World-frame inertia: I_w(B) = R I(~R B R) ~R, and its inverse (zero for
   // static bodies).
   bivector world_inertia(const bivector& b) const;
@@ -141,6 +165,7 @@ class body {
  private:
   friend class world;
   friend class contact_solver;
+  friend struct detail::snapshot_access;
 
   bool is_static_ = false;
   bool is_kinematic_ = false;
@@ -160,6 +185,42 @@ class body {
   real gravity_scale_ = 1;
   std::optional<real> linear_damping_;
   std::optional<real> angular_damping_;
+
+  // Sleeping (world.hpp, "Sleeping"): whether the body may, whether it does
+  // (then its velocities are zero and the world skips it), since when its
+  // points have all moved slower than the sleep speeds (s), its sleeping
+  // island's label (0: none), and whether a user call woke it since the
+  // last step (the world then wakes the rest of its island).
+  bool can_sleep_ = true;
+  bool asleep_ = false;
+  real still_time_ = 0;
+  std::uint64_t island_ = 0;
+  bool woken_ = false;
+  void wake_dynamic();
+
+  friend detail::motion detail::motion_of(const body& b);
 };
+
+namespace detail {
+
+// How a body takes part in a step's candidate pairs: a pair is worth meeting
+// when one of its bodies is awake and dynamic, or when a body that moves
+// others (a moving kinematic body, or a static or kinematic one the user
+// just moved) reaches a sleeping one, which must then wake.
+inline motion motion_of(const body& b) {
+  if (b.is_dynamic()) return b.asleep_ ? motion::sleeping : motion::awake;
+  const bool moving = b.woken_ || b.velocity_.e1() != 0 || b.velocity_.e2() != 0 ||
+                      b.velocity_.e3() != 0 || b.angular_velocity_.e12() != 0 ||
+                      b.angular_velocity_.e13() != 0 || b.angular_velocity_.e23() != 0;
+  return moving ? motion::mover : motion::fixed;
+}
+
+inline bool may_meet(motion a, motion b) {
+  return a == motion::awake || b == motion::awake ||
+         (a == motion::mover && b == motion::sleeping) ||
+         (a == motion::sleeping && b == motion::mover);
+}
+
+}  // namespace detail
 
 }  // namespace gaphys

@@ -15,6 +15,10 @@
 
 namespace gaphys {
 
+namespace detail {
+struct snapshot_access;  // snapshot.cpp: reads and writes every field
+}
+
 class inertia {
  public:
   // The unit tensor, 1 kg m^2 about every axis: a valid value for a holder
@@ -43,6 +47,7 @@ class inertia {
   real isotropic_moment() const { return tensor_[0]; }
 
  private:
+  friend struct detail::snapshot_access;
   inertia(const std::array<real, 9>& rows, const std::array<real, 9>& inverse);
   static bivector apply(const std::array<real, 9>& m, const bivector& b);
 

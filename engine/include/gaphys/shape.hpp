@@ -12,6 +12,10 @@
 
 namespace gaphys {
 
+namespace detail {
+struct snapshot_access;  // snapshot.cpp: reads and writes every field
+}
+
 enum class shape_kind { sphere, plane, point, box, capsule, convex_hull };
 
 // Which shapes meet, by category and mask bits (as Box2D's): two shapes make
@@ -86,6 +90,7 @@ class shape {
   real spinning_friction() const { return material_.spinning_friction; }
 
  private:
+  friend struct detail::snapshot_access;
   explicit shape(shape_kind kind) : kind_(kind) {}
   // A copy with one material value changed (already validated).
   shape with(real gaphys::material::*field, real value) const;

@@ -31,14 +31,15 @@ class space {
   broad_phase_kind broad_phase() const { return kind_; }
   void set_broad_phase(broad_phase_kind kind) { kind_ = kind; }
 
-  // Pairs of shaped bodies, not both static or kinematic, that may touch within
+  // Pairs of shaped bodies that may meet (body.hpp: not both static,
+  // kinematic or asleep, unless one moves and the other sleeps) and may touch within
   // `lookahead` seconds at their present velocities, or are within
   // `margin` metres: a superset of those that do. Pairs are (a, b) with
   // a < b, in increasing order.
   void candidate_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs,
                        real lookahead = 0, real margin = 0);
 
-  // Places every shape once, then meets each candidate pair's shapes. Shapes
+  // Places the shapes of the pairs' bodies, then meets each pair's shapes. Shapes
   // whose gap their velocities close within lookahead seconds make
   // speculative contacts (depth < 0); boxes, capsules and hulls also within
   // `margin` metres. Contacts come in pair order, then by shape pair, then
@@ -52,9 +53,20 @@ class space {
                      const material_combine_rules& rules = {}, real margin = 0,
                      std::vector<sensor_overlap>* sensors = nullptr);
 
+  // Whether the shapes of bodies a and b make a contact (a speculative one
+  // too) as find_contacts would meet them: a sleeping body wakes when one
+  // does with an awake one, whichever broad phase found the pair.
+  bool make_contact(const std::vector<body>& bodies, std::size_t a, std::size_t b, real lookahead,
+                    real margin) const;
+
  private:
+  enum class met { nothing, sensed, contacts };
+  static placed_shape placed(const body& b, const attached_shape& s);
+  static met meet(const body& body_a, const body& body_b, std::size_t i, std::size_t j,
+                  const placed_shape& shape_a, const placed_shape& shape_b, real lookahead,
+                  real reach, contact_manifold& manifold);
   void all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs) const;
-  void place_shapes(const std::vector<body>& bodies);
+  void place_shapes(const std::vector<body>& bodies, const std::vector<body_pair>& pairs);
 
   broad_phase_kind kind_;
   detail::uniform_grid grid_;
@@ -62,6 +74,7 @@ class space {
   // Every shape at its pose: body i's are placed_[first_shape_[i], first_shape_[i + 1]).
   std::vector<placed_shape> placed_;  // reused between steps
   std::vector<std::size_t> first_shape_;
+  std::vector<unsigned char> in_pairs_;  // whether each body is in some pair
 };
 
 }  // namespace gaphys

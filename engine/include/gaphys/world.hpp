@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "gaphys/body.hpp"
@@ -48,12 +49,20 @@ struct world_settings {
   // Candidate pairs: the grid (O(N)) or the thesis's all pairs (O(N^2)); the
   // simulation is the same to the bit.
   broad_phase_kind broad_phase = broad_phase_kind::uniform_grid;
+  // Sleeping (docs/engine.md, "Sleeping"): bodies joined by contacts form
+  // islands; an island whose bodies have all moved slower than these
+  // speeds for time_to_sleep seconds sleeps: its velocities are zeroed and
+  // it costs nothing per step until something wakes it.
+  bool sleeping = true;
+  real sleep_linear_speed = 0.01;   // m/s, of the centre of mass
+  real sleep_angular_speed = 0.01;  // rad/s
+  real time_to_sleep = 0.5;         // s
 };
 
 // Wall-clock seconds the last step spent in each phase, and how many candidate
 // pairs the broad phase handed to the narrow phase.
 struct step_timings {
-  double integration = 0;   // forces, velocities, positions, attitudes
+  double integration = 0;   // waking, forces, velocities, positions, attitudes, islands
   double pairs = 0;         // candidate pairs (the broad phase)
   double narrow_phase = 0;  // meets
   double response = 0;      // impulses and position correction
@@ -63,6 +72,7 @@ struct step_timings {
 class contact_solver;
 namespace detail {
 class query_index;
+struct snapshot_access;  // snapshot.cpp: reads and writes every field
 }
 
 class world {
@@ -101,12 +111,16 @@ class world {
   void set_broad_phase(broad_phase_kind kind);
   // Applies from the next step's contacts on.
   void set_material_combine(const material_combine_rules& rules);
+  // Off wakes every body. (A new gravity wakes every body too.)
+  void set_sleeping(bool sleeping);
 
   // Advances by h seconds (finite, > 0; else invalid_input, nothing changes).
   void step(real h);
 
   real time() const { return time_; }
-  const std::vector<contact>& contacts() const { return contacts_; }
+  // Every contact, the sleeping islands' too (as they were when the island
+  // fell asleep), in body pair order.
+  const std::vector<contact>& contacts() const;
   // The pairs that began touching in the last step, that touched in the
   // step before and still do, and that stopped (contact_events.hpp).
   const contact_events& events() const { return events_; }
@@ -138,14 +152,38 @@ class world {
   std::vector<body_id> overlap_box(const vector& centre, const vector& half_extents,
                                    const rotor& attitude = rotor{1, 0, 0, 0}) const;
 
-  // FNV-1a over the bits of every body's position, velocity, attitude and
-  // angular velocity, and of the last step's contact impulses (the next step
-  // starts from them): equal states hash equal, on any run of the same build.
+  // FNV-1a over the bits of every body's position, velocity, attitude,
+  // angular velocity and sleep state, and of the contact impulses (the next
+  // step starts from them): equal states hash equal, on any run of the same
+  // build.
   std::uint64_t state_hash() const;
 
+  // Snapshots (docs/engine.md, "Snapshots"): the whole state of the world
+  // (settings, bodies, ids, contacts and their warm-start impulses, events,
+  // time) as bytes. A world restored from them steps on bit for bit as this
+  // one does. restore_snapshot replaces everything in *this; for a
+  // snapshot that is corrupt, truncated, of another build or inconsistent
+  // it throws invalid_input (naming what is wrong and the byte offset) and
+  // leaves *this untouched.
+  std::vector<std::uint8_t> save_snapshot() const;
+  void restore_snapshot(const std::vector<std::uint8_t>& bytes);
+  // The same through a file. Saving writes a temporary file in the same
+  // folder and renames it over `path`, so a crash never leaves half a
+  // snapshot there; errors (a folder that does not exist, a file that
+  // cannot be read) are invalid_input naming the path.
+  void save_snapshot_file(const std::string& path) const;
+  void restore_snapshot_file(const std::string& path);
+
  private:
+  friend struct detail::snapshot_access;
   void integrate_velocities(real h);
+  void integrate_velocity(body& b, real h) const;
   void integrate_positions(real h);
+  void wake_islands(std::vector<std::uint64_t>& labels);
+  void wake_all();
+  void fall_asleep(real h);
+  std::vector<sensor_overlap> unchanged_sensor_overlaps() const;
+  void merge_sensor_overlaps(const std::vector<sensor_overlap>& kept);
 
   world_settings settings_;
   std::size_t index_of(body_id id) const;  // or throws invalid_input
@@ -162,6 +200,18 @@ class world {
   std::vector<body_pair> pairs_;
   std::vector<contact> contacts_;
   std::vector<contact> previous_contacts_;  // the last step's, for warm starting
+  // The contacts of sleeping islands, in pair order, as they were when the
+  // island fell asleep (contacts_ holds the awake ones); contacts() merges
+  // the two into merged_contacts_ when there are sleeping ones.
+  std::vector<contact> sleeping_contacts_;
+  mutable std::vector<contact> merged_contacts_;
+  mutable bool merged_current_ = false;
+  std::uint64_t next_island_ = 1;  // the label the next island to fall asleep gets
+  // Scratch of the islands' search and of waking (nothing a later step reads).
+  std::vector<std::size_t> island_parent_;
+  std::vector<real> island_still_;
+  std::vector<std::uint64_t> island_label_;
+  std::vector<std::size_t> woken_bodies_;
   contact_events events_;
   std::vector<sensor_overlap> sensor_overlaps_;
   std::vector<body_velocity> start_velocities_;  // before this step's forces, for restitution

@@ -32,7 +32,9 @@ using index_pair = std::pair<std::size_t, std::size_t>;
 class uniform_grid {
  public:
   // Appends to `pairs` (cleared first) every candidate among `shaped`
-  // (indices into bodies), not both static or kinematic, as (a, b) with a < b, sorted;
+  // (indices into bodies) that may_meet (body.hpp: not both static, kinematic
+  // or asleep, but for a moving one waking a sleeping one), as (a, b) with
+  // a < b, sorted;
   // each bound reaches lookahead (|v| + |Ω| r) + margin / 2 further, for
   // speculative contacts.
   // Returns false, adding nothing, when coordinates are too far out for
@@ -45,7 +47,7 @@ class uniform_grid {
     vector centre;
     real radius;
     std::size_t body;
-    bool infinite_mass;  // static or kinematic: two such never make a pair
+    motion moves;  // a pair is a candidate only where may_meet(moves, moves)
   };
   struct entry {  // an ordinary bound in its cell
     std::int64_t x, y, z;
