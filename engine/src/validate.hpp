@@ -2,6 +2,7 @@
 // invalid_input with a message naming the field, before any state changes.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -42,8 +43,14 @@ void require_finite(const Named& value, const char* what) {
 inline rotor unit_rotor(const rotor& r, const char* what) {
   require_finite(r, what);
   const real length = e3ga::norm(r);
-  if (!(length > 0)) reject(what, " must be a nonzero rotor");
-  return r / length;
+  if (std::isfinite(length) && length > real(1e-150)) return r / length;
+  // A rotor of 1e200 (whose squared norm overflows) or of 1e-200 (whose
+  // squared norm underflows): scaled by its largest coefficient first.
+  real largest = 0;
+  for (real x : r.c) largest = std::max(largest, std::fabs(x));
+  if (!(largest > 0)) reject(what, " must be a nonzero rotor");
+  const rotor scaled = r / largest;
+  return scaled / e3ga::norm(scaled);
 }
 
 }  // namespace gaphys::detail

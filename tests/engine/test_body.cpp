@@ -52,6 +52,20 @@ TEST_F(body_test, the_attitude_is_normalized_on_creation_and_when_set) {
   EXPECT_NEAR(b.attitude().e12(), 0.8, 1e-15);
 }
 
+// Rotors whose squared norm overflows or underflows normalize as well.
+TEST_F(body_test, huge_and_tiny_attitudes_normalize_too) {
+  body_definition d;
+  d.shape = shape::sphere(1);
+  for (real scale : {real(1e200), real(1e-200), real(1e300), real(1e-300)}) {
+    d.attitude = rotor{3 * scale, 4 * scale, 0, 0};
+    body b(d);
+    EXPECT_NEAR(b.attitude().scalar(), 0.6, 1e-15) << scale;
+    EXPECT_NEAR(b.attitude().e12(), 0.8, 1e-15) << scale;
+    b.set_attitude(rotor{0, 0, -scale, 0});
+    EXPECT_EQ(b.attitude().e13(), -1) << scale;
+  }
+}
+
 TEST_F(body_test, principal_inertia_acts_plane_by_plane) {
   const inertia j = inertia::principal(1, 2, 3);
   // About x is the e23 plane, about y e31 = -e13, about z e12.

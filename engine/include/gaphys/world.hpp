@@ -119,7 +119,9 @@ class world {
 
   real time() const { return time_; }
   // Every contact, the sleeping islands' too (as they were when the island
-  // fell asleep), in body pair order.
+  // fell asleep), in body pair order. With islands asleep the list is
+  // merged on the first call after a change: like the queries, not safe to
+  // call from two threads at once on one world.
   const std::vector<contact>& contacts() const;
   // The pairs that began touching in the last step, that touched in the
   // step before and still do, and that stopped (contact_events.hpp).
