@@ -9,6 +9,7 @@ cd "$(dirname "$0")/.."
 
 python=$(bash tools/find-python.sh)
 targets=(algebra_tests_reference algebra_tests_optimized algebra_variants_agree
+         algebra_fixture_tests_reference algebra_fixture_tests_optimized
          engine_tests_reference engine_tests_optimized)
 cmake -S . -B build-asan -G Ninja -DPython3_EXECUTABLE="$python" -DGAPHYS_SANITIZE=ON \
       -DGAPHYS_BUILD_BENCHMARKS=OFF -DGAPHYS_BUILD_EXAMPLES=OFF

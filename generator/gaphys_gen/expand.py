@@ -42,6 +42,7 @@ class Kernel:
     form: str = "polynomial"  # "polynomial", "exp_closed", "log_closed", "via_mv"
     square: Poly | None = None  # exp/log closed forms: the scalar square of the (bi)vector part
     cosine: Poly | None = None  # log closed form: the scalar part of the argument
+    size2: Poly | None = None  # log closed form: the sum of the squares of the bivector's coefficients
     log_fallback_output: int | None = None  # log: output that takes pi when the angle is 2 pi
     mv_bits: int = 0  # mv result: the canonical-index bitmap of structurally nonzero blades
     # Named intermediate values (t0, t1, ...) the outputs may use, evaluated first.
@@ -55,7 +56,7 @@ class Kernel:
     def polys(self) -> list[Poly]:
         """Every polynomial the kernel evaluates."""
         polys = [p for _, p in self.outputs] + [p for _, p in self.temporaries]
-        return polys + [p for p in (self.divisor, self.square, self.cosine) if p is not None]
+        return polys + [p for p in (self.divisor, self.square, self.cosine, self.size2) if p is not None]
 
 
 def cost(poly: Poly) -> tuple[int, int]:
@@ -257,15 +258,20 @@ class Expander:
         square = self.prod("gp", bivector, bivector)
         if other or not set(square) <= {0} or rtype.kind != "named":
             return Kernel("log", (named,), rtype, [], None, "via_mv")
-        # log(c + B) = f(s, c) B with B^2 = s; the runtime picks atan2, atanh or 1/c.
+        # log(c + B) = f(s, c) B with B^2 = s; the runtime picks atan2, atanh or 1/c,
+        # or finds no logarithm in B's plane (c < 0 for a boost or translation:
+        # telling that from -1 takes B's size, the sum of its squares).
         outputs, _ = self.outputs(sym.scale(bivector, Poly.variable("f")), rtype)
+        size2 = Poly()
+        for poly in bivector.values():
+            size2 = size2 + poly * poly
         fallback = next(
             (i for i, c in enumerate(rtype.named.stored)
              if self.products.gp(c.blade.bitmap, c.blade.bitmap).get(0) == -1),
             None,
         )
         return Kernel("log", (named,), rtype, outputs, None, "log_closed", self.scalar_of(square),
-                      self.scalar_of(x), fallback)
+                      self.scalar_of(x), size2, fallback)
 
 
 def expand(algebra: Algebra) -> list[Kernel]:

@@ -48,6 +48,8 @@ class Coordinate:
     blade: Blade
     sign: int  # the coordinate multiplies sign * blade (e2^e1 is -e1^e2)
     constant: Fraction | None  # fixed value, not stored
+    name: str  # the blade as declared: "e3^e1" (blade e1^e3, sign -1)
+    accessor: str  # named after the blade as declared: "e31", so ganja/klein orientations read as written
 
 
 @dataclass(frozen=True)
@@ -223,28 +225,31 @@ class _Validator:
     def validate_metric(self) -> tuple[tuple[Fraction, ...], ...]:
         n = len(self.basis)
         matrix: list[list[Fraction | None]] = [[None] * n for _ in range(n)]
-        written: set[tuple[int, int]] = set()  # entries as given, to tell repeats from asymmetry
+        # Entries as given, to tell repeats from asymmetry: {(i, j) in either order: (i, j) as written}.
+        written: dict[tuple[int, int], tuple[int, int]] = {}
         for stmt in (s for s in self.spec.statements if s.keyword == "metric"):
             for entry in stmt.entries:
                 for name, location in ((entry.left, entry.location), (entry.right, entry.right_location)):
                     if name not in self.basis_index:
                         raise self.error(location, f"unknown basis vector {name!r} in metric")
                 i, j = self.basis_index[entry.left], self.basis_index[entry.right]
-                for a, b in ((i, j), (j, i)):
-                    if matrix[a][b] is not None and matrix[a][b] != entry.value:
-                        if (i, j) in written:
-                            raise self.error(
-                                entry.location,
-                                f"metric entry {entry.left}.{entry.right} given twice with different values "
-                                f"({matrix[a][b]} and {entry.value})",
-                            )
+                earlier = matrix[i][j]
+                if earlier is not None and earlier != entry.value:
+                    a, b = written[(i, j)]
+                    if (a, b) == (i, j):
                         raise self.error(
                             entry.location,
-                            f"metric is not symmetric: {entry.left}.{entry.right} = {entry.value} "
-                            f"but {self.basis[a]}.{self.basis[b]} = {matrix[a][b]}",
+                            f"metric entry {entry.left}.{entry.right} given twice with different values "
+                            f"({earlier} and {entry.value})",
                         )
-                    matrix[a][b] = entry.value
-                written.add((i, j))
+                    raise self.error(
+                        entry.location,
+                        f"metric is not symmetric: {entry.left}.{entry.right} = {entry.value} "
+                        f"but {self.basis[a]}.{self.basis[b]} = {earlier}",
+                    )
+                matrix[i][j] = matrix[j][i] = entry.value
+                written[(i, j)] = (i, j)
+                written.setdefault((j, i), (i, j))
         return tuple(tuple(v if v is not None else Fraction(0) for v in row) for row in matrix)
 
     def validate_types(self, by_bitmap: dict[int, Blade]) -> tuple[NamedType, ...]:
@@ -256,13 +261,20 @@ class _Validator:
             if stmt.name in seen:
                 raise self.error(stmt.location, f"type {stmt.name!r} declared twice (first at line {seen[stmt.name]})")
             seen[stmt.name] = stmt.location.line
-            coordinates, blades_seen = [], set()
+            coordinates, blades_seen, accessors = [], set(), {}
             for coordinate in stmt.coordinates:
                 bitmap, sign = self.blade_bitmap(coordinate.blade)
                 if bitmap in blades_seen:
                     raise self.error(coordinate.blade.location, f"blade {by_bitmap[bitmap].name} appears twice in type {stmt.name!r}")
                 blades_seen.add(bitmap)
-                coordinates.append(Coordinate(by_bitmap[bitmap], sign, coordinate.constant))
+                name = "^".join(coordinate.blade.factors) or "1"
+                accessor = accessor_name(coordinate.blade.factors)
+                if accessor in accessors:
+                    raise self.error(coordinate.blade.location,
+                                     f"coordinates {accessors[accessor]} and {name} of type {stmt.name!r} would both "
+                                     f"be named {accessor!r} in C++")
+                accessors[accessor] = name
+                coordinates.append(Coordinate(by_bitmap[bitmap], sign, coordinate.constant, name, accessor))
             if all(c.constant is not None for c in coordinates):
                 raise self.error(stmt.location, f"type {stmt.name!r} has no stored coordinate")
             types.append(NamedType(stmt.name, tuple(coordinates), stmt.location))

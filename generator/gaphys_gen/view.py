@@ -58,7 +58,7 @@ def named_type(named: NamedType) -> dict:
     for c in named.coordinates:
         coordinates.append(
             {
-                "accessor": c.blade.accessor,
+                "accessor": c.accessor,
                 "blade_index": c.blade.index,
                 "blade_name": c.blade.name,
                 "sign": "" if c.sign > 0 else "-",
@@ -77,7 +77,7 @@ def named_type(named: NamedType) -> dict:
         "stored": [c for c in coordinates if c["stored_index"] is not None],
         "constants": [c for c in coordinates if c["constant"] is not None],
         "constant_bits": hex(sum(1 << c.blade.index for c in named.coordinates if c.constant is not None)) + "u",
-        "description": ", ".join(c.blade.name + ("" if c.constant is None else f" = {c.constant}") for c in named.coordinates),
+        "description": ", ".join(c.name + ("" if c.constant is None else f" = {c.constant}") for c in named.coordinates),
     }
 
 
@@ -97,17 +97,30 @@ def cost_text(kernel: Kernel) -> str:
     return f": {muls + len(kernel.outputs)} mul, {adds} add, 1 div"  # each output times 1/divisor
 
 
+def variables_read(polys) -> set[str]:
+    """The arguments (a, b, s) whose coordinates these polynomials read."""
+    return {v[0] for poly in polys for monomial in poly.terms for v in monomial}
+
+
 def kernel_view(kernel: Kernel) -> dict:
     names = [a.name for a in kernel.arguments]
-    params = [f"const {type_cpp(a)}<T>& {letter}" for a, letter in zip(kernel.arguments, "ab")]
+    # An argument the expansion never reads (pga3d norm2 of a point with
+    # e123 = 1 is the constant 1) is marked, so -Wunused-parameter stays quiet.
+    read = set("abs") if kernel.form == "via_mv" else variables_read(kernel.polys)
+    params = [("" if letter in read else "[[maybe_unused]] ") + f"const {type_cpp(a)}<T>& {letter}"
+              for a, letter in zip(kernel.arguments, "ab")]
     mv_args = [f"basic_mv<T>({letter})" for letter in "ab"[: len(kernel.arguments)]]
     shown = list(names)
     if kernel.function == "smul":
-        params.insert(0, "T s")
+        params.insert(0, ("" if "s" in read else "[[maybe_unused]] ") + "T s")
         mv_args.insert(0, "s")
         shown.insert(0, "scalar")
     rtype = return_type(kernel)
     call = f"{kernel.function}({', '.join(mv_args)})"
+    if kernel.function == "log" and kernel.result.kind == "named":
+        # -1 turns by 2 pi in a plane of the result's type, or has no log in it.
+        planes = sum(1 << c.blade.index for c in kernel.result.named.coordinates)
+        call = f"detail::log_within({', '.join(mv_args)}, {hex(planes)}u)"
     if kernel.result.kind == "named":
         via_mv = f"{rtype}({call})"
     elif kernel.result.kind == "scalar" and kernel.function not in SCALAR_GENERIC:
@@ -132,8 +145,13 @@ def kernel_view(kernel: Kernel) -> dict:
         ],
         "temporaries": [{"name": n, "expr": cpp.expression(p)} for n, p in kernel.temporaries],
         "divisor": cpp.expression(kernel.divisor) if kernel.divisor is not None else None,
+        # 1 / divisor; a versor inverse checks that its argument is not null.
+        "reciprocal": None if kernel.divisor is None else (
+            f"gaphys::ga::inverse_norm2<T>({cpp.expression(kernel.divisor)})" if kernel.function == "inverse"
+            else f"T(1) / ({cpp.expression(kernel.divisor)})"),
         "square": cpp.expression(kernel.square) if kernel.square is not None else None,
         "cosine": cpp.expression(kernel.cosine) if kernel.cosine is not None else None,
+        "size2": cpp.expression(kernel.size2) if kernel.size2 is not None else None,
         "fallback_index": kernel.log_fallback_output,
         "mv_bits": hex(kernel.mv_bits) + "u",
         "via_mv": via_mv,
@@ -161,7 +179,7 @@ def mv_kernel_view(algebra: Algebra, mk) -> dict:
     prologue = [f"const T inv = T(1) / ({cpp.expression(kernel.divisor)});"] if divides else []
     evaluated = [p for _, p in kernel.outputs] + [p for _, p in kernel.temporaries]
     evaluated += [kernel.divisor] if divides else []
-    read = {v[0] for poly in evaluated for monomial in poly.terms for v in monomial}  # letters used
+    read = variables_read(evaluated)
     # Kernels write every coefficient of the caller's result, zeros included,
     # in canonical order: the result is not zeroed first (one pass of stores,
     # which adjacent coefficients share), and no copies.

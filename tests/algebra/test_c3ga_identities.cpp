@@ -198,6 +198,18 @@ TYPED_TEST(C3gaIdentities, GeneralInverseOfNullVectorThrows) {
   EXPECT_THROW(c3ga::general_inverse(as_mv<mv<T>>(c3ga::no<T>())), std::domain_error);
 }
 
+// Issue 16, defect 4: the versor inverse ~x / <x ~x>_0 of a null x divided by
+// zero and returned NaN, also in coefficients whose bit was clear.
+TYPED_TEST(C3gaIdentities, VersorInverseOfNullVectorThrows) {
+  using T = TypeParam;
+  EXPECT_THROW(c3ga::inverse(c3ga::ni<T>()), std::domain_error);  // dual_plane kernel
+  EXPECT_THROW(c3ga::inverse(c3ga::no<T>()), std::domain_error);  // normalized_point kernel
+  EXPECT_THROW(c3ga::inverse(as_mv<mv<T>>(c3ga::ni<T>())), std::domain_error);
+  const c3ga::basic_normalized_point<T> p{1, 2, 3, 7};  // x^2 / 2 = 7: null
+  EXPECT_THROW(c3ga::inverse(p), std::domain_error);
+  EXPECT_THROW(c3ga::inverse(as_mv<mv<T>>(p)), std::domain_error);
+}
+
 TYPED_TEST(C3gaIdentities, NormOfUnitIsOne) {
   using T = TypeParam;
   auto rng = make_rng(210);

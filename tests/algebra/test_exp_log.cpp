@@ -2,7 +2,9 @@
 // independent Taylor series, unit versors, round trips and edge cases
 // (zero, rotations by nearly pi and nearly 2 pi, tiny angles, translations).
 #include <c3ga/c3ga.hpp>
+#include <cmath>
 #include <e3ga/e3ga.hpp>
+#include <stdexcept>
 #include <vector>
 
 #include "algebra_test_support.hpp"
@@ -246,6 +248,51 @@ TYPED_TEST(ExpLog, C3gaMotorEdgeCases) {
         EXPECT_TRUE(mv_near<c3mv<T>>(*l, b, tolerance<T>()));
       }
     }
+  }
+}
+
+// Issue 16, defect 1: -exp(B) for a boost or null B has no logarithm in the
+// plane of B, and log returned the log of +exp(B) instead (whose exp is -M).
+TYPED_TEST(ExpLog, C3gaLogOfNegatedBoostOrTranslatorThrows) {
+  using T = TypeParam;
+  const auto& names = c3ga::blade_names;
+  // -(cosh 1 + sinh 1 no^ni): no^ni squares to +1, a boost.
+  const auto boost = c3mv<T>::from_terms(
+      {{0, T(-std::cosh(1.0))}, {int(blade_index(names, "no^ni")), T(-std::sinh(1.0))}});
+  EXPECT_THROW(c3ga::log(boost), std::domain_error);
+  // -(1 + e1^ni): a negated translator, named and general.
+  const c3ga::basic_translator<T> translator{-1, -1, 0, 0};
+  EXPECT_THROW(c3ga::log(translator), std::domain_error);
+  EXPECT_THROW(c3ga::log(as_mv<c3mv<T>>(translator)), std::domain_error);
+  const c3ga::basic_motor<T> motor{-1, 0, 0, 0, -1, 0, 0, 0};
+  EXPECT_THROW(c3ga::log(motor), std::domain_error);
+  // The boost itself, and -1 (a rotation by 2 pi), have logarithms.
+  const auto positive = c3ga::neg(boost);
+  const auto l = c3ga::log(positive);
+  EXPECT_TRUE(mv_near<c3mv<T>>(l, c3mv<T>::from_terms({{int(blade_index(names, "no^ni")), T(1)}}),
+                               tolerance<T>()));
+  const c3ga::basic_motor<T> minus_one{-1, 0, 0, 0, 0, 0, 0, 0};
+  EXPECT_TRUE(mv_near<c3mv<T>>(c3ga::exp(c3ga::log(minus_one)), minus_one, tolerance<T>()));
+}
+
+// Issue 16, defect 2: a motor whose rotation half angle is tiny (1e-11) next
+// to a translation: in float <b q>_2 (about 1e-23) squared underflowed, and
+// log threw. exp(log M) == M is the truth.
+TYPED_TEST(ExpLog, C3gaLogOfMotorWithTinyRotation) {
+  using T = TypeParam;
+  for (const double half : {1e-11, 1e-20, 1e-30}) {
+    SCOPED_TRACE(::testing::Message() << "half angle " << half);
+    const c3ga::basic_translator<T> t{1, T(-0.5), T(-1), T(-0.25)};
+    const c3ga::basic_rotor<T> r{T(std::cos(half)), T(-std::sin(half)), 0, 0};
+    const auto m = t * r;
+    const auto l = checked_call([&] { return c3ga::log(m); });
+    if (!l) continue;
+    EXPECT_TRUE(mv_near<c3mv<T>>(c3ga::exp(*l), m, tolerance<T>())) << "log M = " << c3mv<T>(*l);
+    // log M = -half e1^e2 - 0.5 e1^ni - e2^ni - 0.25 e3^ni, up to O(half) in the
+    // translation (the commutator of the two parts).
+    const c3ga::basic_dual_line<T> expected{T(-half), 0, 0, T(-0.5), T(-1), T(-0.25)};
+    EXPECT_TRUE(mv_near<c3mv<T>>(*l, expected, tolerance<T>()));
+    EXPECT_TRUE(scalar_near(double(l->e12()) / half, -1, tolerance<T>()));  // to its own size
   }
 }
 

@@ -364,13 +364,17 @@ class ClosedForms(unittest.TestCase):
         env = {"a0": F(1, 2), "a1": F(2), "a2": F(-3), "a3": F(5), "f": F(7)}
         self.assertEqual(evaluate(k.cosine, env), F(1, 2))
         self.assertEqual(evaluate(k.square, env), -(4 + 9 + 25))
+        # B's size tells -1 (B = 0) from a negated boost or translator (B^2 >= 0, B != 0).
+        self.assertEqual(evaluate(k.size2, env), 4 + 9 + 25)
         self.assertEqual([evaluate(p, env) for _, p in k.outputs], [14, -21, 35])
         self.assertIsNotNone(k.log_fallback_output)  # e12 squares to -1: the angle-2pi case needs it
 
     def test_log_of_translator_has_no_fallback(self):
         k = kernel("c3ga", "log", "translator")
         self.assertEqual(k.form, "log_closed")
-        self.assertEqual(evaluate(k.square, {"a0": F(1), "a1": F(2), "a2": F(3), "a3": F(4)}), 0)  # (t ni)^2 = 0
+        env = {"a0": F(1), "a1": F(2), "a2": F(3), "a3": F(4)}
+        self.assertEqual(evaluate(k.square, env), 0)  # (t ni)^2 = 0
+        self.assertEqual(evaluate(k.size2, env), 4 + 9 + 16)
         self.assertIsNone(k.log_fallback_output)
 
 

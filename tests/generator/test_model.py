@@ -41,6 +41,13 @@ class MetricErrors(SpecErrorAssertions, unittest.TestCase):
     def test_asymmetric_metric_in_one_statement(self):
         self.assertSpecError(C3_PRELUDE + "metric no.ni = -1, ni.no = 1\n", 4, 20, "metric is not symmetric")
 
+    def test_asymmetric_metric_names_both_entries_as_written(self):
+        # Issue 16, defect 5: the second entry was printed in the order of the first.
+        self.assertSpecError(E3_PRELUDE + "metric e1.e2 = 1, e2.e1 = 2\n", 4, 19,
+                             "metric is not symmetric: e2.e1 = 2 but e1.e2 = 1")
+        self.assertSpecError(C3_PRELUDE + "metric no.ni = -1\nmetric ni.no = 1\n", 5, 8,
+                             "metric is not symmetric: ni.no = 1 but no.ni = -1")
+
     def test_symmetric_repetition_is_accepted(self):
         algebra = load_text(C3_PRELUDE + "metric no.ni = -1, ni.no = -1\n")
         self.assertEqual(algebra.metric[0][4], -1)
@@ -194,6 +201,20 @@ class ResolvedModel(SpecErrorAssertions, unittest.TestCase):
         # A basis vector named e12 next to e1, e2 would give two `e12()` accessors.
         with self.assertRaises(SpecError):
             load_text("algebra t\nbasis e1 e2 e12\n")
+
+    def test_coordinates_are_named_as_declared(self):
+        # Issue 16, defect 8: e3^e1 is the coordinate e31 (of -e1^e3), not e13.
+        algebra = load_text("algebra t\nbasis e0 e1 e2 e3 ni\n"
+                            "type t = e3^e1, e0^e2^e1 = 1, e1^e2, 1, ni^e1, e2^e0^ni\n")
+        coordinates = algebra.types[0].coordinates
+        self.assertEqual([c.accessor for c in coordinates], ["e31", "e021", "e12", "scalar", "ni_e1", "e20_ni"])
+        self.assertEqual([c.blade.name for c in coordinates], ["e1^e3", "e0^e1^e2", "e1^e2", "1", "e1^ni", "e0^e2^ni"])
+        self.assertEqual([c.sign for c in coordinates], [-1, -1, 1, 1, -1, -1])
+
+    def test_coordinate_names_are_unique_in_a_type(self):
+        # e2^e1 is named e21, as is the basis vector e21.
+        self.assertSpecError("algebra t\nbasis e1 e2 e21\ntype t = e2^e1, e21\n", 3, 17,
+                             "coordinates e2^e1 and e21 of type 't' would both be named 'e21' in C++")
 
 
 def _count_statements(path: str, keyword: str) -> int:

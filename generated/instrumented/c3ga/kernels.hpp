@@ -1242,19 +1242,19 @@ basic_motor<T> exp(const basic_dual_line<T>& a) {
 // log(rotor) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> log(const basic_rotor<T>& a) {
-  return basic_euclidean_bivector<T>(log(basic_mv<T>(a)));
+  return basic_euclidean_bivector<T>(detail::log_within(basic_mv<T>(a), 0x2c00u));
 }
 
 // log(translator) -> flat_point
 template <class T>
 basic_flat_point<T> log(const basic_translator<T>& a) {
-  return basic_flat_point<T>(log(basic_mv<T>(a)));
+  return basic_flat_point<T>(detail::log_within(basic_mv<T>(a), 0xd200u));
 }
 
 // log(motor) -> dual_line
 template <class T>
 basic_dual_line<T> log(const basic_motor<T>& a) {
-  return basic_dual_line<T>(log(basic_mv<T>(a)));
+  return basic_dual_line<T>(detail::log_within(basic_mv<T>(a), 0xfc00u));
 }
 
 // lc(dual_sphere, dual_sphere) -> scalar

@@ -140,10 +140,11 @@ T norm2(const basic_mv<T>& a) {
   detail::on_call(detail::call::norm2, r, a);
   return r;
 }
-// Versor inverse ~a / <a ~a>_0: exact for blades and versors.
+// Versor inverse ~a / <a ~a>_0: exact for blades and versors; throws
+// std::domain_error for a null a (<a ~a>_0 = 0).
 template <class T>
 basic_mv<T> inverse(const basic_mv<T>& a) {
-  const basic_mv<T> r = smul(T(1) / norm2(a), reverse(a));
+  const basic_mv<T> r = smul(gaphys::ga::inverse_norm2(norm2(a)), reverse(a));
   detail::on_call(detail::call::inverse, r, a);
   return r;
 }
@@ -160,11 +161,19 @@ basic_mv<T> exp(const basic_mv<T>& a) {
   detail::on_call(detail::call::exp, r, a);
   return r;
 }
+namespace detail {
+// log whose rotation by 2 pi (for a = -1) may only turn in the bivectors of
+// `planes`: a named type's log, whose result must stay in that type.
 template <class T>
-basic_mv<T> log(const basic_mv<T>& a) {
-  const basic_mv<T> r = gaphys::ga::log_general(a);
+basic_mv<T> log_within(const basic_mv<T>& a, std::uint32_t planes) {
+  const basic_mv<T> r = gaphys::ga::log_general(a, planes);
   detail::on_call(detail::call::log, r, a);
   return r;
+}
+}  // namespace detail
+template <class T>
+basic_mv<T> log(const basic_mv<T>& a) {
+  return detail::log_within(a, basic_mv<T>::grade_mask(2));
 }
 // v x v^-1 as v x ~v / <v ~v>_0, keeping the grades x has: a versor preserves grade.
 template <class T>

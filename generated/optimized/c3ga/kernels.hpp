@@ -47,7 +47,8 @@ T norm2(const basic_normalized_point<T>& a) {
 // inverse(normalized_point) -> dual_sphere: 9 mul, 3 add, 1 div
 template <class T>
 basic_dual_sphere<T> inverse(const basic_normalized_point<T>& a) {
-  const T inv = T(1) / (-T(2) * a.c[3] + a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  const T inv = gaphys::ga::inverse_norm2<T>(-T(2) * a.c[3] + a.c[0] * a.c[0] + a.c[1] * a.c[1] +
+                                             a.c[2] * a.c[2]);
   return basic_dual_sphere<T>((T(1)) * inv, (a.c[0]) * inv, (a.c[1]) * inv, (a.c[2]) * inv,
                               (a.c[3]) * inv);
 }
@@ -116,8 +117,8 @@ T norm2(const basic_dual_sphere<T>& a) {
 // inverse(dual_sphere) -> dual_sphere: 10 mul, 3 add, 1 div
 template <class T>
 basic_dual_sphere<T> inverse(const basic_dual_sphere<T>& a) {
-  const T inv =
-      T(1) / (-T(2) * a.c[0] * a.c[4] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  const T inv = gaphys::ga::inverse_norm2<T>(-T(2) * a.c[0] * a.c[4] + a.c[1] * a.c[1] +
+                                             a.c[2] * a.c[2] + a.c[3] * a.c[3]);
   return basic_dual_sphere<T>((a.c[0]) * inv, (a.c[1]) * inv, (a.c[2]) * inv, (a.c[3]) * inv,
                               (a.c[4]) * inv);
 }
@@ -187,7 +188,7 @@ T norm2(const basic_dual_plane<T>& a) {
 // inverse(dual_plane) -> dual_plane: 7 mul, 2 add, 1 div
 template <class T>
 basic_dual_plane<T> inverse(const basic_dual_plane<T>& a) {
-  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
   return basic_dual_plane<T>((a.c[0]) * inv, (a.c[1]) * inv, (a.c[2]) * inv, (a.c[3]) * inv);
 }
 
@@ -254,7 +255,7 @@ T norm2(const basic_euclidean_vector<T>& a) {
 // inverse(euclidean_vector) -> euclidean_vector: 6 mul, 2 add, 1 div
 template <class T>
 basic_euclidean_vector<T> inverse(const basic_euclidean_vector<T>& a) {
-  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
   return basic_euclidean_vector<T>((a.c[0]) * inv, (a.c[1]) * inv, (a.c[2]) * inv);
 }
 
@@ -323,7 +324,7 @@ T norm2(const basic_flat_point<T>& a) {
 // inverse(flat_point) -> flat_point: 5 mul, 0 add, 1 div
 template <class T>
 basic_flat_point<T> inverse(const basic_flat_point<T>& a) {
-  const T inv = T(1) / (-a.c[3] * a.c[3]);
+  const T inv = gaphys::ga::inverse_norm2<T>(-a.c[3] * a.c[3]);
   return basic_flat_point<T>((-a.c[0]) * inv, (-a.c[1]) * inv, (-a.c[2]) * inv, (-a.c[3]) * inv);
 }
 
@@ -390,7 +391,7 @@ T norm2(const basic_euclidean_bivector<T>& a) {
 // inverse(euclidean_bivector) -> euclidean_bivector: 6 mul, 2 add, 1 div
 template <class T>
 basic_euclidean_bivector<T> inverse(const basic_euclidean_bivector<T>& a) {
-  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
   return basic_euclidean_bivector<T>((-a.c[0]) * inv, (-a.c[1]) * inv, (-a.c[2]) * inv);
 }
 
@@ -464,8 +465,9 @@ T norm2(const basic_point_pair<T>& a) {
 // inverse(point_pair) -> point_pair: 20 mul, 6 add, 1 div
 template <class T>
 basic_point_pair<T> inverse(const basic_point_pair<T>& a) {
-  const T inv = T(1) / (T(2) * a.c[0] * a.c[6] + T(2) * a.c[1] * a.c[8] + T(2) * a.c[2] * a.c[9] -
-                        a.c[3] * a.c[3] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[7] * a.c[7]);
+  const T inv = gaphys::ga::inverse_norm2<T>(T(2) * a.c[0] * a.c[6] + T(2) * a.c[1] * a.c[8] +
+                                             T(2) * a.c[2] * a.c[9] - a.c[3] * a.c[3] +
+                                             a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[7] * a.c[7]);
   return basic_point_pair<T>((-a.c[0]) * inv, (-a.c[1]) * inv, (-a.c[2]) * inv, (-a.c[3]) * inv,
                              (-a.c[4]) * inv, (-a.c[5]) * inv, (-a.c[6]) * inv, (-a.c[7]) * inv,
                              (-a.c[8]) * inv, (-a.c[9]) * inv);
@@ -541,7 +543,7 @@ T norm2(const basic_dual_line<T>& a) {
 // inverse(dual_line) -> dual_line: 9 mul, 2 add, 1 div
 template <class T>
 basic_dual_line<T> inverse(const basic_dual_line<T>& a) {
-  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
   return basic_dual_line<T>((-a.c[0]) * inv, (-a.c[1]) * inv, (-a.c[2]) * inv, (-a.c[3]) * inv,
                             (-a.c[4]) * inv, (-a.c[5]) * inv);
 }
@@ -611,7 +613,7 @@ T norm2(const basic_line<T>& a) {
 // inverse(line) -> line: 9 mul, 2 add, 1 div
 template <class T>
 basic_line<T> inverse(const basic_line<T>& a) {
-  const T inv = T(1) / (-a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5]);
+  const T inv = gaphys::ga::inverse_norm2<T>(-a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5]);
   return basic_line<T>((-a.c[0]) * inv, (-a.c[1]) * inv, (-a.c[2]) * inv, (-a.c[3]) * inv,
                        (-a.c[4]) * inv, (-a.c[5]) * inv);
 }
@@ -686,8 +688,9 @@ T norm2(const basic_circle<T>& a) {
 // inverse(circle) -> circle: 20 mul, 6 add, 1 div
 template <class T>
 basic_circle<T> inverse(const basic_circle<T>& a) {
-  const T inv = T(1) / (-T(2) * a.c[0] * a.c[7] - T(2) * a.c[1] * a.c[8] - T(2) * a.c[2] * a.c[9] -
-                        a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  const T inv = gaphys::ga::inverse_norm2<T>(-T(2) * a.c[0] * a.c[7] - T(2) * a.c[1] * a.c[8] -
+                                             T(2) * a.c[2] * a.c[9] - a.c[3] * a.c[3] -
+                                             a.c[4] * a.c[4] - a.c[5] * a.c[5] + a.c[6] * a.c[6]);
   return basic_circle<T>((-a.c[0]) * inv, (-a.c[1]) * inv, (-a.c[2]) * inv, (-a.c[3]) * inv,
                          (-a.c[4]) * inv, (-a.c[5]) * inv, (-a.c[6]) * inv, (-a.c[7]) * inv,
                          (-a.c[8]) * inv, (-a.c[9]) * inv);
@@ -763,8 +766,8 @@ T norm2(const basic_sphere<T>& a) {
 // inverse(sphere) -> sphere: 10 mul, 3 add, 1 div
 template <class T>
 basic_sphere<T> inverse(const basic_sphere<T>& a) {
-  const T inv =
-      T(1) / (T(2) * a.c[0] * a.c[4] - a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  const T inv = gaphys::ga::inverse_norm2<T>(T(2) * a.c[0] * a.c[4] - a.c[1] * a.c[1] -
+                                             a.c[2] * a.c[2] - a.c[3] * a.c[3]);
   return basic_sphere<T>((a.c[0]) * inv, (a.c[1]) * inv, (a.c[2]) * inv, (a.c[3]) * inv,
                          (a.c[4]) * inv);
 }
@@ -834,7 +837,7 @@ T norm2(const basic_plane<T>& a) {
 // inverse(plane) -> plane: 7 mul, 2 add, 1 div
 template <class T>
 basic_plane<T> inverse(const basic_plane<T>& a) {
-  const T inv = T(1) / (-a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  const T inv = gaphys::ga::inverse_norm2<T>(-a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
   return basic_plane<T>((a.c[0]) * inv, (a.c[1]) * inv, (a.c[2]) * inv, (a.c[3]) * inv);
 }
 
@@ -901,7 +904,7 @@ T norm2(const basic_pseudoscalar<T>& a) {
 // inverse(pseudoscalar) -> pseudoscalar: 2 mul, 0 add, 1 div
 template <class T>
 basic_pseudoscalar<T> inverse(const basic_pseudoscalar<T>& a) {
-  const T inv = T(1) / (-a.c[0] * a.c[0]);
+  const T inv = gaphys::ga::inverse_norm2<T>(-a.c[0] * a.c[0]);
   return basic_pseudoscalar<T>((a.c[0]) * inv);
 }
 
@@ -968,7 +971,8 @@ T norm2(const basic_rotor<T>& a) {
 // inverse(rotor) -> rotor: 8 mul, 3 add, 1 div
 template <class T>
 basic_rotor<T> inverse(const basic_rotor<T>& a) {
-  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] +
+                                             a.c[3] * a.c[3]);
   return basic_rotor<T>((a.c[0]) * inv, (-a.c[1]) * inv, (-a.c[2]) * inv, (-a.c[3]) * inv);
 }
 
@@ -1047,7 +1051,7 @@ T norm2(const basic_translator<T>& a) {
 // inverse(translator) -> translator: 5 mul, 0 add, 1 div
 template <class T>
 basic_translator<T> inverse(const basic_translator<T>& a) {
-  const T inv = T(1) / (a.c[0] * a.c[0]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0]);
   return basic_translator<T>((a.c[0]) * inv, (-a.c[1]) * inv, (-a.c[2]) * inv, (-a.c[3]) * inv);
 }
 
@@ -1126,7 +1130,8 @@ T norm2(const basic_motor<T>& a) {
 // inverse(motor) -> motor: 12 mul, 3 add, 1 div
 template <class T>
 basic_motor<T> inverse(const basic_motor<T>& a) {
-  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] +
+                                             a.c[3] * a.c[3]);
   return basic_motor<T>((a.c[0]) * inv, (-a.c[1]) * inv, (-a.c[2]) * inv, (-a.c[3]) * inv,
                         (-a.c[4]) * inv, (-a.c[5]) * inv, (-a.c[6]) * inv, (a.c[7]) * inv);
 }
@@ -1561,33 +1566,37 @@ basic_motor<T> exp(const basic_dual_line<T>& a) {
   return basic_motor<T>(exp(basic_mv<T>(a)));
 }
 
-// log(rotor) -> euclidean_bivector: 6 mul, 2 add, 1 log_factor
+// log(rotor) -> euclidean_bivector: 9 mul, 4 add, 1 log_factor
 template <class T>
 basic_euclidean_bivector<T> log(const basic_rotor<T>& a) {
   const T s = -a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3];
   const T c = a.c[0];
-  if (gaphys::ga::log_needs_fallback(s, c)) {  // -1: a rotation by 2 pi in a chosen plane
+  const gaphys::ga::log_case where =
+      gaphys::ga::log_case_of(s, c, a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  if (where == gaphys::ga::log_case::minus_one) {  // -1: a rotation by 2 pi in a chosen plane
     basic_euclidean_bivector<T> r;
     r.c[0] = T(3.14159265358979323846);
     return r;
   }
-  const T f = gaphys::ga::log_factor(s, c);
+  const T f = gaphys::ga::log_factor(s, c, where);  // throws std::domain_error: no log in the plane
   return basic_euclidean_bivector<T>(a.c[1] * f, a.c[2] * f, a.c[3] * f);
 }
 
-// log(translator) -> flat_point: 3 mul, 0 add, 1 log_factor
+// log(translator) -> flat_point: 6 mul, 2 add, 1 log_factor
 template <class T>
 basic_flat_point<T> log(const basic_translator<T>& a) {
   const T s = T(0);
   const T c = a.c[0];
-  const T f = gaphys::ga::log_factor(s, c);
+  const gaphys::ga::log_case where =
+      gaphys::ga::log_case_of(s, c, a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  const T f = gaphys::ga::log_factor(s, c, where);  // throws std::domain_error: no log in the plane
   return basic_flat_point<T>(a.c[1] * f, a.c[2] * f, a.c[3] * f, T(0));
 }
 
 // log(motor) -> dual_line (general mv path)
 template <class T>
 basic_dual_line<T> log(const basic_motor<T>& a) {
-  return basic_dual_line<T>(log(basic_mv<T>(a)));
+  return basic_dual_line<T>(detail::log_within(basic_mv<T>(a), 0xfc00u));
 }
 
 // lc(dual_sphere, dual_sphere) -> scalar: 5 mul, 4 add

@@ -47,7 +47,7 @@ T norm2(const basic_scalar<T>& a) {
 // inverse(scalar) -> scalar: 2 mul, 0 add, 1 div
 template <class T>
 T inverse(const basic_scalar<T>& a) {
-  const T inv = T(1) / (a.c[0] * a.c[0]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0]);
   return (a.c[0]) * inv;
 }
 
@@ -114,7 +114,7 @@ T norm2(const basic_vector<T>& a) {
 // inverse(vector) -> vector: 6 mul, 2 add, 1 div
 template <class T>
 basic_vector<T> inverse(const basic_vector<T>& a) {
-  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
   return basic_vector<T>((a.c[0]) * inv, (a.c[1]) * inv, (a.c[2]) * inv);
 }
 
@@ -181,7 +181,7 @@ T norm2(const basic_bivector<T>& a) {
 // inverse(bivector) -> bivector: 6 mul, 2 add, 1 div
 template <class T>
 basic_bivector<T> inverse(const basic_bivector<T>& a) {
-  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
   return basic_bivector<T>((-a.c[0]) * inv, (-a.c[1]) * inv, (-a.c[2]) * inv);
 }
 
@@ -248,7 +248,7 @@ T norm2(const basic_trivector<T>& a) {
 // inverse(trivector) -> trivector: 2 mul, 0 add, 1 div
 template <class T>
 basic_trivector<T> inverse(const basic_trivector<T>& a) {
-  const T inv = T(1) / (a.c[0] * a.c[0]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0]);
   return basic_trivector<T>((-a.c[0]) * inv);
 }
 
@@ -315,7 +315,8 @@ T norm2(const basic_rotor<T>& a) {
 // inverse(rotor) -> rotor: 8 mul, 3 add, 1 div
 template <class T>
 basic_rotor<T> inverse(const basic_rotor<T>& a) {
-  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] +
+                                             a.c[3] * a.c[3]);
   return basic_rotor<T>((a.c[0]) * inv, (-a.c[1]) * inv, (-a.c[2]) * inv, (-a.c[3]) * inv);
 }
 
@@ -550,17 +551,19 @@ basic_rotor<T> exp(const basic_bivector<T>& a) {
   return basic_rotor<T>(c, a.c[0] * k, a.c[1] * k, a.c[2] * k);
 }
 
-// log(rotor) -> bivector: 6 mul, 2 add, 1 log_factor
+// log(rotor) -> bivector: 9 mul, 4 add, 1 log_factor
 template <class T>
 basic_bivector<T> log(const basic_rotor<T>& a) {
   const T s = -a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3];
   const T c = a.c[0];
-  if (gaphys::ga::log_needs_fallback(s, c)) {  // -1: a rotation by 2 pi in a chosen plane
+  const gaphys::ga::log_case where =
+      gaphys::ga::log_case_of(s, c, a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  if (where == gaphys::ga::log_case::minus_one) {  // -1: a rotation by 2 pi in a chosen plane
     basic_bivector<T> r;
     r.c[0] = T(3.14159265358979323846);
     return r;
   }
-  const T f = gaphys::ga::log_factor(s, c);
+  const T f = gaphys::ga::log_factor(s, c, where);  // throws std::domain_error: no log in the plane
   return basic_bivector<T>(a.c[1] * f, a.c[2] * f, a.c[3] * f);
 }
 

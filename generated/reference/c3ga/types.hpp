@@ -81,8 +81,8 @@ struct basic_normalized_point {
   explicit constexpr basic_normalized_point(const basic_mv<T>& m)
       : c{m.c[2], m.c[3], m.c[4], m.c[5]} {}
   // Bits for the constant coordinates and the nonzero stored ones: a named
-  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
-  // the mv kernels the profile made for them without a rescan.
+  // type's exact zeros (say, a direction along a basis vector) then reach the
+  // mv kernels the profile made for them without a rescan.
   operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[2] = c[0];
@@ -123,8 +123,8 @@ struct basic_dual_sphere {
   explicit constexpr basic_dual_sphere(const basic_mv<T>& m)
       : c{m.c[1], m.c[2], m.c[3], m.c[4], m.c[5]} {}
   // Bits for the constant coordinates and the nonzero stored ones: a named
-  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
-  // the mv kernels the profile made for them without a rescan.
+  // type's exact zeros (say, a direction along a basis vector) then reach the
+  // mv kernels the profile made for them without a rescan.
   operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[1] = c[0];
@@ -166,8 +166,8 @@ struct basic_dual_plane {
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_dual_plane(const basic_mv<T>& m) : c{m.c[2], m.c[3], m.c[4], m.c[5]} {}
   // Bits for the constant coordinates and the nonzero stored ones: a named
-  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
-  // the mv kernels the profile made for them without a rescan.
+  // type's exact zeros (say, a direction along a basis vector) then reach the
+  // mv kernels the profile made for them without a rescan.
   operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[2] = c[0];
@@ -205,8 +205,8 @@ struct basic_euclidean_vector {
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_euclidean_vector(const basic_mv<T>& m) : c{m.c[2], m.c[3], m.c[4]} {}
   // Bits for the constant coordinates and the nonzero stored ones: a named
-  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
-  // the mv kernels the profile made for them without a rescan.
+  // type's exact zeros (say, a direction along a basis vector) then reach the
+  // mv kernels the profile made for them without a rescan.
   operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[2] = c[0];
@@ -241,8 +241,8 @@ struct basic_flat_point {
   explicit constexpr basic_flat_point(const basic_mv<T>& m)
       : c{m.c[12], m.c[14], m.c[15], m.c[9]} {}
   // Bits for the constant coordinates and the nonzero stored ones: a named
-  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
-  // the mv kernels the profile made for them without a rescan.
+  // type's exact zeros (say, a direction along a basis vector) then reach the
+  // mv kernels the profile made for them without a rescan.
   operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[12] = c[0];
@@ -281,8 +281,8 @@ struct basic_euclidean_bivector {
   explicit constexpr basic_euclidean_bivector(const basic_mv<T>& m)
       : c{m.c[10], m.c[11], m.c[13]} {}
   // Bits for the constant coordinates and the nonzero stored ones: a named
-  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
-  // the mv kernels the profile made for them without a rescan.
+  // type's exact zeros (say, a direction along a basis vector) then reach the
+  // mv kernels the profile made for them without a rescan.
   operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[10] = c[0];
@@ -319,8 +319,8 @@ struct basic_point_pair {
   explicit constexpr basic_point_pair(const basic_mv<T>& m)
       : c{m.c[6], m.c[7], m.c[8], m.c[9], m.c[10], m.c[11], m.c[12], m.c[13], m.c[14], m.c[15]} {}
   // Bits for the constant coordinates and the nonzero stored ones: a named
-  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
-  // the mv kernels the profile made for them without a rescan.
+  // type's exact zeros (say, a direction along a basis vector) then reach the
+  // mv kernels the profile made for them without a rescan.
   operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[6] = c[0];
@@ -384,8 +384,8 @@ struct basic_dual_line {
   explicit constexpr basic_dual_line(const basic_mv<T>& m)
       : c{m.c[10], m.c[11], m.c[13], m.c[12], m.c[14], m.c[15]} {}
   // Bits for the constant coordinates and the nonzero stored ones: a named
-  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
-  // the mv kernels the profile made for them without a rescan.
+  // type's exact zeros (say, a direction along a basis vector) then reach the
+  // mv kernels the profile made for them without a rescan.
   operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[10] = c[0];
@@ -433,8 +433,8 @@ struct basic_line {
   explicit constexpr basic_line(const basic_mv<T>& m)
       : c{m.c[23], m.c[24], m.c[25], m.c[18], m.c[20], m.c[21]} {}
   // Bits for the constant coordinates and the nonzero stored ones: a named
-  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
-  // the mv kernels the profile made for them without a rescan.
+  // type's exact zeros (say, a direction along a basis vector) then reach the
+  // mv kernels the profile made for them without a rescan.
   operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[23] = c[0];
@@ -485,8 +485,8 @@ struct basic_circle {
       : c{m.c[16], m.c[17], m.c[19], m.c[18], m.c[20],
           m.c[21], m.c[22], m.c[23], m.c[24], m.c[25]} {}
   // Bits for the constant coordinates and the nonzero stored ones: a named
-  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
-  // the mv kernels the profile made for them without a rescan.
+  // type's exact zeros (say, a direction along a basis vector) then reach the
+  // mv kernels the profile made for them without a rescan.
   operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[16] = c[0];
@@ -550,8 +550,8 @@ struct basic_sphere {
   explicit constexpr basic_sphere(const basic_mv<T>& m)
       : c{m.c[26], m.c[27], m.c[28], m.c[29], m.c[30]} {}
   // Bits for the constant coordinates and the nonzero stored ones: a named
-  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
-  // the mv kernels the profile made for them without a rescan.
+  // type's exact zeros (say, a direction along a basis vector) then reach the
+  // mv kernels the profile made for them without a rescan.
   operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[26] = c[0];
@@ -594,8 +594,8 @@ struct basic_plane {
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_plane(const basic_mv<T>& m) : c{m.c[30], m.c[27], m.c[28], m.c[29]} {}
   // Bits for the constant coordinates and the nonzero stored ones: a named
-  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
-  // the mv kernels the profile made for them without a rescan.
+  // type's exact zeros (say, a direction along a basis vector) then reach the
+  // mv kernels the profile made for them without a rescan.
   operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[30] = c[0];
@@ -633,8 +633,8 @@ struct basic_pseudoscalar {
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_pseudoscalar(const basic_mv<T>& m) : c{m.c[31]} {}
   // Bits for the constant coordinates and the nonzero stored ones: a named
-  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
-  // the mv kernels the profile made for them without a rescan.
+  // type's exact zeros (say, a direction along a basis vector) then reach the
+  // mv kernels the profile made for them without a rescan.
   operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[31] = c[0];
@@ -660,8 +660,8 @@ struct basic_rotor {
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_rotor(const basic_mv<T>& m) : c{m.c[0], m.c[10], m.c[11], m.c[13]} {}
   // Bits for the constant coordinates and the nonzero stored ones: a named
-  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
-  // the mv kernels the profile made for them without a rescan.
+  // type's exact zeros (say, a direction along a basis vector) then reach the
+  // mv kernels the profile made for them without a rescan.
   operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[0] = c[0];
@@ -701,8 +701,8 @@ struct basic_translator {
   explicit constexpr basic_translator(const basic_mv<T>& m)
       : c{m.c[0], m.c[12], m.c[14], m.c[15]} {}
   // Bits for the constant coordinates and the nonzero stored ones: a named
-  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
-  // the mv kernels the profile made for them without a rescan.
+  // type's exact zeros (say, a direction along a basis vector) then reach the
+  // mv kernels the profile made for them without a rescan.
   operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[0] = c[0];
@@ -742,8 +742,8 @@ struct basic_motor {
   explicit constexpr basic_motor(const basic_mv<T>& m)
       : c{m.c[0], m.c[10], m.c[11], m.c[13], m.c[12], m.c[14], m.c[15], m.c[30]} {}
   // Bits for the constant coordinates and the nonzero stored ones: a named
-  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
-  // the mv kernels the profile made for them without a rescan.
+  // type's exact zeros (say, a direction along a basis vector) then reach the
+  // mv kernels the profile made for them without a rescan.
   operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[0] = c[0];

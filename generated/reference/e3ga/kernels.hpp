@@ -476,7 +476,7 @@ basic_rotor<T> exp(const basic_bivector<T>& a) {
 // log(rotor) -> bivector
 template <class T>
 basic_bivector<T> log(const basic_rotor<T>& a) {
-  return basic_bivector<T>(log(basic_mv<T>(a)));
+  return basic_bivector<T>(detail::log_within(basic_mv<T>(a), 0x70u));
 }
 
 // meet(bivector, bivector) -> vector

@@ -80,8 +80,8 @@ struct basic_scalar {
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_scalar(const basic_mv<T>& m) : c{m.c[0]} {}
   // Bits for the constant coordinates and the nonzero stored ones: a named
-  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
-  // the mv kernels the profile made for them without a rescan.
+  // type's exact zeros (say, a direction along a basis vector) then reach the
+  // mv kernels the profile made for them without a rescan.
   operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[0] = c[0];
@@ -107,8 +107,8 @@ struct basic_vector {
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_vector(const basic_mv<T>& m) : c{m.c[1], m.c[2], m.c[3]} {}
   // Bits for the constant coordinates and the nonzero stored ones: a named
-  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
-  // the mv kernels the profile made for them without a rescan.
+  // type's exact zeros (say, a direction along a basis vector) then reach the
+  // mv kernels the profile made for them without a rescan.
   operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[1] = c[0];
@@ -142,8 +142,8 @@ struct basic_bivector {
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_bivector(const basic_mv<T>& m) : c{m.c[4], m.c[5], m.c[6]} {}
   // Bits for the constant coordinates and the nonzero stored ones: a named
-  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
-  // the mv kernels the profile made for them without a rescan.
+  // type's exact zeros (say, a direction along a basis vector) then reach the
+  // mv kernels the profile made for them without a rescan.
   operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[4] = c[0];
@@ -177,8 +177,8 @@ struct basic_trivector {
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_trivector(const basic_mv<T>& m) : c{m.c[7]} {}
   // Bits for the constant coordinates and the nonzero stored ones: a named
-  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
-  // the mv kernels the profile made for them without a rescan.
+  // type's exact zeros (say, a direction along a basis vector) then reach the
+  // mv kernels the profile made for them without a rescan.
   operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[7] = c[0];
@@ -204,8 +204,8 @@ struct basic_rotor {
   // Projection: keeps this type's coordinates of m, drops the rest.
   explicit constexpr basic_rotor(const basic_mv<T>& m) : c{m.c[0], m.c[4], m.c[5], m.c[6]} {}
   // Bits for the constant coordinates and the nonzero stored ones: a named
-  // type's exact zeros (an axis-aligned normal, ni as a dual plane) then reach
-  // the mv kernels the profile made for them without a rescan.
+  // type's exact zeros (say, a direction along a basis vector) then reach the
+  // mv kernels the profile made for them without a rescan.
   operator basic_mv<T>() const {
     basic_mv<T> m;
     m.c[0] = c[0];

@@ -92,10 +92,18 @@ MV plus_scalar(const MV& x, typename MV::scalar_type s) {
   return r;
 }
 
-// Tolerance for "numerically zero" relative to a magnitude.
+// Tolerance for "numerically zero" relative to a magnitude, and never below
+// the rounding of numbers of size 1.
 template <class T>
 T tolerance(T magnitude) {
   return std::numeric_limits<T>::epsilon() * T(256) * std::max(T(1), magnitude);
+}
+
+// The rounding error of a few operations on numbers of the given size, however
+// small: for terms that are small in their own right, not only next to 1.
+template <class T>
+T relative_tolerance(T magnitude) {
+  return std::numeric_limits<T>::epsilon() * T(256) * magnitude;
 }
 
 // True when x is a scalar up to rounding.
@@ -137,6 +145,10 @@ MV exp_series(const MV& x) {
 // With W = <B^2>_4 / 2 = b1 b2: B^2 = l1 + l2 + 2W and W^2 = l1 l2, so l1, l2
 // solve l^2 - <B^2>_0 l + <W^2>_0 = 0, and (l1 - W) B = (l1 - l2) b1.
 // Returns false when the roots are complex or coincide.
+// Each test compares a quantity with the rounding of the terms it is made of,
+// never with 1: a part much smaller than 1 is still a part (a c2ga bivector
+// with |W^2| = 5e-6 lost its small rotation to an absolute test, and exp(B)
+// its fifth digit in float).
 template <class MV>
 bool split_bivector(const MV& b, MV& b1, MV& b2, typename MV::scalar_type& l1, typename MV::scalar_type& l2) {
   using T = typename MV::scalar_type;
@@ -145,23 +157,31 @@ bool split_bivector(const MV& b, MV& b1, MV& b2, typename MV::scalar_type& l1, t
   const T s0 = square.c[0];
   const T w2 = gp(w, w).c[0];
   const T w_size = max_abs(w);
-  if (std::abs(w2) <= tolerance(w_size * w_size)) {
+  // W is rounded to about eps times the products of B's coefficients that
+  // reach it. Those pair a part that is not null (about sqrt|<B^2>_0|) with
+  // any part (at most |B|): null parts, large as they may be (a translation,
+  // or the offset of an axis), multiply to zero. So W^2 is known to about
+  // eps |W| |B| sqrt|<B^2>_0|, and below that W counts as null. (Relative to
+  // |B|^2 a large translation hides a real second plane; relative to 1, a
+  // small one.)
+  if (std::abs(w2) <= relative_tolerance(w_size * max_abs(b) * std::sqrt(std::abs(s0)))) {
     // W is null (W^2 = 0): a screw motion in conformal space, whose parts are a
     // rotation (l1 = <B^2>_0) and a null translation along the axis (l2 = 0).
-    // Taking the roots directly avoids a square root that loses half the digits
-    // when the rotation is small.
+    // Taking the roots directly avoids the rounding of W^2 in a square root,
+    // which swamps l1^2 when the rotation is small.
     if (s0 == 0) return false;
     l1 = s0;
     l2 = 0;
   } else {
     const T disc = s0 * s0 - T(4) * w2;
-    const T scale = std::max(T(1), s0 * s0);
-    if (disc < -tolerance(scale)) return false;
+    const T scale = s0 * s0 + T(4) * std::abs(w2);  // disc is rounded to about eps times this
+    if (disc < -relative_tolerance(scale)) return false;
     const T root = std::sqrt(std::max(disc, T(0)));
-    if (root <= std::sqrt(tolerance(scale))) return false;
-    // Order so that l2 is the root nearer zero.
+    if (root <= std::sqrt(relative_tolerance(scale))) return false;
+    // l1, the root of larger magnitude, from the formula; l2 = W^2 / l1 from
+    // the product of the roots, without the cancellation of s0 - l1.
     l1 = s0 >= 0 ? (s0 + root) / 2 : (s0 - root) / 2;
-    l2 = s0 - l1;
+    l2 = w2 / l1;
   }
   const MV l1_minus_w = plus_scalar(linear_combination(T(-1), w, T(0), w), l1);
   b1 = keep_grades(gp(l1_minus_w, b), MV::grade_mask(2));
@@ -177,8 +197,10 @@ MV exp_general(const MV& x) {
   using T = typename MV::scalar_type;
   if ((x.bits & ~MV::grade_mask(2)) != 0) return exp_series(x);
   const MV square = gp(x, x);
-  const T magnitude = max_abs(square);
-  if (is_numerically_scalar(square, magnitude)) return exp_simple(x, square.c[0]);
+  // Taking x for simple errs by about <x^2>_4 (the product of two planes),
+  // next to exp(x)'s scalar part of about 1: the tolerance of 1's rounding
+  // (tolerance(), not relative_tolerance()) is the one that bounds that.
+  if (is_numerically_scalar(square, max_abs(square))) return exp_simple(x, square.c[0]);
   MV b1, b2;
   T l1, l2;
   if (!split_bivector(x, b1, b2, l1, l2)) return exp_series(x);
@@ -186,16 +208,17 @@ MV exp_general(const MV& x) {
 }
 
 // A plane to rotate in when log meets -1 (rotation by 2 pi): the first basis
-// bivector that squares to -1.
+// bivector among `planes` (a bitmap of canonical indices) that squares to -1.
 template <class MV>
-MV log_fallback() {
+MV log_fallback(std::uint32_t planes) {
   using T = typename MV::scalar_type;
+  const std::uint32_t bivectors = MV::grade_mask(2) & planes;
   for (int i = 0; i < MV::size; ++i) {
-    if (!(MV::grade_mask(2) >> i & 1)) continue;
+    if (!(bivectors >> i & 1)) continue;
     const MV e = MV::basis_blade(i);
     if (gp(e, e).c[0] == T(-1)) return linear_combination(T(3.14159265358979323846), e, T(0), e);
   }
-  throw std::domain_error("log: -1 has no logarithm in this algebra");
+  throw std::domain_error("log: -1 is a rotation by 2 pi, and no bivector the result may hold squares to -1");
 }
 
 // log of an even versor of grades 0, 2 (and 4 for screw motions): the
@@ -203,8 +226,12 @@ MV log_fallback() {
 // For a screw r = exp(b1) exp(b2), b1 a rotation (b1^2 = -t^2), b2 null and
 // commuting with b1: <r>_0 = cos t, <r>_2 = sin t u1 + cos t b2 (u1 = b1/t),
 // <r>_4 = sin t u1 b2, hence b2 = cos t <r>_2,null - (sin t u1) <r>_4.
+// A rotation by 2 pi (r = -1) turns in the first bivector of `planes` (a
+// bitmap of canonical indices: a named type's log passes its own blades) that
+// squares to -1; std::domain_error when there is none, and when r = -exp(B)
+// for a boost or null B (no logarithm in B's plane).
 template <class MV>
-MV log_general(const MV& r) {
+MV log_general(const MV& r, std::uint32_t planes = ~std::uint32_t(0)) {
   using T = typename MV::scalar_type;
   const T magnitude = max_abs(r);
   const std::uint32_t even = MV::grade_mask(0) | MV::grade_mask(2) | MV::grade_mask(4);
@@ -214,41 +241,81 @@ MV log_general(const MV& r) {
   const MV b = keep_grades(r, MV::grade_mask(2));
   const MV q = keep_grades(r, MV::grade_mask(4));
   const MV square = gp(b, b);
-  // r is a simple rotation, boost or translation when its 4-vector part q
-  // (= sin(t) u1 b2 for a screw, see below) is negligible next to the
-  // rotation's own size sqrt|<b^2>_0|. An absolute test is not enough: near a
-  // full turn sin(t) is tiny while the translation b2 is not.
+  // r is a simple rotation, boost or translation c + b, whose log is f b,
+  // when its 4-vector part q is negligible. For r = exp(b1) exp(b2) (commuting
+  // planes, b2 the smaller), part = |q| / sqrt|<b^2>_0| is about b2's share
+  // of the log (the translation of a screw, the small angle of a boost times a
+  // rotation), and f b gets that share wrong by the factor f c - 1: t cot t - 1
+  // for a rotation (unbounded near a full turn, where sin t is tiny while the
+  // translation is not), phi coth phi - 1 for a boost (growing with phi). So
+  // the test bounds that error, relative to the size of the log. (A bound on
+  // part relative to r's size took, in float, a boost of rapidity 2 times a
+  // rotation by 1e-4 for a plain boost, and doubled the rotation.)
   const T s0 = square.c[0];
-  const bool simple = max_abs(q) <= tolerance(T(1)) * std::sqrt(std::abs(s0)) * std::max(T(1), magnitude);
+  const T q_size = max_abs(q);
+  const log_case where = log_case_of(s0, c, coefficient_dot(b, b));
+  // c < 0 with b a boost, a translation or a rotation too small to resolve
+  // (sin t <= eps): -exp(B), or a turn by 2 pi whose plane and axis r does not
+  // fix. With a 4-vector part too: the translation of a screw about an axis
+  // only its O(eps) terms place.
+  if (where == log_case::none) require_log_in_plane(where);
+  bool simple = q_size == 0;
+  if (!simple && s0 != 0) {
+    const T part = q_size / std::sqrt(std::abs(s0));
+    if (where == log_case::in_plane) {
+      const T f = log_factor(s0, c);
+      simple = part * std::abs(f * c - T(1)) <= tolerance(std::abs(f) * max_abs(b));
+    } else {
+      simple = part <= tolerance(magnitude);  // -1: a rotation by 2 pi
+    }
+  }
   if (simple && max_abs(keep_grades(square, ~(MV::grade_mask(0) | MV::grade_mask(4)))) <= tolerance(max_abs(square))) {
-    if (log_needs_fallback(square.c[0], c)) return log_fallback<MV>();
-    return linear_combination(log_factor(square.c[0], c), b, T(0), b);
+    if (where == log_case::minus_one) return log_fallback<MV>(planes);
+    return linear_combination(log_factor(s0, c, where), b, T(0), b);
   }
   // A screw: r = (c + s u1)(1 + b2) with u1^2 = -1, b2 null and commuting
   // with u1 (rotation about an axis, translation along it). So
   //   <r>_2 = b = s u1 + c b2,   <r>_4 = q = s u1 b2,   <b^2>_0 = -s^2,
-  //   d := <b q>_2 = (s u1 + c b2)(s u1 b2) = -s^2 b2        (b2^2 = 0).
-  // d gives the direction of b2 (from products of small numbers: accurate),
-  // and its length two ways: c b2 is b's part along d, and b2 = -d / s^2.
-  // Combining them as c (c b2) + s^2 b2 = b2 divides by nothing, so the result
+  //   <b q>_2 = (s u1 + c b2)(s u1 b2) = -s^2 b2        (b2^2 = 0).
+  // With m = max|q|, d := <b q/m>_2 = -(s^2/m) b2 gives the direction of b2
+  // (from products of small numbers: accurate), and its length two ways:
+  // c b2 is b's part along d, and s^2 b2 = -m d. Combining them as
+  // c (c b2) + s^2 b2 = b2 divides by nothing, so the result
   // L = angle/s (b - c b2) + b2 has exp(L) = r to rounding even near a full
   // turn, where r fixes the axis only through O(s) terms. (Coefficient-wise
   // projection on d: the rotation's translation-like part is orthogonal to it
   // in the blade basis, as in the conformal model.)
-  const T sin2 = -s0;
-  const MV d = keep_grades(gp(b, q), MV::grade_mask(2));
-  const T d_norm2 = coefficient_dot(d, d), b_along = coefficient_dot(b, d);
-  if (!(sin2 > 0) || !(d_norm2 > 0) || max_abs(gp(d, d)) > tolerance(d_norm2))
+  // Every quantity is scaled to about 1 before it is squared: for a small
+  // rotation s^2 |b2| and its square underflow (in float below s ~ 1e-11),
+  // and an underflowed d has no direction.
+  const MV d = keep_grades(gp(b, linear_combination(T(1) / q_size, q, T(0), q)), MV::grade_mask(2));
+  const T d_size = max_abs(d);
+  if (!(q_size > 0) || !(d_size > 0)) throw std::domain_error("log: only rotations, boosts, translations and screw motions are supported");
+  const MV u = linear_combination(T(1) / d_size, d, T(0), d);  // d / max|d|
+  const T u_norm2 = coefficient_dot(u, u);
+  if (max_abs(gp(u, u)) > tolerance(u_norm2))  // b2 must be null: a translation
     throw std::domain_error("log: only rotations, boosts, translations and screw motions are supported");
-  const T d_norm = std::sqrt(d_norm2);
-  const T length = c * b_along / d_norm - d_norm;  // b2 = length * d / |d|
-  const MV b2 = linear_combination(length / d_norm, d, T(0), d);
+  // b2 = c (b . u) u / |u|^2 + s^2 b2 = (c (b . u) / |u|^2 - m max|d|) u
+  const T length = c * coefficient_dot(b, u) / u_norm2 - q_size * d_size;
+  const MV b2 = linear_combination(length, u, T(0), u);
   MV rotation = linear_combination(T(1), b, -c, b2);  // s u1
   // s u1 has no part along d, but computing it cancels O(1) numbers; what is
   // left along d would be amplified by angle/s into the translation, to which
   // exp is fully sensitive. Project it out (exact in exact arithmetic).
-  rotation = linear_combination(T(1), rotation, -coefficient_dot(rotation, d) / d_norm2, d);
-  const T s = std::sqrt(sin2);
+  rotation = linear_combination(T(1), rotation, -coefficient_dot(rotation, u) / u_norm2, u);
+  // s = sin t from s^2 = -<b^2>_0; where s^2 is too small a number for that
+  // (float: s below about 1e-19), from s^2 b2 = -m d, s^2 = -m max|d| / length,
+  // each factor of which is in range. The first part must be a rotation
+  // (s^2 > 0; for a boost, length > 0).
+  const T sin2 = -s0;
+  const T smallest = std::numeric_limits<T>::min() / std::numeric_limits<T>::epsilon();
+  T s = 0;
+  if (sin2 >= smallest)
+    s = std::sqrt(sin2);
+  else if (sin2 > -smallest && length < 0)
+    s = std::sqrt(q_size) * std::sqrt(d_size / -length);
+  if (!(s > 0))
+    throw std::domain_error("log: only rotations, boosts, translations and screw motions are supported");
   return linear_combination(std::atan2(s, c) / s, rotation, T(1), b2);
 }
 

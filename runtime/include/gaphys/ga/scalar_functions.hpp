@@ -1,9 +1,10 @@
-// The scalar parts of the closed-form exp and log, shared by the generated
+// The scalar parts of the closed-form exp, log and versor inverse, shared by the generated
 // kernels and the general algorithms, so every path treats edge cases alike.
 #pragma once
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace gaphys::ga {
 
@@ -30,12 +31,11 @@ exp_factors<T> exp_of_square(T s) {
   return {cosh(t), sinh(t) / t};
 }
 
-// log(c + B) = f B for a unit even element c + B with B^2 = s (scalar):
+// log(c + B) = f B for a unit even element c + B with B^2 = s (scalar), where
+// log_case_of says the logarithm lies in B's plane:
 //   s < 0: f = atan2(t, c) / t, t = sqrt(-s)   (angle in [0, pi])
 //   s > 0: f = atanh(t / c) / t, t = sqrt(s)
 //   s = 0: f = 1 / c
-// At t = 0 with c < 0 (a rotation by 2 pi) there is no plane to rotate in; the
-// caller supplies one (see log_fallback).
 template <class T>
 T log_factor(T s, T c) {
   using std::atan2, std::atanh, std::sqrt, std::abs;
@@ -45,11 +45,54 @@ T log_factor(T s, T c) {
   return atanh(t / c) / t;
 }
 
-// True when log(c + B) has no plane: B vanishes and c < 0 (c + B = -1).
+// Where the logarithm of c + B lies, for B^2 = s (a scalar) and b2 the sum of
+// the squares of B's coefficients.
+enum class log_case {
+  in_plane,   // f B, f = log_factor(s, c)
+  minus_one,  // B vanishes and c < 0: c + B = -1, a rotation by 2 pi in some plane
+  none,       // c < 0 and B a boost or null: c + B = -exp(B') has no logarithm in
+              // B's plane (exp of a bivector there has a scalar part >= 1)
+};
+
+// A rotation (s < 0) may have c < 0 (an angle beyond pi/2); a boost
+// (cosh >= 1) or a translation (1) may not. B counts as vanishing below eps |c|
+// and as a rotation when sqrt(-s) exceeds that; the margin of 4 between the
+// two keeps a rotation's -s (equal to b2 up to rounding) out of `none`.
 template <class T>
-bool log_needs_fallback(T s, T c) {
-  using std::sqrt, std::abs;
-  return c < 0 && sqrt(abs(s)) <= std::numeric_limits<T>::epsilon() * abs(c);
+log_case log_case_of(T s, T c, T b2) {
+  if (!(c < 0)) return log_case::in_plane;
+  const T small = std::numeric_limits<T>::epsilon() * std::abs(c);
+  if (b2 <= T(16) * small * small) return log_case::minus_one;
+  if (-s > small * small) return log_case::in_plane;
+  return log_case::none;
+}
+
+// Throws std::domain_error unless the logarithm lies in B's plane
+// (minus_one: for a caller with no rotation plane to offer).
+inline void require_log_in_plane(log_case where) {
+  if (where == log_case::none)
+    throw std::domain_error(
+        "log: -exp(B) with B a boost or null bivector has no logarithm in the plane of B");
+  if (where == log_case::minus_one)
+    throw std::domain_error(
+        "log: -1 is a rotation by 2 pi, and no bivector the result may hold squares to -1");
+}
+
+// f = log_factor(s, c), or std::domain_error when the logarithm leaves B's plane.
+template <class T>
+T log_factor(T s, T c, log_case where) {
+  require_log_in_plane(where);
+  return log_factor(s, c);
+}
+
+// 1 / <a ~a>_0, the scale of the versor inverse ~a / <a ~a>_0. A null a (<a ~a>_0 = 0, such as
+// ni or a point of the conformal model) has no versor inverse: 1/0 would give infinities, and
+// NaN where ~a is zero.
+template <class T>
+T inverse_norm2(T norm2) {
+  if (norm2 == T(0))
+    throw std::domain_error("inverse: <a ~a>_0 = 0, a null multivector has no versor inverse");
+  return T(1) / norm2;
 }
 
 }  // namespace gaphys::ga

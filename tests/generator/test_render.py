@@ -1,0 +1,82 @@
+"""Rendering: what the generated headers say, for the shipped specs and the test fixtures."""
+
+import os
+import re
+import unittest
+
+from gaphys_gen import render
+from gaphys_gen.model import load
+
+from .support import REPO_DIR, spec_path
+
+FIXTURES_DIR = os.path.join(REPO_DIR, "tests", "algebra", "specs")
+
+
+def rendered(path: str, variant: str) -> dict[str, str]:
+    """Every file of one generated library, unformatted: {file name: text}."""
+    algebra = load(path)
+    files = render.render(algebra, variant, algebra.name, "gaphys-gen generate ...", None)
+    return {os.path.basename(name): text for name, text in files.items()}
+
+
+def functions_of(header: str) -> list[tuple[str, str, str]]:
+    """(name, parameters, body) of each function template in a kernels.hpp."""
+    found = []
+    for chunk in header.split("template <class T>")[1:]:
+        match = re.match(r"\s*[^(]*?(\w+)\(([^)]*)\)\s*\{(.*)", chunk, re.S)
+        if match:
+            found.append(match.groups())
+    return found
+
+
+class Comments(unittest.TestCase):
+    def test_no_conformal_words_outside_conformal_algebras(self):
+        # Issue 16, defect 7: types.hpp said "ni as a dual plane" in every algebra.
+        for variant in render.VARIANTS:
+            for name, text in rendered(spec_path("e3ga"), variant).items():
+                leaks = re.findall(r".*\b(?:ni|c3ga)\b.*", text)
+                self.assertEqual(leaks, [], f"e3ga {variant} {name}")
+
+
+class KernelParameters(unittest.TestCase):
+    def test_unused_parameters_are_marked(self):
+        # Issue 16, defect 6: pga3d norm2(point) is the constant 1 (the point's
+        # e123 = 1; the other blades square to 0) and read nothing of its
+        # argument, which -Werror builds reject.
+        specs = [spec_path("e3ga"), spec_path("c3ga")] + [
+            os.path.join(FIXTURES_DIR, name) for name in sorted(os.listdir(FIXTURES_DIR))]
+        checked = 0
+        for path in specs:
+            for name, params, body in functions_of(rendered(path, "optimized")["kernels.hpp"]):
+                for unused, letter in re.findall(r"(\[\[maybe_unused\]\] )?(?:const basic_\w+<T>& |T )(\w+)", params):
+                    used = re.search(rf"\b{letter}\b", body) is not None
+                    self.assertNotEqual(bool(unused), used, f"{os.path.basename(path)}: {name}({params})")
+                    checked += 1
+        self.assertGreater(checked, 500)
+        kernels = rendered(os.path.join(FIXTURES_DIR, "pga3d.ga"), "optimized")["kernels.hpp"]
+        self.assertTrue("T norm2([[maybe_unused]] const basic_point<T>& a)" in kernels)
+
+
+class Accessors(unittest.TestCase):
+    def test_named_as_declared(self):
+        # Issue 16, defect 8: a line declared with e3^e1 has e31(), which
+        # returns the e3^e1 coefficient (minus that of e1^e3).
+        types = rendered(os.path.join(FIXTURES_DIR, "pga3d.ga"), "optimized")["types.hpp"]
+        for line in ("basic_line(T e01, T e02, T e03, T e23, T e31, T e12)",
+                     "constexpr T e31() const { return c[4]; }",
+                     "basic_point(T e032, T e013, T e021)",
+                     "static constexpr T e123() { return T(1); }"):
+            self.assertTrue(line in types, line)
+        self.assertEqual(re.findall(r".*\b(?:e13|e023|e012)\b.*", types), [])
+
+    def test_shipped_specs_keep_their_accessors(self):
+        # Their blades are all declared in canonical order, so names are as before.
+        for name in ("e3ga", "c3ga"):
+            algebra = load(spec_path(name))
+            for named in algebra.types:
+                for coordinate in named.coordinates:
+                    self.assertEqual(coordinate.accessor, coordinate.blade.accessor, f"{name} {named.name}")
+
+
+if __name__ == "__main__":
+    unittest.main()
