@@ -145,6 +145,16 @@ void merge_by_pair(std::vector<contact>& into, const std::vector<contact>& from)
   into.swap(merged);
 }
 
+// Moves the contacts of `from` for which `moves(c)` holds into the
+// pair-sorted `to`; both stay in pair order.
+template <class Predicate>
+void move_contacts(std::vector<contact>& from, std::vector<contact>& to, Predicate moves) {
+  std::vector<contact> moving, staying;
+  for (const contact& c : from) (moves(c) ? moving : staying).push_back(c);
+  from.swap(staying);
+  merge_by_pair(to, moving);
+}
+
 }  // namespace
 
 body_id world::create_body(const body_definition& definition) {
@@ -281,13 +291,9 @@ void world::wake_islands(std::vector<std::uint64_t>& labels) {
     b.island_ = 0;
     woken_bodies_.push_back(i);
   }
-  std::vector<contact> still_asleep, awake;
-  for (const contact& c : sleeping_contacts_) {
-    const bool asleep = bodies_[c.body_a].asleep_ || bodies_[c.body_b].asleep_;
-    (asleep ? still_asleep : awake).push_back(c);
-  }
-  sleeping_contacts_.swap(still_asleep);
-  merge_by_pair(contacts_, awake);
+  move_contacts(sleeping_contacts_, contacts_, [this](const contact& c) {
+    return !bodies_[c.body_a].asleep_ && !bodies_[c.body_b].asleep_;
+  });
   merged_current_ = false;
 }
 
@@ -367,8 +373,8 @@ void world::step(real h) {
   if (!solver_) solver_ = std::make_unique<contact_solver>();  // a moved-from world
   // (Without contacts the solver would copy every velocity out and back.)
   if (!contacts_.empty()) {
-    solver_->solve_velocities(settings_, bodies_, start_velocities_, contacts_,
-                              previous_contacts_, h);
+    solver_->solve_velocities(settings_, bodies_, start_velocities_, contacts_, previous_contacts_,
+                              h);
   }
   const auto solved = clock::now();
   integrate_positions(h);
@@ -419,8 +425,9 @@ void world::merge_sensor_overlaps(const std::vector<sensor_overlap>& kept) {
   std::vector<sensor_overlap> merged;
   merged.reserve(kept.size() + sensor_overlaps_.size());
   std::merge(sensor_overlaps_.begin(), sensor_overlaps_.end(), kept.begin(), kept.end(),
-             std::back_inserter(merged),
-             [&](const sensor_overlap& x, const sensor_overlap& y) { return pair_of(x) < pair_of(y); });
+             std::back_inserter(merged), [&](const sensor_overlap& x, const sensor_overlap& y) {
+               return pair_of(x) < pair_of(y);
+             });
   sensor_overlaps_.swap(merged);
 }
 
@@ -483,13 +490,9 @@ void world::fall_asleep(real h) {
     any_asleep = true;
   }
   if (!any_asleep) return;
-  std::vector<contact> asleep, kept;
-  for (const contact& c : contacts_) {
-    const bool sleeps = bodies_[c.body_a].asleep_ || bodies_[c.body_b].asleep_;
-    (sleeps ? asleep : kept).push_back(c);
-  }
-  contacts_.swap(kept);
-  merge_by_pair(sleeping_contacts_, asleep);
+  move_contacts(contacts_, sleeping_contacts_, [this](const contact& c) {
+    return bodies_[c.body_a].asleep_ || bodies_[c.body_b].asleep_;
+  });
   merged_current_ = false;
 }
 

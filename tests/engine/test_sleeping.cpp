@@ -3,6 +3,7 @@
 // forces, impulses, setters, removals and a new gravity wake it, with its
 // warm start intact; sleeping can be switched off.
 #include <limits>
+#include <utility>
 
 #include "box_helpers.hpp"
 #include "engine_test_support.hpp"
@@ -18,6 +19,13 @@ class sleeping_test : public engine_test {
     add_floor(w);
     box = add_box(w, vector{0, 0, 0.501}, vector{0.5, 0.5, 0.5});
     return w;
+  }
+
+  // Two unit boxes stacked on the floor at z = 0 (set down just above it,
+  // to settle): {bottom, top}.
+  static std::pair<body_id, body_id> two_boxes(world& w) {
+    const body_id bottom = add_box(w, vector{0, 0, 0.5005}, vector{0.5, 0.5, 0.5});
+    return {bottom, add_box(w, vector{0, 0, 1.501}, vector{0.5, 0.5, 0.5})};
   }
 
   // Steps until every dynamic body sleeps; fails after `most` steps.
@@ -118,8 +126,9 @@ TEST_F(sleeping_test, islands_sleep_apart_and_a_body_pushed_every_step_stays_awa
 TEST_F(sleeping_test, a_falling_body_wakes_the_island_it_lands_on) {
   world w = make_world();
   add_floor(w);
-  const body_id bottom = add_box(w, vector{0, 0, 0.5005}, vector{0.5, 0.5, 0.5});
-  const body_id middle = add_box(w, vector{0, 0, 1.501}, vector{0.5, 0.5, 0.5});
+  // (Plain names, not a structured binding: the lambda below captures one.)
+  const std::pair<body_id, body_id> stack = two_boxes(w);
+  const body_id bottom = stack.first, middle = stack.second;
   ASSERT_TRUE(sleep(w));
   // A ball dropped onto the stack from 0.5 m.
   const body_id ball = add_sphere(w, vector{0.1, 0, 2.5}, 0.25);
@@ -154,8 +163,7 @@ TEST_F(sleeping_test, forces_impulses_and_setters_wake_the_whole_island) {
   for (const auto& wake : wakers) {
     world w = make_world();
     add_floor(w);
-    const body_id bottom = add_box(w, vector{0, 0, 0.5005}, vector{0.5, 0.5, 0.5});
-    const body_id top = add_box(w, vector{0, 0, 1.501}, vector{0.5, 0.5, 0.5});
+    const auto [bottom, top] = two_boxes(w);
     ASSERT_TRUE(sleep(w));
     wake(w, top);
     w.step(h);
@@ -168,8 +176,7 @@ TEST_F(sleeping_test, forces_impulses_and_setters_wake_the_whole_island) {
 TEST_F(sleeping_test, a_woken_stack_resumes_from_its_warm_start_without_sinking) {
   world w = make_world();
   add_floor(w);
-  const body_id bottom = add_box(w, vector{0, 0, 0.5005}, vector{0.5, 0.5, 0.5});
-  const body_id top = add_box(w, vector{0, 0, 1.501}, vector{0.5, 0.5, 0.5});
+  const auto [bottom, top] = two_boxes(w);
   ASSERT_TRUE(sleep(w));
   const real before = z(w.at(top).position());
   real held = 0;  // the contacts' normal impulses per step, when it fell asleep
@@ -186,8 +193,7 @@ TEST_F(sleeping_test, a_woken_stack_resumes_from_its_warm_start_without_sinking)
 TEST_F(sleeping_test, removing_a_support_wakes_what_rested_on_it) {
   world w = make_world();
   const body_id floor = add_floor(w);
-  const body_id bottom = add_box(w, vector{0, 0, 0.5005}, vector{0.5, 0.5, 0.5});
-  const body_id top = add_box(w, vector{0, 0, 1.501}, vector{0.5, 0.5, 0.5});
+  const auto [bottom, top] = two_boxes(w);
   ASSERT_TRUE(sleep(w));
   const real height = z(w.at(top).position());
   w.remove_body(bottom);
