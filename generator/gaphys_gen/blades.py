@@ -119,6 +119,21 @@ class BladeAlgebra:
 PRODUCTS = ("gp", "op", "lc", "rc", "scp")
 
 
+def right_complement(bitmap: int, full: int) -> tuple[int, int]:
+    """(complement, sign) with blade ^ (sign * complement) = the pseudoscalar
+    `full` (all basis vectors in spec order): metric-free, so it exists in a
+    degenerate metric too, where x I^-1 does not."""
+    complement = full & ~bitmap
+    return complement, reorder_sign(bitmap, complement)
+
+
+def left_complement(bitmap: int, full: int) -> tuple[int, int]:
+    """(complement, sign) with (sign * complement) ^ blade = `full`: the inverse
+    of right_complement."""
+    complement = full & ~bitmap
+    return complement, reorder_sign(complement, bitmap)
+
+
 def reverse_sign(bitmap: int) -> int:
     k = grade(bitmap)
     return -1 if (k * (k - 1) // 2) & 1 else 1

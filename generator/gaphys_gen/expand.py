@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 
 from . import symbolic as sym
-from .blades import PRODUCTS, conjugate_sign, involute_sign, reverse_sign
+from .blades import PRODUCTS, conjugate_sign, involute_sign, left_complement, reverse_sign, right_complement
 from .model import Algebra, FunctionRequest, NamedType
 from .symbolic import Poly, SymMV
 
@@ -73,8 +73,10 @@ class Expander:
         self.products = algebra.products
         self.grade_of = lambda bitmap: bin(bitmap).count("1")
         pseudoscalar = (1 << len(algebra.basis)) - 1
+        self.full = pseudoscalar
         norm = dict(self.products.gp(pseudoscalar, pseudoscalar)).get(0, Fraction(0))
-        self.has_dual = norm != 0  # a degenerate metric has no dual through I^-1
+        # A degenerate metric (I^2 = 0) has no I^-1: its dual is the complement.
+        self.has_dual = norm != 0
         self.pseudoscalar = {pseudoscalar: Poly.constant(1)}
         self.pseudoscalar_inverse = {pseudoscalar: Poly.constant(1 / norm)} if self.has_dual else {}
 
@@ -97,11 +99,40 @@ class Expander:
     def reverse(self, x: SymMV) -> SymMV:
         return sym.map_signs(x, reverse_sign)
 
+    def complement(self, x: SymMV, which) -> SymMV:
+        """x mapped blade by blade through right_complement or left_complement."""
+        result: SymMV = {}
+        for bitmap, poly in x.items():
+            image, sign = which(bitmap, self.full)
+            result[image] = poly.scale(Fraction(sign))
+        return result
+
     def dual(self, x: SymMV) -> SymMV:
-        return self.prod("gp", x, self.pseudoscalar_inverse)
+        """x I^-1, or in a degenerate metric the right complement (Poincare duality)."""
+        if self.has_dual:
+            return self.prod("gp", x, self.pseudoscalar_inverse)
+        return self.complement(x, right_complement)
 
     def undual(self, x: SymMV) -> SymMV:
-        return self.prod("gp", x, self.pseudoscalar)
+        """The inverse of dual: x I, or the left complement."""
+        if self.has_dual:
+            return self.prod("gp", x, self.pseudoscalar)
+        return self.complement(x, left_complement)
+
+    def regressive(self, a: SymMV, b: SymMV) -> SymMV:
+        """a v b, the regressive product, from the complements: it needs no
+        metric, and where I^2 = +-1 it equals undual(dual(a) ^ dual(b))."""
+        return self.complement(self.prod("op", self.complement(b, right_complement),
+                                         self.complement(a, right_complement)), left_complement)
+
+    def meet_or_join(self, function: str, a: SymMV, b: SymMV) -> SymMV:
+        """Of direct blades (a subspace as the vectors it holds: c3ga's spheres)
+        the meet is the regressive product and the join the outer product; of
+        dual blades (as the vectors it is orthogonal to: PGA's planes) the
+        other way around."""
+        if (function == "meet") == (self.algebra.representation == "direct"):
+            return self.regressive(a, b)
+        return self.prod("op", a, b)
 
     def scalar_of(self, x: SymMV) -> Poly:
         return x.get(0, Poly())
@@ -126,8 +157,8 @@ class Expander:
             return self.dual(args[0]), None
         if function == "undual":
             return self.undual(args[0]), None
-        if function == "meet":
-            return self.undual(self.prod("op", self.dual(args[0]), self.dual(args[1]))), None
+        if function in ("meet", "join"):
+            return self.meet_or_join(function, args[0], args[1]), None
         if function == "norm2":
             return {0: self.scalar_of(self.prod("gp", args[0], self.reverse(args[0])))}, None
         if function == "inverse":
@@ -288,23 +319,18 @@ def expand(algebra: Algebra) -> list[Kernel]:
 
     for named in algebra.types:
         for function in AUTO_UNARY:
-            if function in ("dual", "undual", "inverse") and not expander.has_dual and function != "inverse":
-                continue
             add(function, (named,))
         add("smul", (named,))
         for function in AUTO_BINARY_SAME_TYPE:
             add(function, (named, named))
     for request in algebra.functions:
-        if request.name in ("dual", "undual", "meet") and not expander.has_dual:
-            raise algebra.error(request.location,
-                                f"{request.name} needs a non-degenerate metric (the pseudoscalar squares to 0)")
         add(request.name, request.arguments, request.location)
     return list(kernels.values())
 
 
 # Functions on `mv` that the optimized variant can specialize for the argument
 # bitmaps a profile saw (the rest always take the generic path).
-SPECIALIZABLE = ("gp", "op", "lc", "rc", "scp", "add", "sub", "apply", "meet",
+SPECIALIZABLE = ("gp", "op", "lc", "rc", "scp", "add", "sub", "apply", "meet", "join",
                  "neg", "reverse", "involute", "conjugate", "dual", "undual")
 
 
@@ -405,7 +431,7 @@ def expand_profile(algebra: Algebra, chosen: list[tuple[str, tuple[int, ...], in
     expander = Expander(algebra)
     kernels = []
     for function, argument_bits, calls in chosen:
-        if function not in SPECIALIZABLE or (function in ("dual", "undual", "meet") and not expander.has_dual):
+        if function not in SPECIALIZABLE:
             continue
         if not worth_a_kernel(algebra, function):
             continue

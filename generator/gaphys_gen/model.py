@@ -15,7 +15,7 @@ from .errors import Location, SpecError
 
 MAX_DIMENSION = 5  # run-time bitmaps are 32-bit: one bit per basis blade
 
-BINARY_FUNCTIONS = ("gp", "op", "lc", "rc", "scp", "add", "sub", "meet", "apply")
+BINARY_FUNCTIONS = ("gp", "op", "lc", "rc", "scp", "add", "sub", "meet", "join", "apply")
 UNARY_FUNCTIONS = ("neg", "reverse", "involute", "conjugate", "dual", "undual", "norm2", "inverse", "exp", "log")
 FUNCTION_ARITY = {**{f: 2 for f in BINARY_FUNCTIONS}, **{f: 1 for f in UNARY_FUNCTIONS}}
 
@@ -92,6 +92,7 @@ class Algebra:
     basis: tuple[str, ...]
     metric: tuple[tuple[Fraction, ...], ...]
     scalar: str
+    representation: str  # "direct": meet is the regressive product, join the outer; "dual": the other way
     blades: tuple[Blade, ...]
     types: tuple[NamedType, ...]
     aliases: dict[str, str]
@@ -192,6 +193,7 @@ class _Validator:
             raise self.error(basis_stmt.name_locations[MAX_DIMENSION], f"at most {MAX_DIMENSION} basis vectors are supported")
         metric = self.validate_metric()
         scalar_stmt = self.single("scalar", required=False)
+        representation_stmt = self.single("representation", required=False)
         blades = canonical_blades(self.basis)
         accessors: dict[str, str] = {}
         for blade in blades:
@@ -213,6 +215,7 @@ class _Validator:
             basis=self.basis,
             metric=metric,
             scalar=scalar_stmt.type_name if scalar_stmt else "double",
+            representation=representation_stmt.kind if representation_stmt else "direct",
             blades=blades,
             types=types,
             aliases=aliases,

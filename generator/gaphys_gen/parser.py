@@ -7,6 +7,7 @@ from .errors import Location, SpecError
 from .lexer import Token, tokenize
 
 SCALAR_TYPES = ("float", "double")
+REPRESENTATIONS = ("direct", "dual")  # what a blade stands for: meet and join follow
 # Numerators and denominators up to 2^53 are exact in double, and the products
 # of them that make a kernel's coefficients stay inside double's range.
 MAX_PART = 2**53
@@ -113,7 +114,7 @@ class _Parser:
             raise self.error(
                 keyword.location,
                 f"unknown statement {keyword.text!r} (expected algebra, basis, metric, scalar, "
-                "type, alias, constant or function)",
+                "representation, type, alias, constant or function)",
             )
         return handler(keyword)
 
@@ -146,6 +147,12 @@ class _Parser:
         if token.text not in SCALAR_TYPES:
             raise self.error(token.location, f"scalar type must be float or double, not {token.text!r}")
         return ast.ScalarStmt("scalar", keyword.location, token.text)
+
+    def stmt_representation(self, keyword: Token) -> ast.Statement:
+        token = self.expect("IDENT", what="a representation")
+        if token.text not in REPRESENTATIONS:
+            raise self.error(token.location, f"representation must be direct or dual, not {token.text!r}")
+        return ast.RepresentationStmt("representation", keyword.location, token.text)
 
     def stmt_type(self, keyword: Token) -> ast.Statement:
         name = self.expect("IDENT", what="a type name")

@@ -29,7 +29,7 @@ MAX_COUNT = 2**128
 
 # Recorded functions and how many multivector arguments each takes.
 RECORDED_ARITY = {
-    **{f: 2 for f in ("gp", "op", "lc", "rc", "scp", "add", "sub", "meet", "apply")},
+    **{f: 2 for f in ("gp", "op", "lc", "rc", "scp", "add", "sub", "meet", "join", "apply")},
     **{f: 1 for f in ("neg", "smul", "reverse", "involute", "conjugate", "dual", "undual",
                       "norm2", "inverse", "general_inverse", "exp", "log")},
 }

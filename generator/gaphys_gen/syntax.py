@@ -65,6 +65,11 @@ class ScalarStmt(Statement):
 
 
 @dataclass(frozen=True)
+class RepresentationStmt(Statement):
+    kind: str  # "direct" or "dual"
+
+
+@dataclass(frozen=True)
 class TypeStmt(Statement):
     name: str
     coordinates: tuple[Coordinate, ...]

@@ -7,9 +7,10 @@ types, expressions, counts, table contents) is made here.
 from fractions import Fraction
 
 from . import VERSION, cpp, profile
-from .blades import PRODUCTS, conjugate_sign, involute_sign, reverse_sign
+from .blades import PRODUCTS, conjugate_sign, involute_sign, left_complement, reverse_sign, right_complement
 from .expand import OPERATIONS_PER_GENERIC_TERM, Expander, Kernel, generic_work_kind
 from .model import Algebra, NamedType
+from .symbolic import Poly
 
 # Functions with a generic (mv) implementation that returns a scalar.
 SCALAR_GENERIC = {"scp", "norm2"}
@@ -38,19 +39,23 @@ def tables(algebra: Algebra, expander: Expander) -> dict:
         kind: sparse_table([as_entry(algebra.products.product(kind, a.bitmap, b.bitmap)) for a in blades for b in blades])
         for kind in PRODUCTS
     }
-    linear = {}
-    if expander.has_dual:
-        for name, factor in (("dual", expander.pseudoscalar_inverse), ("undual", expander.pseudoscalar)):
-            (bitmap, poly), = factor.items()
-            value = poly.terms[()]
-            linear[name] = sparse_table(
-                [[(i, c * value) for i, c in as_entry(algebra.products.gp(b.bitmap, bitmap))] for b in blades]
-            )
+    def linear_map(function):
+        """The table of a linear map on symbolic multivectors, blade by blade."""
+        return sparse_table([
+            as_entry({bitmap: poly.terms.get((), Fraction(0)) for bitmap, poly in function({b.bitmap: Poly.constant(1)}).items()})
+            for b in blades
+        ])
+
+    linear = {"dual": linear_map(expander.dual), "undual": linear_map(expander.undual)}
+    complements = {
+        "right_complement": linear_map(lambda x: expander.complement(x, right_complement)),
+        "left_complement": linear_map(lambda x: expander.complement(x, left_complement)),
+    }
     signs = {
         name: [sign(b.bitmap) for b in blades]
         for name, sign in (("reverse", reverse_sign), ("involute", involute_sign), ("conjugate", conjugate_sign))
     }
-    return {"products": products, "linear": linear, "signs": signs}
+    return {"products": products, "linear": linear, "complements": complements, "signs": signs}
 
 
 def named_type(named: NamedType) -> dict:
@@ -312,9 +317,14 @@ def build(algebra: Algebra, kernels: list[Kernel], variant: str, banner: list[st
             hex(sum(1 << b.index for b in algebra.blades if b.grade == k)) + "u" for k in range(len(algebra.basis) + 1)
         ],
         "has_dual": expander.has_dual,
-        "binary_fallbacks": ["gp", "op", "lc", "rc", "add", "sub", "apply"] + (["meet"] if expander.has_dual else []),
-        "unary_fallbacks": ["neg", "general_inverse", "exp", "log", "inverse", "reverse", "involute", "conjugate"]
-        + (["dual", "undual"] if expander.has_dual else []),
+        "representation": algebra.representation,
+        # What meet and join compute on mv: the regressive or the outer product (Expander.meet_or_join).
+        "meet_join": [
+            {"name": f, "regressive": (f == "meet") == (algebra.representation == "direct")} for f in ("meet", "join")
+        ],
+        "binary_fallbacks": ["gp", "op", "lc", "rc", "add", "sub", "apply", "meet", "join"],
+        "unary_fallbacks": ["neg", "general_inverse", "exp", "log", "inverse", "reverse", "involute", "conjugate",
+                            "dual", "undual"],
         "tables": tables(algebra, expander),
         "types": [named_type(t) for t in algebra.types],
         "aliases": [{"name": a, "target": "basic_" + t} for a, t in algebra.aliases.items()],

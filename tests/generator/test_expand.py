@@ -440,23 +440,80 @@ class TypeSelection(SpecErrorAssertions, unittest.TestCase):
         self.assertIn("identically zero", error.message)
         self.assertEqual(str(error).split("\n")[1:], ["function op(vector, trivector)", " " * 9 + "^"])
 
-    def test_dual_needs_a_non_degenerate_metric(self):
-        text = "algebra pga\nbasis e0 e1 e2\nmetric e1.e1 = 1, e2.e2 = 1\ntype vector = e0, e1, e2\nfunction dual(vector)\n"
-        with self.assertRaises(SpecError) as caught:
-            expand(load_text(text))
-        self.assertEqual((caught.exception.location.line, caught.exception.location.column), (5, 10))
-        self.assertIn("non-degenerate", caught.exception.message)
-
-    def test_degenerate_metric_skips_automatic_duals(self):
-        text = "algebra pga\nbasis e0 e1 e2\nmetric e1.e1 = 1, e2.e2 = 1\ntype vector = e0, e1, e2\n"
-        functions = {k.function for k in expand(load_text(text))}
-        self.assertNotIn("dual", functions)
-        self.assertNotIn("undual", functions)
-        self.assertIn("inverse", functions)
-
     def test_conformal_prelude_loads(self):
         self.assertEqual(self.result_name(C3_PRELUDE + "metric no.ni = -1\ntype v = no, ni\n", "scp", "v", "v"), "scalar")
 
 
 if __name__ == "__main__":
     unittest.main()
+
+
+PGA2_TEXT = "algebra pga\nbasis e0 e1 e2\nmetric e1.e1 = 1, e2.e2 = 1\n"
+
+
+def _symbolic(value: dict) -> dict:
+    """A constant multivector as the expander's symbolic one."""
+    from gaphys_gen.symbolic import Poly
+    return {bitmap: Poly.constant(v) for bitmap, v in value.items() if v}
+
+
+def _random_multivector(rng: random.Random, dimension: int) -> dict:
+    return {rng.randrange(1 << dimension): F(rng.randint(-9, 9), rng.randint(1, 4)) for _ in range(5)}
+
+
+class Duality(unittest.TestCase):
+    """dual, undual, meet and join in every metric (issue 16: a degenerate
+    metric has no I^-1, so its dual is the complement)."""
+
+    def test_degenerate_dual_is_the_right_complement(self):
+        expander = Expander(load_text(PGA2_TEXT + "type vector = e0, e1, e2\n"))
+        full = 0b111
+        for bitmap in range(8):
+            blade = _symbolic({bitmap: F(1)})
+            dual = expander.dual(blade)
+            self.assertEqual(expander.prod("op", blade, dual), _symbolic({full: F(1)}), bin(bitmap))
+            self.assertEqual(expander.undual(dual), blade, bin(bitmap))
+
+    def test_automatic_duals_exist_in_a_degenerate_metric(self):
+        functions = {k.function for k in expand(load_text(PGA2_TEXT + "type vector = e0, e1, e2\n"))}
+        self.assertTrue({"dual", "undual", "inverse"} <= functions)
+
+    def test_regressive_product_is_undual_of_outer_of_duals_where_the_pseudoscalar_is_a_unit(self):
+        # e3ga, c3ga (I^2 = -1), and a Euclidean 4-D algebra (I^2 = +1): the
+        # complement form, which needs no metric, is the familiar formula.
+        e4 = load_text("algebra e4\nbasis e1 e2 e3 e4\nmetric e1.e1 = 1, e2.e2 = 1, e3.e3 = 1, e4.e4 = 1\n")
+        rng = random.Random(16)
+        for algebra in (ALGEBRAS["e3ga"], ALGEBRAS["c3ga"], e4):
+            expander = Expander(algebra)
+            n = len(algebra.basis)
+            for _ in range(40):
+                a, b = _symbolic(_random_multivector(rng, n)), _symbolic(_random_multivector(rng, n))
+                expected = expander.undual(expander.prod("op", expander.dual(a), expander.dual(b)))
+                self.assertEqual(expander.regressive(a, b), expected, algebra.name)
+
+    def test_regressive_product_does_not_depend_on_the_metric(self):
+        degenerate = Expander(load_text(PGA2_TEXT))
+        euclidean = Expander(load_text("algebra e\nbasis e0 e1 e2\nmetric e0.e0 = 1, e1.e1 = 1, e2.e2 = 1\n"))
+        rng = random.Random(17)
+        for _ in range(40):
+            a, b = _symbolic(_random_multivector(rng, 3)), _symbolic(_random_multivector(rng, 3))
+            self.assertEqual(degenerate.regressive(a, b), euclidean.regressive(a, b))
+
+    def test_representation_decides_which_product_meet_and_join_are(self):
+        points = "type point = e0^e1, e0^e2, e1^e2\ntype plane = e0, e1, e2\n"
+        for representation, meet_kind, join_kind in (("direct", "regressive", "op"), ("dual", "op", "regressive")):
+            algebra = load_text(PGA2_TEXT + f"representation {representation}\n" + points)
+            self.assertEqual(algebra.representation, representation)
+            expander = Expander(algebra)
+            rng = random.Random(18)
+            for _ in range(20):
+                a, b = _symbolic(_random_multivector(rng, 3)), _symbolic(_random_multivector(rng, 3))
+                products = {"regressive": expander.regressive(a, b), "op": expander.prod("op", a, b)}
+                self.assertEqual(expander.meet_or_join("meet", a, b), products[meet_kind])
+                self.assertEqual(expander.meet_or_join("join", a, b), products[join_kind])
+        # 2-D PGA (dual): two points join in a line, two lines meet in a point.
+        kernels = {k.signature: k for k in expand(load_text(
+            PGA2_TEXT + "representation dual\n" + points + "function join(point, point)\nfunction meet(plane, plane)\n"))}
+        self.assertEqual(kernels[("join", ("point", "point"))].result.named.name, "plane")
+        self.assertEqual(kernels[("meet", ("plane", "plane"))].result.named.name, "point")
+        self.assertEqual(load_text(PGA2_TEXT).representation, "direct")

@@ -86,6 +86,10 @@ class DeclarationErrors(SpecErrorAssertions, unittest.TestCase):
     def test_second_scalar_statement(self):
         self.assertSpecError(E3_PRELUDE + "scalar float\nscalar double\n", 5, 1, "second 'scalar' statement")
 
+    def test_second_representation_statement(self):
+        self.assertSpecError(E3_PRELUDE + "representation dual\nrepresentation direct\n", 5, 1,
+                             "second 'representation' statement")
+
     def test_duplicate_type(self):
         self.assertSpecError(E3_PRELUDE + "type v = e1\ntype v = e2\n", 5, 6, "type 'v' declared twice (first at line 4)")
 

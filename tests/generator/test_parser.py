@@ -49,6 +49,9 @@ class SyntaxErrors(SpecErrorAssertions, unittest.TestCase):
     def test_bad_scalar_type(self):
         self.assertSpecError(E3_PRELUDE + "scalar int\n", 4, 8, "scalar type must be float or double")
 
+    def test_bad_representation(self):
+        self.assertSpecError(E3_PRELUDE + "representation ipns\n", 4, 16, "representation must be direct or dual")
+
     def test_division_by_zero(self):
         self.assertSpecError("algebra t\nbasis e1\nmetric e1.e1 = 1/0\n", 3, 18, "division by zero")
 

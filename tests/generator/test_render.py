@@ -43,7 +43,7 @@ class KernelParameters(unittest.TestCase):
         # Issue 16, defect 6: pga3d norm2(point) is the constant 1 (the point's
         # e123 = 1; the other blades square to 0) and read nothing of its
         # argument, which -Werror builds reject.
-        specs = [spec_path("e3ga"), spec_path("c3ga")] + [
+        specs = [spec_path("e3ga"), spec_path("c3ga"), spec_path("pga3d")] + [
             os.path.join(FIXTURES_DIR, name) for name in sorted(os.listdir(FIXTURES_DIR))]
         checked = 0
         for path in specs:
@@ -53,25 +53,25 @@ class KernelParameters(unittest.TestCase):
                     self.assertNotEqual(bool(unused), used, f"{os.path.basename(path)}: {name}({params})")
                     checked += 1
         self.assertGreater(checked, 500)
-        kernels = rendered(os.path.join(FIXTURES_DIR, "pga3d.ga"), "optimized")["kernels.hpp"]
-        self.assertTrue("T norm2([[maybe_unused]] const basic_point<T>& a)" in kernels)
+        kernels = rendered(spec_path("pga3d"), "optimized")["kernels.hpp"]
+        self.assertTrue("T norm2([[maybe_unused]] const basic_normalized_point<T>& a)" in kernels)
 
 
 class Accessors(unittest.TestCase):
     def test_named_as_declared(self):
         # Issue 16, defect 8: a line declared with e3^e1 has e31(), which
         # returns the e3^e1 coefficient (minus that of e1^e3).
-        types = rendered(os.path.join(FIXTURES_DIR, "pga3d.ga"), "optimized")["types.hpp"]
+        types = rendered(spec_path("pga3d"), "optimized")["types.hpp"]
         for line in ("basic_line(T e01, T e02, T e03, T e23, T e31, T e12)",
                      "constexpr T e31() const { return c[4]; }",
-                     "basic_point(T e032, T e013, T e021)",
+                     "basic_normalized_point(T e032, T e013, T e021)",
                      "static constexpr T e123() { return T(1); }"):
             self.assertTrue(line in types, line)
         self.assertEqual(re.findall(r".*\b(?:e13|e023|e012)\b.*", types), [])
 
     def test_shipped_specs_keep_their_accessors(self):
         # Their blades are all declared in canonical order, so names are as before.
-        for name in ("e3ga", "c3ga"):
+        for name in ("e3ga", "c3ga"):  # pga3d declares ganja's orientations (e31, e032)
             algebra = load(spec_path(name))
             for named in algebra.types:
                 for coordinate in named.coordinates:

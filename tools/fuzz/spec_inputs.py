@@ -17,8 +17,9 @@ def _read(path: str) -> str:
 
 SHIPPED = [_read(path) for path in sorted(glob.glob(os.path.join(ROOT, "specs", "*.ga")))]
 
-KEYWORDS = ["algebra", "basis", "metric", "scalar", "type", "alias", "constant", "function", "float", "double"]
-FUNCTIONS = ["gp", "op", "lc", "rc", "scp", "add", "sub", "meet", "apply", "neg", "reverse", "involute",
+KEYWORDS = ["algebra", "basis", "metric", "scalar", "representation", "type", "alias", "constant", "function",
+            "float", "double", "direct", "dual"]
+FUNCTIONS = ["gp", "op", "lc", "rc", "scp", "add", "sub", "meet", "join", "apply", "neg", "reverse", "involute",
              "conjugate", "dual", "undual", "norm2", "inverse", "exp", "log", "smul", "norm", "unit"]
 PUNCTUATION = ["=", ",", "^", "(", ")", ".", "*", "+", "-", "/", "\n", " ", "\t", "\r", "\r\n", "#", ";", "$", "@"]
 # Names the generated C++ reserves or that look like something else.

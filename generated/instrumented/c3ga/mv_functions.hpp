@@ -189,12 +189,33 @@ basic_mv<T> apply(const basic_mv<T>& v, const basic_mv<T>& x) {
   detail::on_call(detail::call::apply, r, v, x);
   return r;
 }
-// (a* ^ b*)^-*, the dual of the outer product of the duals.
+namespace detail {
+// a v b, the regressive product: left_complement(right_complement(b) ^
+// right_complement(a)). The complements need no metric, so this works in a
+// degenerate metric too; where I^2 = +-1 it is undual(dual(a) ^ dual(b)).
+template <class T>
+basic_mv<T> regressive(const basic_mv<T>& a, const basic_mv<T>& b) {
+  using gaphys::ga::table_linear_map;
+  return table_linear_map(
+      left_complement_table,
+      gaphys::ga::table_product(op_table, table_linear_map(right_complement_table, b),
+                                table_linear_map(right_complement_table, a)));
+}
+}  // namespace detail
+// c3ga blades are direct ("representation" in the spec):
+// meet and join are the regressive and outer products.
 template <class T>
 basic_mv<T> meet(const basic_mv<T>& a, const basic_mv<T>& b) {
   basic_mv<T> r(gaphys::ga::uninitialized);
-  if (!detail::specialized_meet(a, b, r)) r = undual(op(dual(a), dual(b)));
+  if (!detail::specialized_meet(a, b, r)) r = detail::regressive(a, b);
   detail::on_call(detail::call::meet, r, a, b);
+  return r;
+}
+template <class T>
+basic_mv<T> join(const basic_mv<T>& a, const basic_mv<T>& b) {
+  basic_mv<T> r(gaphys::ga::uninitialized);
+  if (!detail::specialized_join(a, b, r)) r = gaphys::ga::table_product(detail::op_table, a, b);
+  detail::on_call(detail::call::join, r, a, b);
   return r;
 }
 template <class T>
@@ -253,6 +274,10 @@ basic_mv<typename A::scalar_type> apply(const A& a, const B& b) {
 template <class A, class B, detail::if_multivectors<A, B> = 0>
 basic_mv<typename A::scalar_type> meet(const A& a, const B& b) {
   return meet(to_mv(a), to_mv(b));
+}
+template <class A, class B, detail::if_multivectors<A, B> = 0>
+basic_mv<typename A::scalar_type> join(const A& a, const B& b) {
+  return join(to_mv(a), to_mv(b));
 }
 template <class A, class B, detail::if_multivectors<A, B> = 0>
 typename A::scalar_type scp(const A& a, const B& b) {

@@ -18,27 +18,11 @@ namespace detail {
 inline gaphys::ga::profile_recorder& recorder() {
   static gaphys::ga::profile_recorder instance(
       "c3ga", "c3ga", "dc4346f9365b7039dca38cf91bfe2f491cd87c7bc8ce65f7930fb41c39b2392d", "0.1.0",
-      {{"gp", 2},
-       {"op", 2},
-       {"lc", 2},
-       {"rc", 2},
-       {"scp", 2},
-       {"add", 2},
-       {"sub", 2},
-       {"meet", 2},
-       {"apply", 2},
-       {"neg", 1},
-       {"smul", 1},
-       {"reverse", 1},
-       {"involute", 1},
-       {"conjugate", 1},
-       {"dual", 1},
-       {"undual", 1},
-       {"norm2", 1},
-       {"inverse", 1},
-       {"general_inverse", 1},
-       {"exp", 1},
-       {"log", 1}});
+      {{"gp", 2},   {"op", 2},     {"lc", 2},      {"rc", 2},       {"scp", 2},
+       {"add", 2},  {"sub", 2},    {"meet", 2},    {"join", 2},     {"apply", 2},
+       {"neg", 1},  {"smul", 1},   {"reverse", 1}, {"involute", 1}, {"conjugate", 1},
+       {"dual", 1}, {"undual", 1}, {"norm2", 1},   {"inverse", 1},  {"general_inverse", 1},
+       {"exp", 1},  {"log", 1}});
   return instance;
 }
 

@@ -121,6 +121,15 @@ bool specialized_meet(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused
 
 // No profiled combination: always the generic path.
 template <class T>
+bool specialized_join(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
+  switch (pair_key(a.bits, b.bits)) {
+    default:
+      return false;
+  }
+}
+
+// No profiled combination: always the generic path.
+template <class T>
 bool specialized_neg(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
   switch (a.bits) {
     default:

@@ -49,6 +49,7 @@ enum class call : int {
   add,
   sub,
   meet,
+  join,
   apply,
   neg,
   smul,
@@ -619,6 +620,34 @@ inline constexpr gaphys::ga::product_term undual_terms[] = {
     {14, -1.0}, {12, 1.0},  {1, 1.0},   {4, 1.0},  {3, -1.0},  {2, 1.0},   {5, 1.0},   {0, -1.0},
 };
 inline constexpr gaphys::ga::linear_table undual_table{undual_offsets, undual_terms};
+
+// right_complement of canonical blade i: terms [offsets[i], offsets[i + 1]).
+inline constexpr std::uint16_t right_complement_offsets[] = {
+    0,  1,  2,  3,  4,  5,  6,  7,  8,  9,  10, 11, 12, 13, 14, 15, 16,
+    17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31, 32,
+};
+inline constexpr gaphys::ga::product_term right_complement_terms[] = {
+    {31, 1.0}, {30, 1.0},  {29, -1.0}, {28, 1.0},  {27, -1.0}, {26, 1.0}, {25, 1.0},  {24, -1.0},
+    {23, 1.0}, {22, -1.0}, {21, 1.0},  {20, -1.0}, {19, 1.0},  {18, 1.0}, {17, -1.0}, {16, 1.0},
+    {15, 1.0}, {14, -1.0}, {13, 1.0},  {12, 1.0},  {11, -1.0}, {10, 1.0}, {9, -1.0},  {8, 1.0},
+    {7, -1.0}, {6, 1.0},   {5, 1.0},   {4, -1.0},  {3, 1.0},   {2, -1.0}, {1, 1.0},   {0, 1.0},
+};
+inline constexpr gaphys::ga::linear_table right_complement_table{right_complement_offsets,
+                                                                 right_complement_terms};
+
+// left_complement of canonical blade i: terms [offsets[i], offsets[i + 1]).
+inline constexpr std::uint16_t left_complement_offsets[] = {
+    0,  1,  2,  3,  4,  5,  6,  7,  8,  9,  10, 11, 12, 13, 14, 15, 16,
+    17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31, 32,
+};
+inline constexpr gaphys::ga::product_term left_complement_terms[] = {
+    {31, 1.0}, {30, 1.0},  {29, -1.0}, {28, 1.0},  {27, -1.0}, {26, 1.0}, {25, 1.0},  {24, -1.0},
+    {23, 1.0}, {22, -1.0}, {21, 1.0},  {20, -1.0}, {19, 1.0},  {18, 1.0}, {17, -1.0}, {16, 1.0},
+    {15, 1.0}, {14, -1.0}, {13, 1.0},  {12, 1.0},  {11, -1.0}, {10, 1.0}, {9, -1.0},  {8, 1.0},
+    {7, -1.0}, {6, 1.0},   {5, 1.0},   {4, -1.0},  {3, 1.0},   {2, -1.0}, {1, 1.0},   {0, 1.0},
+};
+inline constexpr gaphys::ga::linear_table left_complement_table{left_complement_offsets,
+                                                                left_complement_terms};
 
 inline constexpr std::array<signed char, blade_count> reverse_signs = {
     1,  1,  1,  1,  1,  1,  -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,

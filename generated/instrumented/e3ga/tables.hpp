@@ -45,6 +45,7 @@ enum class call : int {
   add,
   sub,
   meet,
+  join,
   apply,
   neg,
   smul,
@@ -145,6 +146,26 @@ inline constexpr gaphys::ga::product_term undual_terms[] = {
     {7, 1.0}, {6, 1.0}, {5, -1.0}, {4, 1.0}, {3, -1.0}, {2, 1.0}, {1, -1.0}, {0, -1.0},
 };
 inline constexpr gaphys::ga::linear_table undual_table{undual_offsets, undual_terms};
+
+// right_complement of canonical blade i: terms [offsets[i], offsets[i + 1]).
+inline constexpr std::uint16_t right_complement_offsets[] = {
+    0, 1, 2, 3, 4, 5, 6, 7, 8,
+};
+inline constexpr gaphys::ga::product_term right_complement_terms[] = {
+    {7, 1.0}, {6, 1.0}, {5, -1.0}, {4, 1.0}, {3, 1.0}, {2, -1.0}, {1, 1.0}, {0, 1.0},
+};
+inline constexpr gaphys::ga::linear_table right_complement_table{right_complement_offsets,
+                                                                 right_complement_terms};
+
+// left_complement of canonical blade i: terms [offsets[i], offsets[i + 1]).
+inline constexpr std::uint16_t left_complement_offsets[] = {
+    0, 1, 2, 3, 4, 5, 6, 7, 8,
+};
+inline constexpr gaphys::ga::product_term left_complement_terms[] = {
+    {7, 1.0}, {6, 1.0}, {5, -1.0}, {4, 1.0}, {3, 1.0}, {2, -1.0}, {1, 1.0}, {0, 1.0},
+};
+inline constexpr gaphys::ga::linear_table left_complement_table{left_complement_offsets,
+                                                                left_complement_terms};
 
 inline constexpr std::array<signed char, blade_count> reverse_signs = {
     1, 1, 1, 1, -1, -1, -1, -1,

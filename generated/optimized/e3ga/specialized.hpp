@@ -3237,6 +3237,15 @@ bool specialized_meet(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused
   }
 }
 
+// No profiled combination: always the generic path.
+template <class T>
+bool specialized_join(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
+  switch (pair_key(a.bits, b.bits)) {
+    default:
+      return false;
+  }
+}
+
 template <class T>
 GAPHYS_ALWAYS_INLINE bool specialized_neg_by_key(std::uint32_t key, const basic_mv<T>& a,
                                                  basic_mv<T>& r) {
