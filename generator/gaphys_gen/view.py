@@ -107,6 +107,14 @@ def variables_read(polys) -> set[str]:
     return {v[0] for poly in polys for monomial in poly.terms for v in monomial}
 
 
+# Named-type kernels of up to this many operations are forced inline (the
+# compiler still decides for larger ones). At -O3, g++ called
+# apply(motor, normalized_point) (131 operations) once per element of a
+# user's loop over points, where inlined it vectorizes the loop: 3.4x as fast
+# in float (bench_c3ga_kernels, apply_motor_points; docs/benchmarks.md).
+INLINE_OPERATION_LIMIT = 256
+
+
 def kernel_view(kernel: Kernel) -> dict:
     names = [a.name for a in kernel.arguments]
     # An argument the expansion never reads (pga3d norm2 of a point with
@@ -135,8 +143,10 @@ def kernel_view(kernel: Kernel) -> dict:
     extra = {"exp_closed": ", 1 exp_of_square", "log_closed": ", 1 log_factor", "via_mv": " (general mv path)"}
     result_name = kernel.result.named.name if kernel.result.named else ("scalar" if kernel.result.kind == "scalar" else "mv")
     cost = "" if kernel.form == "via_mv" else cost_text(kernel)
+    muls, adds = cpp.count(kernel.polys)
     return {
         "form": kernel.form,
+        "inline": "GAPHYS_ALWAYS_INLINE " if muls + adds <= INLINE_OPERATION_LIMIT else "",
         "name": kernel.function,
         "summary": f"{kernel.function}({', '.join(shown)}) -> {result_name}",
         "comment": f"{kernel.function}({', '.join(shown)}) -> {result_name}{cost}{extra.get(kernel.form, '')}",

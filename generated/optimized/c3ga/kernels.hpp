@@ -16,37 +16,37 @@ namespace c3ga {
 
 // neg(normalized_point) -> dual_sphere: 0 mul, 0 add
 template <class T>
-basic_dual_sphere<T> neg(const basic_normalized_point<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> neg(const basic_normalized_point<T>& a) {
   return basic_dual_sphere<T>(-T(1), -a.c[0], -a.c[1], -a.c[2], -a.c[3]);
 }
 
 // reverse(normalized_point) -> normalized_point: 0 mul, 0 add
 template <class T>
-basic_normalized_point<T> reverse(const basic_normalized_point<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_normalized_point<T> reverse(const basic_normalized_point<T>& a) {
   return basic_normalized_point<T>(a.c[0], a.c[1], a.c[2], a.c[3]);
 }
 
 // involute(normalized_point) -> dual_sphere: 0 mul, 0 add
 template <class T>
-basic_dual_sphere<T> involute(const basic_normalized_point<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> involute(const basic_normalized_point<T>& a) {
   return basic_dual_sphere<T>(-T(1), -a.c[0], -a.c[1], -a.c[2], -a.c[3]);
 }
 
 // conjugate(normalized_point) -> dual_sphere: 0 mul, 0 add
 template <class T>
-basic_dual_sphere<T> conjugate(const basic_normalized_point<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> conjugate(const basic_normalized_point<T>& a) {
   return basic_dual_sphere<T>(-T(1), -a.c[0], -a.c[1], -a.c[2], -a.c[3]);
 }
 
 // norm2(normalized_point) -> scalar: 4 mul, 3 add
 template <class T>
-T norm2(const basic_normalized_point<T>& a) {
+GAPHYS_ALWAYS_INLINE T norm2(const basic_normalized_point<T>& a) {
   return -T(2) * a.c[3] + a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2];
 }
 
 // inverse(normalized_point) -> dual_sphere: 9 mul, 3 add, 1 div
 template <class T>
-basic_dual_sphere<T> inverse(const basic_normalized_point<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> inverse(const basic_normalized_point<T>& a) {
   const T inv = gaphys::ga::inverse_norm2<T>(-T(2) * a.c[3] + a.c[0] * a.c[0] + a.c[1] * a.c[1] +
                                              a.c[2] * a.c[2]);
   return basic_dual_sphere<T>((T(1)) * inv, (a.c[0]) * inv, (a.c[1]) * inv, (a.c[2]) * inv,
@@ -55,68 +55,70 @@ basic_dual_sphere<T> inverse(const basic_normalized_point<T>& a) {
 
 // dual(normalized_point) -> sphere: 0 mul, 0 add
 template <class T>
-basic_sphere<T> dual(const basic_normalized_point<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_sphere<T> dual(const basic_normalized_point<T>& a) {
   return basic_sphere<T>(T(1), a.c[2], -a.c[1], a.c[0], a.c[3]);
 }
 
 // undual(normalized_point) -> sphere: 0 mul, 0 add
 template <class T>
-basic_sphere<T> undual(const basic_normalized_point<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_sphere<T> undual(const basic_normalized_point<T>& a) {
   return basic_sphere<T>(-T(1), -a.c[2], a.c[1], -a.c[0], -a.c[3]);
 }
 
 // smul(scalar, normalized_point) -> dual_sphere: 4 mul, 0 add
 template <class T>
-basic_dual_sphere<T> smul(T s, const basic_normalized_point<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> smul(T s, const basic_normalized_point<T>& a) {
   return basic_dual_sphere<T>(s, a.c[0] * s, a.c[1] * s, a.c[2] * s, a.c[3] * s);
 }
 
 // add(normalized_point, normalized_point) -> dual_sphere: 0 mul, 4 add
 template <class T>
-basic_dual_sphere<T> add(const basic_normalized_point<T>& a, const basic_normalized_point<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> add(const basic_normalized_point<T>& a,
+                                              const basic_normalized_point<T>& b) {
   return basic_dual_sphere<T>(T(2), a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2],
                               a.c[3] + b.c[3]);
 }
 
 // sub(normalized_point, normalized_point) -> dual_plane: 0 mul, 4 add
 template <class T>
-basic_dual_plane<T> sub(const basic_normalized_point<T>& a, const basic_normalized_point<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> sub(const basic_normalized_point<T>& a,
+                                             const basic_normalized_point<T>& b) {
   return basic_dual_plane<T>(a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2], a.c[3] - b.c[3]);
 }
 
 // neg(dual_sphere) -> dual_sphere: 0 mul, 0 add
 template <class T>
-basic_dual_sphere<T> neg(const basic_dual_sphere<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> neg(const basic_dual_sphere<T>& a) {
   return basic_dual_sphere<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3], -a.c[4]);
 }
 
 // reverse(dual_sphere) -> dual_sphere: 0 mul, 0 add
 template <class T>
-basic_dual_sphere<T> reverse(const basic_dual_sphere<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> reverse(const basic_dual_sphere<T>& a) {
   return basic_dual_sphere<T>(a.c[0], a.c[1], a.c[2], a.c[3], a.c[4]);
 }
 
 // involute(dual_sphere) -> dual_sphere: 0 mul, 0 add
 template <class T>
-basic_dual_sphere<T> involute(const basic_dual_sphere<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> involute(const basic_dual_sphere<T>& a) {
   return basic_dual_sphere<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3], -a.c[4]);
 }
 
 // conjugate(dual_sphere) -> dual_sphere: 0 mul, 0 add
 template <class T>
-basic_dual_sphere<T> conjugate(const basic_dual_sphere<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> conjugate(const basic_dual_sphere<T>& a) {
   return basic_dual_sphere<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3], -a.c[4]);
 }
 
 // norm2(dual_sphere) -> scalar: 5 mul, 3 add
 template <class T>
-T norm2(const basic_dual_sphere<T>& a) {
+GAPHYS_ALWAYS_INLINE T norm2(const basic_dual_sphere<T>& a) {
   return -T(2) * a.c[0] * a.c[4] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3];
 }
 
 // inverse(dual_sphere) -> dual_sphere: 10 mul, 3 add, 1 div
 template <class T>
-basic_dual_sphere<T> inverse(const basic_dual_sphere<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> inverse(const basic_dual_sphere<T>& a) {
   const T inv = gaphys::ga::inverse_norm2<T>(-T(2) * a.c[0] * a.c[4] + a.c[1] * a.c[1] +
                                              a.c[2] * a.c[2] + a.c[3] * a.c[3]);
   return basic_dual_sphere<T>((a.c[0]) * inv, (a.c[1]) * inv, (a.c[2]) * inv, (a.c[3]) * inv,
@@ -125,346 +127,352 @@ basic_dual_sphere<T> inverse(const basic_dual_sphere<T>& a) {
 
 // dual(dual_sphere) -> sphere: 0 mul, 0 add
 template <class T>
-basic_sphere<T> dual(const basic_dual_sphere<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_sphere<T> dual(const basic_dual_sphere<T>& a) {
   return basic_sphere<T>(a.c[0], a.c[3], -a.c[2], a.c[1], a.c[4]);
 }
 
 // undual(dual_sphere) -> sphere: 0 mul, 0 add
 template <class T>
-basic_sphere<T> undual(const basic_dual_sphere<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_sphere<T> undual(const basic_dual_sphere<T>& a) {
   return basic_sphere<T>(-a.c[0], -a.c[3], a.c[2], -a.c[1], -a.c[4]);
 }
 
 // smul(scalar, dual_sphere) -> dual_sphere: 5 mul, 0 add
 template <class T>
-basic_dual_sphere<T> smul(T s, const basic_dual_sphere<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> smul(T s, const basic_dual_sphere<T>& a) {
   return basic_dual_sphere<T>(a.c[0] * s, a.c[1] * s, a.c[2] * s, a.c[3] * s, a.c[4] * s);
 }
 
 // add(dual_sphere, dual_sphere) -> dual_sphere: 0 mul, 5 add
 template <class T>
-basic_dual_sphere<T> add(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> add(const basic_dual_sphere<T>& a,
+                                              const basic_dual_sphere<T>& b) {
   return basic_dual_sphere<T>(a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2], a.c[3] + b.c[3],
                               a.c[4] + b.c[4]);
 }
 
 // sub(dual_sphere, dual_sphere) -> dual_sphere: 0 mul, 5 add
 template <class T>
-basic_dual_sphere<T> sub(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> sub(const basic_dual_sphere<T>& a,
+                                              const basic_dual_sphere<T>& b) {
   return basic_dual_sphere<T>(a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2], a.c[3] - b.c[3],
                               a.c[4] - b.c[4]);
 }
 
 // neg(dual_plane) -> dual_plane: 0 mul, 0 add
 template <class T>
-basic_dual_plane<T> neg(const basic_dual_plane<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> neg(const basic_dual_plane<T>& a) {
   return basic_dual_plane<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3]);
 }
 
 // reverse(dual_plane) -> dual_plane: 0 mul, 0 add
 template <class T>
-basic_dual_plane<T> reverse(const basic_dual_plane<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> reverse(const basic_dual_plane<T>& a) {
   return basic_dual_plane<T>(a.c[0], a.c[1], a.c[2], a.c[3]);
 }
 
 // involute(dual_plane) -> dual_plane: 0 mul, 0 add
 template <class T>
-basic_dual_plane<T> involute(const basic_dual_plane<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> involute(const basic_dual_plane<T>& a) {
   return basic_dual_plane<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3]);
 }
 
 // conjugate(dual_plane) -> dual_plane: 0 mul, 0 add
 template <class T>
-basic_dual_plane<T> conjugate(const basic_dual_plane<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> conjugate(const basic_dual_plane<T>& a) {
   return basic_dual_plane<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3]);
 }
 
 // norm2(dual_plane) -> scalar: 3 mul, 2 add
 template <class T>
-T norm2(const basic_dual_plane<T>& a) {
+GAPHYS_ALWAYS_INLINE T norm2(const basic_dual_plane<T>& a) {
   return a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2];
 }
 
 // inverse(dual_plane) -> dual_plane: 7 mul, 2 add, 1 div
 template <class T>
-basic_dual_plane<T> inverse(const basic_dual_plane<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> inverse(const basic_dual_plane<T>& a) {
   const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
   return basic_dual_plane<T>((a.c[0]) * inv, (a.c[1]) * inv, (a.c[2]) * inv, (a.c[3]) * inv);
 }
 
 // dual(dual_plane) -> plane: 0 mul, 0 add
 template <class T>
-basic_plane<T> dual(const basic_dual_plane<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_plane<T> dual(const basic_dual_plane<T>& a) {
   return basic_plane<T>(a.c[3], a.c[2], -a.c[1], a.c[0]);
 }
 
 // undual(dual_plane) -> plane: 0 mul, 0 add
 template <class T>
-basic_plane<T> undual(const basic_dual_plane<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_plane<T> undual(const basic_dual_plane<T>& a) {
   return basic_plane<T>(-a.c[3], -a.c[2], a.c[1], -a.c[0]);
 }
 
 // smul(scalar, dual_plane) -> dual_plane: 4 mul, 0 add
 template <class T>
-basic_dual_plane<T> smul(T s, const basic_dual_plane<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> smul(T s, const basic_dual_plane<T>& a) {
   return basic_dual_plane<T>(a.c[0] * s, a.c[1] * s, a.c[2] * s, a.c[3] * s);
 }
 
 // add(dual_plane, dual_plane) -> dual_plane: 0 mul, 4 add
 template <class T>
-basic_dual_plane<T> add(const basic_dual_plane<T>& a, const basic_dual_plane<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> add(const basic_dual_plane<T>& a,
+                                             const basic_dual_plane<T>& b) {
   return basic_dual_plane<T>(a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2], a.c[3] + b.c[3]);
 }
 
 // sub(dual_plane, dual_plane) -> dual_plane: 0 mul, 4 add
 template <class T>
-basic_dual_plane<T> sub(const basic_dual_plane<T>& a, const basic_dual_plane<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> sub(const basic_dual_plane<T>& a,
+                                             const basic_dual_plane<T>& b) {
   return basic_dual_plane<T>(a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2], a.c[3] - b.c[3]);
 }
 
 // neg(euclidean_vector) -> euclidean_vector: 0 mul, 0 add
 template <class T>
-basic_euclidean_vector<T> neg(const basic_euclidean_vector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> neg(const basic_euclidean_vector<T>& a) {
   return basic_euclidean_vector<T>(-a.c[0], -a.c[1], -a.c[2]);
 }
 
 // reverse(euclidean_vector) -> euclidean_vector: 0 mul, 0 add
 template <class T>
-basic_euclidean_vector<T> reverse(const basic_euclidean_vector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> reverse(const basic_euclidean_vector<T>& a) {
   return basic_euclidean_vector<T>(a.c[0], a.c[1], a.c[2]);
 }
 
 // involute(euclidean_vector) -> euclidean_vector: 0 mul, 0 add
 template <class T>
-basic_euclidean_vector<T> involute(const basic_euclidean_vector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> involute(const basic_euclidean_vector<T>& a) {
   return basic_euclidean_vector<T>(-a.c[0], -a.c[1], -a.c[2]);
 }
 
 // conjugate(euclidean_vector) -> euclidean_vector: 0 mul, 0 add
 template <class T>
-basic_euclidean_vector<T> conjugate(const basic_euclidean_vector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> conjugate(const basic_euclidean_vector<T>& a) {
   return basic_euclidean_vector<T>(-a.c[0], -a.c[1], -a.c[2]);
 }
 
 // norm2(euclidean_vector) -> scalar: 3 mul, 2 add
 template <class T>
-T norm2(const basic_euclidean_vector<T>& a) {
+GAPHYS_ALWAYS_INLINE T norm2(const basic_euclidean_vector<T>& a) {
   return a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2];
 }
 
 // inverse(euclidean_vector) -> euclidean_vector: 6 mul, 2 add, 1 div
 template <class T>
-basic_euclidean_vector<T> inverse(const basic_euclidean_vector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> inverse(const basic_euclidean_vector<T>& a) {
   const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
   return basic_euclidean_vector<T>((a.c[0]) * inv, (a.c[1]) * inv, (a.c[2]) * inv);
 }
 
 // dual(euclidean_vector) -> plane: 0 mul, 0 add
 template <class T>
-basic_plane<T> dual(const basic_euclidean_vector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_plane<T> dual(const basic_euclidean_vector<T>& a) {
   return basic_plane<T>(T(0), a.c[2], -a.c[1], a.c[0]);
 }
 
 // undual(euclidean_vector) -> plane: 0 mul, 0 add
 template <class T>
-basic_plane<T> undual(const basic_euclidean_vector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_plane<T> undual(const basic_euclidean_vector<T>& a) {
   return basic_plane<T>(T(0), -a.c[2], a.c[1], -a.c[0]);
 }
 
 // smul(scalar, euclidean_vector) -> euclidean_vector: 3 mul, 0 add
 template <class T>
-basic_euclidean_vector<T> smul(T s, const basic_euclidean_vector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> smul(T s, const basic_euclidean_vector<T>& a) {
   return basic_euclidean_vector<T>(a.c[0] * s, a.c[1] * s, a.c[2] * s);
 }
 
 // add(euclidean_vector, euclidean_vector) -> euclidean_vector: 0 mul, 3 add
 template <class T>
-basic_euclidean_vector<T> add(const basic_euclidean_vector<T>& a,
-                              const basic_euclidean_vector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> add(const basic_euclidean_vector<T>& a,
+                                                   const basic_euclidean_vector<T>& b) {
   return basic_euclidean_vector<T>(a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2]);
 }
 
 // sub(euclidean_vector, euclidean_vector) -> euclidean_vector: 0 mul, 3 add
 template <class T>
-basic_euclidean_vector<T> sub(const basic_euclidean_vector<T>& a,
-                              const basic_euclidean_vector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> sub(const basic_euclidean_vector<T>& a,
+                                                   const basic_euclidean_vector<T>& b) {
   return basic_euclidean_vector<T>(a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2]);
 }
 
 // neg(flat_point) -> flat_point: 0 mul, 0 add
 template <class T>
-basic_flat_point<T> neg(const basic_flat_point<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> neg(const basic_flat_point<T>& a) {
   return basic_flat_point<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3]);
 }
 
 // reverse(flat_point) -> flat_point: 0 mul, 0 add
 template <class T>
-basic_flat_point<T> reverse(const basic_flat_point<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> reverse(const basic_flat_point<T>& a) {
   return basic_flat_point<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3]);
 }
 
 // involute(flat_point) -> flat_point: 0 mul, 0 add
 template <class T>
-basic_flat_point<T> involute(const basic_flat_point<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> involute(const basic_flat_point<T>& a) {
   return basic_flat_point<T>(a.c[0], a.c[1], a.c[2], a.c[3]);
 }
 
 // conjugate(flat_point) -> flat_point: 0 mul, 0 add
 template <class T>
-basic_flat_point<T> conjugate(const basic_flat_point<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> conjugate(const basic_flat_point<T>& a) {
   return basic_flat_point<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3]);
 }
 
 // norm2(flat_point) -> scalar: 1 mul, 0 add
 template <class T>
-T norm2(const basic_flat_point<T>& a) {
+GAPHYS_ALWAYS_INLINE T norm2(const basic_flat_point<T>& a) {
   return -a.c[3] * a.c[3];
 }
 
 // inverse(flat_point) -> flat_point: 5 mul, 0 add, 1 div
 template <class T>
-basic_flat_point<T> inverse(const basic_flat_point<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> inverse(const basic_flat_point<T>& a) {
   const T inv = gaphys::ga::inverse_norm2<T>(-a.c[3] * a.c[3]);
   return basic_flat_point<T>((-a.c[0]) * inv, (-a.c[1]) * inv, (-a.c[2]) * inv, (-a.c[3]) * inv);
 }
 
 // dual(flat_point) -> circle: 0 mul, 0 add
 template <class T>
-basic_circle<T> dual(const basic_flat_point<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_circle<T> dual(const basic_flat_point<T>& a) {
   return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0), a.c[3], a.c[2], -a.c[1], a.c[0]);
 }
 
 // undual(flat_point) -> circle: 0 mul, 0 add
 template <class T>
-basic_circle<T> undual(const basic_flat_point<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_circle<T> undual(const basic_flat_point<T>& a) {
   return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0), -a.c[3], -a.c[2], a.c[1], -a.c[0]);
 }
 
 // smul(scalar, flat_point) -> flat_point: 4 mul, 0 add
 template <class T>
-basic_flat_point<T> smul(T s, const basic_flat_point<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> smul(T s, const basic_flat_point<T>& a) {
   return basic_flat_point<T>(a.c[0] * s, a.c[1] * s, a.c[2] * s, a.c[3] * s);
 }
 
 // add(flat_point, flat_point) -> flat_point: 0 mul, 4 add
 template <class T>
-basic_flat_point<T> add(const basic_flat_point<T>& a, const basic_flat_point<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> add(const basic_flat_point<T>& a,
+                                             const basic_flat_point<T>& b) {
   return basic_flat_point<T>(a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2], a.c[3] + b.c[3]);
 }
 
 // sub(flat_point, flat_point) -> flat_point: 0 mul, 4 add
 template <class T>
-basic_flat_point<T> sub(const basic_flat_point<T>& a, const basic_flat_point<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> sub(const basic_flat_point<T>& a,
+                                             const basic_flat_point<T>& b) {
   return basic_flat_point<T>(a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2], a.c[3] - b.c[3]);
 }
 
 // neg(euclidean_bivector) -> euclidean_bivector: 0 mul, 0 add
 template <class T>
-basic_euclidean_bivector<T> neg(const basic_euclidean_bivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> neg(const basic_euclidean_bivector<T>& a) {
   return basic_euclidean_bivector<T>(-a.c[0], -a.c[1], -a.c[2]);
 }
 
 // reverse(euclidean_bivector) -> euclidean_bivector: 0 mul, 0 add
 template <class T>
-basic_euclidean_bivector<T> reverse(const basic_euclidean_bivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> reverse(const basic_euclidean_bivector<T>& a) {
   return basic_euclidean_bivector<T>(-a.c[0], -a.c[1], -a.c[2]);
 }
 
 // involute(euclidean_bivector) -> euclidean_bivector: 0 mul, 0 add
 template <class T>
-basic_euclidean_bivector<T> involute(const basic_euclidean_bivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> involute(const basic_euclidean_bivector<T>& a) {
   return basic_euclidean_bivector<T>(a.c[0], a.c[1], a.c[2]);
 }
 
 // conjugate(euclidean_bivector) -> euclidean_bivector: 0 mul, 0 add
 template <class T>
-basic_euclidean_bivector<T> conjugate(const basic_euclidean_bivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> conjugate(const basic_euclidean_bivector<T>& a) {
   return basic_euclidean_bivector<T>(-a.c[0], -a.c[1], -a.c[2]);
 }
 
 // norm2(euclidean_bivector) -> scalar: 3 mul, 2 add
 template <class T>
-T norm2(const basic_euclidean_bivector<T>& a) {
+GAPHYS_ALWAYS_INLINE T norm2(const basic_euclidean_bivector<T>& a) {
   return a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2];
 }
 
 // inverse(euclidean_bivector) -> euclidean_bivector: 6 mul, 2 add, 1 div
 template <class T>
-basic_euclidean_bivector<T> inverse(const basic_euclidean_bivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> inverse(const basic_euclidean_bivector<T>& a) {
   const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
   return basic_euclidean_bivector<T>((-a.c[0]) * inv, (-a.c[1]) * inv, (-a.c[2]) * inv);
 }
 
 // dual(euclidean_bivector) -> line: 0 mul, 0 add
 template <class T>
-basic_line<T> dual(const basic_euclidean_bivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_line<T> dual(const basic_euclidean_bivector<T>& a) {
   return basic_line<T>(T(0), T(0), T(0), a.c[2], -a.c[1], a.c[0]);
 }
 
 // undual(euclidean_bivector) -> line: 0 mul, 0 add
 template <class T>
-basic_line<T> undual(const basic_euclidean_bivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_line<T> undual(const basic_euclidean_bivector<T>& a) {
   return basic_line<T>(T(0), T(0), T(0), -a.c[2], a.c[1], -a.c[0]);
 }
 
 // smul(scalar, euclidean_bivector) -> euclidean_bivector: 3 mul, 0 add
 template <class T>
-basic_euclidean_bivector<T> smul(T s, const basic_euclidean_bivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> smul(T s, const basic_euclidean_bivector<T>& a) {
   return basic_euclidean_bivector<T>(a.c[0] * s, a.c[1] * s, a.c[2] * s);
 }
 
 // add(euclidean_bivector, euclidean_bivector) -> euclidean_bivector: 0 mul, 3 add
 template <class T>
-basic_euclidean_bivector<T> add(const basic_euclidean_bivector<T>& a,
-                                const basic_euclidean_bivector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> add(const basic_euclidean_bivector<T>& a,
+                                                     const basic_euclidean_bivector<T>& b) {
   return basic_euclidean_bivector<T>(a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2]);
 }
 
 // sub(euclidean_bivector, euclidean_bivector) -> euclidean_bivector: 0 mul, 3 add
 template <class T>
-basic_euclidean_bivector<T> sub(const basic_euclidean_bivector<T>& a,
-                                const basic_euclidean_bivector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> sub(const basic_euclidean_bivector<T>& a,
+                                                     const basic_euclidean_bivector<T>& b) {
   return basic_euclidean_bivector<T>(a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2]);
 }
 
 // neg(point_pair) -> point_pair: 0 mul, 0 add
 template <class T>
-basic_point_pair<T> neg(const basic_point_pair<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> neg(const basic_point_pair<T>& a) {
   return basic_point_pair<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3], -a.c[4], -a.c[5], -a.c[6], -a.c[7],
                              -a.c[8], -a.c[9]);
 }
 
 // reverse(point_pair) -> point_pair: 0 mul, 0 add
 template <class T>
-basic_point_pair<T> reverse(const basic_point_pair<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> reverse(const basic_point_pair<T>& a) {
   return basic_point_pair<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3], -a.c[4], -a.c[5], -a.c[6], -a.c[7],
                              -a.c[8], -a.c[9]);
 }
 
 // involute(point_pair) -> point_pair: 0 mul, 0 add
 template <class T>
-basic_point_pair<T> involute(const basic_point_pair<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> involute(const basic_point_pair<T>& a) {
   return basic_point_pair<T>(a.c[0], a.c[1], a.c[2], a.c[3], a.c[4], a.c[5], a.c[6], a.c[7], a.c[8],
                              a.c[9]);
 }
 
 // conjugate(point_pair) -> point_pair: 0 mul, 0 add
 template <class T>
-basic_point_pair<T> conjugate(const basic_point_pair<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> conjugate(const basic_point_pair<T>& a) {
   return basic_point_pair<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3], -a.c[4], -a.c[5], -a.c[6], -a.c[7],
                              -a.c[8], -a.c[9]);
 }
 
 // norm2(point_pair) -> scalar: 10 mul, 6 add
 template <class T>
-T norm2(const basic_point_pair<T>& a) {
+GAPHYS_ALWAYS_INLINE T norm2(const basic_point_pair<T>& a) {
   return T(2) * a.c[0] * a.c[6] + T(2) * a.c[1] * a.c[8] + T(2) * a.c[2] * a.c[9] -
          a.c[3] * a.c[3] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[7] * a.c[7];
 }
 
 // inverse(point_pair) -> point_pair: 20 mul, 6 add, 1 div
 template <class T>
-basic_point_pair<T> inverse(const basic_point_pair<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> inverse(const basic_point_pair<T>& a) {
   const T inv = gaphys::ga::inverse_norm2<T>(T(2) * a.c[0] * a.c[6] + T(2) * a.c[1] * a.c[8] +
                                              T(2) * a.c[2] * a.c[9] - a.c[3] * a.c[3] +
                                              a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[7] * a.c[7]);
@@ -475,28 +483,29 @@ basic_point_pair<T> inverse(const basic_point_pair<T>& a) {
 
 // dual(point_pair) -> circle: 0 mul, 0 add
 template <class T>
-basic_circle<T> dual(const basic_point_pair<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_circle<T> dual(const basic_point_pair<T>& a) {
   return basic_circle<T>(a.c[2], -a.c[1], a.c[0], a.c[7], -a.c[5], a.c[4], a.c[3], a.c[9], -a.c[8],
                          a.c[6]);
 }
 
 // undual(point_pair) -> circle: 0 mul, 0 add
 template <class T>
-basic_circle<T> undual(const basic_point_pair<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_circle<T> undual(const basic_point_pair<T>& a) {
   return basic_circle<T>(-a.c[2], a.c[1], -a.c[0], -a.c[7], a.c[5], -a.c[4], -a.c[3], -a.c[9],
                          a.c[8], -a.c[6]);
 }
 
 // smul(scalar, point_pair) -> point_pair: 10 mul, 0 add
 template <class T>
-basic_point_pair<T> smul(T s, const basic_point_pair<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> smul(T s, const basic_point_pair<T>& a) {
   return basic_point_pair<T>(a.c[0] * s, a.c[1] * s, a.c[2] * s, a.c[3] * s, a.c[4] * s, a.c[5] * s,
                              a.c[6] * s, a.c[7] * s, a.c[8] * s, a.c[9] * s);
 }
 
 // add(point_pair, point_pair) -> point_pair: 0 mul, 10 add
 template <class T>
-basic_point_pair<T> add(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> add(const basic_point_pair<T>& a,
+                                             const basic_point_pair<T>& b) {
   return basic_point_pair<T>(a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2], a.c[3] + b.c[3],
                              a.c[4] + b.c[4], a.c[5] + b.c[5], a.c[6] + b.c[6], a.c[7] + b.c[7],
                              a.c[8] + b.c[8], a.c[9] + b.c[9]);
@@ -504,7 +513,8 @@ basic_point_pair<T> add(const basic_point_pair<T>& a, const basic_point_pair<T>&
 
 // sub(point_pair, point_pair) -> point_pair: 0 mul, 10 add
 template <class T>
-basic_point_pair<T> sub(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> sub(const basic_point_pair<T>& a,
+                                             const basic_point_pair<T>& b) {
   return basic_point_pair<T>(a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2], a.c[3] - b.c[3],
                              a.c[4] - b.c[4], a.c[5] - b.c[5], a.c[6] - b.c[6], a.c[7] - b.c[7],
                              a.c[8] - b.c[8], a.c[9] - b.c[9]);
@@ -512,37 +522,37 @@ basic_point_pair<T> sub(const basic_point_pair<T>& a, const basic_point_pair<T>&
 
 // neg(dual_line) -> dual_line: 0 mul, 0 add
 template <class T>
-basic_dual_line<T> neg(const basic_dual_line<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> neg(const basic_dual_line<T>& a) {
   return basic_dual_line<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3], -a.c[4], -a.c[5]);
 }
 
 // reverse(dual_line) -> dual_line: 0 mul, 0 add
 template <class T>
-basic_dual_line<T> reverse(const basic_dual_line<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> reverse(const basic_dual_line<T>& a) {
   return basic_dual_line<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3], -a.c[4], -a.c[5]);
 }
 
 // involute(dual_line) -> dual_line: 0 mul, 0 add
 template <class T>
-basic_dual_line<T> involute(const basic_dual_line<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> involute(const basic_dual_line<T>& a) {
   return basic_dual_line<T>(a.c[0], a.c[1], a.c[2], a.c[3], a.c[4], a.c[5]);
 }
 
 // conjugate(dual_line) -> dual_line: 0 mul, 0 add
 template <class T>
-basic_dual_line<T> conjugate(const basic_dual_line<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> conjugate(const basic_dual_line<T>& a) {
   return basic_dual_line<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3], -a.c[4], -a.c[5]);
 }
 
 // norm2(dual_line) -> scalar: 3 mul, 2 add
 template <class T>
-T norm2(const basic_dual_line<T>& a) {
+GAPHYS_ALWAYS_INLINE T norm2(const basic_dual_line<T>& a) {
   return a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2];
 }
 
 // inverse(dual_line) -> dual_line: 9 mul, 2 add, 1 div
 template <class T>
-basic_dual_line<T> inverse(const basic_dual_line<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> inverse(const basic_dual_line<T>& a) {
   const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
   return basic_dual_line<T>((-a.c[0]) * inv, (-a.c[1]) * inv, (-a.c[2]) * inv, (-a.c[3]) * inv,
                             (-a.c[4]) * inv, (-a.c[5]) * inv);
@@ -550,69 +560,71 @@ basic_dual_line<T> inverse(const basic_dual_line<T>& a) {
 
 // dual(dual_line) -> line: 0 mul, 0 add
 template <class T>
-basic_line<T> dual(const basic_dual_line<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_line<T> dual(const basic_dual_line<T>& a) {
   return basic_line<T>(a.c[5], -a.c[4], a.c[3], a.c[2], -a.c[1], a.c[0]);
 }
 
 // undual(dual_line) -> line: 0 mul, 0 add
 template <class T>
-basic_line<T> undual(const basic_dual_line<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_line<T> undual(const basic_dual_line<T>& a) {
   return basic_line<T>(-a.c[5], a.c[4], -a.c[3], -a.c[2], a.c[1], -a.c[0]);
 }
 
 // smul(scalar, dual_line) -> dual_line: 6 mul, 0 add
 template <class T>
-basic_dual_line<T> smul(T s, const basic_dual_line<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> smul(T s, const basic_dual_line<T>& a) {
   return basic_dual_line<T>(a.c[0] * s, a.c[1] * s, a.c[2] * s, a.c[3] * s, a.c[4] * s, a.c[5] * s);
 }
 
 // add(dual_line, dual_line) -> dual_line: 0 mul, 6 add
 template <class T>
-basic_dual_line<T> add(const basic_dual_line<T>& a, const basic_dual_line<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> add(const basic_dual_line<T>& a,
+                                            const basic_dual_line<T>& b) {
   return basic_dual_line<T>(a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2], a.c[3] + b.c[3],
                             a.c[4] + b.c[4], a.c[5] + b.c[5]);
 }
 
 // sub(dual_line, dual_line) -> dual_line: 0 mul, 6 add
 template <class T>
-basic_dual_line<T> sub(const basic_dual_line<T>& a, const basic_dual_line<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> sub(const basic_dual_line<T>& a,
+                                            const basic_dual_line<T>& b) {
   return basic_dual_line<T>(a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2], a.c[3] - b.c[3],
                             a.c[4] - b.c[4], a.c[5] - b.c[5]);
 }
 
 // neg(line) -> line: 0 mul, 0 add
 template <class T>
-basic_line<T> neg(const basic_line<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_line<T> neg(const basic_line<T>& a) {
   return basic_line<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3], -a.c[4], -a.c[5]);
 }
 
 // reverse(line) -> line: 0 mul, 0 add
 template <class T>
-basic_line<T> reverse(const basic_line<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_line<T> reverse(const basic_line<T>& a) {
   return basic_line<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3], -a.c[4], -a.c[5]);
 }
 
 // involute(line) -> line: 0 mul, 0 add
 template <class T>
-basic_line<T> involute(const basic_line<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_line<T> involute(const basic_line<T>& a) {
   return basic_line<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3], -a.c[4], -a.c[5]);
 }
 
 // conjugate(line) -> line: 0 mul, 0 add
 template <class T>
-basic_line<T> conjugate(const basic_line<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_line<T> conjugate(const basic_line<T>& a) {
   return basic_line<T>(a.c[0], a.c[1], a.c[2], a.c[3], a.c[4], a.c[5]);
 }
 
 // norm2(line) -> scalar: 3 mul, 2 add
 template <class T>
-T norm2(const basic_line<T>& a) {
+GAPHYS_ALWAYS_INLINE T norm2(const basic_line<T>& a) {
   return -a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5];
 }
 
 // inverse(line) -> line: 9 mul, 2 add, 1 div
 template <class T>
-basic_line<T> inverse(const basic_line<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_line<T> inverse(const basic_line<T>& a) {
   const T inv = gaphys::ga::inverse_norm2<T>(-a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5]);
   return basic_line<T>((-a.c[0]) * inv, (-a.c[1]) * inv, (-a.c[2]) * inv, (-a.c[3]) * inv,
                        (-a.c[4]) * inv, (-a.c[5]) * inv);
@@ -620,74 +632,74 @@ basic_line<T> inverse(const basic_line<T>& a) {
 
 // dual(line) -> dual_line: 0 mul, 0 add
 template <class T>
-basic_dual_line<T> dual(const basic_line<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> dual(const basic_line<T>& a) {
   return basic_dual_line<T>(-a.c[5], a.c[4], -a.c[3], -a.c[2], a.c[1], -a.c[0]);
 }
 
 // undual(line) -> dual_line: 0 mul, 0 add
 template <class T>
-basic_dual_line<T> undual(const basic_line<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> undual(const basic_line<T>& a) {
   return basic_dual_line<T>(a.c[5], -a.c[4], a.c[3], a.c[2], -a.c[1], a.c[0]);
 }
 
 // smul(scalar, line) -> line: 6 mul, 0 add
 template <class T>
-basic_line<T> smul(T s, const basic_line<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_line<T> smul(T s, const basic_line<T>& a) {
   return basic_line<T>(a.c[0] * s, a.c[1] * s, a.c[2] * s, a.c[3] * s, a.c[4] * s, a.c[5] * s);
 }
 
 // add(line, line) -> line: 0 mul, 6 add
 template <class T>
-basic_line<T> add(const basic_line<T>& a, const basic_line<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_line<T> add(const basic_line<T>& a, const basic_line<T>& b) {
   return basic_line<T>(a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2], a.c[3] + b.c[3],
                        a.c[4] + b.c[4], a.c[5] + b.c[5]);
 }
 
 // sub(line, line) -> line: 0 mul, 6 add
 template <class T>
-basic_line<T> sub(const basic_line<T>& a, const basic_line<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_line<T> sub(const basic_line<T>& a, const basic_line<T>& b) {
   return basic_line<T>(a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2], a.c[3] - b.c[3],
                        a.c[4] - b.c[4], a.c[5] - b.c[5]);
 }
 
 // neg(circle) -> circle: 0 mul, 0 add
 template <class T>
-basic_circle<T> neg(const basic_circle<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_circle<T> neg(const basic_circle<T>& a) {
   return basic_circle<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3], -a.c[4], -a.c[5], -a.c[6], -a.c[7],
                          -a.c[8], -a.c[9]);
 }
 
 // reverse(circle) -> circle: 0 mul, 0 add
 template <class T>
-basic_circle<T> reverse(const basic_circle<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_circle<T> reverse(const basic_circle<T>& a) {
   return basic_circle<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3], -a.c[4], -a.c[5], -a.c[6], -a.c[7],
                          -a.c[8], -a.c[9]);
 }
 
 // involute(circle) -> circle: 0 mul, 0 add
 template <class T>
-basic_circle<T> involute(const basic_circle<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_circle<T> involute(const basic_circle<T>& a) {
   return basic_circle<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3], -a.c[4], -a.c[5], -a.c[6], -a.c[7],
                          -a.c[8], -a.c[9]);
 }
 
 // conjugate(circle) -> circle: 0 mul, 0 add
 template <class T>
-basic_circle<T> conjugate(const basic_circle<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_circle<T> conjugate(const basic_circle<T>& a) {
   return basic_circle<T>(a.c[0], a.c[1], a.c[2], a.c[3], a.c[4], a.c[5], a.c[6], a.c[7], a.c[8],
                          a.c[9]);
 }
 
 // norm2(circle) -> scalar: 10 mul, 6 add
 template <class T>
-T norm2(const basic_circle<T>& a) {
+GAPHYS_ALWAYS_INLINE T norm2(const basic_circle<T>& a) {
   return -T(2) * a.c[0] * a.c[7] - T(2) * a.c[1] * a.c[8] - T(2) * a.c[2] * a.c[9] -
          a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5] + a.c[6] * a.c[6];
 }
 
 // inverse(circle) -> circle: 20 mul, 6 add, 1 div
 template <class T>
-basic_circle<T> inverse(const basic_circle<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_circle<T> inverse(const basic_circle<T>& a) {
   const T inv = gaphys::ga::inverse_norm2<T>(-T(2) * a.c[0] * a.c[7] - T(2) * a.c[1] * a.c[8] -
                                              T(2) * a.c[2] * a.c[9] - a.c[3] * a.c[3] -
                                              a.c[4] * a.c[4] - a.c[5] * a.c[5] + a.c[6] * a.c[6]);
@@ -698,28 +710,28 @@ basic_circle<T> inverse(const basic_circle<T>& a) {
 
 // dual(circle) -> point_pair: 0 mul, 0 add
 template <class T>
-basic_point_pair<T> dual(const basic_circle<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> dual(const basic_circle<T>& a) {
   return basic_point_pair<T>(-a.c[2], a.c[1], -a.c[0], -a.c[6], -a.c[5], a.c[4], -a.c[9], -a.c[3],
                              a.c[8], -a.c[7]);
 }
 
 // undual(circle) -> point_pair: 0 mul, 0 add
 template <class T>
-basic_point_pair<T> undual(const basic_circle<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> undual(const basic_circle<T>& a) {
   return basic_point_pair<T>(a.c[2], -a.c[1], a.c[0], a.c[6], a.c[5], -a.c[4], a.c[9], a.c[3],
                              -a.c[8], a.c[7]);
 }
 
 // smul(scalar, circle) -> circle: 10 mul, 0 add
 template <class T>
-basic_circle<T> smul(T s, const basic_circle<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_circle<T> smul(T s, const basic_circle<T>& a) {
   return basic_circle<T>(a.c[0] * s, a.c[1] * s, a.c[2] * s, a.c[3] * s, a.c[4] * s, a.c[5] * s,
                          a.c[6] * s, a.c[7] * s, a.c[8] * s, a.c[9] * s);
 }
 
 // add(circle, circle) -> circle: 0 mul, 10 add
 template <class T>
-basic_circle<T> add(const basic_circle<T>& a, const basic_circle<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_circle<T> add(const basic_circle<T>& a, const basic_circle<T>& b) {
   return basic_circle<T>(a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2], a.c[3] + b.c[3],
                          a.c[4] + b.c[4], a.c[5] + b.c[5], a.c[6] + b.c[6], a.c[7] + b.c[7],
                          a.c[8] + b.c[8], a.c[9] + b.c[9]);
@@ -727,7 +739,7 @@ basic_circle<T> add(const basic_circle<T>& a, const basic_circle<T>& b) {
 
 // sub(circle, circle) -> circle: 0 mul, 10 add
 template <class T>
-basic_circle<T> sub(const basic_circle<T>& a, const basic_circle<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_circle<T> sub(const basic_circle<T>& a, const basic_circle<T>& b) {
   return basic_circle<T>(a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2], a.c[3] - b.c[3],
                          a.c[4] - b.c[4], a.c[5] - b.c[5], a.c[6] - b.c[6], a.c[7] - b.c[7],
                          a.c[8] - b.c[8], a.c[9] - b.c[9]);
@@ -735,37 +747,37 @@ basic_circle<T> sub(const basic_circle<T>& a, const basic_circle<T>& b) {
 
 // neg(sphere) -> sphere: 0 mul, 0 add
 template <class T>
-basic_sphere<T> neg(const basic_sphere<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_sphere<T> neg(const basic_sphere<T>& a) {
   return basic_sphere<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3], -a.c[4]);
 }
 
 // reverse(sphere) -> sphere: 0 mul, 0 add
 template <class T>
-basic_sphere<T> reverse(const basic_sphere<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_sphere<T> reverse(const basic_sphere<T>& a) {
   return basic_sphere<T>(a.c[0], a.c[1], a.c[2], a.c[3], a.c[4]);
 }
 
 // involute(sphere) -> sphere: 0 mul, 0 add
 template <class T>
-basic_sphere<T> involute(const basic_sphere<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_sphere<T> involute(const basic_sphere<T>& a) {
   return basic_sphere<T>(a.c[0], a.c[1], a.c[2], a.c[3], a.c[4]);
 }
 
 // conjugate(sphere) -> sphere: 0 mul, 0 add
 template <class T>
-basic_sphere<T> conjugate(const basic_sphere<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_sphere<T> conjugate(const basic_sphere<T>& a) {
   return basic_sphere<T>(a.c[0], a.c[1], a.c[2], a.c[3], a.c[4]);
 }
 
 // norm2(sphere) -> scalar: 5 mul, 3 add
 template <class T>
-T norm2(const basic_sphere<T>& a) {
+GAPHYS_ALWAYS_INLINE T norm2(const basic_sphere<T>& a) {
   return T(2) * a.c[0] * a.c[4] - a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3];
 }
 
 // inverse(sphere) -> sphere: 10 mul, 3 add, 1 div
 template <class T>
-basic_sphere<T> inverse(const basic_sphere<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_sphere<T> inverse(const basic_sphere<T>& a) {
   const T inv = gaphys::ga::inverse_norm2<T>(T(2) * a.c[0] * a.c[4] - a.c[1] * a.c[1] -
                                              a.c[2] * a.c[2] - a.c[3] * a.c[3]);
   return basic_sphere<T>((a.c[0]) * inv, (a.c[1]) * inv, (a.c[2]) * inv, (a.c[3]) * inv,
@@ -774,203 +786,205 @@ basic_sphere<T> inverse(const basic_sphere<T>& a) {
 
 // dual(sphere) -> dual_sphere: 0 mul, 0 add
 template <class T>
-basic_dual_sphere<T> dual(const basic_sphere<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> dual(const basic_sphere<T>& a) {
   return basic_dual_sphere<T>(-a.c[0], -a.c[3], a.c[2], -a.c[1], -a.c[4]);
 }
 
 // undual(sphere) -> dual_sphere: 0 mul, 0 add
 template <class T>
-basic_dual_sphere<T> undual(const basic_sphere<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> undual(const basic_sphere<T>& a) {
   return basic_dual_sphere<T>(a.c[0], a.c[3], -a.c[2], a.c[1], a.c[4]);
 }
 
 // smul(scalar, sphere) -> sphere: 5 mul, 0 add
 template <class T>
-basic_sphere<T> smul(T s, const basic_sphere<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_sphere<T> smul(T s, const basic_sphere<T>& a) {
   return basic_sphere<T>(a.c[0] * s, a.c[1] * s, a.c[2] * s, a.c[3] * s, a.c[4] * s);
 }
 
 // add(sphere, sphere) -> sphere: 0 mul, 5 add
 template <class T>
-basic_sphere<T> add(const basic_sphere<T>& a, const basic_sphere<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_sphere<T> add(const basic_sphere<T>& a, const basic_sphere<T>& b) {
   return basic_sphere<T>(a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2], a.c[3] + b.c[3],
                          a.c[4] + b.c[4]);
 }
 
 // sub(sphere, sphere) -> sphere: 0 mul, 5 add
 template <class T>
-basic_sphere<T> sub(const basic_sphere<T>& a, const basic_sphere<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_sphere<T> sub(const basic_sphere<T>& a, const basic_sphere<T>& b) {
   return basic_sphere<T>(a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2], a.c[3] - b.c[3],
                          a.c[4] - b.c[4]);
 }
 
 // neg(plane) -> plane: 0 mul, 0 add
 template <class T>
-basic_plane<T> neg(const basic_plane<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_plane<T> neg(const basic_plane<T>& a) {
   return basic_plane<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3]);
 }
 
 // reverse(plane) -> plane: 0 mul, 0 add
 template <class T>
-basic_plane<T> reverse(const basic_plane<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_plane<T> reverse(const basic_plane<T>& a) {
   return basic_plane<T>(a.c[0], a.c[1], a.c[2], a.c[3]);
 }
 
 // involute(plane) -> plane: 0 mul, 0 add
 template <class T>
-basic_plane<T> involute(const basic_plane<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_plane<T> involute(const basic_plane<T>& a) {
   return basic_plane<T>(a.c[0], a.c[1], a.c[2], a.c[3]);
 }
 
 // conjugate(plane) -> plane: 0 mul, 0 add
 template <class T>
-basic_plane<T> conjugate(const basic_plane<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_plane<T> conjugate(const basic_plane<T>& a) {
   return basic_plane<T>(a.c[0], a.c[1], a.c[2], a.c[3]);
 }
 
 // norm2(plane) -> scalar: 3 mul, 2 add
 template <class T>
-T norm2(const basic_plane<T>& a) {
+GAPHYS_ALWAYS_INLINE T norm2(const basic_plane<T>& a) {
   return -a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3];
 }
 
 // inverse(plane) -> plane: 7 mul, 2 add, 1 div
 template <class T>
-basic_plane<T> inverse(const basic_plane<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_plane<T> inverse(const basic_plane<T>& a) {
   const T inv = gaphys::ga::inverse_norm2<T>(-a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
   return basic_plane<T>((a.c[0]) * inv, (a.c[1]) * inv, (a.c[2]) * inv, (a.c[3]) * inv);
 }
 
 // dual(plane) -> dual_plane: 0 mul, 0 add
 template <class T>
-basic_dual_plane<T> dual(const basic_plane<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> dual(const basic_plane<T>& a) {
   return basic_dual_plane<T>(-a.c[3], a.c[2], -a.c[1], -a.c[0]);
 }
 
 // undual(plane) -> dual_plane: 0 mul, 0 add
 template <class T>
-basic_dual_plane<T> undual(const basic_plane<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> undual(const basic_plane<T>& a) {
   return basic_dual_plane<T>(a.c[3], -a.c[2], a.c[1], a.c[0]);
 }
 
 // smul(scalar, plane) -> plane: 4 mul, 0 add
 template <class T>
-basic_plane<T> smul(T s, const basic_plane<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_plane<T> smul(T s, const basic_plane<T>& a) {
   return basic_plane<T>(a.c[0] * s, a.c[1] * s, a.c[2] * s, a.c[3] * s);
 }
 
 // add(plane, plane) -> plane: 0 mul, 4 add
 template <class T>
-basic_plane<T> add(const basic_plane<T>& a, const basic_plane<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_plane<T> add(const basic_plane<T>& a, const basic_plane<T>& b) {
   return basic_plane<T>(a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2], a.c[3] + b.c[3]);
 }
 
 // sub(plane, plane) -> plane: 0 mul, 4 add
 template <class T>
-basic_plane<T> sub(const basic_plane<T>& a, const basic_plane<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_plane<T> sub(const basic_plane<T>& a, const basic_plane<T>& b) {
   return basic_plane<T>(a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2], a.c[3] - b.c[3]);
 }
 
 // neg(pseudoscalar) -> pseudoscalar: 0 mul, 0 add
 template <class T>
-basic_pseudoscalar<T> neg(const basic_pseudoscalar<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> neg(const basic_pseudoscalar<T>& a) {
   return basic_pseudoscalar<T>(-a.c[0]);
 }
 
 // reverse(pseudoscalar) -> pseudoscalar: 0 mul, 0 add
 template <class T>
-basic_pseudoscalar<T> reverse(const basic_pseudoscalar<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> reverse(const basic_pseudoscalar<T>& a) {
   return basic_pseudoscalar<T>(a.c[0]);
 }
 
 // involute(pseudoscalar) -> pseudoscalar: 0 mul, 0 add
 template <class T>
-basic_pseudoscalar<T> involute(const basic_pseudoscalar<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> involute(const basic_pseudoscalar<T>& a) {
   return basic_pseudoscalar<T>(-a.c[0]);
 }
 
 // conjugate(pseudoscalar) -> pseudoscalar: 0 mul, 0 add
 template <class T>
-basic_pseudoscalar<T> conjugate(const basic_pseudoscalar<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> conjugate(const basic_pseudoscalar<T>& a) {
   return basic_pseudoscalar<T>(-a.c[0]);
 }
 
 // norm2(pseudoscalar) -> scalar: 1 mul, 0 add
 template <class T>
-T norm2(const basic_pseudoscalar<T>& a) {
+GAPHYS_ALWAYS_INLINE T norm2(const basic_pseudoscalar<T>& a) {
   return -a.c[0] * a.c[0];
 }
 
 // inverse(pseudoscalar) -> pseudoscalar: 2 mul, 0 add, 1 div
 template <class T>
-basic_pseudoscalar<T> inverse(const basic_pseudoscalar<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> inverse(const basic_pseudoscalar<T>& a) {
   const T inv = gaphys::ga::inverse_norm2<T>(-a.c[0] * a.c[0]);
   return basic_pseudoscalar<T>((a.c[0]) * inv);
 }
 
 // dual(pseudoscalar) -> scalar: 0 mul, 0 add
 template <class T>
-T dual(const basic_pseudoscalar<T>& a) {
+GAPHYS_ALWAYS_INLINE T dual(const basic_pseudoscalar<T>& a) {
   return a.c[0];
 }
 
 // undual(pseudoscalar) -> scalar: 0 mul, 0 add
 template <class T>
-T undual(const basic_pseudoscalar<T>& a) {
+GAPHYS_ALWAYS_INLINE T undual(const basic_pseudoscalar<T>& a) {
   return -a.c[0];
 }
 
 // smul(scalar, pseudoscalar) -> pseudoscalar: 1 mul, 0 add
 template <class T>
-basic_pseudoscalar<T> smul(T s, const basic_pseudoscalar<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> smul(T s, const basic_pseudoscalar<T>& a) {
   return basic_pseudoscalar<T>(a.c[0] * s);
 }
 
 // add(pseudoscalar, pseudoscalar) -> pseudoscalar: 0 mul, 1 add
 template <class T>
-basic_pseudoscalar<T> add(const basic_pseudoscalar<T>& a, const basic_pseudoscalar<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> add(const basic_pseudoscalar<T>& a,
+                                               const basic_pseudoscalar<T>& b) {
   return basic_pseudoscalar<T>(a.c[0] + b.c[0]);
 }
 
 // sub(pseudoscalar, pseudoscalar) -> pseudoscalar: 0 mul, 1 add
 template <class T>
-basic_pseudoscalar<T> sub(const basic_pseudoscalar<T>& a, const basic_pseudoscalar<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> sub(const basic_pseudoscalar<T>& a,
+                                               const basic_pseudoscalar<T>& b) {
   return basic_pseudoscalar<T>(a.c[0] - b.c[0]);
 }
 
 // neg(rotor) -> rotor: 0 mul, 0 add
 template <class T>
-basic_rotor<T> neg(const basic_rotor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> neg(const basic_rotor<T>& a) {
   return basic_rotor<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3]);
 }
 
 // reverse(rotor) -> rotor: 0 mul, 0 add
 template <class T>
-basic_rotor<T> reverse(const basic_rotor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> reverse(const basic_rotor<T>& a) {
   return basic_rotor<T>(a.c[0], -a.c[1], -a.c[2], -a.c[3]);
 }
 
 // involute(rotor) -> rotor: 0 mul, 0 add
 template <class T>
-basic_rotor<T> involute(const basic_rotor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> involute(const basic_rotor<T>& a) {
   return basic_rotor<T>(a.c[0], a.c[1], a.c[2], a.c[3]);
 }
 
 // conjugate(rotor) -> rotor: 0 mul, 0 add
 template <class T>
-basic_rotor<T> conjugate(const basic_rotor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> conjugate(const basic_rotor<T>& a) {
   return basic_rotor<T>(a.c[0], -a.c[1], -a.c[2], -a.c[3]);
 }
 
 // norm2(rotor) -> scalar: 4 mul, 3 add
 template <class T>
-T norm2(const basic_rotor<T>& a) {
+GAPHYS_ALWAYS_INLINE T norm2(const basic_rotor<T>& a) {
   return a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3];
 }
 
 // inverse(rotor) -> rotor: 8 mul, 3 add, 1 div
 template <class T>
-basic_rotor<T> inverse(const basic_rotor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> inverse(const basic_rotor<T>& a) {
   const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] +
                                              a.c[3] * a.c[3]);
   return basic_rotor<T>((a.c[0]) * inv, (-a.c[1]) * inv, (-a.c[2]) * inv, (-a.c[3]) * inv);
@@ -978,7 +992,7 @@ basic_rotor<T> inverse(const basic_rotor<T>& a) {
 
 // dual(rotor) -> mv: 0 mul, 0 add
 template <class T>
-basic_mv<T> dual(const basic_rotor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_mv<T> dual(const basic_rotor<T>& a) {
   basic_mv<T> r;
   r.c[18] = a.c[3];
   r.c[20] = -a.c[2];
@@ -990,7 +1004,7 @@ basic_mv<T> dual(const basic_rotor<T>& a) {
 
 // undual(rotor) -> mv: 0 mul, 0 add
 template <class T>
-basic_mv<T> undual(const basic_rotor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_mv<T> undual(const basic_rotor<T>& a) {
   basic_mv<T> r;
   r.c[18] = -a.c[3];
   r.c[20] = a.c[2];
@@ -1002,62 +1016,62 @@ basic_mv<T> undual(const basic_rotor<T>& a) {
 
 // smul(scalar, rotor) -> rotor: 4 mul, 0 add
 template <class T>
-basic_rotor<T> smul(T s, const basic_rotor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> smul(T s, const basic_rotor<T>& a) {
   return basic_rotor<T>(a.c[0] * s, a.c[1] * s, a.c[2] * s, a.c[3] * s);
 }
 
 // add(rotor, rotor) -> rotor: 0 mul, 4 add
 template <class T>
-basic_rotor<T> add(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> add(const basic_rotor<T>& a, const basic_rotor<T>& b) {
   return basic_rotor<T>(a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2], a.c[3] + b.c[3]);
 }
 
 // sub(rotor, rotor) -> rotor: 0 mul, 4 add
 template <class T>
-basic_rotor<T> sub(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> sub(const basic_rotor<T>& a, const basic_rotor<T>& b) {
   return basic_rotor<T>(a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2], a.c[3] - b.c[3]);
 }
 
 // neg(translator) -> translator: 0 mul, 0 add
 template <class T>
-basic_translator<T> neg(const basic_translator<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_translator<T> neg(const basic_translator<T>& a) {
   return basic_translator<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3]);
 }
 
 // reverse(translator) -> translator: 0 mul, 0 add
 template <class T>
-basic_translator<T> reverse(const basic_translator<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_translator<T> reverse(const basic_translator<T>& a) {
   return basic_translator<T>(a.c[0], -a.c[1], -a.c[2], -a.c[3]);
 }
 
 // involute(translator) -> translator: 0 mul, 0 add
 template <class T>
-basic_translator<T> involute(const basic_translator<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_translator<T> involute(const basic_translator<T>& a) {
   return basic_translator<T>(a.c[0], a.c[1], a.c[2], a.c[3]);
 }
 
 // conjugate(translator) -> translator: 0 mul, 0 add
 template <class T>
-basic_translator<T> conjugate(const basic_translator<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_translator<T> conjugate(const basic_translator<T>& a) {
   return basic_translator<T>(a.c[0], -a.c[1], -a.c[2], -a.c[3]);
 }
 
 // norm2(translator) -> scalar: 1 mul, 0 add
 template <class T>
-T norm2(const basic_translator<T>& a) {
+GAPHYS_ALWAYS_INLINE T norm2(const basic_translator<T>& a) {
   return a.c[0] * a.c[0];
 }
 
 // inverse(translator) -> translator: 5 mul, 0 add, 1 div
 template <class T>
-basic_translator<T> inverse(const basic_translator<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_translator<T> inverse(const basic_translator<T>& a) {
   const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0]);
   return basic_translator<T>((a.c[0]) * inv, (-a.c[1]) * inv, (-a.c[2]) * inv, (-a.c[3]) * inv);
 }
 
 // dual(translator) -> mv: 0 mul, 0 add
 template <class T>
-basic_mv<T> dual(const basic_translator<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_mv<T> dual(const basic_translator<T>& a) {
   basic_mv<T> r;
   r.c[23] = a.c[3];
   r.c[24] = -a.c[2];
@@ -1069,7 +1083,7 @@ basic_mv<T> dual(const basic_translator<T>& a) {
 
 // undual(translator) -> mv: 0 mul, 0 add
 template <class T>
-basic_mv<T> undual(const basic_translator<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_mv<T> undual(const basic_translator<T>& a) {
   basic_mv<T> r;
   r.c[23] = -a.c[3];
   r.c[24] = a.c[2];
@@ -1081,55 +1095,57 @@ basic_mv<T> undual(const basic_translator<T>& a) {
 
 // smul(scalar, translator) -> translator: 4 mul, 0 add
 template <class T>
-basic_translator<T> smul(T s, const basic_translator<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_translator<T> smul(T s, const basic_translator<T>& a) {
   return basic_translator<T>(a.c[0] * s, a.c[1] * s, a.c[2] * s, a.c[3] * s);
 }
 
 // add(translator, translator) -> translator: 0 mul, 4 add
 template <class T>
-basic_translator<T> add(const basic_translator<T>& a, const basic_translator<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_translator<T> add(const basic_translator<T>& a,
+                                             const basic_translator<T>& b) {
   return basic_translator<T>(a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2], a.c[3] + b.c[3]);
 }
 
 // sub(translator, translator) -> translator: 0 mul, 4 add
 template <class T>
-basic_translator<T> sub(const basic_translator<T>& a, const basic_translator<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_translator<T> sub(const basic_translator<T>& a,
+                                             const basic_translator<T>& b) {
   return basic_translator<T>(a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2], a.c[3] - b.c[3]);
 }
 
 // neg(motor) -> motor: 0 mul, 0 add
 template <class T>
-basic_motor<T> neg(const basic_motor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_motor<T> neg(const basic_motor<T>& a) {
   return basic_motor<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3], -a.c[4], -a.c[5], -a.c[6], -a.c[7]);
 }
 
 // reverse(motor) -> motor: 0 mul, 0 add
 template <class T>
-basic_motor<T> reverse(const basic_motor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_motor<T> reverse(const basic_motor<T>& a) {
   return basic_motor<T>(a.c[0], -a.c[1], -a.c[2], -a.c[3], -a.c[4], -a.c[5], -a.c[6], a.c[7]);
 }
 
 // involute(motor) -> motor: 0 mul, 0 add
 template <class T>
-basic_motor<T> involute(const basic_motor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_motor<T> involute(const basic_motor<T>& a) {
   return basic_motor<T>(a.c[0], a.c[1], a.c[2], a.c[3], a.c[4], a.c[5], a.c[6], a.c[7]);
 }
 
 // conjugate(motor) -> motor: 0 mul, 0 add
 template <class T>
-basic_motor<T> conjugate(const basic_motor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_motor<T> conjugate(const basic_motor<T>& a) {
   return basic_motor<T>(a.c[0], -a.c[1], -a.c[2], -a.c[3], -a.c[4], -a.c[5], -a.c[6], a.c[7]);
 }
 
 // norm2(motor) -> scalar: 4 mul, 3 add
 template <class T>
-T norm2(const basic_motor<T>& a) {
+GAPHYS_ALWAYS_INLINE T norm2(const basic_motor<T>& a) {
   return a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3];
 }
 
 // inverse(motor) -> motor: 12 mul, 3 add, 1 div
 template <class T>
-basic_motor<T> inverse(const basic_motor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_motor<T> inverse(const basic_motor<T>& a) {
   const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] +
                                              a.c[3] * a.c[3]);
   return basic_motor<T>((a.c[0]) * inv, (-a.c[1]) * inv, (-a.c[2]) * inv, (-a.c[3]) * inv,
@@ -1138,7 +1154,7 @@ basic_motor<T> inverse(const basic_motor<T>& a) {
 
 // dual(motor) -> mv: 0 mul, 0 add
 template <class T>
-basic_mv<T> dual(const basic_motor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_mv<T> dual(const basic_motor<T>& a) {
   basic_mv<T> r;
   r.c[5] = -a.c[7];
   r.c[18] = a.c[3];
@@ -1154,7 +1170,7 @@ basic_mv<T> dual(const basic_motor<T>& a) {
 
 // undual(motor) -> mv: 0 mul, 0 add
 template <class T>
-basic_mv<T> undual(const basic_motor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_mv<T> undual(const basic_motor<T>& a) {
   basic_mv<T> r;
   r.c[5] = a.c[7];
   r.c[18] = -a.c[3];
@@ -1170,28 +1186,29 @@ basic_mv<T> undual(const basic_motor<T>& a) {
 
 // smul(scalar, motor) -> motor: 8 mul, 0 add
 template <class T>
-basic_motor<T> smul(T s, const basic_motor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_motor<T> smul(T s, const basic_motor<T>& a) {
   return basic_motor<T>(a.c[0] * s, a.c[1] * s, a.c[2] * s, a.c[3] * s, a.c[4] * s, a.c[5] * s,
                         a.c[6] * s, a.c[7] * s);
 }
 
 // add(motor, motor) -> motor: 0 mul, 8 add
 template <class T>
-basic_motor<T> add(const basic_motor<T>& a, const basic_motor<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_motor<T> add(const basic_motor<T>& a, const basic_motor<T>& b) {
   return basic_motor<T>(a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2], a.c[3] + b.c[3],
                         a.c[4] + b.c[4], a.c[5] + b.c[5], a.c[6] + b.c[6], a.c[7] + b.c[7]);
 }
 
 // sub(motor, motor) -> motor: 0 mul, 8 add
 template <class T>
-basic_motor<T> sub(const basic_motor<T>& a, const basic_motor<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_motor<T> sub(const basic_motor<T>& a, const basic_motor<T>& b) {
   return basic_motor<T>(a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2], a.c[3] - b.c[3],
                         a.c[4] - b.c[4], a.c[5] - b.c[5], a.c[6] - b.c[6], a.c[7] - b.c[7]);
 }
 
 // op(normalized_point, normalized_point) -> point_pair: 12 mul, 10 add
 template <class T>
-basic_point_pair<T> op(const basic_normalized_point<T>& a, const basic_normalized_point<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> op(const basic_normalized_point<T>& a,
+                                            const basic_normalized_point<T>& b) {
   return basic_point_pair<T>(-a.c[0] + b.c[0], -a.c[1] + b.c[1], -a.c[2] + b.c[2], -a.c[3] + b.c[3],
                              a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
                              a.c[0] * b.c[3] - a.c[3] * b.c[0], a.c[1] * b.c[2] - a.c[2] * b.c[1],
@@ -1200,7 +1217,7 @@ basic_point_pair<T> op(const basic_normalized_point<T>& a, const basic_normalize
 
 // op(line, normalized_point) -> plane: 9 mul, 8 add
 template <class T>
-basic_plane<T> op(const basic_line<T>& a, const basic_normalized_point<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_line<T>& a, const basic_normalized_point<T>& b) {
   return basic_plane<T>(-a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0],
                         -a.c[0] - a.c[3] * b.c[1] + a.c[4] * b.c[0],
                         -a.c[1] - a.c[3] * b.c[2] + a.c[5] * b.c[0],
@@ -1209,7 +1226,8 @@ basic_plane<T> op(const basic_line<T>& a, const basic_normalized_point<T>& b) {
 
 // op(flat_point, normalized_point) -> line: 9 mul, 6 add
 template <class T>
-basic_line<T> op(const basic_flat_point<T>& a, const basic_normalized_point<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_line<T> op(const basic_flat_point<T>& a,
+                                      const basic_normalized_point<T>& b) {
   return basic_line<T>(-a.c[0] * b.c[1] + a.c[1] * b.c[0], -a.c[0] * b.c[2] + a.c[2] * b.c[0],
                        -a.c[1] * b.c[2] + a.c[2] * b.c[1], a.c[0] - a.c[3] * b.c[0],
                        a.c[1] - a.c[3] * b.c[1], a.c[2] - a.c[3] * b.c[2]);
@@ -1217,7 +1235,8 @@ basic_line<T> op(const basic_flat_point<T>& a, const basic_normalized_point<T>& 
 
 // op(point_pair, normalized_point) -> circle: 24 mul, 20 add
 template <class T>
-basic_circle<T> op(const basic_point_pair<T>& a, const basic_normalized_point<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_point_pair<T>& a,
+                                        const basic_normalized_point<T>& b) {
   return basic_circle<T>(
       a.c[4] + a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[5] + a.c[0] * b.c[2] - a.c[2] * b.c[0],
       a.c[7] + a.c[1] * b.c[2] - a.c[2] * b.c[1], a.c[6] + a.c[0] * b.c[3] - a.c[3] * b.c[0],
@@ -1230,7 +1249,8 @@ basic_circle<T> op(const basic_point_pair<T>& a, const basic_normalized_point<T>
 
 // op(circle, normalized_point) -> sphere: 16 mul, 15 add
 template <class T>
-basic_sphere<T> op(const basic_circle<T>& a, const basic_normalized_point<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_sphere<T> op(const basic_circle<T>& a,
+                                        const basic_normalized_point<T>& b) {
   return basic_sphere<T>(-a.c[6] + a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
                          -a.c[7] + a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0],
                          -a.c[8] + a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0],
@@ -1240,7 +1260,8 @@ basic_sphere<T> op(const basic_circle<T>& a, const basic_normalized_point<T>& b)
 
 // op(normalized_point, dual_plane) -> point_pair: 12 mul, 6 add
 template <class T>
-basic_point_pair<T> op(const basic_normalized_point<T>& a, const basic_dual_plane<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> op(const basic_normalized_point<T>& a,
+                                            const basic_dual_plane<T>& b) {
   return basic_point_pair<T>(b.c[0], b.c[1], b.c[2], b.c[3], a.c[0] * b.c[1] - a.c[1] * b.c[0],
                              a.c[0] * b.c[2] - a.c[2] * b.c[0], a.c[0] * b.c[3] - a.c[3] * b.c[0],
                              a.c[1] * b.c[2] - a.c[2] * b.c[1], a.c[1] * b.c[3] - a.c[3] * b.c[1],
@@ -1249,7 +1270,7 @@ basic_point_pair<T> op(const basic_normalized_point<T>& a, const basic_dual_plan
 
 // gp(dual_sphere, dual_sphere) -> mv: 25 mul, 14 add
 template <class T>
-basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
   basic_mv<T> r;
   r.c[0] = -a.c[0] * b.c[4] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] - a.c[4] * b.c[0];
   r.c[6] = a.c[0] * b.c[1] - a.c[1] * b.c[0];
@@ -1268,31 +1289,32 @@ basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
 
 // scp(normalized_point, normalized_point) -> scalar: 3 mul, 4 add
 template <class T>
-T scp(const basic_normalized_point<T>& a, const basic_normalized_point<T>& b) {
+GAPHYS_ALWAYS_INLINE T scp(const basic_normalized_point<T>& a, const basic_normalized_point<T>& b) {
   return -a.c[3] - b.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
 }
 
 // scp(dual_sphere, dual_sphere) -> scalar: 5 mul, 4 add
 template <class T>
-T scp(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
+GAPHYS_ALWAYS_INLINE T scp(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
   return -a.c[0] * b.c[4] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] - a.c[4] * b.c[0];
 }
 
 // scp(normalized_point, dual_sphere) -> scalar: 4 mul, 4 add
 template <class T>
-T scp(const basic_normalized_point<T>& a, const basic_dual_sphere<T>& b) {
+GAPHYS_ALWAYS_INLINE T scp(const basic_normalized_point<T>& a, const basic_dual_sphere<T>& b) {
   return -b.c[4] + a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] - a.c[3] * b.c[0];
 }
 
 // lc(normalized_point, dual_sphere) -> scalar: 4 mul, 4 add
 template <class T>
-T lc(const basic_normalized_point<T>& a, const basic_dual_sphere<T>& b) {
+GAPHYS_ALWAYS_INLINE T lc(const basic_normalized_point<T>& a, const basic_dual_sphere<T>& b) {
   return -b.c[4] + a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] - a.c[3] * b.c[0];
 }
 
 // op(dual_sphere, dual_sphere) -> point_pair: 20 mul, 10 add
 template <class T>
-basic_point_pair<T> op(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> op(const basic_dual_sphere<T>& a,
+                                            const basic_dual_sphere<T>& b) {
   return basic_point_pair<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
                              a.c[0] * b.c[3] - a.c[3] * b.c[0], a.c[0] * b.c[4] - a.c[4] * b.c[0],
                              a.c[1] * b.c[2] - a.c[2] * b.c[1], a.c[1] * b.c[3] - a.c[3] * b.c[1],
@@ -1302,7 +1324,8 @@ basic_point_pair<T> op(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>
 
 // op(dual_sphere, dual_plane) -> point_pair: 16 mul, 6 add
 template <class T>
-basic_point_pair<T> op(const basic_dual_sphere<T>& a, const basic_dual_plane<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> op(const basic_dual_sphere<T>& a,
+                                            const basic_dual_plane<T>& b) {
   return basic_point_pair<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
                              a.c[1] * b.c[1] - a.c[2] * b.c[0], a.c[1] * b.c[2] - a.c[3] * b.c[0],
                              a.c[1] * b.c[3] - a.c[4] * b.c[0], a.c[2] * b.c[2] - a.c[3] * b.c[1],
@@ -1311,7 +1334,7 @@ basic_point_pair<T> op(const basic_dual_sphere<T>& a, const basic_dual_plane<T>&
 
 // meet(sphere, sphere) -> circle: 20 mul, 10 add
 template <class T>
-basic_circle<T> meet(const basic_sphere<T>& a, const basic_sphere<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_circle<T> meet(const basic_sphere<T>& a, const basic_sphere<T>& b) {
   return basic_circle<T>(-a.c[0] * b.c[1] + a.c[1] * b.c[0], -a.c[0] * b.c[2] + a.c[2] * b.c[0],
                          -a.c[0] * b.c[3] + a.c[3] * b.c[0], -a.c[1] * b.c[2] + a.c[2] * b.c[1],
                          -a.c[1] * b.c[3] + a.c[3] * b.c[1], -a.c[2] * b.c[3] + a.c[3] * b.c[2],
@@ -1321,7 +1344,7 @@ basic_circle<T> meet(const basic_sphere<T>& a, const basic_sphere<T>& b) {
 
 // meet(sphere, plane) -> circle: 16 mul, 6 add
 template <class T>
-basic_circle<T> meet(const basic_sphere<T>& a, const basic_plane<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_circle<T> meet(const basic_sphere<T>& a, const basic_plane<T>& b) {
   return basic_circle<T>(-a.c[0] * b.c[1], -a.c[0] * b.c[2], -a.c[0] * b.c[3],
                          -a.c[1] * b.c[2] + a.c[2] * b.c[1], -a.c[1] * b.c[3] + a.c[3] * b.c[1],
                          -a.c[2] * b.c[3] + a.c[3] * b.c[2], -a.c[0] * b.c[0],
@@ -1331,7 +1354,7 @@ basic_circle<T> meet(const basic_sphere<T>& a, const basic_plane<T>& b) {
 
 // gp(circle, circle) -> mv: 100 mul, 84 add
 template <class T>
-basic_mv<T> gp(const basic_circle<T>& a, const basic_circle<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_circle<T>& b) {
   basic_mv<T> r;
   r.c[0] = a.c[0] * b.c[7] + a.c[1] * b.c[8] + a.c[2] * b.c[9] + a.c[3] * b.c[3] + a.c[4] * b.c[4] +
            a.c[5] * b.c[5] - a.c[6] * b.c[6] + a.c[7] * b.c[0] + a.c[8] * b.c[1] + a.c[9] * b.c[2];
@@ -1371,7 +1394,7 @@ basic_mv<T> gp(const basic_circle<T>& a, const basic_circle<T>& b) {
 
 // gp(rotor, rotor) -> rotor: 16 mul, 12 add
 template <class T>
-basic_rotor<T> gp(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> gp(const basic_rotor<T>& a, const basic_rotor<T>& b) {
   return basic_rotor<T>(a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3],
                         a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3] + a.c[3] * b.c[2],
                         a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0] - a.c[3] * b.c[1],
@@ -1380,14 +1403,15 @@ basic_rotor<T> gp(const basic_rotor<T>& a, const basic_rotor<T>& b) {
 
 // gp(translator, translator) -> translator: 7 mul, 3 add
 template <class T>
-basic_translator<T> gp(const basic_translator<T>& a, const basic_translator<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_translator<T> gp(const basic_translator<T>& a,
+                                            const basic_translator<T>& b) {
   return basic_translator<T>(a.c[0] * b.c[0], a.c[0] * b.c[1] + a.c[1] * b.c[0],
                              a.c[0] * b.c[2] + a.c[2] * b.c[0], a.c[0] * b.c[3] + a.c[3] * b.c[0]);
 }
 
 // gp(rotor, translator) -> motor: 16 mul, 8 add
 template <class T>
-basic_motor<T> gp(const basic_rotor<T>& a, const basic_translator<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_rotor<T>& a, const basic_translator<T>& b) {
   return basic_motor<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
                         a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3],
                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[3] * b.c[3],
@@ -1397,7 +1421,7 @@ basic_motor<T> gp(const basic_rotor<T>& a, const basic_translator<T>& b) {
 
 // gp(translator, rotor) -> motor: 16 mul, 8 add
 template <class T>
-basic_motor<T> gp(const basic_translator<T>& a, const basic_rotor<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_translator<T>& a, const basic_rotor<T>& b) {
   return basic_motor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
                         a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2],
                         a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[3] * b.c[3],
@@ -1407,7 +1431,7 @@ basic_motor<T> gp(const basic_translator<T>& a, const basic_rotor<T>& b) {
 
 // gp(motor, motor) -> motor: 48 mul, 40 add
 template <class T>
-basic_motor<T> gp(const basic_motor<T>& a, const basic_motor<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_motor<T>& a, const basic_motor<T>& b) {
   return basic_motor<T>(a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3],
                         a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3] + a.c[3] * b.c[2],
                         a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0] - a.c[3] * b.c[1],
@@ -1424,7 +1448,8 @@ basic_motor<T> gp(const basic_motor<T>& a, const basic_motor<T>& b) {
 
 // apply(motor, normalized_point) -> normalized_point: 72 mul, 59 add, 1 div
 template <class T>
-basic_normalized_point<T> apply(const basic_motor<T>& a, const basic_normalized_point<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_normalized_point<T> apply(const basic_motor<T>& a,
+                                                     const basic_normalized_point<T>& b) {
   const T t0 = a.c[0];
   const T t1 = -a.c[4] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
   const T t2 = -a.c[5] + a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
@@ -1459,7 +1484,8 @@ basic_normalized_point<T> apply(const basic_motor<T>& a, const basic_normalized_
 
 // apply(motor, dual_sphere) -> dual_sphere: 89 mul, 62 add, 1 div
 template <class T>
-basic_dual_sphere<T> apply(const basic_motor<T>& a, const basic_dual_sphere<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_motor<T>& a,
+                                                const basic_dual_sphere<T>& b) {
   const T t0 = a.c[0] * b.c[0];
   const T t1 = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] - a.c[4] * b.c[0];
   const T t2 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[3] * b.c[3] - a.c[5] * b.c[0];
@@ -1495,7 +1521,8 @@ basic_dual_sphere<T> apply(const basic_motor<T>& a, const basic_dual_sphere<T>& 
 
 // apply(rotor, normalized_point) -> normalized_point: 40 mul, 23 add, 1 div
 template <class T>
-basic_normalized_point<T> apply(const basic_rotor<T>& a, const basic_normalized_point<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_normalized_point<T> apply(const basic_rotor<T>& a,
+                                                     const basic_normalized_point<T>& b) {
   const T t1 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
   const T t2 = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
   const T t4 = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
@@ -1513,7 +1540,8 @@ basic_normalized_point<T> apply(const basic_rotor<T>& a, const basic_normalized_
 
 // apply(translator, normalized_point) -> normalized_point: 25 mul, 15 add, 1 div
 template <class T>
-basic_normalized_point<T> apply(const basic_translator<T>& a, const basic_normalized_point<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_normalized_point<T> apply(const basic_translator<T>& a,
+                                                     const basic_normalized_point<T>& b) {
   const T t0 = a.c[0];
   const T t1 = -a.c[1] + a.c[0] * b.c[0];
   const T t2 = -a.c[2] + a.c[0] * b.c[1];
@@ -1533,7 +1561,8 @@ basic_normalized_point<T> apply(const basic_translator<T>& a, const basic_normal
 
 // apply(motor, dual_plane) -> dual_plane: 56 mul, 39 add, 1 div
 template <class T>
-basic_dual_plane<T> apply(const basic_motor<T>& a, const basic_dual_plane<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> apply(const basic_motor<T>& a,
+                                               const basic_dual_plane<T>& b) {
   const T t0 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
   const T t1 = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
   const T t2 = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
@@ -1553,7 +1582,7 @@ basic_dual_plane<T> apply(const basic_motor<T>& a, const basic_dual_plane<T>& b)
 
 // exp(euclidean_bivector) -> rotor: 6 mul, 2 add, 1 exp_of_square
 template <class T>
-basic_rotor<T> exp(const basic_euclidean_bivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> exp(const basic_euclidean_bivector<T>& a) {
   const auto factors =
       gaphys::ga::exp_of_square<T>(-a.c[0] * a.c[0] - a.c[1] * a.c[1] - a.c[2] * a.c[2]);
   const T c = factors.c, k = factors.k;
@@ -1568,7 +1597,7 @@ basic_motor<T> exp(const basic_dual_line<T>& a) {
 
 // log(rotor) -> euclidean_bivector: 9 mul, 4 add, 1 log_factor
 template <class T>
-basic_euclidean_bivector<T> log(const basic_rotor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> log(const basic_rotor<T>& a) {
   const T s = -a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3];
   const T c = a.c[0];
   const gaphys::ga::log_case where =
@@ -1584,7 +1613,7 @@ basic_euclidean_bivector<T> log(const basic_rotor<T>& a) {
 
 // log(translator) -> flat_point: 6 mul, 2 add, 1 log_factor
 template <class T>
-basic_flat_point<T> log(const basic_translator<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> log(const basic_translator<T>& a) {
   const T s = T(0);
   const T c = a.c[0];
   const gaphys::ga::log_case where =
@@ -1601,13 +1630,13 @@ basic_dual_line<T> log(const basic_motor<T>& a) {
 
 // lc(dual_sphere, dual_sphere) -> scalar: 5 mul, 4 add
 template <class T>
-T lc(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
+GAPHYS_ALWAYS_INLINE T lc(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
   return -a.c[0] * b.c[4] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] - a.c[4] * b.c[0];
 }
 
 // gp(point_pair, point_pair) -> mv: 100 mul, 84 add
 template <class T>
-basic_mv<T> gp(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
   basic_mv<T> r;
   r.c[0] = -a.c[0] * b.c[6] - a.c[1] * b.c[8] - a.c[2] * b.c[9] + a.c[3] * b.c[3] -
            a.c[4] * b.c[4] - a.c[5] * b.c[5] - a.c[6] * b.c[0] - a.c[7] * b.c[7] - a.c[8] * b.c[1] -
@@ -1648,14 +1677,15 @@ basic_mv<T> gp(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
 
 // lc(point_pair, point_pair) -> scalar: 10 mul, 9 add
 template <class T>
-T lc(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
+GAPHYS_ALWAYS_INLINE T lc(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
   return -a.c[0] * b.c[6] - a.c[1] * b.c[8] - a.c[2] * b.c[9] + a.c[3] * b.c[3] - a.c[4] * b.c[4] -
          a.c[5] * b.c[5] - a.c[6] * b.c[0] - a.c[7] * b.c[7] - a.c[8] * b.c[1] - a.c[9] * b.c[2];
 }
 
 // op(point_pair, point_pair) -> sphere: 30 mul, 25 add
 template <class T>
-basic_sphere<T> op(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_sphere<T> op(const basic_point_pair<T>& a,
+                                        const basic_point_pair<T>& b) {
   return basic_sphere<T>(a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4] + a.c[4] * b.c[2] -
                              a.c[5] * b.c[1] + a.c[7] * b.c[0],
                          a.c[0] * b.c[8] - a.c[1] * b.c[6] + a.c[3] * b.c[4] + a.c[4] * b.c[3] -
@@ -1670,14 +1700,14 @@ basic_sphere<T> op(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
 
 // scp(point_pair, point_pair) -> scalar: 10 mul, 9 add
 template <class T>
-T scp(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
+GAPHYS_ALWAYS_INLINE T scp(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
   return -a.c[0] * b.c[6] - a.c[1] * b.c[8] - a.c[2] * b.c[9] + a.c[3] * b.c[3] - a.c[4] * b.c[4] -
          a.c[5] * b.c[5] - a.c[6] * b.c[0] - a.c[7] * b.c[7] - a.c[8] * b.c[1] - a.c[9] * b.c[2];
 }
 
 // lc(motor, motor) -> motor: 14 mul, 6 add
 template <class T>
-basic_motor<T> lc(const basic_motor<T>& a, const basic_motor<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_motor<T> lc(const basic_motor<T>& a, const basic_motor<T>& b) {
   return basic_motor<T>(a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3],
                         a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
                         a.c[0] * b.c[4] - a.c[3] * b.c[7], a.c[0] * b.c[5] + a.c[2] * b.c[7],
@@ -1686,7 +1716,7 @@ basic_motor<T> lc(const basic_motor<T>& a, const basic_motor<T>& b) {
 
 // op(motor, motor) -> motor: 21 mul, 13 add
 template <class T>
-basic_motor<T> op(const basic_motor<T>& a, const basic_motor<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_motor<T>& a, const basic_motor<T>& b) {
   return basic_motor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1] + a.c[1] * b.c[0],
                         a.c[0] * b.c[2] + a.c[2] * b.c[0], a.c[0] * b.c[3] + a.c[3] * b.c[0],
                         a.c[0] * b.c[4] + a.c[4] * b.c[0], a.c[0] * b.c[5] + a.c[5] * b.c[0],
@@ -1697,7 +1727,7 @@ basic_motor<T> op(const basic_motor<T>& a, const basic_motor<T>& b) {
 
 // scp(motor, motor) -> scalar: 4 mul, 3 add
 template <class T>
-T scp(const basic_motor<T>& a, const basic_motor<T>& b) {
+GAPHYS_ALWAYS_INLINE T scp(const basic_motor<T>& a, const basic_motor<T>& b) {
   return a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
 }
 

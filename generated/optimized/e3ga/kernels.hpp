@@ -16,305 +16,307 @@ namespace e3ga {
 
 // neg(scalar) -> scalar: 0 mul, 0 add
 template <class T>
-T neg(const basic_scalar<T>& a) {
+GAPHYS_ALWAYS_INLINE T neg(const basic_scalar<T>& a) {
   return -a.c[0];
 }
 
 // reverse(scalar) -> scalar: 0 mul, 0 add
 template <class T>
-T reverse(const basic_scalar<T>& a) {
+GAPHYS_ALWAYS_INLINE T reverse(const basic_scalar<T>& a) {
   return a.c[0];
 }
 
 // involute(scalar) -> scalar: 0 mul, 0 add
 template <class T>
-T involute(const basic_scalar<T>& a) {
+GAPHYS_ALWAYS_INLINE T involute(const basic_scalar<T>& a) {
   return a.c[0];
 }
 
 // conjugate(scalar) -> scalar: 0 mul, 0 add
 template <class T>
-T conjugate(const basic_scalar<T>& a) {
+GAPHYS_ALWAYS_INLINE T conjugate(const basic_scalar<T>& a) {
   return a.c[0];
 }
 
 // norm2(scalar) -> scalar: 1 mul, 0 add
 template <class T>
-T norm2(const basic_scalar<T>& a) {
+GAPHYS_ALWAYS_INLINE T norm2(const basic_scalar<T>& a) {
   return a.c[0] * a.c[0];
 }
 
 // inverse(scalar) -> scalar: 2 mul, 0 add, 1 div
 template <class T>
-T inverse(const basic_scalar<T>& a) {
+GAPHYS_ALWAYS_INLINE T inverse(const basic_scalar<T>& a) {
   const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0]);
   return (a.c[0]) * inv;
 }
 
 // dual(scalar) -> trivector: 0 mul, 0 add
 template <class T>
-basic_trivector<T> dual(const basic_scalar<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_trivector<T> dual(const basic_scalar<T>& a) {
   return basic_trivector<T>(-a.c[0]);
 }
 
 // undual(scalar) -> trivector: 0 mul, 0 add
 template <class T>
-basic_trivector<T> undual(const basic_scalar<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_trivector<T> undual(const basic_scalar<T>& a) {
   return basic_trivector<T>(a.c[0]);
 }
 
 // smul(scalar, scalar) -> scalar: 1 mul, 0 add
 template <class T>
-T smul(T s, const basic_scalar<T>& a) {
+GAPHYS_ALWAYS_INLINE T smul(T s, const basic_scalar<T>& a) {
   return a.c[0] * s;
 }
 
 // add(scalar, scalar) -> scalar: 0 mul, 1 add
 template <class T>
-T add(const basic_scalar<T>& a, const basic_scalar<T>& b) {
+GAPHYS_ALWAYS_INLINE T add(const basic_scalar<T>& a, const basic_scalar<T>& b) {
   return a.c[0] + b.c[0];
 }
 
 // sub(scalar, scalar) -> scalar: 0 mul, 1 add
 template <class T>
-T sub(const basic_scalar<T>& a, const basic_scalar<T>& b) {
+GAPHYS_ALWAYS_INLINE T sub(const basic_scalar<T>& a, const basic_scalar<T>& b) {
   return a.c[0] - b.c[0];
 }
 
 // neg(vector) -> vector: 0 mul, 0 add
 template <class T>
-basic_vector<T> neg(const basic_vector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_vector<T> neg(const basic_vector<T>& a) {
   return basic_vector<T>(-a.c[0], -a.c[1], -a.c[2]);
 }
 
 // reverse(vector) -> vector: 0 mul, 0 add
 template <class T>
-basic_vector<T> reverse(const basic_vector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_vector<T> reverse(const basic_vector<T>& a) {
   return basic_vector<T>(a.c[0], a.c[1], a.c[2]);
 }
 
 // involute(vector) -> vector: 0 mul, 0 add
 template <class T>
-basic_vector<T> involute(const basic_vector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_vector<T> involute(const basic_vector<T>& a) {
   return basic_vector<T>(-a.c[0], -a.c[1], -a.c[2]);
 }
 
 // conjugate(vector) -> vector: 0 mul, 0 add
 template <class T>
-basic_vector<T> conjugate(const basic_vector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_vector<T> conjugate(const basic_vector<T>& a) {
   return basic_vector<T>(-a.c[0], -a.c[1], -a.c[2]);
 }
 
 // norm2(vector) -> scalar: 3 mul, 2 add
 template <class T>
-T norm2(const basic_vector<T>& a) {
+GAPHYS_ALWAYS_INLINE T norm2(const basic_vector<T>& a) {
   return a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2];
 }
 
 // inverse(vector) -> vector: 6 mul, 2 add, 1 div
 template <class T>
-basic_vector<T> inverse(const basic_vector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_vector<T> inverse(const basic_vector<T>& a) {
   const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
   return basic_vector<T>((a.c[0]) * inv, (a.c[1]) * inv, (a.c[2]) * inv);
 }
 
 // dual(vector) -> bivector: 0 mul, 0 add
 template <class T>
-basic_bivector<T> dual(const basic_vector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_bivector<T> dual(const basic_vector<T>& a) {
   return basic_bivector<T>(-a.c[2], a.c[1], -a.c[0]);
 }
 
 // undual(vector) -> bivector: 0 mul, 0 add
 template <class T>
-basic_bivector<T> undual(const basic_vector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_bivector<T> undual(const basic_vector<T>& a) {
   return basic_bivector<T>(a.c[2], -a.c[1], a.c[0]);
 }
 
 // smul(scalar, vector) -> vector: 3 mul, 0 add
 template <class T>
-basic_vector<T> smul(T s, const basic_vector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_vector<T> smul(T s, const basic_vector<T>& a) {
   return basic_vector<T>(a.c[0] * s, a.c[1] * s, a.c[2] * s);
 }
 
 // add(vector, vector) -> vector: 0 mul, 3 add
 template <class T>
-basic_vector<T> add(const basic_vector<T>& a, const basic_vector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_vector<T> add(const basic_vector<T>& a, const basic_vector<T>& b) {
   return basic_vector<T>(a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2]);
 }
 
 // sub(vector, vector) -> vector: 0 mul, 3 add
 template <class T>
-basic_vector<T> sub(const basic_vector<T>& a, const basic_vector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_vector<T> sub(const basic_vector<T>& a, const basic_vector<T>& b) {
   return basic_vector<T>(a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2]);
 }
 
 // neg(bivector) -> bivector: 0 mul, 0 add
 template <class T>
-basic_bivector<T> neg(const basic_bivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_bivector<T> neg(const basic_bivector<T>& a) {
   return basic_bivector<T>(-a.c[0], -a.c[1], -a.c[2]);
 }
 
 // reverse(bivector) -> bivector: 0 mul, 0 add
 template <class T>
-basic_bivector<T> reverse(const basic_bivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_bivector<T> reverse(const basic_bivector<T>& a) {
   return basic_bivector<T>(-a.c[0], -a.c[1], -a.c[2]);
 }
 
 // involute(bivector) -> bivector: 0 mul, 0 add
 template <class T>
-basic_bivector<T> involute(const basic_bivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_bivector<T> involute(const basic_bivector<T>& a) {
   return basic_bivector<T>(a.c[0], a.c[1], a.c[2]);
 }
 
 // conjugate(bivector) -> bivector: 0 mul, 0 add
 template <class T>
-basic_bivector<T> conjugate(const basic_bivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_bivector<T> conjugate(const basic_bivector<T>& a) {
   return basic_bivector<T>(-a.c[0], -a.c[1], -a.c[2]);
 }
 
 // norm2(bivector) -> scalar: 3 mul, 2 add
 template <class T>
-T norm2(const basic_bivector<T>& a) {
+GAPHYS_ALWAYS_INLINE T norm2(const basic_bivector<T>& a) {
   return a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2];
 }
 
 // inverse(bivector) -> bivector: 6 mul, 2 add, 1 div
 template <class T>
-basic_bivector<T> inverse(const basic_bivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_bivector<T> inverse(const basic_bivector<T>& a) {
   const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
   return basic_bivector<T>((-a.c[0]) * inv, (-a.c[1]) * inv, (-a.c[2]) * inv);
 }
 
 // dual(bivector) -> vector: 0 mul, 0 add
 template <class T>
-basic_vector<T> dual(const basic_bivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_vector<T> dual(const basic_bivector<T>& a) {
   return basic_vector<T>(a.c[2], -a.c[1], a.c[0]);
 }
 
 // undual(bivector) -> vector: 0 mul, 0 add
 template <class T>
-basic_vector<T> undual(const basic_bivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_vector<T> undual(const basic_bivector<T>& a) {
   return basic_vector<T>(-a.c[2], a.c[1], -a.c[0]);
 }
 
 // smul(scalar, bivector) -> bivector: 3 mul, 0 add
 template <class T>
-basic_bivector<T> smul(T s, const basic_bivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_bivector<T> smul(T s, const basic_bivector<T>& a) {
   return basic_bivector<T>(a.c[0] * s, a.c[1] * s, a.c[2] * s);
 }
 
 // add(bivector, bivector) -> bivector: 0 mul, 3 add
 template <class T>
-basic_bivector<T> add(const basic_bivector<T>& a, const basic_bivector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_bivector<T> add(const basic_bivector<T>& a, const basic_bivector<T>& b) {
   return basic_bivector<T>(a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2]);
 }
 
 // sub(bivector, bivector) -> bivector: 0 mul, 3 add
 template <class T>
-basic_bivector<T> sub(const basic_bivector<T>& a, const basic_bivector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_bivector<T> sub(const basic_bivector<T>& a, const basic_bivector<T>& b) {
   return basic_bivector<T>(a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2]);
 }
 
 // neg(trivector) -> trivector: 0 mul, 0 add
 template <class T>
-basic_trivector<T> neg(const basic_trivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_trivector<T> neg(const basic_trivector<T>& a) {
   return basic_trivector<T>(-a.c[0]);
 }
 
 // reverse(trivector) -> trivector: 0 mul, 0 add
 template <class T>
-basic_trivector<T> reverse(const basic_trivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_trivector<T> reverse(const basic_trivector<T>& a) {
   return basic_trivector<T>(-a.c[0]);
 }
 
 // involute(trivector) -> trivector: 0 mul, 0 add
 template <class T>
-basic_trivector<T> involute(const basic_trivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_trivector<T> involute(const basic_trivector<T>& a) {
   return basic_trivector<T>(-a.c[0]);
 }
 
 // conjugate(trivector) -> trivector: 0 mul, 0 add
 template <class T>
-basic_trivector<T> conjugate(const basic_trivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_trivector<T> conjugate(const basic_trivector<T>& a) {
   return basic_trivector<T>(a.c[0]);
 }
 
 // norm2(trivector) -> scalar: 1 mul, 0 add
 template <class T>
-T norm2(const basic_trivector<T>& a) {
+GAPHYS_ALWAYS_INLINE T norm2(const basic_trivector<T>& a) {
   return a.c[0] * a.c[0];
 }
 
 // inverse(trivector) -> trivector: 2 mul, 0 add, 1 div
 template <class T>
-basic_trivector<T> inverse(const basic_trivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_trivector<T> inverse(const basic_trivector<T>& a) {
   const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0]);
   return basic_trivector<T>((-a.c[0]) * inv);
 }
 
 // dual(trivector) -> scalar: 0 mul, 0 add
 template <class T>
-T dual(const basic_trivector<T>& a) {
+GAPHYS_ALWAYS_INLINE T dual(const basic_trivector<T>& a) {
   return a.c[0];
 }
 
 // undual(trivector) -> scalar: 0 mul, 0 add
 template <class T>
-T undual(const basic_trivector<T>& a) {
+GAPHYS_ALWAYS_INLINE T undual(const basic_trivector<T>& a) {
   return -a.c[0];
 }
 
 // smul(scalar, trivector) -> trivector: 1 mul, 0 add
 template <class T>
-basic_trivector<T> smul(T s, const basic_trivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_trivector<T> smul(T s, const basic_trivector<T>& a) {
   return basic_trivector<T>(a.c[0] * s);
 }
 
 // add(trivector, trivector) -> trivector: 0 mul, 1 add
 template <class T>
-basic_trivector<T> add(const basic_trivector<T>& a, const basic_trivector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_trivector<T> add(const basic_trivector<T>& a,
+                                            const basic_trivector<T>& b) {
   return basic_trivector<T>(a.c[0] + b.c[0]);
 }
 
 // sub(trivector, trivector) -> trivector: 0 mul, 1 add
 template <class T>
-basic_trivector<T> sub(const basic_trivector<T>& a, const basic_trivector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_trivector<T> sub(const basic_trivector<T>& a,
+                                            const basic_trivector<T>& b) {
   return basic_trivector<T>(a.c[0] - b.c[0]);
 }
 
 // neg(rotor) -> rotor: 0 mul, 0 add
 template <class T>
-basic_rotor<T> neg(const basic_rotor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> neg(const basic_rotor<T>& a) {
   return basic_rotor<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3]);
 }
 
 // reverse(rotor) -> rotor: 0 mul, 0 add
 template <class T>
-basic_rotor<T> reverse(const basic_rotor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> reverse(const basic_rotor<T>& a) {
   return basic_rotor<T>(a.c[0], -a.c[1], -a.c[2], -a.c[3]);
 }
 
 // involute(rotor) -> rotor: 0 mul, 0 add
 template <class T>
-basic_rotor<T> involute(const basic_rotor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> involute(const basic_rotor<T>& a) {
   return basic_rotor<T>(a.c[0], a.c[1], a.c[2], a.c[3]);
 }
 
 // conjugate(rotor) -> rotor: 0 mul, 0 add
 template <class T>
-basic_rotor<T> conjugate(const basic_rotor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> conjugate(const basic_rotor<T>& a) {
   return basic_rotor<T>(a.c[0], -a.c[1], -a.c[2], -a.c[3]);
 }
 
 // norm2(rotor) -> scalar: 4 mul, 3 add
 template <class T>
-T norm2(const basic_rotor<T>& a) {
+GAPHYS_ALWAYS_INLINE T norm2(const basic_rotor<T>& a) {
   return a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3];
 }
 
 // inverse(rotor) -> rotor: 8 mul, 3 add, 1 div
 template <class T>
-basic_rotor<T> inverse(const basic_rotor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> inverse(const basic_rotor<T>& a) {
   const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] +
                                              a.c[3] * a.c[3]);
   return basic_rotor<T>((a.c[0]) * inv, (-a.c[1]) * inv, (-a.c[2]) * inv, (-a.c[3]) * inv);
@@ -322,7 +324,7 @@ basic_rotor<T> inverse(const basic_rotor<T>& a) {
 
 // dual(rotor) -> mv: 0 mul, 0 add
 template <class T>
-basic_mv<T> dual(const basic_rotor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_mv<T> dual(const basic_rotor<T>& a) {
   basic_mv<T> r;
   r.c[1] = a.c[3];
   r.c[2] = -a.c[2];
@@ -334,7 +336,7 @@ basic_mv<T> dual(const basic_rotor<T>& a) {
 
 // undual(rotor) -> mv: 0 mul, 0 add
 template <class T>
-basic_mv<T> undual(const basic_rotor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_mv<T> undual(const basic_rotor<T>& a) {
   basic_mv<T> r;
   r.c[1] = -a.c[3];
   r.c[2] = a.c[2];
@@ -346,25 +348,25 @@ basic_mv<T> undual(const basic_rotor<T>& a) {
 
 // smul(scalar, rotor) -> rotor: 4 mul, 0 add
 template <class T>
-basic_rotor<T> smul(T s, const basic_rotor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> smul(T s, const basic_rotor<T>& a) {
   return basic_rotor<T>(a.c[0] * s, a.c[1] * s, a.c[2] * s, a.c[3] * s);
 }
 
 // add(rotor, rotor) -> rotor: 0 mul, 4 add
 template <class T>
-basic_rotor<T> add(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> add(const basic_rotor<T>& a, const basic_rotor<T>& b) {
   return basic_rotor<T>(a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2], a.c[3] + b.c[3]);
 }
 
 // sub(rotor, rotor) -> rotor: 0 mul, 4 add
 template <class T>
-basic_rotor<T> sub(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> sub(const basic_rotor<T>& a, const basic_rotor<T>& b) {
   return basic_rotor<T>(a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2], a.c[3] - b.c[3]);
 }
 
 // gp(vector, vector) -> rotor: 9 mul, 5 add
 template <class T>
-basic_rotor<T> gp(const basic_vector<T>& a, const basic_vector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> gp(const basic_vector<T>& a, const basic_vector<T>& b) {
   return basic_rotor<T>(a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2],
                         a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
                         a.c[1] * b.c[2] - a.c[2] * b.c[1]);
@@ -372,7 +374,7 @@ basic_rotor<T> gp(const basic_vector<T>& a, const basic_vector<T>& b) {
 
 // gp(rotor, rotor) -> rotor: 16 mul, 12 add
 template <class T>
-basic_rotor<T> gp(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> gp(const basic_rotor<T>& a, const basic_rotor<T>& b) {
   return basic_rotor<T>(a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3],
                         a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3] + a.c[3] * b.c[2],
                         a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0] - a.c[3] * b.c[1],
@@ -381,7 +383,7 @@ basic_rotor<T> gp(const basic_rotor<T>& a, const basic_rotor<T>& b) {
 
 // gp(rotor, vector) -> mv: 12 mul, 8 add
 template <class T>
-basic_mv<T> gp(const basic_rotor<T>& a, const basic_vector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_vector<T>& b) {
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
   r.c[2] = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
@@ -393,7 +395,7 @@ basic_mv<T> gp(const basic_rotor<T>& a, const basic_vector<T>& b) {
 
 // gp(vector, rotor) -> mv: 12 mul, 8 add
 template <class T>
-basic_mv<T> gp(const basic_vector<T>& a, const basic_rotor<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_vector<T>& a, const basic_rotor<T>& b) {
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[2] = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
@@ -405,7 +407,7 @@ basic_mv<T> gp(const basic_vector<T>& a, const basic_rotor<T>& b) {
 
 // gp(bivector, bivector) -> rotor: 9 mul, 5 add
 template <class T>
-basic_rotor<T> gp(const basic_bivector<T>& a, const basic_bivector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> gp(const basic_bivector<T>& a, const basic_bivector<T>& b) {
   return basic_rotor<T>(-a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2],
                         -a.c[1] * b.c[2] + a.c[2] * b.c[1], a.c[0] * b.c[2] - a.c[2] * b.c[0],
                         -a.c[0] * b.c[1] + a.c[1] * b.c[0]);
@@ -413,7 +415,7 @@ basic_rotor<T> gp(const basic_bivector<T>& a, const basic_bivector<T>& b) {
 
 // gp(rotor, bivector) -> rotor: 12 mul, 8 add
 template <class T>
-basic_rotor<T> gp(const basic_rotor<T>& a, const basic_bivector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> gp(const basic_rotor<T>& a, const basic_bivector<T>& b) {
   return basic_rotor<T>(-a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2],
                         a.c[0] * b.c[0] - a.c[2] * b.c[2] + a.c[3] * b.c[1],
                         a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[0],
@@ -422,7 +424,7 @@ basic_rotor<T> gp(const basic_rotor<T>& a, const basic_bivector<T>& b) {
 
 // gp(bivector, rotor) -> rotor: 12 mul, 8 add
 template <class T>
-basic_rotor<T> gp(const basic_bivector<T>& a, const basic_rotor<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> gp(const basic_bivector<T>& a, const basic_rotor<T>& b) {
   return basic_rotor<T>(-a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3],
                         a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2],
                         a.c[0] * b.c[3] + a.c[1] * b.c[0] - a.c[2] * b.c[1],
@@ -431,7 +433,7 @@ basic_rotor<T> gp(const basic_bivector<T>& a, const basic_rotor<T>& b) {
 
 // gp(bivector, vector) -> mv: 9 mul, 5 add
 template <class T>
-basic_mv<T> gp(const basic_bivector<T>& a, const basic_vector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_bivector<T>& a, const basic_vector<T>& b) {
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
   r.c[2] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
@@ -443,7 +445,7 @@ basic_mv<T> gp(const basic_bivector<T>& a, const basic_vector<T>& b) {
 
 // gp(vector, bivector) -> mv: 9 mul, 5 add
 template <class T>
-basic_mv<T> gp(const basic_vector<T>& a, const basic_bivector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_vector<T>& a, const basic_bivector<T>& b) {
   basic_mv<T> r;
   r.c[1] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
   r.c[2] = a.c[0] * b.c[0] - a.c[2] * b.c[2];
@@ -455,70 +457,70 @@ basic_mv<T> gp(const basic_vector<T>& a, const basic_bivector<T>& b) {
 
 // op(vector, vector) -> bivector: 6 mul, 3 add
 template <class T>
-basic_bivector<T> op(const basic_vector<T>& a, const basic_vector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_bivector<T> op(const basic_vector<T>& a, const basic_vector<T>& b) {
   return basic_bivector<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
                            a.c[1] * b.c[2] - a.c[2] * b.c[1]);
 }
 
 // op(vector, bivector) -> trivector: 3 mul, 2 add
 template <class T>
-basic_trivector<T> op(const basic_vector<T>& a, const basic_bivector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_trivector<T> op(const basic_vector<T>& a, const basic_bivector<T>& b) {
   return basic_trivector<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0]);
 }
 
 // op(bivector, vector) -> trivector: 3 mul, 2 add
 template <class T>
-basic_trivector<T> op(const basic_bivector<T>& a, const basic_vector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_trivector<T> op(const basic_bivector<T>& a, const basic_vector<T>& b) {
   return basic_trivector<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0]);
 }
 
 // lc(vector, bivector) -> vector: 6 mul, 3 add
 template <class T>
-basic_vector<T> lc(const basic_vector<T>& a, const basic_bivector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_vector<T> lc(const basic_vector<T>& a, const basic_bivector<T>& b) {
   return basic_vector<T>(-a.c[1] * b.c[0] - a.c[2] * b.c[1], a.c[0] * b.c[0] - a.c[2] * b.c[2],
                          a.c[0] * b.c[1] + a.c[1] * b.c[2]);
 }
 
 // lc(vector, vector) -> scalar: 3 mul, 2 add
 template <class T>
-T lc(const basic_vector<T>& a, const basic_vector<T>& b) {
+GAPHYS_ALWAYS_INLINE T lc(const basic_vector<T>& a, const basic_vector<T>& b) {
   return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
 }
 
 // lc(bivector, bivector) -> scalar: 3 mul, 2 add
 template <class T>
-T lc(const basic_bivector<T>& a, const basic_bivector<T>& b) {
+GAPHYS_ALWAYS_INLINE T lc(const basic_bivector<T>& a, const basic_bivector<T>& b) {
   return -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
 }
 
 // rc(bivector, vector) -> vector: 6 mul, 3 add
 template <class T>
-basic_vector<T> rc(const basic_bivector<T>& a, const basic_vector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_vector<T> rc(const basic_bivector<T>& a, const basic_vector<T>& b) {
   return basic_vector<T>(a.c[0] * b.c[1] + a.c[1] * b.c[2], -a.c[0] * b.c[0] + a.c[2] * b.c[2],
                          -a.c[1] * b.c[0] - a.c[2] * b.c[1]);
 }
 
 // scp(vector, vector) -> scalar: 3 mul, 2 add
 template <class T>
-T scp(const basic_vector<T>& a, const basic_vector<T>& b) {
+GAPHYS_ALWAYS_INLINE T scp(const basic_vector<T>& a, const basic_vector<T>& b) {
   return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
 }
 
 // scp(bivector, bivector) -> scalar: 3 mul, 2 add
 template <class T>
-T scp(const basic_bivector<T>& a, const basic_bivector<T>& b) {
+GAPHYS_ALWAYS_INLINE T scp(const basic_bivector<T>& a, const basic_bivector<T>& b) {
   return -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
 }
 
 // scp(rotor, rotor) -> scalar: 4 mul, 3 add
 template <class T>
-T scp(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+GAPHYS_ALWAYS_INLINE T scp(const basic_rotor<T>& a, const basic_rotor<T>& b) {
   return a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
 }
 
 // apply(rotor, vector) -> vector: 31 mul, 20 add, 1 div
 template <class T>
-basic_vector<T> apply(const basic_rotor<T>& a, const basic_vector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_vector<T> apply(const basic_rotor<T>& a, const basic_vector<T>& b) {
   const T t0 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
   const T t1 = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
   const T t2 = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
@@ -531,7 +533,7 @@ basic_vector<T> apply(const basic_rotor<T>& a, const basic_vector<T>& b) {
 
 // apply(rotor, bivector) -> bivector: 31 mul, 20 add, 1 div
 template <class T>
-basic_bivector<T> apply(const basic_rotor<T>& a, const basic_bivector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_bivector<T> apply(const basic_rotor<T>& a, const basic_bivector<T>& b) {
   const T t0 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
   const T t1 = a.c[0] * b.c[0] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
   const T t2 = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[0];
@@ -544,7 +546,7 @@ basic_bivector<T> apply(const basic_rotor<T>& a, const basic_bivector<T>& b) {
 
 // exp(bivector) -> rotor: 6 mul, 2 add, 1 exp_of_square
 template <class T>
-basic_rotor<T> exp(const basic_bivector<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> exp(const basic_bivector<T>& a) {
   const auto factors =
       gaphys::ga::exp_of_square<T>(-a.c[0] * a.c[0] - a.c[1] * a.c[1] - a.c[2] * a.c[2]);
   const T c = factors.c, k = factors.k;
@@ -553,7 +555,7 @@ basic_rotor<T> exp(const basic_bivector<T>& a) {
 
 // log(rotor) -> bivector: 9 mul, 4 add, 1 log_factor
 template <class T>
-basic_bivector<T> log(const basic_rotor<T>& a) {
+GAPHYS_ALWAYS_INLINE basic_bivector<T> log(const basic_rotor<T>& a) {
   const T s = -a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3];
   const T c = a.c[0];
   const gaphys::ga::log_case where =
@@ -569,21 +571,21 @@ basic_bivector<T> log(const basic_rotor<T>& a) {
 
 // meet(bivector, bivector) -> vector: 6 mul, 3 add
 template <class T>
-basic_vector<T> meet(const basic_bivector<T>& a, const basic_bivector<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_vector<T> meet(const basic_bivector<T>& a, const basic_bivector<T>& b) {
   return basic_vector<T>(-a.c[0] * b.c[1] + a.c[1] * b.c[0], -a.c[0] * b.c[2] + a.c[2] * b.c[0],
                          -a.c[1] * b.c[2] + a.c[2] * b.c[1]);
 }
 
 // lc(rotor, rotor) -> rotor: 7 mul, 3 add
 template <class T>
-basic_rotor<T> lc(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> lc(const basic_rotor<T>& a, const basic_rotor<T>& b) {
   return basic_rotor<T>(a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3],
                         a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
 }
 
 // op(rotor, rotor) -> rotor: 7 mul, 3 add
 template <class T>
-basic_rotor<T> op(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+GAPHYS_ALWAYS_INLINE basic_rotor<T> op(const basic_rotor<T>& a, const basic_rotor<T>& b) {
   return basic_rotor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1] + a.c[1] * b.c[0],
                         a.c[0] * b.c[2] + a.c[2] * b.c[0], a.c[0] * b.c[3] + a.c[3] * b.c[0]);
 }
