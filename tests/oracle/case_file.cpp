@@ -9,7 +9,7 @@ namespace gaphys_oracle {
 
 namespace {
 
-constexpr int kFormatVersion = 1;
+constexpr int kFormatVersion = 2;
 
 class Reader {
  public:
@@ -82,8 +82,12 @@ std::string OracleCase::label() const {
 CaseFile read_case_file(const std::string& path) {
   Reader r(path);
   CaseFile file;
-  if (r.integer(second(r, "format")) != kFormatVersion) r.fail("unsupported format version");
+  const int version = r.integer(second(r, "format"));
+  if (version != kFormatVersion)
+    r.fail("format version " + std::to_string(version) + ", this reader reads version " +
+           std::to_string(kFormatVersion) + " (regenerate the case file)");
   file.algebra = second(r, "algebra");
+  file.representation = second(r, "representation");
   file.ganja_version = second(r, "ganja");
   r.expect("seed");
   const auto blades = r.expect("blades");

@@ -21,6 +21,7 @@ struct OracleCase {
 
 struct CaseFile {
   std::string algebra;
+  std::string representation;  // "direct" or "dual" (the spec's)
   std::string ganja_version;
   std::vector<std::string> blade_names;
   std::vector<OracleCase> cases;

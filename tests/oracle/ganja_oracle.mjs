@@ -2,23 +2,25 @@
 // Writes a case file of random inputs and ganja.js results for the C++ oracle
 // test (test_ganja_oracle.cpp). Format: see README.md next to this file.
 //
-//   node ganja_oracle.mjs --algebra e3ga|c3ga --seed N --count K [--out FILE]
+//   node ganja_oracle.mjs --spec FILE.ga --seed N --count K [--out FILE]
+//   node ganja_oracle.mjs --algebra NAME ...   (NAME.ga from specs/ or tests/algebra/specs/)
 //   node ganja_oracle.mjs --self-test
+//
+// The algebra (basis, metric, representation) is read from its .ga spec.
 
 import { writeFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
-import { OracleAlgebra, ALGEBRA_NAMES } from './algebras.mjs';
+import { OracleAlgebra } from './algebras.mjs';
 import { makeOperand, makeVersor, operandKinds, versorKinds } from './inputs.mjs';
 import { evaluate, OPERATIONS } from './operations.mjs';
 import { Prng } from './prng.mjs';
 import { runSelfTest } from './self_test.mjs';
 
-const FORMAT_VERSION = 1;
+const FORMAT_VERSION = 2;
 
 function usage(message) {
-  const algebras = ALGEBRA_NAMES.join('|');
   console.error(`${message}\n` +
-    `usage: ganja_oracle.mjs --algebra ${algebras} --seed N --count K [--out FILE]\n` +
+    'usage: ganja_oracle.mjs --spec FILE.ga | --algebra NAME --seed N --count K [--out FILE]\n' +
     '       ganja_oracle.mjs --self-test');
   process.exit(2);
 }
@@ -31,13 +33,16 @@ function parseArgs(argv) {
     const value = argv[++i];
     if (value === undefined) usage(`missing value for ${flag}`);
     if (flag === '--algebra') args.algebra = value;
+    else if (flag === '--spec') args.spec = value;
     else if (flag === '--seed' || flag === '--count') {
       if (!/^\d+$/.test(value)) usage(`${flag} needs a non-negative integer`);
       args[flag.slice(2)] = Number(value);
     } else if (flag === '--out') args.out = value;
     else usage(`unknown argument ${flag}`);
   }
-  if (!args.selfTest && !ALGEBRA_NAMES.includes(args.algebra)) usage(`--algebra must be one of ${ALGEBRA_NAMES.join(', ')}`);
+  if (!args.selfTest && (args.algebra === undefined) === (args.spec === undefined)) {
+    usage('give one of --spec or --algebra');
+  }
   return args;
 }
 
@@ -55,15 +60,16 @@ function ganjaVersion() {
   return createRequire(import.meta.url)('ganja.js/package.json').version;
 }
 
-function generate({ algebra, seed, count }) {
-  const alg = new OracleAlgebra(algebra);
+function generate({ algebra, spec, seed, count }) {
+  const alg = spec ? OracleAlgebra.fromFile(spec) : OracleAlgebra.named(algebra);
   const rng = new Prng(seed);
   const kinds = operandKinds(alg);
   const vkinds = versorKinds(alg);
   const out = [
     '# ganja.js oracle cases for gaphys, written by tests/oracle/ganja_oracle.mjs',
     `format ${FORMAT_VERSION}`,
-    `algebra ${algebra}`,
+    `algebra ${alg.name}`,
+    `representation ${alg.representation}`,
     `ganja ${ganjaVersion()}`,
     `seed ${seed}`,
     `blades ${alg.size} ${alg.blades.map((b) => b.name).join(' ')}`,

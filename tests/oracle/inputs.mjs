@@ -14,8 +14,27 @@ function dense(alg, rng, keep) {
   return alg.blades.map((b) => (keep(b) ? rng.coefficient() : 0));
 }
 
-function randomVector(alg, rng, euclideanOnly = false) {
-  const allowed = (b) => b.grade === 1 && (!euclideanOnly || /^e\d$/.test(b.name));
+// Basis vectors orthogonal to all the others and not null (e3ga e1..e3, c3ga
+// and pga3d e1..e3, sta g0..g3): rotation and boost planes are drawn there.
+function orthogonalIndices(alg) {
+  return alg.basis.map((_, i) => i).filter((i) =>
+    alg.metric[i][i] !== 0 && alg.metric[i].every((x, j) => j === i || x === 0));
+}
+
+// Basis vectors orthogonal to everything, themselves included (pga3d e0).
+function degenerateIndices(alg) {
+  return alg.basis.map((_, i) => i).filter((i) => alg.metric[i].every((x) => x === 0));
+}
+
+// The second vector of the first null pair (c3ga and c2ga: ni), or -1.
+function nullPairPartner(alg) {
+  return alg.basis.findIndex((_, i) => alg.metric[i][i] === 0 &&
+    alg.metric[i].some((x, j) => j < i && x !== 0 && alg.metric[j][j] === 0));
+}
+
+// A random vector on the basis vectors `only` (indices; default all).
+function randomVector(alg, rng, only = null) {
+  const allowed = (b) => b.grade === 1 && (only === null || only.includes(b.indices[0]));
   return dense(alg, rng, allowed);
 }
 
@@ -35,26 +54,43 @@ function normalizeVersor(V) {
   return V.Scale(1 / Math.sqrt(Math.abs(s)));
 }
 
-// A rotor exp(-theta/2 B) = cos(theta/2) - sin(theta/2) B for a unit
-// Euclidean bivector B (B^2 = -1), built from two random Euclidean vectors.
-function euclideanRotor(alg, rng) {
+// A unit 2-blade B = u ^ v of random vectors on the orthogonal basis vectors
+// with B^2 of the given sign (-1: a rotation plane, +1: a boost plane).
+function unitPlane(alg, rng, sign) {
+  const only = orthogonalIndices(alg);
   for (let i = 0; i < MAX_ATTEMPTS; ++i) {
-    const u = alg.toGanja(randomVector(alg, rng, true));
-    const B = u.Wedge(alg.toGanja(randomVector(alg, rng, true)));
+    const u = alg.toGanja(randomVector(alg, rng, only));
+    const B = u.Wedge(alg.toGanja(randomVector(alg, rng, only)));
     const sq = B.Mul(B)[0];
-    if (sq > -0.01) continue;
-    const unitB = B.Scale(1 / Math.sqrt(-sq));
-    const half = rng.range(-Math.PI, Math.PI) / 2;
-    return alg.G.Scalar(Math.cos(half)).Sub(unitB.Scale(Math.sin(half)));
+    if (sign * sq < 0.01) continue;
+    return B.Scale(1 / Math.sqrt(Math.abs(sq)));
   }
-  throw new Error('could not draw a rotor');
+  throw new Error(`could not draw a ${sign < 0 ? 'rotation' : 'boost'} plane`);
 }
 
-// T = 1 - t ni / 2 for a Euclidean translation vector t (c3ga only).
+// A rotor exp(-theta/2 B) = cos(theta/2) - sin(theta/2) B for a unit B, B^2 = -1.
+function rotor(alg, rng) {
+  const B = unitPlane(alg, rng, -1);
+  const half = rng.range(-Math.PI, Math.PI) / 2;
+  return alg.G.Scalar(Math.cos(half)).Sub(B.Scale(Math.sin(half)));
+}
+
+// A boost exp(phi/2 B) = cosh(phi/2) + sinh(phi/2) B for a unit B, B^2 = +1.
+function boost(alg, rng) {
+  const B = unitPlane(alg, rng, 1);
+  const half = rng.range(-1.5, 1.5) / 2;
+  return alg.G.Scalar(Math.cosh(half)).Add(B.Scale(Math.sinh(half)));
+}
+
+// A translator for a random translation t on the orthogonal basis vectors:
+// 1 + (d ^ t) / 2 with d a degenerate basis vector (pga3d: e0), or
+// 1 - t w / 2 with w the second vector of a null pair (c3ga, c2ga: ni).
 function translator(alg, rng) {
-  const t = alg.toGanja(randomVector(alg, rng, true));
-  const ni = alg.vectors[alg.basis.indexOf('ni')];
-  return alg.G.Scalar(1).Sub(t.Mul(ni).Scale(0.5));
+  const t = alg.toGanja(randomVector(alg, rng, orthogonalIndices(alg)));
+  const [d] = degenerateIndices(alg);
+  if (d !== undefined) return alg.G.Scalar(1).Add(alg.vectors[d].Wedge(t).Scale(0.5));
+  const w = alg.vectors[nullPairPartner(alg)];
+  return alg.G.Scalar(1).Sub(t.Mul(w).Scale(0.5));
 }
 
 function productOfVectors(alg, rng, count) {
@@ -63,18 +99,24 @@ function productOfVectors(alg, rng, count) {
   return V;
 }
 
-// Ganja-built versor generators; each returns a ganja element.
+// Ganja-built versor generators; each returns a ganja element. Which ones an
+// algebra gets follows from its metric.
 function versorMakers(alg) {
+  const squares = orthogonalIndices(alg).map((i) => Math.sign(alg.metric[i][i]));
   const makers = {
-    reflector: (rng) => invertibleVector(alg, rng),
-    rotor: (rng) => euclideanRotor(alg, rng),
-    versor2: (rng) => normalizeVersor(productOfVectors(alg, rng, 2)),
-    versor3: (rng) => normalizeVersor(productOfVectors(alg, rng, 3)),
+    reflector: (rng) => invertibleVector(alg, rng),  // pga3d: a reflection in a plane
+    rotor: (rng) => rotor(alg, rng),
   };
-  if (alg.basis.includes('ni')) {
-    makers.versor4 = (rng) => normalizeVersor(productOfVectors(alg, rng, 4));
+  if (squares.includes(1) && squares.includes(-1)) {  // Minkowski (sta)
+    makers.boost = (rng) => boost(alg, rng);
+    makers.spinor = (rng) => boost(alg, rng).Mul(rotor(alg, rng));
+  }
+  makers.versor2 = (rng) => normalizeVersor(productOfVectors(alg, rng, 2));
+  makers.versor3 = (rng) => normalizeVersor(productOfVectors(alg, rng, 3));
+  if (alg.n >= 4) makers.versor4 = (rng) => normalizeVersor(productOfVectors(alg, rng, 4));
+  if (degenerateIndices(alg).length > 0 || nullPairPartner(alg) >= 0) {
     makers.translator = (rng) => translator(alg, rng);
-    makers.motor = (rng) => euclideanRotor(alg, rng).Mul(translator(alg, rng));
+    makers.motor = (rng) => rotor(alg, rng).Mul(translator(alg, rng));
   }
   return makers;
 }

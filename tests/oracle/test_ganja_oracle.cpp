@@ -1,7 +1,8 @@
 // Compares the generated library on `mv` with results computed by ganja.js
 // (an independent GA implementation), read from a case file written by
 // ganja_oracle.mjs. Built once per algebra and variant; the algebra is chosen
-// by GAPHYS_ORACLE_E3GA / GAPHYS_ORACLE_C3GA.
+// by GAPHYS_ORACLE_ALGEBRA (its name and namespace, e.g. pga3d) and
+// GAPHYS_ORACLE_HEADER (e.g. "pga3d/pga3d.hpp").
 //
 // Usage: test_ganja_oracle_<alg>_<variant> [gtest flags] CASE_FILE
 //        (or set GAPHYS_ORACLE_CASES=CASE_FILE)
@@ -19,17 +20,14 @@
 
 #include "case_file.hpp"
 
-#if defined(GAPHYS_ORACLE_E3GA)
-#include <e3ga/e3ga.hpp>
-namespace alg = e3ga;
-static const char* const kAlgebra = "e3ga";
-#elif defined(GAPHYS_ORACLE_C3GA)
-#include <c3ga/c3ga.hpp>
-namespace alg = c3ga;
-static const char* const kAlgebra = "c3ga";
-#else
-#error "define GAPHYS_ORACLE_E3GA or GAPHYS_ORACLE_C3GA"
+#if !defined(GAPHYS_ORACLE_ALGEBRA) || !defined(GAPHYS_ORACLE_HEADER)
+#error "define GAPHYS_ORACLE_ALGEBRA (e.g. pga3d) and GAPHYS_ORACLE_HEADER"
 #endif
+#include GAPHYS_ORACLE_HEADER
+namespace alg = GAPHYS_ORACLE_ALGEBRA;
+#define GAPHYS_ORACLE_STRING2(x) #x
+#define GAPHYS_ORACLE_STRING(x) GAPHYS_ORACLE_STRING2(x)
+static const char* const kAlgebra = GAPHYS_ORACLE_STRING(GAPHYS_ORACLE_ALGEBRA);
 
 namespace {
 
@@ -98,7 +96,8 @@ std::vector<double> coefficients(const alg::basic_mv<T>& m) {
   return xs;
 }
 
-// Collects mismatches over all cases and reports the first few.
+// Collects mismatches over all cases and reports the first few, and the
+// largest relative error seen (|diff| / scale, compared against tol).
 class Mismatches {
  public:
   void compare(const OracleCase& c, const std::string& op, const std::vector<double>& got,
@@ -107,7 +106,8 @@ class Mismatches {
     for (double w : want) scale = std::max(scale, std::abs(w));
     for (std::size_t i = 0; i < want.size(); ++i) {
       const double err = std::abs(got.at(i) - want[i]);
-      if (err <= tol * scale) continue;  // also rejects NaN
+      if (!(err / scale <= max_relative_)) max_relative_ = err / scale;  // NaN sticks
+      if (err <= tol * scale) continue;                                  // also rejects NaN
       if (++count_ <= kShown) {
         std::ostringstream s;
         s.precision(17);
@@ -119,10 +119,12 @@ class Mismatches {
     }
   }
   void expect_none() const { EXPECT_EQ(count_, 0) << report_ << (count_ > kShown ? "...\n" : ""); }
+  double max_relative() const { return max_relative_; }
 
  private:
   static constexpr int kShown = 10;
   int count_ = 0;
+  double max_relative_ = 0;
   std::string report_;
 };
 
@@ -143,6 +145,9 @@ class GanjaOracle : public ::testing::Test {
     for (const OracleCase& c : loaded().file.cases)
       m.compare(c, op, fn(c), c.at(op), kTolerance<T>);
     m.expect_none();
+    ::testing::Test::RecordProperty("max_relative_error", std::to_string(m.max_relative()));
+    std::printf("%s %s: max |ours - ganja| / scale = %.3g (tolerance %.0e)\n", kAlgebra, op.c_str(),
+                m.max_relative(), kTolerance<T>);
   }
 };
 
@@ -207,6 +212,26 @@ TYPED_TEST(GanjaOracle, Dual) {
               [](const OracleCase& c) { return coefficients(alg::dual(input<T>(c, "a"))); });
 }
 
+TYPED_TEST(GanjaOracle, Undual) {
+  using T = TypeParam;
+  this->check("undual",
+              [](const OracleCase& c) { return coefficients(alg::undual(input<T>(c, "a"))); });
+}
+
+TYPED_TEST(GanjaOracle, Meet) {
+  using T = TypeParam;
+  this->check("meet", [](const OracleCase& c) {
+    return coefficients(alg::meet(input<T>(c, "a"), input<T>(c, "b")));
+  });
+}
+
+TYPED_TEST(GanjaOracle, Join) {
+  using T = TypeParam;
+  this->check("join", [](const OracleCase& c) {
+    return coefficients(alg::join(input<T>(c, "a"), input<T>(c, "b")));
+  });
+}
+
 TYPED_TEST(GanjaOracle, ApplyVersor) {
   using T = TypeParam;
   this->check("apply", [](const OracleCase& c) {
@@ -220,9 +245,10 @@ TYPED_TEST(GanjaOracle, ResultBitsInvariant) {
   for (const OracleCase& c : loaded().file.cases) {
     const auto a = input<T>(c, "a");
     const auto b = input<T>(c, "b");
-    const alg::basic_mv<T> results[] = {alg::gp(a, b), alg::op(a, b),
-                                        alg::lc(a, b), alg::reverse(a),
-                                        alg::dual(a),  alg::apply(input<T>(c, "v"), a)};
+    const alg::basic_mv<T> results[] = {
+        alg::gp(a, b),   alg::op(a, b),   alg::lc(a, b),
+        alg::reverse(a), alg::dual(a),    alg::undual(a),
+        alg::meet(a, b), alg::join(a, b), alg::apply(input<T>(c, "v"), a)};
     for (const auto& r : results) {
       for (std::size_t i = 0; i < kBladeCount; ++i) {
         if (!((r.bits >> i) & 1u)) {
