@@ -20,6 +20,10 @@ from .symbolic import Poly, SymMV
 ARGUMENT_NAMES = ("a", "b")
 AUTO_UNARY = ("neg", "reverse", "involute", "conjugate", "norm2", "inverse", "dual", "undual")
 AUTO_BINARY_SAME_TYPE = ("add", "sub")
+# Binary functions expanded for every ordered pair of named types, declared
+# or not, so that no product of two named types takes the generic path:
+# templates, so a pair costs only its parse unless a program calls it.
+AUTO_BINARY_EVERY_PAIR = ("gp", "op", "lc", "rc", "scp", "meet", "join", "apply")
 
 
 @dataclass(frozen=True)
@@ -325,6 +329,17 @@ def expand(algebra: Algebra) -> list[Kernel]:
             add(function, (named, named))
     for request in algebra.functions:
         add(request.name, request.arguments, request.location)
+    # Pairs the spec did not declare that are identically zero (op of two
+    # spheres) or divide by a structural zero (apply by a null type) are left
+    # to the generic path: no program needs them fast, and they would only
+    # lengthen the header every translation unit parses.
+    for function in AUTO_BINARY_EVERY_PAIR:
+        for a in algebra.types:
+            for b in algebra.types:
+                if (function, (a.name, b.name)) not in kernels:
+                    kernel = expander.kernel(function, (a, b))
+                    if kernel is not None and any(not poly.is_zero() for _, poly in kernel.outputs):
+                        kernels[(function, (a.name, b.name))] = kernel
     return list(kernels.values())
 
 

@@ -8,8 +8,9 @@ from fractions import Fraction
 
 from . import VERSION, cpp, profile
 from .blades import PRODUCTS, conjugate_sign, involute_sign, left_complement, reverse_sign, right_complement
-from .expand import OPERATIONS_PER_GENERIC_TERM, Expander, Kernel, generic_work_kind
+from .expand import OPERATIONS_PER_GENERIC_TERM, SPECIALIZABLE, Expander, Kernel, generic_work_kind
 from .model import Algebra, NamedType
+from .orthogonal import dense_tables
 from .symbolic import Poly
 
 # Functions with a generic (mv) implementation that returns a scalar.
@@ -35,10 +36,11 @@ def tables(algebra: Algebra, expander: Expander) -> dict:
     def as_entry(multivector):
         return sorted((index[b], v) for b, v in multivector.items() if v)
 
-    products = {
-        kind: sparse_table([as_entry(algebra.products.product(kind, a.bitmap, b.bitmap)) for a in blades for b in blades])
+    entries = {
+        kind: [as_entry(algebra.products.product(kind, a.bitmap, b.bitmap)) for a in blades for b in blades]
         for kind in PRODUCTS
     }
+    products = {kind: sparse_table(entries[kind]) for kind in PRODUCTS}
     def linear_map(function):
         """The table of a linear map on symbolic multivectors, blade by blade."""
         return sparse_table([
@@ -55,7 +57,9 @@ def tables(algebra: Algebra, expander: Expander) -> dict:
         name: [sign(b.bitmap) for b in blades]
         for name, sign in (("reverse", reverse_sign), ("involute", involute_sign), ("conjugate", conjugate_sign))
     }
-    return {"products": products, "linear": linear, "complements": complements, "signs": signs}
+    # The dense path's tables: the products in an orthogonal basis (orthogonal.py).
+    dense = dense_tables(algebra, entries)
+    return {"products": products, "linear": linear, "complements": complements, "signs": signs, "dense": dense}
 
 
 def named_type(named: NamedType) -> dict:
@@ -249,9 +253,9 @@ GENERIC_WORK = {
 
 
 def dispatchers(mv_kernels) -> list[dict]:
-    """One dispatcher per specializable function, with a case per profiled
-    kernel and the kernels that cover unprofiled subsets."""
-    from .expand import SPECIALIZABLE
+    """One dispatcher per specializable function the profile made kernels
+    for, with a case per profiled kernel and the kernels that cover
+    unprofiled subsets (the rest keep gaphys::ga::no_kernels)."""
     from .profile import RECORDED_ARITY
 
     result = []
@@ -262,29 +266,38 @@ def dispatchers(mv_kernels) -> list[dict]:
                      else f"0x{mk.argument_bits[0]:x}u"), "kernel": mk.name}
             for mk in mv_kernels if mk.function == function
         ]
+        if not cases:
+            continue
+        result_type = "T" if function == "scp" else "basic_mv<T>"
+        params = "const basic_mv<T>& a, const basic_mv<T>& b" if binary else "const basic_mv<T>& a"
+        bits_params = "std::uint32_t a_bits, std::uint32_t b_bits" if binary else "std::uint32_t a_bits"
+        covering = covering_cases(mk for mk in mv_kernels if mk.function == function)
+        work = GENERIC_WORK[generic_work_kind(function, RECORDED_ARITY[function])]
         result.append({
             "function": function,
-            "params": "const basic_mv<T>& a, const basic_mv<T>& b" if binary else "const basic_mv<T>& a",
+            "params": params,
             "arguments": "a, b" if binary else "a",
             "key_type": "std::uint64_t" if binary else "std::uint32_t",
-            "key": "pair_key(a.bits, b.bits)" if binary else "a.bits",
-            "exact": (["a_bits = gaphys::ga::exact_bits(a)", "b_bits = gaphys::ga::exact_bits(b)"] if binary
-                      else ["a_bits = gaphys::ga::exact_bits(a)"]),
-            "exact_key": "pair_key(a_bits, b_bits)" if binary else "a_bits",
-            "exact_arguments": "a_bits, b_bits" if binary else "a_bits",
-            "bits_params": "std::uint32_t a_bits, std::uint32_t b_bits" if binary else "std::uint32_t a_bits",
-            "unused_params": ", ".join(
-                "[[maybe_unused]] " + p for p in
-                (["std::uint32_t a_bits", "std::uint32_t b_bits", "const basic_mv<T>& a", "const basic_mv<T>& b"]
-                 if binary else ["std::uint32_t a_bits", "const basic_mv<T>& a"])
-                + ["T& r" if function == "scp" else "basic_mv<T>& r"]),
-            "result_type": "T" if function == "scp" else "basic_mv<T>",
+            "result_type": result_type,
             "cases": cases,
-            "covering": covering_cases(mk for mk in mv_kernels if mk.function == function),
+            # Without covering kernels, covering() reads none of its parameters.
+            "covering_params": (f"{bits_params}, {params}, {result_type}& r" if covering else
+                                ", ".join(["std::uint32_t"] * (2 if binary else 1)
+                                          + ["const basic_mv<T>&"] * (2 if binary else 1) + [result_type + "&"])),
+            "covering_prologue": [f"const int work = {work};"] if covering else [],
+            "covering": covering,
             "operations_per_term": OPERATIONS_PER_GENERIC_TERM,
-            "work": GENERIC_WORK[generic_work_kind(function, RECORDED_ARITY[function])],
         })
     return result
+
+
+# The functions every algebra declares from gaphys/ga/mv_functions.hpp.
+LIBRARY_FUNCTIONS = [
+    "gp", "op", "lc", "rc", "scp", "add", "sub", "smul", "neg", "reverse", "involute", "conjugate", "grade",
+    "dual", "undual", "norm2", "inverse", "general_inverse", "exp", "log", "apply", "meet", "join",
+    "to_mv", "approx_equal", "norm", "unit",
+    "operator<<", "operator*", "operator^", "operator+", "operator-", "operator~", "operator/",
+]
 
 
 def constant_view(algebra: Algebra, expander: Expander, constant) -> dict:
@@ -314,6 +327,7 @@ def build(algebra: Algebra, kernels: list[Kernel], variant: str, banner: list[st
             for mk in mv_kernels
         ],
         "dispatchers": dispatchers(mv_kernels),
+        "specializable": list(SPECIALIZABLE),
         "banner": banner,
         "namespace": namespace,
         "variant": variant,
@@ -328,13 +342,16 @@ def build(algebra: Algebra, kernels: list[Kernel], variant: str, banner: list[st
         ],
         "has_dual": expander.has_dual,
         "representation": algebra.representation,
-        # What meet and join compute on mv: the regressive or the outer product (Expander.meet_or_join).
-        "meet_join": [
-            {"name": f, "regressive": (f == "meet") == (algebra.representation == "direct")} for f in ("meet", "join")
-        ],
-        "binary_fallbacks": ["gp", "op", "lc", "rc", "add", "sub", "apply", "meet", "join"],
-        "unary_fallbacks": ["neg", "general_inverse", "exp", "log", "inverse", "reverse", "involute", "conjugate",
-                            "dual", "undual"],
+        # What meet and join compute on mv: the regressive and outer products
+        # where blades are direct, the other way round where dual (Expander.meet_or_join).
+        "meet_is_regressive": "true" if algebra.representation == "direct" else "false",
+        "meet_join_products": ("regressive and outer" if algebra.representation == "direct"
+                               else "outer and regressive"),
+        "library_functions": LIBRARY_FUNCTIONS,
+        # The tables the functions on mv read, as the algebra's descriptor names them.
+        "table_names": [f"{kind}_table" for kind in PRODUCTS] + ["dual_table", "undual_table", "left_complement_table",
+                                                                "right_complement_table", "reverse_signs",
+                                                                "involute_signs", "conjugate_signs"],
         "tables": tables(algebra, expander),
         "types": [named_type(t) for t in algebra.types],
         "aliases": [{"name": a, "target": "basic_" + t} for a, t in algebra.aliases.items()],

@@ -118,14 +118,20 @@ class Reference:
         if function == "meet":
             dual_a, dual_b = (self.gp(a, self.pseudoscalar_inverse) for a in args)
             return self.gp(self.model.product("op", dual_a, dual_b), self.pseudoscalar)
+        if function == "join":  # e3ga and c3ga blades are direct: join is the outer product
+            return self.model.product("op", args[0], args[1])
         if function == "norm2":
             value = self.norm2(args[0])
             return {0: value} if value else {}
         if function == "inverse":
             return scaled(reverse(args[0]), 1 / self.norm2(args[0]))
         if function == "apply":
+            # A versor keeps grades; a named type need not hold only versors
+            # (every pair of types gets apply), and the library keeps x's grades.
             v, x = args
-            return scaled(self.gp(self.gp(v, x), reverse(v)), 1 / self.norm2(v))
+            grades = {bin(blade).count("1") for blade in x}
+            sandwich = scaled(self.gp(self.gp(v, x), reverse(v)), 1 / self.norm2(v))
+            return {blade: value for blade, value in sandwich.items() if bin(blade).count("1") in grades}
         raise AssertionError(function)
 
 
@@ -517,3 +523,32 @@ class Duality(unittest.TestCase):
         self.assertEqual(kernels[("join", ("point", "point"))].result.named.name, "plane")
         self.assertEqual(kernels[("meet", ("plane", "plane"))].result.named.name, "point")
         self.assertEqual(load_text(PGA2_TEXT).representation, "direct")
+
+
+class EveryPair(unittest.TestCase):
+    """Issue 16: a product of two named types that the spec did not declare
+    gets a kernel too, so it never falls back to the generic mv path."""
+
+    def test_undeclared_products_have_kernels(self):
+        kernels = {k.signature: k for k in KERNELS["c3ga"]}
+        declared = {(r.name, tuple(a.name for a in r.arguments)) for r in ALGEBRAS["c3ga"].functions}
+        signature = ("lc", ("normalized_point", "sphere"))
+        self.assertNotIn(signature, declared)
+        self.assertEqual(kernels[signature].result.named.name, "circle")
+        for signature in (("gp", ("rotor", "circle")), ("op", ("flat_point", "euclidean_vector")),
+                          ("lc", ("flat_point", "circle")), ("rc", ("sphere", "dual_plane")),
+                          ("scp", ("circle", "line")), ("meet", ("circle", "plane")),
+                          ("join", ("point_pair", "normalized_point")), ("apply", ("translator", "circle"))):
+            self.assertNotIn(signature, declared)
+            self.assertTrue(signature in kernels, signature)
+
+    def test_identically_zero_and_dividing_pairs_are_left_to_mv(self):
+        kernels = {k.signature for k in KERNELS["c3ga"]}
+        self.assertNotIn(("op", ("sphere", "sphere")), kernels)  # grade 8 in 5 dimensions
+        self.assertNotIn(("scp", ("motor", "dual_sphere")), kernels)  # no common grade
+        # Sums of different types stay generic: only products are expanded for every pair.
+        self.assertNotIn(("add", ("normalized_point", "sphere")), kernels)
+        # A sandwich by a type whose <v ~v> is structurally zero divides by zero.
+        pga = expand(load_text("algebra p\nbasis e0 e1\nmetric e1.e1 = 1\ntype ideal = e0\ntype v = e0, e1\n"))
+        self.assertNotIn(("apply", ("ideal", "v")), {k.signature for k in pga})
+        self.assertIn(("apply", ("v", "ideal")), {k.signature for k in pga})

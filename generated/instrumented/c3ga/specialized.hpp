@@ -3,13 +3,9 @@
 // Variant: instrumented
 // Regenerate: gaphys-gen generate specs/c3ga.ga --variant instrumented --out generated/instrumented
 // Straight-line code for functions on mv whose argument bitmaps a profile
-// showed to be common, and the dispatchers the mv functions ask first. A
-// dispatcher returns false for every other bitmap (and always, without a
-// profile), and the caller takes the generic table-driven path. Kernels write
-// every coefficient of the caller's result r (which need not be zeroed first)
-// and its bits; r is none of the arguments (the kernels take it restrict-qualified).
-// A dispatcher tries, in order: the stored bitmaps, the exactly nonzero
-// coefficients' bitmaps, and the cheapest kernel made for a superset of those.
+// showed to be common, and per function the switch over them: what the
+// functions on mv ask first (gaphys/ga/mv_dispatch.hpp says how). Without a
+// profile there is none, and every call takes the generic table-driven path.
 #pragma once
 
 #include <cstdint>
@@ -21,166 +17,33 @@
 namespace c3ga {
 namespace detail {
 
-constexpr std::uint64_t pair_key(std::uint32_t a, std::uint32_t b) {
-  return std::uint64_t(a) << 32 | b;
-}
-
-// The (function, argument bitmaps) combinations with straight-line code, and
-// whether the kernel also serves subsets of its bitmaps, for tests and
-// reports; the last entry has no function.
-struct specialized_combination {
-  const char* function;
-  std::uint32_t a, b;
-  bool covers_subsets;
-};
-inline constexpr specialized_combination specialized_combinations[] = {
+// The (function, argument bitmaps) combinations with straight-line code; the
+// last entry has no function.
+inline constexpr gaphys::ga::specialized_combination specialized_combinations[] = {
     {nullptr, 0, 0, false},
 };
 
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_gp(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
-  switch (pair_key(a.bits, b.bits)) {
-    default:
-      return false;
-  }
-}
+// The kernels of function F; a function the profile made none for keeps these.
+template <call F>
+struct kernels : gaphys::ga::no_kernels {};
 
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_op(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
-  switch (pair_key(a.bits, b.bits)) {
-    default:
-      return false;
-  }
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_lc(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
-  switch (pair_key(a.bits, b.bits)) {
-    default:
-      return false;
-  }
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_rc(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
-  switch (pair_key(a.bits, b.bits)) {
-    default:
-      return false;
-  }
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_scp(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] T& r) {
-  switch (pair_key(a.bits, b.bits)) {
-    default:
-      return false;
-  }
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_add(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
-  switch (pair_key(a.bits, b.bits)) {
-    default:
-      return false;
-  }
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_sub(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
-  switch (pair_key(a.bits, b.bits)) {
-    default:
-      return false;
-  }
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_apply(const basic_mv<T>& a, const basic_mv<T>& b,
-                       [[maybe_unused]] basic_mv<T>& r) {
-  switch (pair_key(a.bits, b.bits)) {
-    default:
-      return false;
-  }
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_meet(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
-  switch (pair_key(a.bits, b.bits)) {
-    default:
-      return false;
-  }
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_join(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
-  switch (pair_key(a.bits, b.bits)) {
-    default:
-      return false;
-  }
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_neg(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
-  switch (a.bits) {
-    default:
-      return false;
-  }
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_reverse(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
-  switch (a.bits) {
-    default:
-      return false;
-  }
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_involute(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
-  switch (a.bits) {
-    default:
-      return false;
-  }
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_conjugate(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
-  switch (a.bits) {
-    default:
-      return false;
-  }
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_dual(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
-  switch (a.bits) {
-    default:
-      return false;
-  }
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_undual(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
-  switch (a.bits) {
-    default:
-      return false;
-  }
-}
+// The hooks the functions on mv ask first (gaphys/ga/mv_dispatch.hpp).
+using gaphys::ga::dispatch::specialized_add;
+using gaphys::ga::dispatch::specialized_apply;
+using gaphys::ga::dispatch::specialized_conjugate;
+using gaphys::ga::dispatch::specialized_dual;
+using gaphys::ga::dispatch::specialized_gp;
+using gaphys::ga::dispatch::specialized_involute;
+using gaphys::ga::dispatch::specialized_join;
+using gaphys::ga::dispatch::specialized_lc;
+using gaphys::ga::dispatch::specialized_meet;
+using gaphys::ga::dispatch::specialized_neg;
+using gaphys::ga::dispatch::specialized_op;
+using gaphys::ga::dispatch::specialized_rc;
+using gaphys::ga::dispatch::specialized_reverse;
+using gaphys::ga::dispatch::specialized_scp;
+using gaphys::ga::dispatch::specialized_sub;
+using gaphys::ga::dispatch::specialized_undual;
 
 }  // namespace detail
 }  // namespace c3ga

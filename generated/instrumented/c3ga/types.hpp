@@ -16,12 +16,16 @@
 #include "c3ga/tables.hpp"
 
 namespace c3ga {
+namespace detail {
+struct algebra;  // what gaphys/ga/mv_functions.hpp needs of c3ga (mv_functions.hpp)
+}  // namespace detail
 
 // All blade_count coefficients in canonical order, and a bitmap: bit i clear
 // means c[i] == 0 exactly; bit i set means c[i] may be nonzero.
 template <class T>
 struct basic_mv {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = blade_count;
 
   std::array<T, size> c;
@@ -72,6 +76,7 @@ using mv = basic_mv<real>;
 template <class T>
 struct basic_normalized_point {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 4;
 
   std::array<T, size> c{};  // e1, e2, e3, ni
@@ -114,6 +119,7 @@ using normalized_point = basic_normalized_point<real>;
 template <class T>
 struct basic_dual_sphere {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 5;
 
   std::array<T, size> c{};  // no, e1, e2, e3, ni
@@ -158,6 +164,7 @@ using dual_sphere = basic_dual_sphere<real>;
 template <class T>
 struct basic_dual_plane {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 4;
 
   std::array<T, size> c{};  // e1, e2, e3, ni
@@ -197,6 +204,7 @@ using dual_plane = basic_dual_plane<real>;
 template <class T>
 struct basic_euclidean_vector {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 3;
 
   std::array<T, size> c{};  // e1, e2, e3
@@ -232,6 +240,7 @@ using euclidean_vector = basic_euclidean_vector<real>;
 template <class T>
 struct basic_flat_point {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 4;
 
   std::array<T, size> c{};  // e1_ni, e2_ni, e3_ni, no_ni
@@ -272,6 +281,7 @@ using flat_point = basic_flat_point<real>;
 template <class T>
 struct basic_euclidean_bivector {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 3;
 
   std::array<T, size> c{};  // e12, e13, e23
@@ -308,6 +318,7 @@ using euclidean_bivector = basic_euclidean_bivector<real>;
 template <class T>
 struct basic_point_pair {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 10;
 
   std::array<T, size> c{};  // no_e1, no_e2, no_e3, no_ni, e12, e13, e1_ni, e23, e2_ni, e3_ni
@@ -374,6 +385,7 @@ using point_pair = basic_point_pair<real>;
 template <class T>
 struct basic_dual_line {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 6;
 
   std::array<T, size> c{};  // e12, e13, e23, e1_ni, e2_ni, e3_ni
@@ -423,6 +435,7 @@ using dual_line = basic_dual_line<real>;
 template <class T>
 struct basic_line {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 6;
 
   std::array<T, size> c{};  // e12_ni, e13_ni, e23_ni, no_e1_ni, no_e2_ni, no_e3_ni
@@ -472,6 +485,7 @@ using line = basic_line<real>;
 template <class T>
 struct basic_circle {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 10;
 
   std::array<T, size>
@@ -540,6 +554,7 @@ using circle = basic_circle<real>;
 template <class T>
 struct basic_sphere {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 5;
 
   std::array<T, size> c{};  // no_e123, no_e12_ni, no_e13_ni, no_e23_ni, e123_ni
@@ -585,6 +600,7 @@ using sphere = basic_sphere<real>;
 template <class T>
 struct basic_plane {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 4;
 
   std::array<T, size> c{};  // e123_ni, no_e12_ni, no_e13_ni, no_e23_ni
@@ -625,6 +641,7 @@ using plane = basic_plane<real>;
 template <class T>
 struct basic_pseudoscalar {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 1;
 
   std::array<T, size> c{};  // no_e123_ni
@@ -652,6 +669,7 @@ using pseudoscalar = basic_pseudoscalar<real>;
 template <class T>
 struct basic_rotor {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 4;
 
   std::array<T, size> c{};  // scalar, e12, e13, e23
@@ -691,6 +709,7 @@ using rotor = basic_rotor<real>;
 template <class T>
 struct basic_translator {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 4;
 
   std::array<T, size> c{};  // scalar, e1_ni, e2_ni, e3_ni
@@ -732,6 +751,7 @@ using translator = basic_translator<real>;
 template <class T>
 struct basic_motor {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 8;
 
   std::array<T, size> c{};  // scalar, e12, e13, e23, e1_ni, e2_ni, e3_ni, e123_ni

@@ -497,4 +497,760 @@ basic_rotor<T> op(const basic_rotor<T>& a, const basic_rotor<T>& b) {
   return basic_rotor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
+// gp(scalar, scalar) -> scalar
+template <class T>
+T gp(const basic_scalar<T>& a, const basic_scalar<T>& b) {
+  return gp(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// gp(scalar, vector) -> vector
+template <class T>
+basic_vector<T> gp(const basic_scalar<T>& a, const basic_vector<T>& b) {
+  return basic_vector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// gp(scalar, bivector) -> bivector
+template <class T>
+basic_bivector<T> gp(const basic_scalar<T>& a, const basic_bivector<T>& b) {
+  return basic_bivector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// gp(scalar, trivector) -> trivector
+template <class T>
+basic_trivector<T> gp(const basic_scalar<T>& a, const basic_trivector<T>& b) {
+  return basic_trivector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// gp(scalar, rotor) -> rotor
+template <class T>
+basic_rotor<T> gp(const basic_scalar<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// gp(vector, scalar) -> vector
+template <class T>
+basic_vector<T> gp(const basic_vector<T>& a, const basic_scalar<T>& b) {
+  return basic_vector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// gp(vector, trivector) -> bivector
+template <class T>
+basic_bivector<T> gp(const basic_vector<T>& a, const basic_trivector<T>& b) {
+  return basic_bivector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// gp(bivector, scalar) -> bivector
+template <class T>
+basic_bivector<T> gp(const basic_bivector<T>& a, const basic_scalar<T>& b) {
+  return basic_bivector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// gp(bivector, trivector) -> vector
+template <class T>
+basic_vector<T> gp(const basic_bivector<T>& a, const basic_trivector<T>& b) {
+  return basic_vector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// gp(trivector, scalar) -> trivector
+template <class T>
+basic_trivector<T> gp(const basic_trivector<T>& a, const basic_scalar<T>& b) {
+  return basic_trivector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// gp(trivector, vector) -> bivector
+template <class T>
+basic_bivector<T> gp(const basic_trivector<T>& a, const basic_vector<T>& b) {
+  return basic_bivector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// gp(trivector, bivector) -> vector
+template <class T>
+basic_vector<T> gp(const basic_trivector<T>& a, const basic_bivector<T>& b) {
+  return basic_vector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// gp(trivector, trivector) -> scalar
+template <class T>
+T gp(const basic_trivector<T>& a, const basic_trivector<T>& b) {
+  return gp(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// gp(trivector, rotor) -> mv
+template <class T>
+basic_mv<T> gp(const basic_trivector<T>& a, const basic_rotor<T>& b) {
+  return gp(basic_mv<T>(a), basic_mv<T>(b));
+}
+
+// gp(rotor, scalar) -> rotor
+template <class T>
+basic_rotor<T> gp(const basic_rotor<T>& a, const basic_scalar<T>& b) {
+  return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// gp(rotor, trivector) -> mv
+template <class T>
+basic_mv<T> gp(const basic_rotor<T>& a, const basic_trivector<T>& b) {
+  return gp(basic_mv<T>(a), basic_mv<T>(b));
+}
+
+// op(scalar, scalar) -> scalar
+template <class T>
+T op(const basic_scalar<T>& a, const basic_scalar<T>& b) {
+  return op(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// op(scalar, vector) -> vector
+template <class T>
+basic_vector<T> op(const basic_scalar<T>& a, const basic_vector<T>& b) {
+  return basic_vector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// op(scalar, bivector) -> bivector
+template <class T>
+basic_bivector<T> op(const basic_scalar<T>& a, const basic_bivector<T>& b) {
+  return basic_bivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// op(scalar, trivector) -> trivector
+template <class T>
+basic_trivector<T> op(const basic_scalar<T>& a, const basic_trivector<T>& b) {
+  return basic_trivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// op(scalar, rotor) -> rotor
+template <class T>
+basic_rotor<T> op(const basic_scalar<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// op(vector, scalar) -> vector
+template <class T>
+basic_vector<T> op(const basic_vector<T>& a, const basic_scalar<T>& b) {
+  return basic_vector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// op(vector, rotor) -> mv
+template <class T>
+basic_mv<T> op(const basic_vector<T>& a, const basic_rotor<T>& b) {
+  return op(basic_mv<T>(a), basic_mv<T>(b));
+}
+
+// op(bivector, scalar) -> bivector
+template <class T>
+basic_bivector<T> op(const basic_bivector<T>& a, const basic_scalar<T>& b) {
+  return basic_bivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// op(bivector, rotor) -> bivector
+template <class T>
+basic_bivector<T> op(const basic_bivector<T>& a, const basic_rotor<T>& b) {
+  return basic_bivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// op(trivector, scalar) -> trivector
+template <class T>
+basic_trivector<T> op(const basic_trivector<T>& a, const basic_scalar<T>& b) {
+  return basic_trivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// op(trivector, rotor) -> trivector
+template <class T>
+basic_trivector<T> op(const basic_trivector<T>& a, const basic_rotor<T>& b) {
+  return basic_trivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// op(rotor, scalar) -> rotor
+template <class T>
+basic_rotor<T> op(const basic_rotor<T>& a, const basic_scalar<T>& b) {
+  return basic_rotor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// op(rotor, vector) -> mv
+template <class T>
+basic_mv<T> op(const basic_rotor<T>& a, const basic_vector<T>& b) {
+  return op(basic_mv<T>(a), basic_mv<T>(b));
+}
+
+// op(rotor, bivector) -> bivector
+template <class T>
+basic_bivector<T> op(const basic_rotor<T>& a, const basic_bivector<T>& b) {
+  return basic_bivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// op(rotor, trivector) -> trivector
+template <class T>
+basic_trivector<T> op(const basic_rotor<T>& a, const basic_trivector<T>& b) {
+  return basic_trivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// lc(scalar, scalar) -> scalar
+template <class T>
+T lc(const basic_scalar<T>& a, const basic_scalar<T>& b) {
+  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// lc(scalar, vector) -> vector
+template <class T>
+basic_vector<T> lc(const basic_scalar<T>& a, const basic_vector<T>& b) {
+  return basic_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// lc(scalar, bivector) -> bivector
+template <class T>
+basic_bivector<T> lc(const basic_scalar<T>& a, const basic_bivector<T>& b) {
+  return basic_bivector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// lc(scalar, trivector) -> trivector
+template <class T>
+basic_trivector<T> lc(const basic_scalar<T>& a, const basic_trivector<T>& b) {
+  return basic_trivector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// lc(scalar, rotor) -> rotor
+template <class T>
+basic_rotor<T> lc(const basic_scalar<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// lc(vector, trivector) -> bivector
+template <class T>
+basic_bivector<T> lc(const basic_vector<T>& a, const basic_trivector<T>& b) {
+  return basic_bivector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// lc(vector, rotor) -> vector
+template <class T>
+basic_vector<T> lc(const basic_vector<T>& a, const basic_rotor<T>& b) {
+  return basic_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// lc(bivector, trivector) -> vector
+template <class T>
+basic_vector<T> lc(const basic_bivector<T>& a, const basic_trivector<T>& b) {
+  return basic_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// lc(bivector, rotor) -> scalar
+template <class T>
+T lc(const basic_bivector<T>& a, const basic_rotor<T>& b) {
+  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// lc(trivector, trivector) -> scalar
+template <class T>
+T lc(const basic_trivector<T>& a, const basic_trivector<T>& b) {
+  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// lc(rotor, scalar) -> scalar
+template <class T>
+T lc(const basic_rotor<T>& a, const basic_scalar<T>& b) {
+  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// lc(rotor, vector) -> vector
+template <class T>
+basic_vector<T> lc(const basic_rotor<T>& a, const basic_vector<T>& b) {
+  return basic_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// lc(rotor, bivector) -> rotor
+template <class T>
+basic_rotor<T> lc(const basic_rotor<T>& a, const basic_bivector<T>& b) {
+  return basic_rotor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// lc(rotor, trivector) -> mv
+template <class T>
+basic_mv<T> lc(const basic_rotor<T>& a, const basic_trivector<T>& b) {
+  return lc(basic_mv<T>(a), basic_mv<T>(b));
+}
+
+// rc(scalar, scalar) -> scalar
+template <class T>
+T rc(const basic_scalar<T>& a, const basic_scalar<T>& b) {
+  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// rc(scalar, rotor) -> scalar
+template <class T>
+T rc(const basic_scalar<T>& a, const basic_rotor<T>& b) {
+  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// rc(vector, scalar) -> vector
+template <class T>
+basic_vector<T> rc(const basic_vector<T>& a, const basic_scalar<T>& b) {
+  return basic_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// rc(vector, vector) -> scalar
+template <class T>
+T rc(const basic_vector<T>& a, const basic_vector<T>& b) {
+  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// rc(vector, rotor) -> vector
+template <class T>
+basic_vector<T> rc(const basic_vector<T>& a, const basic_rotor<T>& b) {
+  return basic_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// rc(bivector, scalar) -> bivector
+template <class T>
+basic_bivector<T> rc(const basic_bivector<T>& a, const basic_scalar<T>& b) {
+  return basic_bivector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// rc(bivector, bivector) -> scalar
+template <class T>
+T rc(const basic_bivector<T>& a, const basic_bivector<T>& b) {
+  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// rc(bivector, rotor) -> rotor
+template <class T>
+basic_rotor<T> rc(const basic_bivector<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// rc(trivector, scalar) -> trivector
+template <class T>
+basic_trivector<T> rc(const basic_trivector<T>& a, const basic_scalar<T>& b) {
+  return basic_trivector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// rc(trivector, vector) -> bivector
+template <class T>
+basic_bivector<T> rc(const basic_trivector<T>& a, const basic_vector<T>& b) {
+  return basic_bivector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// rc(trivector, bivector) -> vector
+template <class T>
+basic_vector<T> rc(const basic_trivector<T>& a, const basic_bivector<T>& b) {
+  return basic_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// rc(trivector, trivector) -> scalar
+template <class T>
+T rc(const basic_trivector<T>& a, const basic_trivector<T>& b) {
+  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// rc(trivector, rotor) -> mv
+template <class T>
+basic_mv<T> rc(const basic_trivector<T>& a, const basic_rotor<T>& b) {
+  return rc(basic_mv<T>(a), basic_mv<T>(b));
+}
+
+// rc(rotor, scalar) -> rotor
+template <class T>
+basic_rotor<T> rc(const basic_rotor<T>& a, const basic_scalar<T>& b) {
+  return basic_rotor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// rc(rotor, vector) -> vector
+template <class T>
+basic_vector<T> rc(const basic_rotor<T>& a, const basic_vector<T>& b) {
+  return basic_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// rc(rotor, bivector) -> scalar
+template <class T>
+T rc(const basic_rotor<T>& a, const basic_bivector<T>& b) {
+  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// rc(rotor, rotor) -> rotor
+template <class T>
+basic_rotor<T> rc(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// scp(scalar, scalar) -> scalar
+template <class T>
+T scp(const basic_scalar<T>& a, const basic_scalar<T>& b) {
+  return scp(basic_mv<T>(a), basic_mv<T>(b));
+}
+
+// scp(scalar, rotor) -> scalar
+template <class T>
+T scp(const basic_scalar<T>& a, const basic_rotor<T>& b) {
+  return scp(basic_mv<T>(a), basic_mv<T>(b));
+}
+
+// scp(bivector, rotor) -> scalar
+template <class T>
+T scp(const basic_bivector<T>& a, const basic_rotor<T>& b) {
+  return scp(basic_mv<T>(a), basic_mv<T>(b));
+}
+
+// scp(trivector, trivector) -> scalar
+template <class T>
+T scp(const basic_trivector<T>& a, const basic_trivector<T>& b) {
+  return scp(basic_mv<T>(a), basic_mv<T>(b));
+}
+
+// scp(rotor, scalar) -> scalar
+template <class T>
+T scp(const basic_rotor<T>& a, const basic_scalar<T>& b) {
+  return scp(basic_mv<T>(a), basic_mv<T>(b));
+}
+
+// scp(rotor, bivector) -> scalar
+template <class T>
+T scp(const basic_rotor<T>& a, const basic_bivector<T>& b) {
+  return scp(basic_mv<T>(a), basic_mv<T>(b));
+}
+
+// meet(scalar, trivector) -> scalar
+template <class T>
+T meet(const basic_scalar<T>& a, const basic_trivector<T>& b) {
+  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// meet(vector, bivector) -> scalar
+template <class T>
+T meet(const basic_vector<T>& a, const basic_bivector<T>& b) {
+  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// meet(vector, trivector) -> vector
+template <class T>
+basic_vector<T> meet(const basic_vector<T>& a, const basic_trivector<T>& b) {
+  return basic_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// meet(vector, rotor) -> scalar
+template <class T>
+T meet(const basic_vector<T>& a, const basic_rotor<T>& b) {
+  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// meet(bivector, vector) -> scalar
+template <class T>
+T meet(const basic_bivector<T>& a, const basic_vector<T>& b) {
+  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// meet(bivector, trivector) -> bivector
+template <class T>
+basic_bivector<T> meet(const basic_bivector<T>& a, const basic_trivector<T>& b) {
+  return basic_bivector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// meet(bivector, rotor) -> vector
+template <class T>
+basic_vector<T> meet(const basic_bivector<T>& a, const basic_rotor<T>& b) {
+  return basic_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// meet(trivector, scalar) -> scalar
+template <class T>
+T meet(const basic_trivector<T>& a, const basic_scalar<T>& b) {
+  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// meet(trivector, vector) -> vector
+template <class T>
+basic_vector<T> meet(const basic_trivector<T>& a, const basic_vector<T>& b) {
+  return basic_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// meet(trivector, bivector) -> bivector
+template <class T>
+basic_bivector<T> meet(const basic_trivector<T>& a, const basic_bivector<T>& b) {
+  return basic_bivector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// meet(trivector, trivector) -> trivector
+template <class T>
+basic_trivector<T> meet(const basic_trivector<T>& a, const basic_trivector<T>& b) {
+  return basic_trivector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// meet(trivector, rotor) -> rotor
+template <class T>
+basic_rotor<T> meet(const basic_trivector<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// meet(rotor, vector) -> scalar
+template <class T>
+T meet(const basic_rotor<T>& a, const basic_vector<T>& b) {
+  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// meet(rotor, bivector) -> vector
+template <class T>
+basic_vector<T> meet(const basic_rotor<T>& a, const basic_bivector<T>& b) {
+  return basic_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// meet(rotor, trivector) -> rotor
+template <class T>
+basic_rotor<T> meet(const basic_rotor<T>& a, const basic_trivector<T>& b) {
+  return basic_rotor<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// meet(rotor, rotor) -> vector
+template <class T>
+basic_vector<T> meet(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+  return basic_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// join(scalar, scalar) -> scalar
+template <class T>
+T join(const basic_scalar<T>& a, const basic_scalar<T>& b) {
+  return join(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// join(scalar, vector) -> vector
+template <class T>
+basic_vector<T> join(const basic_scalar<T>& a, const basic_vector<T>& b) {
+  return basic_vector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// join(scalar, bivector) -> bivector
+template <class T>
+basic_bivector<T> join(const basic_scalar<T>& a, const basic_bivector<T>& b) {
+  return basic_bivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// join(scalar, trivector) -> trivector
+template <class T>
+basic_trivector<T> join(const basic_scalar<T>& a, const basic_trivector<T>& b) {
+  return basic_trivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// join(scalar, rotor) -> rotor
+template <class T>
+basic_rotor<T> join(const basic_scalar<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// join(vector, scalar) -> vector
+template <class T>
+basic_vector<T> join(const basic_vector<T>& a, const basic_scalar<T>& b) {
+  return basic_vector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// join(vector, vector) -> bivector
+template <class T>
+basic_bivector<T> join(const basic_vector<T>& a, const basic_vector<T>& b) {
+  return basic_bivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// join(vector, bivector) -> trivector
+template <class T>
+basic_trivector<T> join(const basic_vector<T>& a, const basic_bivector<T>& b) {
+  return basic_trivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// join(vector, rotor) -> mv
+template <class T>
+basic_mv<T> join(const basic_vector<T>& a, const basic_rotor<T>& b) {
+  return join(basic_mv<T>(a), basic_mv<T>(b));
+}
+
+// join(bivector, scalar) -> bivector
+template <class T>
+basic_bivector<T> join(const basic_bivector<T>& a, const basic_scalar<T>& b) {
+  return basic_bivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// join(bivector, vector) -> trivector
+template <class T>
+basic_trivector<T> join(const basic_bivector<T>& a, const basic_vector<T>& b) {
+  return basic_trivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// join(bivector, rotor) -> bivector
+template <class T>
+basic_bivector<T> join(const basic_bivector<T>& a, const basic_rotor<T>& b) {
+  return basic_bivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// join(trivector, scalar) -> trivector
+template <class T>
+basic_trivector<T> join(const basic_trivector<T>& a, const basic_scalar<T>& b) {
+  return basic_trivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// join(trivector, rotor) -> trivector
+template <class T>
+basic_trivector<T> join(const basic_trivector<T>& a, const basic_rotor<T>& b) {
+  return basic_trivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// join(rotor, scalar) -> rotor
+template <class T>
+basic_rotor<T> join(const basic_rotor<T>& a, const basic_scalar<T>& b) {
+  return basic_rotor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// join(rotor, vector) -> mv
+template <class T>
+basic_mv<T> join(const basic_rotor<T>& a, const basic_vector<T>& b) {
+  return join(basic_mv<T>(a), basic_mv<T>(b));
+}
+
+// join(rotor, bivector) -> bivector
+template <class T>
+basic_bivector<T> join(const basic_rotor<T>& a, const basic_bivector<T>& b) {
+  return basic_bivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// join(rotor, trivector) -> trivector
+template <class T>
+basic_trivector<T> join(const basic_rotor<T>& a, const basic_trivector<T>& b) {
+  return basic_trivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// join(rotor, rotor) -> rotor
+template <class T>
+basic_rotor<T> join(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// apply(scalar, scalar) -> scalar
+template <class T>
+T apply(const basic_scalar<T>& a, const basic_scalar<T>& b) {
+  return apply(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// apply(scalar, vector) -> vector
+template <class T>
+basic_vector<T> apply(const basic_scalar<T>& a, const basic_vector<T>& b) {
+  return basic_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// apply(scalar, bivector) -> bivector
+template <class T>
+basic_bivector<T> apply(const basic_scalar<T>& a, const basic_bivector<T>& b) {
+  return basic_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// apply(scalar, trivector) -> trivector
+template <class T>
+basic_trivector<T> apply(const basic_scalar<T>& a, const basic_trivector<T>& b) {
+  return basic_trivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// apply(scalar, rotor) -> rotor
+template <class T>
+basic_rotor<T> apply(const basic_scalar<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// apply(vector, scalar) -> scalar
+template <class T>
+T apply(const basic_vector<T>& a, const basic_scalar<T>& b) {
+  return apply(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// apply(vector, vector) -> vector
+template <class T>
+basic_vector<T> apply(const basic_vector<T>& a, const basic_vector<T>& b) {
+  return basic_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// apply(vector, bivector) -> bivector
+template <class T>
+basic_bivector<T> apply(const basic_vector<T>& a, const basic_bivector<T>& b) {
+  return basic_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// apply(vector, trivector) -> trivector
+template <class T>
+basic_trivector<T> apply(const basic_vector<T>& a, const basic_trivector<T>& b) {
+  return basic_trivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// apply(vector, rotor) -> rotor
+template <class T>
+basic_rotor<T> apply(const basic_vector<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// apply(bivector, scalar) -> scalar
+template <class T>
+T apply(const basic_bivector<T>& a, const basic_scalar<T>& b) {
+  return apply(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// apply(bivector, vector) -> vector
+template <class T>
+basic_vector<T> apply(const basic_bivector<T>& a, const basic_vector<T>& b) {
+  return basic_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// apply(bivector, bivector) -> bivector
+template <class T>
+basic_bivector<T> apply(const basic_bivector<T>& a, const basic_bivector<T>& b) {
+  return basic_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// apply(bivector, trivector) -> trivector
+template <class T>
+basic_trivector<T> apply(const basic_bivector<T>& a, const basic_trivector<T>& b) {
+  return basic_trivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// apply(bivector, rotor) -> rotor
+template <class T>
+basic_rotor<T> apply(const basic_bivector<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// apply(trivector, scalar) -> scalar
+template <class T>
+T apply(const basic_trivector<T>& a, const basic_scalar<T>& b) {
+  return apply(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// apply(trivector, vector) -> vector
+template <class T>
+basic_vector<T> apply(const basic_trivector<T>& a, const basic_vector<T>& b) {
+  return basic_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// apply(trivector, bivector) -> bivector
+template <class T>
+basic_bivector<T> apply(const basic_trivector<T>& a, const basic_bivector<T>& b) {
+  return basic_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// apply(trivector, trivector) -> trivector
+template <class T>
+basic_trivector<T> apply(const basic_trivector<T>& a, const basic_trivector<T>& b) {
+  return basic_trivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// apply(trivector, rotor) -> rotor
+template <class T>
+basic_rotor<T> apply(const basic_trivector<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// apply(rotor, scalar) -> scalar
+template <class T>
+T apply(const basic_rotor<T>& a, const basic_scalar<T>& b) {
+  return apply(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+}
+
+// apply(rotor, trivector) -> trivector
+template <class T>
+basic_trivector<T> apply(const basic_rotor<T>& a, const basic_trivector<T>& b) {
+  return basic_trivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
+// apply(rotor, rotor) -> rotor
+template <class T>
+basic_rotor<T> apply(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+}
+
 }  // namespace e3ga

@@ -1731,4 +1731,19554 @@ GAPHYS_ALWAYS_INLINE T scp(const basic_motor<T>& a, const basic_motor<T>& b) {
   return a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
 }
 
+// gp(normalized_point, normalized_point) -> mv: 15 mul, 14 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
+                                    const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[3] - b.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[6] = -a.c[0] + b.c[0];
+  r.c[7] = -a.c[1] + b.c[1];
+  r.c[8] = -a.c[2] + b.c[2];
+  r.c[9] = -a.c[3] + b.c[3];
+  r.c[10] = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  r.c[11] = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  r.c[12] = a.c[0] * b.c[3] - a.c[3] * b.c[0];
+  r.c[13] = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.c[14] = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  r.c[15] = a.c[2] * b.c[3] - a.c[3] * b.c[2];
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// gp(normalized_point, dual_sphere) -> mv: 20 mul, 14 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
+                                    const basic_dual_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -b.c[4] + a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] - a.c[3] * b.c[0];
+  r.c[6] = b.c[1] - a.c[0] * b.c[0];
+  r.c[7] = b.c[2] - a.c[1] * b.c[0];
+  r.c[8] = b.c[3] - a.c[2] * b.c[0];
+  r.c[9] = b.c[4] - a.c[3] * b.c[0];
+  r.c[10] = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  r.c[11] = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  r.c[12] = a.c[0] * b.c[4] - a.c[3] * b.c[1];
+  r.c[13] = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  r.c[14] = a.c[1] * b.c[4] - a.c[3] * b.c[2];
+  r.c[15] = a.c[2] * b.c[4] - a.c[3] * b.c[3];
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// gp(normalized_point, dual_plane) -> mv: 15 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
+                                    const basic_dual_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -b.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[6] = b.c[0];
+  r.c[7] = b.c[1];
+  r.c[8] = b.c[2];
+  r.c[9] = b.c[3];
+  r.c[10] = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  r.c[11] = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  r.c[12] = a.c[0] * b.c[3] - a.c[3] * b.c[0];
+  r.c[13] = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.c[14] = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  r.c[15] = a.c[2] * b.c[3] - a.c[3] * b.c[2];
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// gp(normalized_point, euclidean_vector) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
+                                    const basic_euclidean_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[6] = b.c[0];
+  r.c[7] = b.c[1];
+  r.c[8] = b.c[2];
+  r.c[10] = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  r.c[11] = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  r.c[12] = -a.c[3] * b.c[0];
+  r.c[13] = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.c[14] = -a.c[3] * b.c[1];
+  r.c[15] = -a.c[3] * b.c[2];
+  r.bits = 0xfdc1u;
+  return r;
+}
+
+// gp(normalized_point, flat_point) -> mv: 13 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
+                                    const basic_flat_point<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = b.c[3];
+  r.c[2] = b.c[0];
+  r.c[3] = b.c[1];
+  r.c[4] = b.c[2];
+  r.c[5] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  r.c[18] = b.c[0] - a.c[0] * b.c[3];
+  r.c[20] = b.c[1] - a.c[1] * b.c[3];
+  r.c[21] = b.c[2] - a.c[2] * b.c[3];
+  r.c[23] = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  r.c[24] = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  r.c[25] = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.bits = 0x3b4003eu;
+  return r;
+}
+
+// gp(normalized_point, euclidean_bivector) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
+                                    const basic_euclidean_bivector<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[3] = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  r.c[4] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[16] = b.c[0];
+  r.c[17] = b.c[1];
+  r.c[19] = b.c[2];
+  r.c[22] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[23] = a.c[3] * b.c[0];
+  r.c[24] = a.c[3] * b.c[1];
+  r.c[25] = a.c[3] * b.c[2];
+  r.bits = 0x3cb001cu;
+  return r;
+}
+
+// gp(normalized_point, point_pair) -> mv: 40 mul, 35 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
+                                    const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = b.c[3] - a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[2] = b.c[6] - a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[0];
+  r.c[3] = b.c[8] + a.c[0] * b.c[4] - a.c[2] * b.c[7] - a.c[3] * b.c[1];
+  r.c[4] = b.c[9] + a.c[0] * b.c[5] + a.c[1] * b.c[7] - a.c[3] * b.c[2];
+  r.c[5] = a.c[0] * b.c[6] + a.c[1] * b.c[8] + a.c[2] * b.c[9] - a.c[3] * b.c[3];
+  r.c[16] = b.c[4] - a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  r.c[17] = b.c[5] - a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  r.c[18] = b.c[6] - a.c[0] * b.c[3] + a.c[3] * b.c[0];
+  r.c[19] = b.c[7] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[20] = b.c[8] - a.c[1] * b.c[3] + a.c[3] * b.c[1];
+  r.c[21] = b.c[9] - a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  r.c[22] = a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  r.c[23] = a.c[0] * b.c[8] - a.c[1] * b.c[6] + a.c[3] * b.c[4];
+  r.c[24] = a.c[0] * b.c[9] - a.c[2] * b.c[6] + a.c[3] * b.c[5];
+  r.c[25] = a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[7];
+  r.bits = 0x3ff003eu;
+  return r;
+}
+
+// gp(normalized_point, dual_line) -> mv: 21 mul, 16 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
+                                    const basic_dual_line<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = b.c[3] - a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[3] = b.c[4] + a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  r.c[4] = b.c[5] + a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[5] = a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5];
+  r.c[16] = b.c[0];
+  r.c[17] = b.c[1];
+  r.c[18] = b.c[3];
+  r.c[19] = b.c[2];
+  r.c[20] = b.c[4];
+  r.c[21] = b.c[5];
+  r.c[22] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[23] = a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[0];
+  r.c[24] = a.c[0] * b.c[5] - a.c[2] * b.c[3] + a.c[3] * b.c[1];
+  r.c[25] = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[2];
+  r.bits = 0x3ff003cu;
+  return r;
+}
+
+// gp(normalized_point, line) -> mv: 21 mul, 16 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_line<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = -b.c[3];
+  r.c[7] = -b.c[4];
+  r.c[8] = -b.c[5];
+  r.c[9] = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  r.c[10] = -b.c[0];
+  r.c[11] = -b.c[1];
+  r.c[12] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[3];
+  r.c[13] = -b.c[2];
+  r.c[14] = a.c[0] * b.c[0] - a.c[2] * b.c[2] - a.c[3] * b.c[4];
+  r.c[15] = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[5];
+  r.c[27] = b.c[0] - a.c[0] * b.c[4] + a.c[1] * b.c[3];
+  r.c[28] = b.c[1] - a.c[0] * b.c[5] + a.c[2] * b.c[3];
+  r.c[29] = b.c[2] - a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  r.c[30] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.bits = 0x7800ffc0u;
+  return r;
+}
+
+// gp(normalized_point, circle) -> mv: 40 mul, 35 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = -b.c[3] + a.c[1] * b.c[0] + a.c[2] * b.c[1];
+  r.c[7] = -b.c[4] - a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  r.c[8] = -b.c[5] - a.c[0] * b.c[1] - a.c[1] * b.c[2];
+  r.c[9] = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  r.c[10] = -b.c[7] + a.c[2] * b.c[6] - a.c[3] * b.c[0];
+  r.c[11] = -b.c[8] - a.c[1] * b.c[6] - a.c[3] * b.c[1];
+  r.c[12] = -a.c[1] * b.c[7] - a.c[2] * b.c[8] - a.c[3] * b.c[3];
+  r.c[13] = -b.c[9] + a.c[0] * b.c[6] - a.c[3] * b.c[2];
+  r.c[14] = a.c[0] * b.c[7] - a.c[2] * b.c[9] - a.c[3] * b.c[4];
+  r.c[15] = a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[3] * b.c[5];
+  r.c[26] = b.c[6] - a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  r.c[27] = b.c[7] - a.c[0] * b.c[4] + a.c[1] * b.c[3] - a.c[3] * b.c[0];
+  r.c[28] = b.c[8] - a.c[0] * b.c[5] + a.c[2] * b.c[3] - a.c[3] * b.c[1];
+  r.c[29] = b.c[9] - a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[3] * b.c[2];
+  r.c[30] = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7] - a.c[3] * b.c[6];
+  r.bits = 0x7c00ffc0u;
+  return r;
+}
+
+// gp(normalized_point, sphere) -> mv: 20 mul, 14 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = b.c[1] - a.c[2] * b.c[0];
+  r.c[17] = b.c[2] + a.c[1] * b.c[0];
+  r.c[18] = a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[19] = b.c[3] - a.c[0] * b.c[0];
+  r.c[20] = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  r.c[21] = -a.c[0] * b.c[2] - a.c[1] * b.c[3];
+  r.c[22] = b.c[4] - a.c[3] * b.c[0];
+  r.c[23] = a.c[2] * b.c[4] - a.c[3] * b.c[1];
+  r.c[24] = -a.c[1] * b.c[4] - a.c[3] * b.c[2];
+  r.c[25] = a.c[0] * b.c[4] - a.c[3] * b.c[3];
+  r.c[31] = b.c[4] - a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// gp(normalized_point, plane) -> mv: 15 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = b.c[1];
+  r.c[17] = b.c[2];
+  r.c[18] = a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[19] = b.c[3];
+  r.c[20] = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  r.c[21] = -a.c[0] * b.c[2] - a.c[1] * b.c[3];
+  r.c[22] = b.c[0];
+  r.c[23] = a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[24] = -a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  r.c[25] = a.c[0] * b.c[0] - a.c[3] * b.c[3];
+  r.c[31] = b.c[0] - a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// gp(normalized_point, pseudoscalar) -> sphere: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> gp(const basic_normalized_point<T>& a,
+                                        const basic_pseudoscalar<T>& b) {
+  return basic_sphere<T>(-b.c[0], -a.c[2] * b.c[0], a.c[1] * b.c[0], -a.c[0] * b.c[0],
+                         -a.c[3] * b.c[0]);
+}
+
+// gp(normalized_point, rotor) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = b.c[0];
+  r.c[2] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[3] = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
+  r.c[4] = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0];
+  r.c[5] = a.c[3] * b.c[0];
+  r.c[16] = b.c[1];
+  r.c[17] = b.c[2];
+  r.c[19] = b.c[3];
+  r.c[22] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[23] = a.c[3] * b.c[1];
+  r.c[24] = a.c[3] * b.c[2];
+  r.c[25] = a.c[3] * b.c[3];
+  r.bits = 0x3cb003eu;
+  return r;
+}
+
+// gp(normalized_point, translator) -> mv: 13 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
+                                    const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = b.c[0];
+  r.c[2] = b.c[1] + a.c[0] * b.c[0];
+  r.c[3] = b.c[2] + a.c[1] * b.c[0];
+  r.c[4] = b.c[3] + a.c[2] * b.c[0];
+  r.c[5] = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] + a.c[3] * b.c[0];
+  r.c[18] = b.c[1];
+  r.c[20] = b.c[2];
+  r.c[21] = b.c[3];
+  r.c[23] = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  r.c[24] = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  r.c[25] = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  r.bits = 0x3b4003eu;
+  return r;
+}
+
+// gp(normalized_point, motor) -> mv: 28 mul, 24 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = b.c[0];
+  r.c[2] = b.c[4] + a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[3] = b.c[5] + a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
+  r.c[4] = b.c[6] + a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0];
+  r.c[5] = a.c[0] * b.c[4] + a.c[1] * b.c[5] + a.c[2] * b.c[6] + a.c[3] * b.c[0];
+  r.c[16] = b.c[1];
+  r.c[17] = b.c[2];
+  r.c[18] = b.c[4];
+  r.c[19] = b.c[3];
+  r.c[20] = b.c[5];
+  r.c[21] = b.c[6];
+  r.c[22] = b.c[7] + a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[23] = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[7] + a.c[3] * b.c[1];
+  r.c[24] = a.c[0] * b.c[6] - a.c[1] * b.c[7] - a.c[2] * b.c[4] + a.c[3] * b.c[2];
+  r.c[25] = a.c[0] * b.c[7] + a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[3];
+  r.c[31] = b.c[7];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// gp(dual_sphere, normalized_point) -> mv: 20 mul, 14 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a,
+                                    const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[4] - a.c[0] * b.c[3] + a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  r.c[6] = -a.c[1] + a.c[0] * b.c[0];
+  r.c[7] = -a.c[2] + a.c[0] * b.c[1];
+  r.c[8] = -a.c[3] + a.c[0] * b.c[2];
+  r.c[9] = -a.c[4] + a.c[0] * b.c[3];
+  r.c[10] = a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  r.c[11] = a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  r.c[12] = a.c[1] * b.c[3] - a.c[4] * b.c[0];
+  r.c[13] = a.c[2] * b.c[2] - a.c[3] * b.c[1];
+  r.c[14] = a.c[2] * b.c[3] - a.c[4] * b.c[1];
+  r.c[15] = a.c[3] * b.c[3] - a.c[4] * b.c[2];
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// gp(dual_sphere, dual_plane) -> mv: 20 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_dual_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[0] * b.c[3] + a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[0] * b.c[1];
+  r.c[8] = a.c[0] * b.c[2];
+  r.c[9] = a.c[0] * b.c[3];
+  r.c[10] = a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  r.c[11] = a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  r.c[12] = a.c[1] * b.c[3] - a.c[4] * b.c[0];
+  r.c[13] = a.c[2] * b.c[2] - a.c[3] * b.c[1];
+  r.c[14] = a.c[2] * b.c[3] - a.c[4] * b.c[1];
+  r.c[15] = a.c[3] * b.c[3] - a.c[4] * b.c[2];
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// gp(dual_sphere, euclidean_vector) -> mv: 15 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a,
+                                    const basic_euclidean_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[0] * b.c[1];
+  r.c[8] = a.c[0] * b.c[2];
+  r.c[10] = a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  r.c[11] = a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  r.c[12] = -a.c[4] * b.c[0];
+  r.c[13] = a.c[2] * b.c[2] - a.c[3] * b.c[1];
+  r.c[14] = -a.c[4] * b.c[1];
+  r.c[15] = -a.c[4] * b.c[2];
+  r.bits = 0xfdc1u;
+  return r;
+}
+
+// gp(dual_sphere, flat_point) -> mv: 20 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_flat_point<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[3];
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[0] * b.c[1];
+  r.c[4] = a.c[0] * b.c[2];
+  r.c[5] = a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2] - a.c[4] * b.c[3];
+  r.c[18] = a.c[0] * b.c[0] - a.c[1] * b.c[3];
+  r.c[20] = a.c[0] * b.c[1] - a.c[2] * b.c[3];
+  r.c[21] = a.c[0] * b.c[2] - a.c[3] * b.c[3];
+  r.c[23] = a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  r.c[24] = a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  r.c[25] = a.c[2] * b.c[2] - a.c[3] * b.c[1];
+  r.bits = 0x3b4003eu;
+  return r;
+}
+
+// gp(dual_sphere, euclidean_bivector) -> mv: 15 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a,
+                                    const basic_euclidean_bivector<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = -a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[3] = a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  r.c[4] = a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[0] * b.c[1];
+  r.c[19] = a.c[0] * b.c[2];
+  r.c[22] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[23] = a.c[4] * b.c[0];
+  r.c[24] = a.c[4] * b.c[1];
+  r.c[25] = a.c[4] * b.c[2];
+  r.bits = 0x3cb001cu;
+  return r;
+}
+
+// gp(dual_sphere, point_pair) -> mv: 50 mul, 35 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[3] - a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[2] = a.c[0] * b.c[6] - a.c[2] * b.c[4] - a.c[3] * b.c[5] - a.c[4] * b.c[0];
+  r.c[3] = a.c[0] * b.c[8] + a.c[1] * b.c[4] - a.c[3] * b.c[7] - a.c[4] * b.c[1];
+  r.c[4] = a.c[0] * b.c[9] + a.c[1] * b.c[5] + a.c[2] * b.c[7] - a.c[4] * b.c[2];
+  r.c[5] = a.c[1] * b.c[6] + a.c[2] * b.c[8] + a.c[3] * b.c[9] - a.c[4] * b.c[3];
+  r.c[16] = a.c[0] * b.c[4] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[17] = a.c[0] * b.c[5] - a.c[1] * b.c[2] + a.c[3] * b.c[0];
+  r.c[18] = a.c[0] * b.c[6] - a.c[1] * b.c[3] + a.c[4] * b.c[0];
+  r.c[19] = a.c[0] * b.c[7] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[20] = a.c[0] * b.c[8] - a.c[2] * b.c[3] + a.c[4] * b.c[1];
+  r.c[21] = a.c[0] * b.c[9] - a.c[3] * b.c[3] + a.c[4] * b.c[2];
+  r.c[22] = a.c[1] * b.c[7] - a.c[2] * b.c[5] + a.c[3] * b.c[4];
+  r.c[23] = a.c[1] * b.c[8] - a.c[2] * b.c[6] + a.c[4] * b.c[4];
+  r.c[24] = a.c[1] * b.c[9] - a.c[3] * b.c[6] + a.c[4] * b.c[5];
+  r.c[25] = a.c[2] * b.c[9] - a.c[3] * b.c[8] + a.c[4] * b.c[7];
+  r.bits = 0x3ff003eu;
+  return r;
+}
+
+// gp(dual_sphere, dual_line) -> mv: 30 mul, 16 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_dual_line<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[3] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[3] = a.c[0] * b.c[4] + a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  r.c[4] = a.c[0] * b.c[5] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[5] = a.c[1] * b.c[3] + a.c[2] * b.c[4] + a.c[3] * b.c[5];
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[0] * b.c[1];
+  r.c[18] = a.c[0] * b.c[3];
+  r.c[19] = a.c[0] * b.c[2];
+  r.c[20] = a.c[0] * b.c[4];
+  r.c[21] = a.c[0] * b.c[5];
+  r.c[22] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[23] = a.c[1] * b.c[4] - a.c[2] * b.c[3] + a.c[4] * b.c[0];
+  r.c[24] = a.c[1] * b.c[5] - a.c[3] * b.c[3] + a.c[4] * b.c[1];
+  r.c[25] = a.c[2] * b.c[5] - a.c[3] * b.c[4] + a.c[4] * b.c[2];
+  r.bits = 0x3ff003cu;
+  return r;
+}
+
+// gp(dual_sphere, line) -> mv: 30 mul, 16 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_line<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = -a.c[0] * b.c[3];
+  r.c[7] = -a.c[0] * b.c[4];
+  r.c[8] = -a.c[0] * b.c[5];
+  r.c[9] = -a.c[1] * b.c[3] - a.c[2] * b.c[4] - a.c[3] * b.c[5];
+  r.c[10] = -a.c[0] * b.c[0];
+  r.c[11] = -a.c[0] * b.c[1];
+  r.c[12] = -a.c[2] * b.c[0] - a.c[3] * b.c[1] - a.c[4] * b.c[3];
+  r.c[13] = -a.c[0] * b.c[2];
+  r.c[14] = a.c[1] * b.c[0] - a.c[3] * b.c[2] - a.c[4] * b.c[4];
+  r.c[15] = a.c[1] * b.c[1] + a.c[2] * b.c[2] - a.c[4] * b.c[5];
+  r.c[27] = a.c[0] * b.c[0] - a.c[1] * b.c[4] + a.c[2] * b.c[3];
+  r.c[28] = a.c[0] * b.c[1] - a.c[1] * b.c[5] + a.c[3] * b.c[3];
+  r.c[29] = a.c[0] * b.c[2] - a.c[2] * b.c[5] + a.c[3] * b.c[4];
+  r.c[30] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.bits = 0x7800ffc0u;
+  return r;
+}
+
+// gp(dual_sphere, circle) -> mv: 50 mul, 35 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = -a.c[0] * b.c[3] + a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  r.c[7] = -a.c[0] * b.c[4] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  r.c[8] = -a.c[0] * b.c[5] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[9] = -a.c[1] * b.c[3] - a.c[2] * b.c[4] - a.c[3] * b.c[5];
+  r.c[10] = -a.c[0] * b.c[7] + a.c[3] * b.c[6] - a.c[4] * b.c[0];
+  r.c[11] = -a.c[0] * b.c[8] - a.c[2] * b.c[6] - a.c[4] * b.c[1];
+  r.c[12] = -a.c[2] * b.c[7] - a.c[3] * b.c[8] - a.c[4] * b.c[3];
+  r.c[13] = -a.c[0] * b.c[9] + a.c[1] * b.c[6] - a.c[4] * b.c[2];
+  r.c[14] = a.c[1] * b.c[7] - a.c[3] * b.c[9] - a.c[4] * b.c[4];
+  r.c[15] = a.c[1] * b.c[8] + a.c[2] * b.c[9] - a.c[4] * b.c[5];
+  r.c[26] = a.c[0] * b.c[6] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  r.c[27] = a.c[0] * b.c[7] - a.c[1] * b.c[4] + a.c[2] * b.c[3] - a.c[4] * b.c[0];
+  r.c[28] = a.c[0] * b.c[8] - a.c[1] * b.c[5] + a.c[3] * b.c[3] - a.c[4] * b.c[1];
+  r.c[29] = a.c[0] * b.c[9] - a.c[2] * b.c[5] + a.c[3] * b.c[4] - a.c[4] * b.c[2];
+  r.c[30] = a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[7] - a.c[4] * b.c[6];
+  r.bits = 0x7c00ffc0u;
+  return r;
+}
+
+// gp(dual_sphere, sphere) -> mv: 25 mul, 14 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = a.c[0] * b.c[1] - a.c[3] * b.c[0];
+  r.c[17] = a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  r.c[18] = a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  r.c[19] = a.c[0] * b.c[3] - a.c[1] * b.c[0];
+  r.c[20] = -a.c[1] * b.c[1] + a.c[3] * b.c[3];
+  r.c[21] = -a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  r.c[22] = a.c[0] * b.c[4] - a.c[4] * b.c[0];
+  r.c[23] = a.c[3] * b.c[4] - a.c[4] * b.c[1];
+  r.c[24] = -a.c[2] * b.c[4] - a.c[4] * b.c[2];
+  r.c[25] = a.c[1] * b.c[4] - a.c[4] * b.c[3];
+  r.c[31] = a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// gp(dual_sphere, plane) -> mv: 20 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = a.c[0] * b.c[1];
+  r.c[17] = a.c[0] * b.c[2];
+  r.c[18] = a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  r.c[19] = a.c[0] * b.c[3];
+  r.c[20] = -a.c[1] * b.c[1] + a.c[3] * b.c[3];
+  r.c[21] = -a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  r.c[22] = a.c[0] * b.c[0];
+  r.c[23] = a.c[3] * b.c[0] - a.c[4] * b.c[1];
+  r.c[24] = -a.c[2] * b.c[0] - a.c[4] * b.c[2];
+  r.c[25] = a.c[1] * b.c[0] - a.c[4] * b.c[3];
+  r.c[31] = a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[3] * b.c[1];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// gp(dual_sphere, pseudoscalar) -> sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> gp(const basic_dual_sphere<T>& a,
+                                        const basic_pseudoscalar<T>& b) {
+  return basic_sphere<T>(-a.c[0] * b.c[0], -a.c[3] * b.c[0], a.c[2] * b.c[0], -a.c[1] * b.c[0],
+                         -a.c[4] * b.c[0]);
+}
+
+// gp(dual_sphere, rotor) -> mv: 20 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[3] = a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[3] * b.c[3];
+  r.c[4] = a.c[1] * b.c[2] + a.c[2] * b.c[3] + a.c[3] * b.c[0];
+  r.c[5] = a.c[4] * b.c[0];
+  r.c[16] = a.c[0] * b.c[1];
+  r.c[17] = a.c[0] * b.c[2];
+  r.c[19] = a.c[0] * b.c[3];
+  r.c[22] = a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[23] = a.c[4] * b.c[1];
+  r.c[24] = a.c[4] * b.c[2];
+  r.c[25] = a.c[4] * b.c[3];
+  r.bits = 0x3cb003eu;
+  return r;
+}
+
+// gp(dual_sphere, translator) -> mv: 20 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  r.c[3] = a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  r.c[4] = a.c[0] * b.c[3] + a.c[3] * b.c[0];
+  r.c[5] = a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] + a.c[4] * b.c[0];
+  r.c[18] = a.c[0] * b.c[1];
+  r.c[20] = a.c[0] * b.c[2];
+  r.c[21] = a.c[0] * b.c[3];
+  r.c[23] = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.c[24] = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  r.c[25] = a.c[2] * b.c[3] - a.c[3] * b.c[2];
+  r.bits = 0x3b4003eu;
+  return r;
+}
+
+// gp(dual_sphere, motor) -> mv: 40 mul, 24 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[0] * b.c[4] + a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[3] = a.c[0] * b.c[5] + a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[3] * b.c[3];
+  r.c[4] = a.c[0] * b.c[6] + a.c[1] * b.c[2] + a.c[2] * b.c[3] + a.c[3] * b.c[0];
+  r.c[5] = a.c[1] * b.c[4] + a.c[2] * b.c[5] + a.c[3] * b.c[6] + a.c[4] * b.c[0];
+  r.c[16] = a.c[0] * b.c[1];
+  r.c[17] = a.c[0] * b.c[2];
+  r.c[18] = a.c[0] * b.c[4];
+  r.c[19] = a.c[0] * b.c[3];
+  r.c[20] = a.c[0] * b.c[5];
+  r.c[21] = a.c[0] * b.c[6];
+  r.c[22] = a.c[0] * b.c[7] + a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[23] = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[7] + a.c[4] * b.c[1];
+  r.c[24] = a.c[1] * b.c[6] - a.c[2] * b.c[7] - a.c[3] * b.c[4] + a.c[4] * b.c[2];
+  r.c[25] = a.c[1] * b.c[7] + a.c[2] * b.c[6] - a.c[3] * b.c[5] + a.c[4] * b.c[3];
+  r.c[31] = a.c[0] * b.c[7];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// gp(dual_plane, normalized_point) -> mv: 15 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a,
+                                    const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[6] = -a.c[0];
+  r.c[7] = -a.c[1];
+  r.c[8] = -a.c[2];
+  r.c[9] = -a.c[3];
+  r.c[10] = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  r.c[11] = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  r.c[12] = a.c[0] * b.c[3] - a.c[3] * b.c[0];
+  r.c[13] = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.c[14] = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  r.c[15] = a.c[2] * b.c[3] - a.c[3] * b.c[2];
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// gp(dual_plane, dual_sphere) -> mv: 20 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_dual_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] - a.c[3] * b.c[0];
+  r.c[6] = -a.c[0] * b.c[0];
+  r.c[7] = -a.c[1] * b.c[0];
+  r.c[8] = -a.c[2] * b.c[0];
+  r.c[9] = -a.c[3] * b.c[0];
+  r.c[10] = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  r.c[11] = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  r.c[12] = a.c[0] * b.c[4] - a.c[3] * b.c[1];
+  r.c[13] = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  r.c[14] = a.c[1] * b.c[4] - a.c[3] * b.c[2];
+  r.c[15] = a.c[2] * b.c[4] - a.c[3] * b.c[3];
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// gp(dual_plane, dual_plane) -> motor: 15 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_dual_plane<T>& a, const basic_dual_plane<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2],
+                        a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                        a.c[1] * b.c[2] - a.c[2] * b.c[1], a.c[0] * b.c[3] - a.c[3] * b.c[0],
+                        a.c[1] * b.c[3] - a.c[3] * b.c[1], a.c[2] * b.c[3] - a.c[3] * b.c[2], T(0));
+}
+
+// gp(dual_plane, euclidean_vector) -> motor: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_dual_plane<T>& a,
+                                       const basic_euclidean_vector<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2],
+                        a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                        a.c[1] * b.c[2] - a.c[2] * b.c[1], -a.c[3] * b.c[0], -a.c[3] * b.c[1],
+                        -a.c[3] * b.c[2], T(0));
+}
+
+// gp(dual_plane, flat_point) -> mv: 13 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_flat_point<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  r.c[18] = -a.c[0] * b.c[3];
+  r.c[20] = -a.c[1] * b.c[3];
+  r.c[21] = -a.c[2] * b.c[3];
+  r.c[23] = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  r.c[24] = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  r.c[25] = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.bits = 0x3b40020u;
+  return r;
+}
+
+// gp(dual_plane, euclidean_bivector) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a,
+                                    const basic_euclidean_bivector<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[3] = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  r.c[4] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[22] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[23] = a.c[3] * b.c[0];
+  r.c[24] = a.c[3] * b.c[1];
+  r.c[25] = a.c[3] * b.c[2];
+  r.bits = 0x3c0001cu;
+  return r;
+}
+
+// gp(dual_plane, point_pair) -> mv: 40 mul, 25 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[2] = -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[0];
+  r.c[3] = a.c[0] * b.c[4] - a.c[2] * b.c[7] - a.c[3] * b.c[1];
+  r.c[4] = a.c[0] * b.c[5] + a.c[1] * b.c[7] - a.c[3] * b.c[2];
+  r.c[5] = a.c[0] * b.c[6] + a.c[1] * b.c[8] + a.c[2] * b.c[9] - a.c[3] * b.c[3];
+  r.c[16] = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  r.c[17] = -a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  r.c[18] = -a.c[0] * b.c[3] + a.c[3] * b.c[0];
+  r.c[19] = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[20] = -a.c[1] * b.c[3] + a.c[3] * b.c[1];
+  r.c[21] = -a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  r.c[22] = a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  r.c[23] = a.c[0] * b.c[8] - a.c[1] * b.c[6] + a.c[3] * b.c[4];
+  r.c[24] = a.c[0] * b.c[9] - a.c[2] * b.c[6] + a.c[3] * b.c[5];
+  r.c[25] = a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[7];
+  r.bits = 0x3ff003eu;
+  return r;
+}
+
+// gp(dual_plane, dual_line) -> mv: 21 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_dual_line<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[3] = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  r.c[4] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[5] = a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5];
+  r.c[22] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[23] = a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[0];
+  r.c[24] = a.c[0] * b.c[5] - a.c[2] * b.c[3] + a.c[3] * b.c[1];
+  r.c[25] = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[2];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// gp(dual_plane, line) -> mv: 21 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_line<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  r.c[12] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[3];
+  r.c[14] = a.c[0] * b.c[0] - a.c[2] * b.c[2] - a.c[3] * b.c[4];
+  r.c[15] = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[5];
+  r.c[27] = -a.c[0] * b.c[4] + a.c[1] * b.c[3];
+  r.c[28] = -a.c[0] * b.c[5] + a.c[2] * b.c[3];
+  r.c[29] = -a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  r.c[30] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// gp(dual_plane, circle) -> mv: 40 mul, 25 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = a.c[1] * b.c[0] + a.c[2] * b.c[1];
+  r.c[7] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  r.c[8] = -a.c[0] * b.c[1] - a.c[1] * b.c[2];
+  r.c[9] = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  r.c[10] = a.c[2] * b.c[6] - a.c[3] * b.c[0];
+  r.c[11] = -a.c[1] * b.c[6] - a.c[3] * b.c[1];
+  r.c[12] = -a.c[1] * b.c[7] - a.c[2] * b.c[8] - a.c[3] * b.c[3];
+  r.c[13] = a.c[0] * b.c[6] - a.c[3] * b.c[2];
+  r.c[14] = a.c[0] * b.c[7] - a.c[2] * b.c[9] - a.c[3] * b.c[4];
+  r.c[15] = a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[3] * b.c[5];
+  r.c[26] = -a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  r.c[27] = -a.c[0] * b.c[4] + a.c[1] * b.c[3] - a.c[3] * b.c[0];
+  r.c[28] = -a.c[0] * b.c[5] + a.c[2] * b.c[3] - a.c[3] * b.c[1];
+  r.c[29] = -a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[3] * b.c[2];
+  r.c[30] = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7] - a.c[3] * b.c[6];
+  r.bits = 0x7c00ffc0u;
+  return r;
+}
+
+// gp(dual_plane, sphere) -> mv: 20 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = -a.c[2] * b.c[0];
+  r.c[17] = a.c[1] * b.c[0];
+  r.c[18] = a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[19] = -a.c[0] * b.c[0];
+  r.c[20] = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  r.c[21] = -a.c[0] * b.c[2] - a.c[1] * b.c[3];
+  r.c[22] = -a.c[3] * b.c[0];
+  r.c[23] = a.c[2] * b.c[4] - a.c[3] * b.c[1];
+  r.c[24] = -a.c[1] * b.c[4] - a.c[3] * b.c[2];
+  r.c[25] = a.c[0] * b.c[4] - a.c[3] * b.c[3];
+  r.c[31] = -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// gp(dual_plane, plane) -> mv: 15 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[18] = a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[20] = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  r.c[21] = -a.c[0] * b.c[2] - a.c[1] * b.c[3];
+  r.c[23] = a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[24] = -a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  r.c[25] = a.c[0] * b.c[0] - a.c[3] * b.c[3];
+  r.c[31] = -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.bits = 0x83b40000u;
+  return r;
+}
+
+// gp(dual_plane, pseudoscalar) -> plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> gp(const basic_dual_plane<T>& a,
+                                       const basic_pseudoscalar<T>& b) {
+  return basic_plane<T>(-a.c[3] * b.c[0], -a.c[2] * b.c[0], a.c[1] * b.c[0], -a.c[0] * b.c[0]);
+}
+
+// gp(dual_plane, rotor) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[3] = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
+  r.c[4] = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0];
+  r.c[5] = a.c[3] * b.c[0];
+  r.c[22] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[23] = a.c[3] * b.c[1];
+  r.c[24] = a.c[3] * b.c[2];
+  r.c[25] = a.c[3] * b.c[3];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// gp(dual_plane, translator) -> mv: 13 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[1] * b.c[0];
+  r.c[4] = a.c[2] * b.c[0];
+  r.c[5] = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] + a.c[3] * b.c[0];
+  r.c[23] = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  r.c[24] = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  r.c[25] = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  r.bits = 0x380003cu;
+  return r;
+}
+
+// gp(dual_plane, motor) -> mv: 28 mul, 20 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[3] = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
+  r.c[4] = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0];
+  r.c[5] = a.c[0] * b.c[4] + a.c[1] * b.c[5] + a.c[2] * b.c[6] + a.c[3] * b.c[0];
+  r.c[22] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[23] = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[7] + a.c[3] * b.c[1];
+  r.c[24] = a.c[0] * b.c[6] - a.c[1] * b.c[7] - a.c[2] * b.c[4] + a.c[3] * b.c[2];
+  r.c[25] = a.c[0] * b.c[7] + a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[3];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// gp(euclidean_vector, normalized_point) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a,
+                                    const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[6] = -a.c[0];
+  r.c[7] = -a.c[1];
+  r.c[8] = -a.c[2];
+  r.c[10] = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  r.c[11] = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  r.c[12] = a.c[0] * b.c[3];
+  r.c[13] = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.c[14] = a.c[1] * b.c[3];
+  r.c[15] = a.c[2] * b.c[3];
+  r.bits = 0xfdc1u;
+  return r;
+}
+
+// gp(euclidean_vector, dual_sphere) -> mv: 15 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a,
+                                    const basic_dual_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3];
+  r.c[6] = -a.c[0] * b.c[0];
+  r.c[7] = -a.c[1] * b.c[0];
+  r.c[8] = -a.c[2] * b.c[0];
+  r.c[10] = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  r.c[11] = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  r.c[12] = a.c[0] * b.c[4];
+  r.c[13] = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  r.c[14] = a.c[1] * b.c[4];
+  r.c[15] = a.c[2] * b.c[4];
+  r.bits = 0xfdc1u;
+  return r;
+}
+
+// gp(euclidean_vector, dual_plane) -> motor: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_euclidean_vector<T>& a,
+                                       const basic_dual_plane<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2],
+                        a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                        a.c[1] * b.c[2] - a.c[2] * b.c[1], a.c[0] * b.c[3], a.c[1] * b.c[3],
+                        a.c[2] * b.c[3], T(0));
+}
+
+// gp(euclidean_vector, euclidean_vector) -> rotor: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> gp(const basic_euclidean_vector<T>& a,
+                                       const basic_euclidean_vector<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2],
+                        a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                        a.c[1] * b.c[2] - a.c[2] * b.c[1]);
+}
+
+// gp(euclidean_vector, flat_point) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a,
+                                    const basic_flat_point<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[18] = -a.c[0] * b.c[3];
+  r.c[20] = -a.c[1] * b.c[3];
+  r.c[21] = -a.c[2] * b.c[3];
+  r.c[23] = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  r.c[24] = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  r.c[25] = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.bits = 0x3b40020u;
+  return r;
+}
+
+// gp(euclidean_vector, euclidean_bivector) -> mv: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a,
+                                    const basic_euclidean_bivector<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[3] = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  r.c[4] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[22] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.bits = 0x40001cu;
+  return r;
+}
+
+// gp(euclidean_vector, point_pair) -> mv: 30 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a,
+                                    const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[2] = -a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  r.c[3] = a.c[0] * b.c[4] - a.c[2] * b.c[7];
+  r.c[4] = a.c[0] * b.c[5] + a.c[1] * b.c[7];
+  r.c[5] = a.c[0] * b.c[6] + a.c[1] * b.c[8] + a.c[2] * b.c[9];
+  r.c[16] = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  r.c[17] = -a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  r.c[18] = -a.c[0] * b.c[3];
+  r.c[19] = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[20] = -a.c[1] * b.c[3];
+  r.c[21] = -a.c[2] * b.c[3];
+  r.c[22] = a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  r.c[23] = a.c[0] * b.c[8] - a.c[1] * b.c[6];
+  r.c[24] = a.c[0] * b.c[9] - a.c[2] * b.c[6];
+  r.c[25] = a.c[1] * b.c[9] - a.c[2] * b.c[8];
+  r.bits = 0x3ff003eu;
+  return r;
+}
+
+// gp(euclidean_vector, dual_line) -> mv: 18 mul, 10 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a,
+                                    const basic_dual_line<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[3] = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  r.c[4] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[5] = a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5];
+  r.c[22] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[23] = a.c[0] * b.c[4] - a.c[1] * b.c[3];
+  r.c[24] = a.c[0] * b.c[5] - a.c[2] * b.c[3];
+  r.c[25] = a.c[1] * b.c[5] - a.c[2] * b.c[4];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// gp(euclidean_vector, line) -> mv: 18 mul, 10 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_line<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  r.c[12] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[14] = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  r.c[15] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[27] = -a.c[0] * b.c[4] + a.c[1] * b.c[3];
+  r.c[28] = -a.c[0] * b.c[5] + a.c[2] * b.c[3];
+  r.c[29] = -a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  r.c[30] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// gp(euclidean_vector, circle) -> mv: 30 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = a.c[1] * b.c[0] + a.c[2] * b.c[1];
+  r.c[7] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  r.c[8] = -a.c[0] * b.c[1] - a.c[1] * b.c[2];
+  r.c[9] = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  r.c[10] = a.c[2] * b.c[6];
+  r.c[11] = -a.c[1] * b.c[6];
+  r.c[12] = -a.c[1] * b.c[7] - a.c[2] * b.c[8];
+  r.c[13] = a.c[0] * b.c[6];
+  r.c[14] = a.c[0] * b.c[7] - a.c[2] * b.c[9];
+  r.c[15] = a.c[0] * b.c[8] + a.c[1] * b.c[9];
+  r.c[26] = -a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  r.c[27] = -a.c[0] * b.c[4] + a.c[1] * b.c[3];
+  r.c[28] = -a.c[0] * b.c[5] + a.c[2] * b.c[3];
+  r.c[29] = -a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  r.c[30] = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7];
+  r.bits = 0x7c00ffc0u;
+  return r;
+}
+
+// gp(euclidean_vector, sphere) -> mv: 15 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = -a.c[2] * b.c[0];
+  r.c[17] = a.c[1] * b.c[0];
+  r.c[18] = a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[19] = -a.c[0] * b.c[0];
+  r.c[20] = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  r.c[21] = -a.c[0] * b.c[2] - a.c[1] * b.c[3];
+  r.c[23] = a.c[2] * b.c[4];
+  r.c[24] = -a.c[1] * b.c[4];
+  r.c[25] = a.c[0] * b.c[4];
+  r.c[31] = -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.bits = 0x83bf0000u;
+  return r;
+}
+
+// gp(euclidean_vector, plane) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[18] = a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[20] = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  r.c[21] = -a.c[0] * b.c[2] - a.c[1] * b.c[3];
+  r.c[23] = a.c[2] * b.c[0];
+  r.c[24] = -a.c[1] * b.c[0];
+  r.c[25] = a.c[0] * b.c[0];
+  r.c[31] = -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.bits = 0x83b40000u;
+  return r;
+}
+
+// gp(euclidean_vector, pseudoscalar) -> plane: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> gp(const basic_euclidean_vector<T>& a,
+                                       const basic_pseudoscalar<T>& b) {
+  return basic_plane<T>(T(0), -a.c[2] * b.c[0], a.c[1] * b.c[0], -a.c[0] * b.c[0]);
+}
+
+// gp(euclidean_vector, rotor) -> mv: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[3] = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
+  r.c[4] = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0];
+  r.c[22] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.bits = 0x40001cu;
+  return r;
+}
+
+// gp(euclidean_vector, translator) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a,
+                                    const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[1] * b.c[0];
+  r.c[4] = a.c[2] * b.c[0];
+  r.c[5] = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3];
+  r.c[23] = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  r.c[24] = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  r.c[25] = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  r.bits = 0x380003cu;
+  return r;
+}
+
+// gp(euclidean_vector, motor) -> mv: 24 mul, 16 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[3] = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
+  r.c[4] = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0];
+  r.c[5] = a.c[0] * b.c[4] + a.c[1] * b.c[5] + a.c[2] * b.c[6];
+  r.c[22] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[23] = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[7];
+  r.c[24] = a.c[0] * b.c[6] - a.c[1] * b.c[7] - a.c[2] * b.c[4];
+  r.c[25] = a.c[0] * b.c[7] + a.c[1] * b.c[6] - a.c[2] * b.c[5];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// gp(flat_point, normalized_point) -> mv: 13 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a,
+                                    const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[3];
+  r.c[2] = -a.c[0];
+  r.c[3] = -a.c[1];
+  r.c[4] = -a.c[2];
+  r.c[5] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[3];
+  r.c[18] = a.c[0] - a.c[3] * b.c[0];
+  r.c[20] = a.c[1] - a.c[3] * b.c[1];
+  r.c[21] = a.c[2] - a.c[3] * b.c[2];
+  r.c[23] = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  r.c[24] = -a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  r.c[25] = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.bits = 0x3b4003eu;
+  return r;
+}
+
+// gp(flat_point, dual_sphere) -> mv: 20 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_dual_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[3] * b.c[0];
+  r.c[2] = -a.c[0] * b.c[0];
+  r.c[3] = -a.c[1] * b.c[0];
+  r.c[4] = -a.c[2] * b.c[0];
+  r.c[5] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3] + a.c[3] * b.c[4];
+  r.c[18] = a.c[0] * b.c[0] - a.c[3] * b.c[1];
+  r.c[20] = a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  r.c[21] = a.c[2] * b.c[0] - a.c[3] * b.c[3];
+  r.c[23] = -a.c[0] * b.c[2] + a.c[1] * b.c[1];
+  r.c[24] = -a.c[0] * b.c[3] + a.c[2] * b.c[1];
+  r.c[25] = -a.c[1] * b.c[3] + a.c[2] * b.c[2];
+  r.bits = 0x3b4003eu;
+  return r;
+}
+
+// gp(flat_point, dual_plane) -> mv: 13 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_dual_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[3];
+  r.c[18] = -a.c[3] * b.c[0];
+  r.c[20] = -a.c[3] * b.c[1];
+  r.c[21] = -a.c[3] * b.c[2];
+  r.c[23] = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  r.c[24] = -a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  r.c[25] = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.bits = 0x3b40020u;
+  return r;
+}
+
+// gp(flat_point, euclidean_vector) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a,
+                                    const basic_euclidean_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[18] = -a.c[3] * b.c[0];
+  r.c[20] = -a.c[3] * b.c[1];
+  r.c[21] = -a.c[3] * b.c[2];
+  r.c[23] = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  r.c[24] = -a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  r.c[25] = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.bits = 0x3b40020u;
+  return r;
+}
+
+// gp(flat_point, flat_point) -> translator: 7 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> gp(const basic_flat_point<T>& a,
+                                            const basic_flat_point<T>& b) {
+  return basic_translator<T>(a.c[3] * b.c[3], -a.c[0] * b.c[3] + a.c[3] * b.c[0],
+                             -a.c[1] * b.c[3] + a.c[3] * b.c[1],
+                             -a.c[2] * b.c[3] + a.c[3] * b.c[2]);
+}
+
+// gp(flat_point, euclidean_bivector) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a,
+                                    const basic_euclidean_bivector<T>& b) {
+  basic_mv<T> r;
+  r.c[12] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[14] = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  r.c[15] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[27] = a.c[3] * b.c[0];
+  r.c[28] = a.c[3] * b.c[1];
+  r.c[29] = a.c[3] * b.c[2];
+  r.c[30] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.bits = 0x7800d000u;
+  return r;
+}
+
+// gp(flat_point, point_pair) -> mv: 40 mul, 25 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[3];
+  r.c[6] = -a.c[3] * b.c[0];
+  r.c[7] = -a.c[3] * b.c[1];
+  r.c[8] = -a.c[3] * b.c[2];
+  r.c[9] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[10] = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  r.c[11] = -a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  r.c[12] = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5] + a.c[3] * b.c[6];
+  r.c[13] = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[14] = a.c[0] * b.c[4] - a.c[1] * b.c[3] - a.c[2] * b.c[7] + a.c[3] * b.c[8];
+  r.c[15] = a.c[0] * b.c[5] + a.c[1] * b.c[7] - a.c[2] * b.c[3] + a.c[3] * b.c[9];
+  r.c[27] = -a.c[0] * b.c[1] + a.c[1] * b.c[0] + a.c[3] * b.c[4];
+  r.c[28] = -a.c[0] * b.c[2] + a.c[2] * b.c[0] + a.c[3] * b.c[5];
+  r.c[29] = -a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[3] * b.c[7];
+  r.c[30] = a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  r.bits = 0x7800ffc1u;
+  return r;
+}
+
+// gp(flat_point, dual_line) -> mv: 15 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_dual_line<T>& b) {
+  basic_mv<T> r;
+  r.c[12] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] + a.c[3] * b.c[3];
+  r.c[14] = a.c[0] * b.c[0] - a.c[2] * b.c[2] + a.c[3] * b.c[4];
+  r.c[15] = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[3] * b.c[5];
+  r.c[27] = a.c[3] * b.c[0];
+  r.c[28] = a.c[3] * b.c[1];
+  r.c[29] = a.c[3] * b.c[2];
+  r.c[30] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.bits = 0x7800d000u;
+  return r;
+}
+
+// gp(flat_point, line) -> mv: 15 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_line<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = -a.c[3] * b.c[3];
+  r.c[3] = -a.c[3] * b.c[4];
+  r.c[4] = -a.c[3] * b.c[5];
+  r.c[5] = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  r.c[23] = -a.c[0] * b.c[4] + a.c[1] * b.c[3] + a.c[3] * b.c[0];
+  r.c[24] = -a.c[0] * b.c[5] + a.c[2] * b.c[3] + a.c[3] * b.c[1];
+  r.c[25] = -a.c[1] * b.c[5] + a.c[2] * b.c[4] + a.c[3] * b.c[2];
+  r.bits = 0x380003cu;
+  return r;
+}
+
+// gp(flat_point, circle) -> mv: 40 mul, 25 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[1] * b.c[0] + a.c[2] * b.c[1] - a.c[3] * b.c[3];
+  r.c[3] = -a.c[0] * b.c[0] + a.c[2] * b.c[2] - a.c[3] * b.c[4];
+  r.c[4] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[3] * b.c[5];
+  r.c[5] = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  r.c[16] = -a.c[3] * b.c[0];
+  r.c[17] = -a.c[3] * b.c[1];
+  r.c[18] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[19] = -a.c[3] * b.c[2];
+  r.c[20] = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  r.c[21] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[22] = -a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  r.c[23] = -a.c[0] * b.c[4] + a.c[1] * b.c[3] - a.c[2] * b.c[6] + a.c[3] * b.c[7];
+  r.c[24] = -a.c[0] * b.c[5] + a.c[1] * b.c[6] + a.c[2] * b.c[3] + a.c[3] * b.c[8];
+  r.c[25] = -a.c[0] * b.c[6] - a.c[1] * b.c[5] + a.c[2] * b.c[4] + a.c[3] * b.c[9];
+  r.c[31] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[3] * b.c[6];
+  r.bits = 0x83ff003cu;
+  return r;
+}
+
+// gp(flat_point, sphere) -> mv: 20 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[10] = -a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  r.c[11] = a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  r.c[12] = a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[13] = -a.c[0] * b.c[0] + a.c[3] * b.c[3];
+  r.c[14] = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  r.c[15] = -a.c[0] * b.c[2] - a.c[1] * b.c[3];
+  r.c[26] = -a.c[3] * b.c[0];
+  r.c[27] = -a.c[2] * b.c[0];
+  r.c[28] = a.c[1] * b.c[0];
+  r.c[29] = -a.c[0] * b.c[0];
+  r.c[30] = -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[4];
+  r.bits = 0x7c00fc00u;
+  return r;
+}
+
+// gp(flat_point, plane) -> motor: 13 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_flat_point<T>& a, const basic_plane<T>& b) {
+  return basic_motor<T>(T(0), a.c[3] * b.c[1], a.c[3] * b.c[2], a.c[3] * b.c[3],
+                        a.c[1] * b.c[1] + a.c[2] * b.c[2], -a.c[0] * b.c[1] + a.c[2] * b.c[3],
+                        -a.c[0] * b.c[2] - a.c[1] * b.c[3],
+                        -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0]);
+}
+
+// gp(flat_point, pseudoscalar) -> circle: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> gp(const basic_flat_point<T>& a,
+                                        const basic_pseudoscalar<T>& b) {
+  return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0), -a.c[3] * b.c[0], -a.c[2] * b.c[0],
+                         a.c[1] * b.c[0], -a.c[0] * b.c[0]);
+}
+
+// gp(flat_point, rotor) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = a.c[3] * b.c[0];
+  r.c[12] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[14] = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
+  r.c[15] = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0];
+  r.c[27] = a.c[3] * b.c[1];
+  r.c[28] = a.c[3] * b.c[2];
+  r.c[29] = a.c[3] * b.c[3];
+  r.c[30] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// gp(flat_point, translator) -> flat_point: 7 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> gp(const basic_flat_point<T>& a,
+                                            const basic_translator<T>& b) {
+  return basic_flat_point<T>(a.c[0] * b.c[0] + a.c[3] * b.c[1], a.c[1] * b.c[0] + a.c[3] * b.c[2],
+                             a.c[2] * b.c[0] + a.c[3] * b.c[3], a.c[3] * b.c[0]);
+}
+
+// gp(flat_point, motor) -> mv: 20 mul, 12 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = a.c[3] * b.c[0];
+  r.c[12] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[4];
+  r.c[14] = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3] + a.c[3] * b.c[5];
+  r.c[15] = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0] + a.c[3] * b.c[6];
+  r.c[27] = a.c[3] * b.c[1];
+  r.c[28] = a.c[3] * b.c[2];
+  r.c[29] = a.c[3] * b.c[3];
+  r.c[30] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[3] * b.c[7];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// gp(euclidean_bivector, normalized_point) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
+                                    const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[3] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  r.c[4] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[16] = a.c[0];
+  r.c[17] = a.c[1];
+  r.c[19] = a.c[2];
+  r.c[22] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[23] = a.c[0] * b.c[3];
+  r.c[24] = a.c[1] * b.c[3];
+  r.c[25] = a.c[2] * b.c[3];
+  r.bits = 0x3cb001cu;
+  return r;
+}
+
+// gp(euclidean_bivector, dual_sphere) -> mv: 15 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
+                                    const basic_dual_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[2] + a.c[1] * b.c[3];
+  r.c[3] = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  r.c[4] = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[1] * b.c[0];
+  r.c[19] = a.c[2] * b.c[0];
+  r.c[22] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[23] = a.c[0] * b.c[4];
+  r.c[24] = a.c[1] * b.c[4];
+  r.c[25] = a.c[2] * b.c[4];
+  r.bits = 0x3cb001cu;
+  return r;
+}
+
+// gp(euclidean_bivector, dual_plane) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
+                                    const basic_dual_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[3] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  r.c[4] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[22] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[23] = a.c[0] * b.c[3];
+  r.c[24] = a.c[1] * b.c[3];
+  r.c[25] = a.c[2] * b.c[3];
+  r.bits = 0x3c0001cu;
+  return r;
+}
+
+// gp(euclidean_bivector, euclidean_vector) -> mv: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
+                                    const basic_euclidean_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[3] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  r.c[4] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[22] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.bits = 0x40001cu;
+  return r;
+}
+
+// gp(euclidean_bivector, flat_point) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
+                                    const basic_flat_point<T>& b) {
+  basic_mv<T> r;
+  r.c[12] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[14] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  r.c[15] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[27] = a.c[0] * b.c[3];
+  r.c[28] = a.c[1] * b.c[3];
+  r.c[29] = a.c[2] * b.c[3];
+  r.c[30] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.bits = 0x7800d000u;
+  return r;
+}
+
+// gp(euclidean_bivector, euclidean_bivector) -> rotor: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> gp(const basic_euclidean_bivector<T>& a,
+                                       const basic_euclidean_bivector<T>& b) {
+  return basic_rotor<T>(-a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2],
+                        -a.c[1] * b.c[2] + a.c[2] * b.c[1], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                        -a.c[0] * b.c[1] + a.c[1] * b.c[0]);
+}
+
+// gp(euclidean_bivector, point_pair) -> mv: 30 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
+                                    const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[7];
+  r.c[6] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[7] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  r.c[8] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[10] = -a.c[1] * b.c[7] + a.c[2] * b.c[5];
+  r.c[11] = a.c[0] * b.c[7] - a.c[2] * b.c[4];
+  r.c[12] = a.c[0] * b.c[8] + a.c[1] * b.c[9];
+  r.c[13] = -a.c[0] * b.c[5] + a.c[1] * b.c[4];
+  r.c[14] = -a.c[0] * b.c[6] + a.c[2] * b.c[9];
+  r.c[15] = -a.c[1] * b.c[6] - a.c[2] * b.c[8];
+  r.c[26] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[27] = a.c[0] * b.c[3];
+  r.c[28] = a.c[1] * b.c[3];
+  r.c[29] = a.c[2] * b.c[3];
+  r.c[30] = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[6];
+  r.bits = 0x7c00fdc1u;
+  return r;
+}
+
+// gp(euclidean_bivector, dual_line) -> motor: 18 mul, 10 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_euclidean_bivector<T>& a,
+                                       const basic_dual_line<T>& b) {
+  return basic_motor<T>(-a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2],
+                        -a.c[1] * b.c[2] + a.c[2] * b.c[1], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                        -a.c[0] * b.c[1] + a.c[1] * b.c[0], a.c[0] * b.c[4] + a.c[1] * b.c[5],
+                        -a.c[0] * b.c[3] + a.c[2] * b.c[5], -a.c[1] * b.c[3] - a.c[2] * b.c[4],
+                        a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3]);
+}
+
+// gp(euclidean_bivector, line) -> mv: 18 mul, 10 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a, const basic_line<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[18] = a.c[0] * b.c[4] + a.c[1] * b.c[5];
+  r.c[20] = -a.c[0] * b.c[3] + a.c[2] * b.c[5];
+  r.c[21] = -a.c[1] * b.c[3] - a.c[2] * b.c[4];
+  r.c[23] = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[24] = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  r.c[25] = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  r.c[31] = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3];
+  r.bits = 0x83b40020u;
+  return r;
+}
+
+// gp(euclidean_bivector, circle) -> mv: 30 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
+                                    const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[2] = -a.c[2] * b.c[6];
+  r.c[3] = a.c[1] * b.c[6];
+  r.c[4] = -a.c[0] * b.c[6];
+  r.c[5] = -a.c[0] * b.c[7] - a.c[1] * b.c[8] - a.c[2] * b.c[9];
+  r.c[16] = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[17] = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  r.c[18] = a.c[0] * b.c[4] + a.c[1] * b.c[5];
+  r.c[19] = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  r.c[20] = -a.c[0] * b.c[3] + a.c[2] * b.c[5];
+  r.c[21] = -a.c[1] * b.c[3] - a.c[2] * b.c[4];
+  r.c[23] = -a.c[1] * b.c[9] + a.c[2] * b.c[8];
+  r.c[24] = a.c[0] * b.c[9] - a.c[2] * b.c[7];
+  r.c[25] = -a.c[0] * b.c[8] + a.c[1] * b.c[7];
+  r.c[31] = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3];
+  r.bits = 0x83bf003eu;
+  return r;
+}
+
+// gp(euclidean_bivector, sphere) -> mv: 15 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
+                                    const basic_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = -a.c[2] * b.c[0];
+  r.c[7] = a.c[1] * b.c[0];
+  r.c[8] = -a.c[0] * b.c[0];
+  r.c[9] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  r.c[12] = -a.c[2] * b.c[4];
+  r.c[14] = a.c[1] * b.c[4];
+  r.c[15] = -a.c[0] * b.c[4];
+  r.c[27] = -a.c[1] * b.c[3] + a.c[2] * b.c[2];
+  r.c[28] = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  r.c[29] = -a.c[0] * b.c[2] + a.c[1] * b.c[1];
+  r.bits = 0x3800d3c0u;
+  return r;
+}
+
+// gp(euclidean_bivector, plane) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a, const basic_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  r.c[12] = -a.c[2] * b.c[0];
+  r.c[14] = a.c[1] * b.c[0];
+  r.c[15] = -a.c[0] * b.c[0];
+  r.c[27] = -a.c[1] * b.c[3] + a.c[2] * b.c[2];
+  r.c[28] = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  r.c[29] = -a.c[0] * b.c[2] + a.c[1] * b.c[1];
+  r.bits = 0x3800d200u;
+  return r;
+}
+
+// gp(euclidean_bivector, pseudoscalar) -> line: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> gp(const basic_euclidean_bivector<T>& a,
+                                      const basic_pseudoscalar<T>& b) {
+  return basic_line<T>(T(0), T(0), T(0), -a.c[2] * b.c[0], a.c[1] * b.c[0], -a.c[0] * b.c[0]);
+}
+
+// gp(euclidean_bivector, rotor) -> rotor: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> gp(const basic_euclidean_bivector<T>& a,
+                                       const basic_rotor<T>& b) {
+  return basic_rotor<T>(-a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3],
+                        a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2],
+                        a.c[0] * b.c[3] + a.c[1] * b.c[0] - a.c[2] * b.c[1],
+                        -a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[2] * b.c[0]);
+}
+
+// gp(euclidean_bivector, translator) -> motor: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_euclidean_bivector<T>& a,
+                                       const basic_translator<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0],
+                        a.c[0] * b.c[2] + a.c[1] * b.c[3], -a.c[0] * b.c[1] + a.c[2] * b.c[3],
+                        -a.c[1] * b.c[1] - a.c[2] * b.c[2],
+                        a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1]);
+}
+
+// gp(euclidean_bivector, motor) -> motor: 24 mul, 16 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_euclidean_bivector<T>& a,
+                                       const basic_motor<T>& b) {
+  return basic_motor<T>(-a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3],
+                        a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2],
+                        a.c[0] * b.c[3] + a.c[1] * b.c[0] - a.c[2] * b.c[1],
+                        -a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                        a.c[0] * b.c[5] + a.c[1] * b.c[6] - a.c[2] * b.c[7],
+                        -a.c[0] * b.c[4] + a.c[1] * b.c[7] + a.c[2] * b.c[6],
+                        -a.c[0] * b.c[7] - a.c[1] * b.c[4] - a.c[2] * b.c[5],
+                        a.c[0] * b.c[6] - a.c[1] * b.c[5] + a.c[2] * b.c[4]);
+}
+
+// gp(point_pair, normalized_point) -> mv: 40 mul, 35 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a,
+                                    const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[2] = -a.c[6] + a.c[0] * b.c[3] + a.c[4] * b.c[1] + a.c[5] * b.c[2];
+  r.c[3] = -a.c[8] + a.c[1] * b.c[3] - a.c[4] * b.c[0] + a.c[7] * b.c[2];
+  r.c[4] = -a.c[9] + a.c[2] * b.c[3] - a.c[5] * b.c[0] - a.c[7] * b.c[1];
+  r.c[5] = a.c[3] * b.c[3] - a.c[6] * b.c[0] - a.c[8] * b.c[1] - a.c[9] * b.c[2];
+  r.c[16] = a.c[4] + a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  r.c[17] = a.c[5] + a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  r.c[18] = a.c[6] + a.c[0] * b.c[3] - a.c[3] * b.c[0];
+  r.c[19] = a.c[7] + a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.c[20] = a.c[8] + a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  r.c[21] = a.c[9] + a.c[2] * b.c[3] - a.c[3] * b.c[2];
+  r.c[22] = a.c[4] * b.c[2] - a.c[5] * b.c[1] + a.c[7] * b.c[0];
+  r.c[23] = a.c[4] * b.c[3] - a.c[6] * b.c[1] + a.c[8] * b.c[0];
+  r.c[24] = a.c[5] * b.c[3] - a.c[6] * b.c[2] + a.c[9] * b.c[0];
+  r.c[25] = a.c[7] * b.c[3] - a.c[8] * b.c[2] + a.c[9] * b.c[1];
+  r.bits = 0x3ff003eu;
+  return r;
+}
+
+// gp(point_pair, dual_sphere) -> mv: 50 mul, 35 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_dual_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] - a.c[3] * b.c[0];
+  r.c[2] = a.c[0] * b.c[4] + a.c[4] * b.c[2] + a.c[5] * b.c[3] - a.c[6] * b.c[0];
+  r.c[3] = a.c[1] * b.c[4] - a.c[4] * b.c[1] + a.c[7] * b.c[3] - a.c[8] * b.c[0];
+  r.c[4] = a.c[2] * b.c[4] - a.c[5] * b.c[1] - a.c[7] * b.c[2] - a.c[9] * b.c[0];
+  r.c[5] = a.c[3] * b.c[4] - a.c[6] * b.c[1] - a.c[8] * b.c[2] - a.c[9] * b.c[3];
+  r.c[16] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[4] * b.c[0];
+  r.c[17] = a.c[0] * b.c[3] - a.c[2] * b.c[1] + a.c[5] * b.c[0];
+  r.c[18] = a.c[0] * b.c[4] - a.c[3] * b.c[1] + a.c[6] * b.c[0];
+  r.c[19] = a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[7] * b.c[0];
+  r.c[20] = a.c[1] * b.c[4] - a.c[3] * b.c[2] + a.c[8] * b.c[0];
+  r.c[21] = a.c[2] * b.c[4] - a.c[3] * b.c[3] + a.c[9] * b.c[0];
+  r.c[22] = a.c[4] * b.c[3] - a.c[5] * b.c[2] + a.c[7] * b.c[1];
+  r.c[23] = a.c[4] * b.c[4] - a.c[6] * b.c[2] + a.c[8] * b.c[1];
+  r.c[24] = a.c[5] * b.c[4] - a.c[6] * b.c[3] + a.c[9] * b.c[1];
+  r.c[25] = a.c[7] * b.c[4] - a.c[8] * b.c[3] + a.c[9] * b.c[2];
+  r.bits = 0x3ff003eu;
+  return r;
+}
+
+// gp(point_pair, dual_plane) -> mv: 40 mul, 25 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_dual_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[2] = a.c[0] * b.c[3] + a.c[4] * b.c[1] + a.c[5] * b.c[2];
+  r.c[3] = a.c[1] * b.c[3] - a.c[4] * b.c[0] + a.c[7] * b.c[2];
+  r.c[4] = a.c[2] * b.c[3] - a.c[5] * b.c[0] - a.c[7] * b.c[1];
+  r.c[5] = a.c[3] * b.c[3] - a.c[6] * b.c[0] - a.c[8] * b.c[1] - a.c[9] * b.c[2];
+  r.c[16] = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  r.c[17] = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  r.c[18] = a.c[0] * b.c[3] - a.c[3] * b.c[0];
+  r.c[19] = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.c[20] = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  r.c[21] = a.c[2] * b.c[3] - a.c[3] * b.c[2];
+  r.c[22] = a.c[4] * b.c[2] - a.c[5] * b.c[1] + a.c[7] * b.c[0];
+  r.c[23] = a.c[4] * b.c[3] - a.c[6] * b.c[1] + a.c[8] * b.c[0];
+  r.c[24] = a.c[5] * b.c[3] - a.c[6] * b.c[2] + a.c[9] * b.c[0];
+  r.c[25] = a.c[7] * b.c[3] - a.c[8] * b.c[2] + a.c[9] * b.c[1];
+  r.bits = 0x3ff003eu;
+  return r;
+}
+
+// gp(point_pair, euclidean_vector) -> mv: 30 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a,
+                                    const basic_euclidean_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[2] = a.c[4] * b.c[1] + a.c[5] * b.c[2];
+  r.c[3] = -a.c[4] * b.c[0] + a.c[7] * b.c[2];
+  r.c[4] = -a.c[5] * b.c[0] - a.c[7] * b.c[1];
+  r.c[5] = -a.c[6] * b.c[0] - a.c[8] * b.c[1] - a.c[9] * b.c[2];
+  r.c[16] = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  r.c[17] = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  r.c[18] = -a.c[3] * b.c[0];
+  r.c[19] = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.c[20] = -a.c[3] * b.c[1];
+  r.c[21] = -a.c[3] * b.c[2];
+  r.c[22] = a.c[4] * b.c[2] - a.c[5] * b.c[1] + a.c[7] * b.c[0];
+  r.c[23] = -a.c[6] * b.c[1] + a.c[8] * b.c[0];
+  r.c[24] = -a.c[6] * b.c[2] + a.c[9] * b.c[0];
+  r.c[25] = -a.c[8] * b.c[2] + a.c[9] * b.c[1];
+  r.bits = 0x3ff003eu;
+  return r;
+}
+
+// gp(point_pair, flat_point) -> mv: 40 mul, 25 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_flat_point<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[3];
+  r.c[6] = a.c[0] * b.c[3];
+  r.c[7] = a.c[1] * b.c[3];
+  r.c[8] = a.c[2] * b.c[3];
+  r.c[9] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[10] = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  r.c[11] = -a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  r.c[12] = a.c[3] * b.c[0] + a.c[4] * b.c[1] + a.c[5] * b.c[2] - a.c[6] * b.c[3];
+  r.c[13] = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[14] = a.c[3] * b.c[1] - a.c[4] * b.c[0] + a.c[7] * b.c[2] - a.c[8] * b.c[3];
+  r.c[15] = a.c[3] * b.c[2] - a.c[5] * b.c[0] - a.c[7] * b.c[1] - a.c[9] * b.c[3];
+  r.c[27] = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[4] * b.c[3];
+  r.c[28] = a.c[0] * b.c[2] - a.c[2] * b.c[0] + a.c[5] * b.c[3];
+  r.c[29] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[7] * b.c[3];
+  r.c[30] = a.c[4] * b.c[2] - a.c[5] * b.c[1] + a.c[7] * b.c[0];
+  r.bits = 0x7800ffc1u;
+  return r;
+}
+
+// gp(point_pair, euclidean_bivector) -> mv: 30 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a,
+                                    const basic_euclidean_bivector<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[7] * b.c[2];
+  r.c[6] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[7] = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  r.c[8] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[10] = -a.c[5] * b.c[2] + a.c[7] * b.c[1];
+  r.c[11] = a.c[4] * b.c[2] - a.c[7] * b.c[0];
+  r.c[12] = -a.c[8] * b.c[0] - a.c[9] * b.c[1];
+  r.c[13] = -a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  r.c[14] = a.c[6] * b.c[0] - a.c[9] * b.c[2];
+  r.c[15] = a.c[6] * b.c[1] + a.c[8] * b.c[2];
+  r.c[26] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[27] = a.c[3] * b.c[0];
+  r.c[28] = a.c[3] * b.c[1];
+  r.c[29] = a.c[3] * b.c[2];
+  r.c[30] = a.c[6] * b.c[2] - a.c[8] * b.c[1] + a.c[9] * b.c[0];
+  r.bits = 0x7c00fdc1u;
+  return r;
+}
+
+// gp(point_pair, dual_line) -> mv: 60 mul, 44 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_dual_line<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[4] * b.c[0] -
+           a.c[5] * b.c[1] - a.c[7] * b.c[2];
+  r.c[6] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[7] = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  r.c[8] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[9] = a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5];
+  r.c[10] = -a.c[0] * b.c[4] + a.c[1] * b.c[3] - a.c[5] * b.c[2] + a.c[7] * b.c[1];
+  r.c[11] = -a.c[0] * b.c[5] + a.c[2] * b.c[3] + a.c[4] * b.c[2] - a.c[7] * b.c[0];
+  r.c[12] = a.c[3] * b.c[3] + a.c[4] * b.c[4] + a.c[5] * b.c[5] - a.c[8] * b.c[0] - a.c[9] * b.c[1];
+  r.c[13] = -a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  r.c[14] = a.c[3] * b.c[4] - a.c[4] * b.c[3] + a.c[6] * b.c[0] + a.c[7] * b.c[5] - a.c[9] * b.c[2];
+  r.c[15] = a.c[3] * b.c[5] - a.c[5] * b.c[3] + a.c[6] * b.c[1] - a.c[7] * b.c[4] + a.c[8] * b.c[2];
+  r.c[26] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[27] = a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[0];
+  r.c[28] = a.c[0] * b.c[5] - a.c[2] * b.c[3] + a.c[3] * b.c[1];
+  r.c[29] = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[2];
+  r.c[30] = a.c[4] * b.c[5] - a.c[5] * b.c[4] + a.c[6] * b.c[2] + a.c[7] * b.c[3] -
+            a.c[8] * b.c[1] + a.c[9] * b.c[0];
+  r.bits = 0x7c00ffc1u;
+  return r;
+}
+
+// gp(point_pair, line) -> mv: 60 mul, 44 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_line<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  r.c[2] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[3];
+  r.c[3] = a.c[0] * b.c[0] - a.c[2] * b.c[2] - a.c[3] * b.c[4];
+  r.c[4] = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[5];
+  r.c[5] = -a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[6] * b.c[3] - a.c[7] * b.c[2] -
+           a.c[8] * b.c[4] - a.c[9] * b.c[5];
+  r.c[16] = -a.c[0] * b.c[4] + a.c[1] * b.c[3];
+  r.c[17] = -a.c[0] * b.c[5] + a.c[2] * b.c[3];
+  r.c[18] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] + a.c[4] * b.c[4] + a.c[5] * b.c[5];
+  r.c[19] = -a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  r.c[20] = a.c[0] * b.c[0] - a.c[2] * b.c[2] - a.c[4] * b.c[3] + a.c[7] * b.c[5];
+  r.c[21] = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[5] * b.c[3] - a.c[7] * b.c[4];
+  r.c[22] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[23] = a.c[3] * b.c[0] - a.c[5] * b.c[2] - a.c[6] * b.c[4] + a.c[7] * b.c[1] + a.c[8] * b.c[3];
+  r.c[24] = a.c[3] * b.c[1] + a.c[4] * b.c[2] - a.c[6] * b.c[5] - a.c[7] * b.c[0] + a.c[9] * b.c[3];
+  r.c[25] = a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0] - a.c[8] * b.c[5] + a.c[9] * b.c[4];
+  r.c[31] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] + a.c[4] * b.c[5] -
+            a.c[5] * b.c[4] + a.c[7] * b.c[3];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// gp(point_pair, circle) -> mv: 100 mul, 84 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[4] * b.c[0] -
+           a.c[5] * b.c[1] - a.c[7] * b.c[2];
+  r.c[2] = -a.c[1] * b.c[7] - a.c[2] * b.c[8] - a.c[3] * b.c[3] - a.c[7] * b.c[6] +
+           a.c[8] * b.c[0] + a.c[9] * b.c[1];
+  r.c[3] = a.c[0] * b.c[7] - a.c[2] * b.c[9] - a.c[3] * b.c[4] + a.c[5] * b.c[6] - a.c[6] * b.c[0] +
+           a.c[9] * b.c[2];
+  r.c[4] = a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[3] * b.c[5] - a.c[4] * b.c[6] - a.c[6] * b.c[1] -
+           a.c[8] * b.c[2];
+  r.c[5] = -a.c[4] * b.c[7] - a.c[5] * b.c[8] - a.c[6] * b.c[3] - a.c[7] * b.c[9] -
+           a.c[8] * b.c[4] - a.c[9] * b.c[5];
+  r.c[16] = -a.c[0] * b.c[4] + a.c[1] * b.c[3] + a.c[2] * b.c[6] - a.c[3] * b.c[0] -
+            a.c[5] * b.c[2] + a.c[7] * b.c[1];
+  r.c[17] = -a.c[0] * b.c[5] - a.c[1] * b.c[6] + a.c[2] * b.c[3] - a.c[3] * b.c[1] +
+            a.c[4] * b.c[2] - a.c[7] * b.c[0];
+  r.c[18] = -a.c[1] * b.c[7] - a.c[2] * b.c[8] + a.c[4] * b.c[4] + a.c[5] * b.c[5] -
+            a.c[8] * b.c[0] - a.c[9] * b.c[1];
+  r.c[19] = a.c[0] * b.c[6] - a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[3] * b.c[2] -
+            a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  r.c[20] = a.c[0] * b.c[7] - a.c[2] * b.c[9] - a.c[4] * b.c[3] + a.c[6] * b.c[0] +
+            a.c[7] * b.c[5] - a.c[9] * b.c[2];
+  r.c[21] = a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[5] * b.c[3] + a.c[6] * b.c[1] -
+            a.c[7] * b.c[4] + a.c[8] * b.c[2];
+  r.c[22] = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7] - a.c[6] * b.c[2] +
+            a.c[8] * b.c[1] - a.c[9] * b.c[0];
+  r.c[23] = a.c[3] * b.c[7] - a.c[5] * b.c[9] - a.c[6] * b.c[4] + a.c[7] * b.c[8] +
+            a.c[8] * b.c[3] - a.c[9] * b.c[6];
+  r.c[24] = a.c[3] * b.c[8] + a.c[4] * b.c[9] - a.c[6] * b.c[5] - a.c[7] * b.c[7] +
+            a.c[8] * b.c[6] + a.c[9] * b.c[3];
+  r.c[25] = a.c[3] * b.c[9] - a.c[4] * b.c[8] + a.c[5] * b.c[7] - a.c[6] * b.c[6] -
+            a.c[8] * b.c[5] + a.c[9] * b.c[4];
+  r.c[31] = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7] - a.c[3] * b.c[6] +
+            a.c[4] * b.c[5] - a.c[5] * b.c[4] + a.c[6] * b.c[2] + a.c[7] * b.c[3] -
+            a.c[8] * b.c[1] + a.c[9] * b.c[0];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// gp(point_pair, sphere) -> mv: 50 mul, 35 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[7] * b.c[0];
+  r.c[7] = a.c[0] * b.c[1] - a.c[2] * b.c[3] + a.c[5] * b.c[0];
+  r.c[8] = a.c[0] * b.c[2] + a.c[1] * b.c[3] - a.c[4] * b.c[0];
+  r.c[9] = -a.c[4] * b.c[1] - a.c[5] * b.c[2] - a.c[7] * b.c[3];
+  r.c[10] = -a.c[2] * b.c[4] + a.c[3] * b.c[1] - a.c[9] * b.c[0];
+  r.c[11] = a.c[1] * b.c[4] + a.c[3] * b.c[2] + a.c[8] * b.c[0];
+  r.c[12] = -a.c[7] * b.c[4] + a.c[8] * b.c[1] + a.c[9] * b.c[2];
+  r.c[13] = -a.c[0] * b.c[4] + a.c[3] * b.c[3] - a.c[6] * b.c[0];
+  r.c[14] = a.c[5] * b.c[4] - a.c[6] * b.c[1] + a.c[9] * b.c[3];
+  r.c[15] = -a.c[4] * b.c[4] - a.c[6] * b.c[2] - a.c[8] * b.c[3];
+  r.c[26] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  r.c[27] = a.c[2] * b.c[4] - a.c[5] * b.c[3] + a.c[7] * b.c[2] - a.c[9] * b.c[0];
+  r.c[28] = -a.c[1] * b.c[4] + a.c[4] * b.c[3] - a.c[7] * b.c[1] + a.c[8] * b.c[0];
+  r.c[29] = a.c[0] * b.c[4] - a.c[4] * b.c[2] + a.c[5] * b.c[1] - a.c[6] * b.c[0];
+  r.c[30] = a.c[3] * b.c[4] - a.c[6] * b.c[3] + a.c[8] * b.c[2] - a.c[9] * b.c[1];
+  r.bits = 0x7c00ffc0u;
+  return r;
+}
+
+// gp(point_pair, plane) -> mv: 40 mul, 25 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[7] = a.c[0] * b.c[1] - a.c[2] * b.c[3];
+  r.c[8] = a.c[0] * b.c[2] + a.c[1] * b.c[3];
+  r.c[9] = -a.c[4] * b.c[1] - a.c[5] * b.c[2] - a.c[7] * b.c[3];
+  r.c[10] = -a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  r.c[11] = a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  r.c[12] = -a.c[7] * b.c[0] + a.c[8] * b.c[1] + a.c[9] * b.c[2];
+  r.c[13] = -a.c[0] * b.c[0] + a.c[3] * b.c[3];
+  r.c[14] = a.c[5] * b.c[0] - a.c[6] * b.c[1] + a.c[9] * b.c[3];
+  r.c[15] = -a.c[4] * b.c[0] - a.c[6] * b.c[2] - a.c[8] * b.c[3];
+  r.c[26] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[27] = a.c[2] * b.c[0] - a.c[5] * b.c[3] + a.c[7] * b.c[2];
+  r.c[28] = -a.c[1] * b.c[0] + a.c[4] * b.c[3] - a.c[7] * b.c[1];
+  r.c[29] = a.c[0] * b.c[0] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.c[30] = a.c[3] * b.c[0] - a.c[6] * b.c[3] + a.c[8] * b.c[2] - a.c[9] * b.c[1];
+  r.bits = 0x7c00ffc0u;
+  return r;
+}
+
+// gp(point_pair, pseudoscalar) -> circle: 10 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> gp(const basic_point_pair<T>& a,
+                                        const basic_pseudoscalar<T>& b) {
+  return basic_circle<T>(-a.c[2] * b.c[0], a.c[1] * b.c[0], -a.c[0] * b.c[0], -a.c[7] * b.c[0],
+                         a.c[5] * b.c[0], -a.c[4] * b.c[0], -a.c[3] * b.c[0], -a.c[9] * b.c[0],
+                         a.c[8] * b.c[0], -a.c[6] * b.c[0]);
+}
+
+// gp(point_pair, rotor) -> mv: 40 mul, 24 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[4] * b.c[1] - a.c[5] * b.c[2] - a.c[7] * b.c[3];
+  r.c[6] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[7] = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
+  r.c[8] = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0];
+  r.c[9] = a.c[3] * b.c[0];
+  r.c[10] = a.c[4] * b.c[0] - a.c[5] * b.c[3] + a.c[7] * b.c[2];
+  r.c[11] = a.c[4] * b.c[3] + a.c[5] * b.c[0] - a.c[7] * b.c[1];
+  r.c[12] = a.c[6] * b.c[0] - a.c[8] * b.c[1] - a.c[9] * b.c[2];
+  r.c[13] = -a.c[4] * b.c[2] + a.c[5] * b.c[1] + a.c[7] * b.c[0];
+  r.c[14] = a.c[6] * b.c[1] + a.c[8] * b.c[0] - a.c[9] * b.c[3];
+  r.c[15] = a.c[6] * b.c[2] + a.c[8] * b.c[3] + a.c[9] * b.c[0];
+  r.c[26] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[27] = a.c[3] * b.c[1];
+  r.c[28] = a.c[3] * b.c[2];
+  r.c[29] = a.c[3] * b.c[3];
+  r.c[30] = a.c[6] * b.c[3] - a.c[8] * b.c[2] + a.c[9] * b.c[1];
+  r.bits = 0x7c00ffc1u;
+  return r;
+}
+
+// gp(point_pair, translator) -> mv: 40 mul, 25 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[1] * b.c[0];
+  r.c[8] = a.c[2] * b.c[0];
+  r.c[9] = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] + a.c[3] * b.c[0];
+  r.c[10] = -a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[4] * b.c[0];
+  r.c[11] = -a.c[0] * b.c[3] + a.c[2] * b.c[1] + a.c[5] * b.c[0];
+  r.c[12] = a.c[3] * b.c[1] + a.c[4] * b.c[2] + a.c[5] * b.c[3] + a.c[6] * b.c[0];
+  r.c[13] = -a.c[1] * b.c[3] + a.c[2] * b.c[2] + a.c[7] * b.c[0];
+  r.c[14] = a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[7] * b.c[3] + a.c[8] * b.c[0];
+  r.c[15] = a.c[3] * b.c[3] - a.c[5] * b.c[1] - a.c[7] * b.c[2] + a.c[9] * b.c[0];
+  r.c[27] = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  r.c[28] = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  r.c[29] = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  r.c[30] = a.c[4] * b.c[3] - a.c[5] * b.c[2] + a.c[7] * b.c[1];
+  r.bits = 0x7800ffc1u;
+  return r;
+}
+
+// gp(point_pair, motor) -> mv: 80 mul, 64 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[6] - a.c[4] * b.c[1] -
+           a.c[5] * b.c[2] - a.c[7] * b.c[3];
+  r.c[6] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[7] = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
+  r.c[8] = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0];
+  r.c[9] = a.c[0] * b.c[4] + a.c[1] * b.c[5] + a.c[2] * b.c[6] + a.c[3] * b.c[0];
+  r.c[10] = -a.c[0] * b.c[5] + a.c[1] * b.c[4] - a.c[2] * b.c[7] + a.c[4] * b.c[0] -
+            a.c[5] * b.c[3] + a.c[7] * b.c[2];
+  r.c[11] = -a.c[0] * b.c[6] + a.c[1] * b.c[7] + a.c[2] * b.c[4] + a.c[4] * b.c[3] +
+            a.c[5] * b.c[0] - a.c[7] * b.c[1];
+  r.c[12] = a.c[3] * b.c[4] + a.c[4] * b.c[5] + a.c[5] * b.c[6] + a.c[6] * b.c[0] -
+            a.c[7] * b.c[7] - a.c[8] * b.c[1] - a.c[9] * b.c[2];
+  r.c[13] = -a.c[0] * b.c[7] - a.c[1] * b.c[6] + a.c[2] * b.c[5] - a.c[4] * b.c[2] +
+            a.c[5] * b.c[1] + a.c[7] * b.c[0];
+  r.c[14] = a.c[3] * b.c[5] - a.c[4] * b.c[4] + a.c[5] * b.c[7] + a.c[6] * b.c[1] +
+            a.c[7] * b.c[6] + a.c[8] * b.c[0] - a.c[9] * b.c[3];
+  r.c[15] = a.c[3] * b.c[6] - a.c[4] * b.c[7] - a.c[5] * b.c[4] + a.c[6] * b.c[2] -
+            a.c[7] * b.c[5] + a.c[8] * b.c[3] + a.c[9] * b.c[0];
+  r.c[26] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[27] = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[7] + a.c[3] * b.c[1];
+  r.c[28] = a.c[0] * b.c[6] - a.c[1] * b.c[7] - a.c[2] * b.c[4] + a.c[3] * b.c[2];
+  r.c[29] = a.c[0] * b.c[7] + a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[3];
+  r.c[30] = a.c[3] * b.c[7] + a.c[4] * b.c[6] - a.c[5] * b.c[5] + a.c[6] * b.c[3] +
+            a.c[7] * b.c[4] - a.c[8] * b.c[2] + a.c[9] * b.c[1];
+  r.bits = 0x7c00ffc1u;
+  return r;
+}
+
+// gp(dual_line, normalized_point) -> mv: 21 mul, 16 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a,
+                                    const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = -a.c[3] + a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[3] = -a.c[4] - a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  r.c[4] = -a.c[5] - a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[5] = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  r.c[16] = a.c[0];
+  r.c[17] = a.c[1];
+  r.c[18] = a.c[3];
+  r.c[19] = a.c[2];
+  r.c[20] = a.c[4];
+  r.c[21] = a.c[5];
+  r.c[22] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[23] = a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  r.c[24] = a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  r.c[25] = a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.bits = 0x3ff003cu;
+  return r;
+}
+
+// gp(dual_line, dual_sphere) -> mv: 30 mul, 16 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a, const basic_dual_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[2] + a.c[1] * b.c[3] - a.c[3] * b.c[0];
+  r.c[3] = -a.c[0] * b.c[1] + a.c[2] * b.c[3] - a.c[4] * b.c[0];
+  r.c[4] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[5] * b.c[0];
+  r.c[5] = -a.c[3] * b.c[1] - a.c[4] * b.c[2] - a.c[5] * b.c[3];
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[1] * b.c[0];
+  r.c[18] = a.c[3] * b.c[0];
+  r.c[19] = a.c[2] * b.c[0];
+  r.c[20] = a.c[4] * b.c[0];
+  r.c[21] = a.c[5] * b.c[0];
+  r.c[22] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[23] = a.c[0] * b.c[4] - a.c[3] * b.c[2] + a.c[4] * b.c[1];
+  r.c[24] = a.c[1] * b.c[4] - a.c[3] * b.c[3] + a.c[5] * b.c[1];
+  r.c[25] = a.c[2] * b.c[4] - a.c[4] * b.c[3] + a.c[5] * b.c[2];
+  r.bits = 0x3ff003cu;
+  return r;
+}
+
+// gp(dual_line, dual_plane) -> mv: 21 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a, const basic_dual_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[3] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  r.c[4] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[5] = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  r.c[22] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[23] = a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  r.c[24] = a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  r.c[25] = a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// gp(dual_line, euclidean_vector) -> mv: 18 mul, 10 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a,
+                                    const basic_euclidean_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[3] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  r.c[4] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[5] = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  r.c[22] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[23] = -a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  r.c[24] = -a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  r.c[25] = -a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// gp(dual_line, flat_point) -> mv: 15 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a, const basic_flat_point<T>& b) {
+  basic_mv<T> r;
+  r.c[12] = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[3];
+  r.c[14] = -a.c[0] * b.c[0] + a.c[2] * b.c[2] - a.c[4] * b.c[3];
+  r.c[15] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[5] * b.c[3];
+  r.c[27] = a.c[0] * b.c[3];
+  r.c[28] = a.c[1] * b.c[3];
+  r.c[29] = a.c[2] * b.c[3];
+  r.c[30] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.bits = 0x7800d000u;
+  return r;
+}
+
+// gp(dual_line, euclidean_bivector) -> motor: 18 mul, 10 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_dual_line<T>& a,
+                                       const basic_euclidean_bivector<T>& b) {
+  return basic_motor<T>(-a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2],
+                        -a.c[1] * b.c[2] + a.c[2] * b.c[1], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                        -a.c[0] * b.c[1] + a.c[1] * b.c[0], -a.c[4] * b.c[0] - a.c[5] * b.c[1],
+                        a.c[3] * b.c[0] - a.c[5] * b.c[2], a.c[3] * b.c[1] + a.c[4] * b.c[2],
+                        a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0]);
+}
+
+// gp(dual_line, point_pair) -> mv: 60 mul, 44 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a, const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[7] - a.c[3] * b.c[0] -
+           a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  r.c[6] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[7] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  r.c[8] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[9] = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  r.c[10] = -a.c[1] * b.c[7] + a.c[2] * b.c[5] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  r.c[11] = a.c[0] * b.c[7] - a.c[2] * b.c[4] - a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  r.c[12] = a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[3] * b.c[3] - a.c[4] * b.c[4] - a.c[5] * b.c[5];
+  r.c[13] = -a.c[0] * b.c[5] + a.c[1] * b.c[4] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.c[14] =
+      -a.c[0] * b.c[6] + a.c[2] * b.c[9] + a.c[3] * b.c[4] - a.c[4] * b.c[3] - a.c[5] * b.c[7];
+  r.c[15] =
+      -a.c[1] * b.c[6] - a.c[2] * b.c[8] + a.c[3] * b.c[5] + a.c[4] * b.c[7] - a.c[5] * b.c[3];
+  r.c[26] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[27] = a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  r.c[28] = a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  r.c[29] = a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.c[30] = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[6] + a.c[3] * b.c[7] -
+            a.c[4] * b.c[5] + a.c[5] * b.c[4];
+  r.bits = 0x7c00ffc1u;
+  return r;
+}
+
+// gp(dual_line, dual_line) -> motor: 27 mul, 19 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_dual_line<T>& a, const basic_dual_line<T>& b) {
+  return basic_motor<T>(-a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2],
+                        -a.c[1] * b.c[2] + a.c[2] * b.c[1], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                        -a.c[0] * b.c[1] + a.c[1] * b.c[0],
+                        a.c[0] * b.c[4] + a.c[1] * b.c[5] - a.c[4] * b.c[0] - a.c[5] * b.c[1],
+                        -a.c[0] * b.c[3] + a.c[2] * b.c[5] + a.c[3] * b.c[0] - a.c[5] * b.c[2],
+                        -a.c[1] * b.c[3] - a.c[2] * b.c[4] + a.c[3] * b.c[1] + a.c[4] * b.c[2],
+                        a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3] + a.c[3] * b.c[2] -
+                            a.c[4] * b.c[1] + a.c[5] * b.c[0]);
+}
+
+// gp(dual_line, line) -> mv: 27 mul, 19 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a, const basic_line<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3] -
+           a.c[4] * b.c[4] - a.c[5] * b.c[5];
+  r.c[18] = a.c[0] * b.c[4] + a.c[1] * b.c[5];
+  r.c[20] = -a.c[0] * b.c[3] + a.c[2] * b.c[5];
+  r.c[21] = -a.c[1] * b.c[3] - a.c[2] * b.c[4];
+  r.c[23] = -a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[4] + a.c[4] * b.c[3];
+  r.c[24] = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[5] + a.c[5] * b.c[3];
+  r.c[25] = -a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[4] * b.c[5] + a.c[5] * b.c[4];
+  r.c[31] = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3];
+  r.bits = 0x83b40020u;
+  return r;
+}
+
+// gp(dual_line, circle) -> mv: 60 mul, 44 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[2] = -a.c[2] * b.c[6] + a.c[4] * b.c[0] + a.c[5] * b.c[1];
+  r.c[3] = a.c[1] * b.c[6] - a.c[3] * b.c[0] + a.c[5] * b.c[2];
+  r.c[4] = -a.c[0] * b.c[6] - a.c[3] * b.c[1] - a.c[4] * b.c[2];
+  r.c[5] = -a.c[0] * b.c[7] - a.c[1] * b.c[8] - a.c[2] * b.c[9] - a.c[3] * b.c[3] -
+           a.c[4] * b.c[4] - a.c[5] * b.c[5];
+  r.c[16] = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[17] = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  r.c[18] = a.c[0] * b.c[4] + a.c[1] * b.c[5] - a.c[4] * b.c[0] - a.c[5] * b.c[1];
+  r.c[19] = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  r.c[20] = -a.c[0] * b.c[3] + a.c[2] * b.c[5] + a.c[3] * b.c[0] - a.c[5] * b.c[2];
+  r.c[21] = -a.c[1] * b.c[3] - a.c[2] * b.c[4] + a.c[3] * b.c[1] + a.c[4] * b.c[2];
+  r.c[22] = -a.c[3] * b.c[2] + a.c[4] * b.c[1] - a.c[5] * b.c[0];
+  r.c[23] =
+      -a.c[1] * b.c[9] + a.c[2] * b.c[8] - a.c[3] * b.c[4] + a.c[4] * b.c[3] - a.c[5] * b.c[6];
+  r.c[24] = a.c[0] * b.c[9] - a.c[2] * b.c[7] - a.c[3] * b.c[5] + a.c[4] * b.c[6] + a.c[5] * b.c[3];
+  r.c[25] =
+      -a.c[0] * b.c[8] + a.c[1] * b.c[7] - a.c[3] * b.c[6] - a.c[4] * b.c[5] + a.c[5] * b.c[4];
+  r.c[31] = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3] + a.c[3] * b.c[2] -
+            a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// gp(dual_line, sphere) -> mv: 30 mul, 16 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a, const basic_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = -a.c[2] * b.c[0];
+  r.c[7] = a.c[1] * b.c[0];
+  r.c[8] = -a.c[0] * b.c[0];
+  r.c[9] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  r.c[10] = -a.c[5] * b.c[0];
+  r.c[11] = a.c[4] * b.c[0];
+  r.c[12] = -a.c[2] * b.c[4] + a.c[4] * b.c[1] + a.c[5] * b.c[2];
+  r.c[13] = -a.c[3] * b.c[0];
+  r.c[14] = a.c[1] * b.c[4] - a.c[3] * b.c[1] + a.c[5] * b.c[3];
+  r.c[15] = -a.c[0] * b.c[4] - a.c[3] * b.c[2] - a.c[4] * b.c[3];
+  r.c[27] = -a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[5] * b.c[0];
+  r.c[28] = a.c[0] * b.c[3] - a.c[2] * b.c[1] + a.c[4] * b.c[0];
+  r.c[29] = -a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[3] * b.c[0];
+  r.c[30] = -a.c[3] * b.c[3] + a.c[4] * b.c[2] - a.c[5] * b.c[1];
+  r.bits = 0x7800ffc0u;
+  return r;
+}
+
+// gp(dual_line, plane) -> mv: 21 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a, const basic_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  r.c[12] = -a.c[2] * b.c[0] + a.c[4] * b.c[1] + a.c[5] * b.c[2];
+  r.c[14] = a.c[1] * b.c[0] - a.c[3] * b.c[1] + a.c[5] * b.c[3];
+  r.c[15] = -a.c[0] * b.c[0] - a.c[3] * b.c[2] - a.c[4] * b.c[3];
+  r.c[27] = -a.c[1] * b.c[3] + a.c[2] * b.c[2];
+  r.c[28] = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  r.c[29] = -a.c[0] * b.c[2] + a.c[1] * b.c[1];
+  r.c[30] = -a.c[3] * b.c[3] + a.c[4] * b.c[2] - a.c[5] * b.c[1];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// gp(dual_line, pseudoscalar) -> line: 6 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> gp(const basic_dual_line<T>& a, const basic_pseudoscalar<T>& b) {
+  return basic_line<T>(-a.c[5] * b.c[0], a.c[4] * b.c[0], -a.c[3] * b.c[0], -a.c[2] * b.c[0],
+                       a.c[1] * b.c[0], -a.c[0] * b.c[0]);
+}
+
+// gp(dual_line, rotor) -> motor: 24 mul, 16 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_dual_line<T>& a, const basic_rotor<T>& b) {
+  return basic_motor<T>(-a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3],
+                        a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2],
+                        a.c[0] * b.c[3] + a.c[1] * b.c[0] - a.c[2] * b.c[1],
+                        -a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                        a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2],
+                        a.c[3] * b.c[1] + a.c[4] * b.c[0] - a.c[5] * b.c[3],
+                        a.c[3] * b.c[2] + a.c[4] * b.c[3] + a.c[5] * b.c[0],
+                        a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1]);
+}
+
+// gp(dual_line, translator) -> motor: 15 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_dual_line<T>& a, const basic_translator<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0],
+                        a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[3] * b.c[0],
+                        -a.c[0] * b.c[1] + a.c[2] * b.c[3] + a.c[4] * b.c[0],
+                        -a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[5] * b.c[0],
+                        a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1]);
+}
+
+// gp(dual_line, motor) -> motor: 36 mul, 28 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_dual_line<T>& a, const basic_motor<T>& b) {
+  return basic_motor<T>(-a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3],
+                        a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2],
+                        a.c[0] * b.c[3] + a.c[1] * b.c[0] - a.c[2] * b.c[1],
+                        -a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                        a.c[0] * b.c[5] + a.c[1] * b.c[6] - a.c[2] * b.c[7] + a.c[3] * b.c[0] -
+                            a.c[4] * b.c[1] - a.c[5] * b.c[2],
+                        -a.c[0] * b.c[4] + a.c[1] * b.c[7] + a.c[2] * b.c[6] + a.c[3] * b.c[1] +
+                            a.c[4] * b.c[0] - a.c[5] * b.c[3],
+                        -a.c[0] * b.c[7] - a.c[1] * b.c[4] - a.c[2] * b.c[5] + a.c[3] * b.c[2] +
+                            a.c[4] * b.c[3] + a.c[5] * b.c[0],
+                        a.c[0] * b.c[6] - a.c[1] * b.c[5] + a.c[2] * b.c[4] + a.c[3] * b.c[3] -
+                            a.c[4] * b.c[2] + a.c[5] * b.c[1]);
+}
+
+// gp(line, normalized_point) -> mv: 21 mul, 16 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = -a.c[3];
+  r.c[7] = -a.c[4];
+  r.c[8] = -a.c[5];
+  r.c[9] = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  r.c[10] = -a.c[0];
+  r.c[11] = -a.c[1];
+  r.c[12] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[3] * b.c[3];
+  r.c[13] = -a.c[2];
+  r.c[14] = a.c[0] * b.c[0] - a.c[2] * b.c[2] - a.c[4] * b.c[3];
+  r.c[15] = a.c[1] * b.c[0] + a.c[2] * b.c[1] - a.c[5] * b.c[3];
+  r.c[27] = -a.c[0] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  r.c[28] = -a.c[1] - a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  r.c[29] = -a.c[2] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.c[30] = -a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  r.bits = 0x7800ffc0u;
+  return r;
+}
+
+// gp(line, dual_sphere) -> mv: 30 mul, 16 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_dual_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = -a.c[3] * b.c[0];
+  r.c[7] = -a.c[4] * b.c[0];
+  r.c[8] = -a.c[5] * b.c[0];
+  r.c[9] = -a.c[3] * b.c[1] - a.c[4] * b.c[2] - a.c[5] * b.c[3];
+  r.c[10] = -a.c[0] * b.c[0];
+  r.c[11] = -a.c[1] * b.c[0];
+  r.c[12] = -a.c[0] * b.c[2] - a.c[1] * b.c[3] - a.c[3] * b.c[4];
+  r.c[13] = -a.c[2] * b.c[0];
+  r.c[14] = a.c[0] * b.c[1] - a.c[2] * b.c[3] - a.c[4] * b.c[4];
+  r.c[15] = a.c[1] * b.c[1] + a.c[2] * b.c[2] - a.c[5] * b.c[4];
+  r.c[27] = -a.c[0] * b.c[0] - a.c[3] * b.c[2] + a.c[4] * b.c[1];
+  r.c[28] = -a.c[1] * b.c[0] - a.c[3] * b.c[3] + a.c[5] * b.c[1];
+  r.c[29] = -a.c[2] * b.c[0] - a.c[4] * b.c[3] + a.c[5] * b.c[2];
+  r.c[30] = -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.bits = 0x7800ffc0u;
+  return r;
+}
+
+// gp(line, dual_plane) -> mv: 21 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_dual_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  r.c[12] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[3] * b.c[3];
+  r.c[14] = a.c[0] * b.c[0] - a.c[2] * b.c[2] - a.c[4] * b.c[3];
+  r.c[15] = a.c[1] * b.c[0] + a.c[2] * b.c[1] - a.c[5] * b.c[3];
+  r.c[27] = -a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  r.c[28] = -a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  r.c[29] = -a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.c[30] = -a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// gp(line, euclidean_vector) -> mv: 18 mul, 10 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_euclidean_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  r.c[12] = -a.c[0] * b.c[1] - a.c[1] * b.c[2];
+  r.c[14] = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  r.c[15] = a.c[1] * b.c[0] + a.c[2] * b.c[1];
+  r.c[27] = -a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  r.c[28] = -a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  r.c[29] = -a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.c[30] = -a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// gp(line, flat_point) -> mv: 15 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_flat_point<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = -a.c[3] * b.c[3];
+  r.c[3] = -a.c[4] * b.c[3];
+  r.c[4] = -a.c[5] * b.c[3];
+  r.c[5] = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  r.c[23] = -a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  r.c[24] = -a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  r.c[25] = -a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.bits = 0x380003cu;
+  return r;
+}
+
+// gp(line, euclidean_bivector) -> mv: 18 mul, 10 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_euclidean_bivector<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[18] = -a.c[4] * b.c[0] - a.c[5] * b.c[1];
+  r.c[20] = a.c[3] * b.c[0] - a.c[5] * b.c[2];
+  r.c[21] = a.c[3] * b.c[1] + a.c[4] * b.c[2];
+  r.c[23] = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[24] = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  r.c[25] = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  r.c[31] = a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  r.bits = 0x83b40020u;
+  return r;
+}
+
+// gp(line, point_pair) -> mv: 60 mul, 44 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  r.c[2] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[3] * b.c[3];
+  r.c[3] = a.c[0] * b.c[0] - a.c[2] * b.c[2] - a.c[4] * b.c[3];
+  r.c[4] = a.c[1] * b.c[0] + a.c[2] * b.c[1] - a.c[5] * b.c[3];
+  r.c[5] = -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[7] - a.c[3] * b.c[6] -
+           a.c[4] * b.c[8] - a.c[5] * b.c[9];
+  r.c[16] = -a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  r.c[17] = -a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  r.c[18] = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[4] * b.c[4] - a.c[5] * b.c[5];
+  r.c[19] = -a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.c[20] = -a.c[0] * b.c[0] + a.c[2] * b.c[2] + a.c[3] * b.c[4] - a.c[5] * b.c[7];
+  r.c[21] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] + a.c[3] * b.c[5] + a.c[4] * b.c[7];
+  r.c[22] = -a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  r.c[23] =
+      -a.c[0] * b.c[3] - a.c[1] * b.c[7] + a.c[2] * b.c[5] - a.c[3] * b.c[8] + a.c[4] * b.c[6];
+  r.c[24] = a.c[0] * b.c[7] - a.c[1] * b.c[3] - a.c[2] * b.c[4] - a.c[3] * b.c[9] + a.c[5] * b.c[6];
+  r.c[25] =
+      -a.c[0] * b.c[5] + a.c[1] * b.c[4] - a.c[2] * b.c[3] - a.c[4] * b.c[9] + a.c[5] * b.c[8];
+  r.c[31] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] + a.c[3] * b.c[7] -
+            a.c[4] * b.c[5] + a.c[5] * b.c[4];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// gp(line, dual_line) -> mv: 27 mul, 19 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_dual_line<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3] -
+           a.c[4] * b.c[4] - a.c[5] * b.c[5];
+  r.c[18] = -a.c[4] * b.c[0] - a.c[5] * b.c[1];
+  r.c[20] = a.c[3] * b.c[0] - a.c[5] * b.c[2];
+  r.c[21] = a.c[3] * b.c[1] + a.c[4] * b.c[2];
+  r.c[23] = -a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[4] + a.c[4] * b.c[3];
+  r.c[24] = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[5] + a.c[5] * b.c[3];
+  r.c[25] = -a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[4] * b.c[5] + a.c[5] * b.c[4];
+  r.c[31] = a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  r.bits = 0x83b40020u;
+  return r;
+}
+
+// gp(line, line) -> motor: 27 mul, 19 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_line<T>& a, const basic_line<T>& b) {
+  return basic_motor<T>(a.c[3] * b.c[3] + a.c[4] * b.c[4] + a.c[5] * b.c[5],
+                        a.c[3] * b.c[4] - a.c[4] * b.c[3], a.c[3] * b.c[5] - a.c[5] * b.c[3],
+                        a.c[4] * b.c[5] - a.c[5] * b.c[4],
+                        -a.c[0] * b.c[4] - a.c[1] * b.c[5] + a.c[4] * b.c[0] + a.c[5] * b.c[1],
+                        a.c[0] * b.c[3] - a.c[2] * b.c[5] - a.c[3] * b.c[0] + a.c[5] * b.c[2],
+                        a.c[1] * b.c[3] + a.c[2] * b.c[4] - a.c[3] * b.c[1] - a.c[4] * b.c[2],
+                        -a.c[0] * b.c[5] + a.c[1] * b.c[4] - a.c[2] * b.c[3] - a.c[3] * b.c[2] +
+                            a.c[4] * b.c[1] - a.c[5] * b.c[0]);
+}
+
+// gp(line, circle) -> mv: 60 mul, 44 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] + a.c[4] * b.c[4] +
+           a.c[5] * b.c[5];
+  r.c[6] = a.c[4] * b.c[0] + a.c[5] * b.c[1];
+  r.c[7] = -a.c[3] * b.c[0] + a.c[5] * b.c[2];
+  r.c[8] = -a.c[3] * b.c[1] - a.c[4] * b.c[2];
+  r.c[9] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[10] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[4] - a.c[4] * b.c[3];
+  r.c[11] = -a.c[0] * b.c[2] + a.c[2] * b.c[0] + a.c[3] * b.c[5] - a.c[5] * b.c[3];
+  r.c[12] =
+      -a.c[0] * b.c[4] - a.c[1] * b.c[5] + a.c[2] * b.c[6] + a.c[4] * b.c[7] + a.c[5] * b.c[8];
+  r.c[13] = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[4] * b.c[5] - a.c[5] * b.c[4];
+  r.c[14] = a.c[0] * b.c[3] - a.c[1] * b.c[6] - a.c[2] * b.c[5] - a.c[3] * b.c[7] + a.c[5] * b.c[9];
+  r.c[15] = a.c[0] * b.c[6] + a.c[1] * b.c[3] + a.c[2] * b.c[4] - a.c[3] * b.c[8] - a.c[4] * b.c[9];
+  r.c[26] = -a.c[3] * b.c[2] + a.c[4] * b.c[1] - a.c[5] * b.c[0];
+  r.c[27] = a.c[1] * b.c[2] - a.c[2] * b.c[1] - a.c[5] * b.c[6];
+  r.c[28] = -a.c[0] * b.c[2] + a.c[2] * b.c[0] + a.c[4] * b.c[6];
+  r.c[29] = a.c[0] * b.c[1] - a.c[1] * b.c[0] - a.c[3] * b.c[6];
+  r.c[30] = -a.c[0] * b.c[5] + a.c[1] * b.c[4] - a.c[2] * b.c[3] - a.c[3] * b.c[9] +
+            a.c[4] * b.c[8] - a.c[5] * b.c[7];
+  r.bits = 0x7c00ffc1u;
+  return r;
+}
+
+// gp(line, sphere) -> mv: 30 mul, 16 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[2] * b.c[0] + a.c[4] * b.c[1] + a.c[5] * b.c[2];
+  r.c[3] = -a.c[1] * b.c[0] - a.c[3] * b.c[1] + a.c[5] * b.c[3];
+  r.c[4] = a.c[0] * b.c[0] - a.c[3] * b.c[2] - a.c[4] * b.c[3];
+  r.c[5] = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3];
+  r.c[16] = -a.c[5] * b.c[0];
+  r.c[17] = a.c[4] * b.c[0];
+  r.c[18] = -a.c[2] * b.c[0];
+  r.c[19] = -a.c[3] * b.c[0];
+  r.c[20] = a.c[1] * b.c[0];
+  r.c[21] = -a.c[0] * b.c[0];
+  r.c[22] = -a.c[3] * b.c[3] + a.c[4] * b.c[2] - a.c[5] * b.c[1];
+  r.c[23] = a.c[1] * b.c[3] - a.c[2] * b.c[2] - a.c[5] * b.c[4];
+  r.c[24] = -a.c[0] * b.c[3] + a.c[2] * b.c[1] + a.c[4] * b.c[4];
+  r.c[25] = a.c[0] * b.c[2] - a.c[1] * b.c[1] - a.c[3] * b.c[4];
+  r.bits = 0x3ff003cu;
+  return r;
+}
+
+// gp(line, plane) -> mv: 21 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[4] * b.c[1] + a.c[5] * b.c[2];
+  r.c[3] = -a.c[3] * b.c[1] + a.c[5] * b.c[3];
+  r.c[4] = -a.c[3] * b.c[2] - a.c[4] * b.c[3];
+  r.c[5] = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3];
+  r.c[22] = -a.c[3] * b.c[3] + a.c[4] * b.c[2] - a.c[5] * b.c[1];
+  r.c[23] = a.c[1] * b.c[3] - a.c[2] * b.c[2] - a.c[5] * b.c[0];
+  r.c[24] = -a.c[0] * b.c[3] + a.c[2] * b.c[1] + a.c[4] * b.c[0];
+  r.c[25] = a.c[0] * b.c[2] - a.c[1] * b.c[1] - a.c[3] * b.c[0];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// gp(line, pseudoscalar) -> dual_line: 6 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> gp(const basic_line<T>& a, const basic_pseudoscalar<T>& b) {
+  return basic_dual_line<T>(a.c[5] * b.c[0], -a.c[4] * b.c[0], a.c[3] * b.c[0], a.c[2] * b.c[0],
+                            -a.c[1] * b.c[0], a.c[0] * b.c[0]);
+}
+
+// gp(line, rotor) -> mv: 24 mul, 16 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  r.c[18] = a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  r.c[20] = a.c[3] * b.c[1] + a.c[4] * b.c[0] - a.c[5] * b.c[3];
+  r.c[21] = a.c[3] * b.c[2] + a.c[4] * b.c[3] + a.c[5] * b.c[0];
+  r.c[23] = a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2];
+  r.c[24] = a.c[0] * b.c[3] + a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[25] = -a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[31] = a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.bits = 0x83b40020u;
+  return r;
+}
+
+// gp(line, translator) -> mv: 15 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = -a.c[3] * b.c[1] - a.c[4] * b.c[2] - a.c[5] * b.c[3];
+  r.c[18] = a.c[3] * b.c[0];
+  r.c[20] = a.c[4] * b.c[0];
+  r.c[21] = a.c[5] * b.c[0];
+  r.c[23] = a.c[0] * b.c[0] - a.c[3] * b.c[2] + a.c[4] * b.c[1];
+  r.c[24] = a.c[1] * b.c[0] - a.c[3] * b.c[3] + a.c[5] * b.c[1];
+  r.c[25] = a.c[2] * b.c[0] - a.c[4] * b.c[3] + a.c[5] * b.c[2];
+  r.bits = 0x3b40020u;
+  return r;
+}
+
+// gp(line, motor) -> mv: 36 mul, 28 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3] - a.c[3] * b.c[4] -
+           a.c[4] * b.c[5] - a.c[5] * b.c[6];
+  r.c[18] = a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  r.c[20] = a.c[3] * b.c[1] + a.c[4] * b.c[0] - a.c[5] * b.c[3];
+  r.c[21] = a.c[3] * b.c[2] + a.c[4] * b.c[3] + a.c[5] * b.c[0];
+  r.c[23] = a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[3] * b.c[5] +
+            a.c[4] * b.c[4] - a.c[5] * b.c[7];
+  r.c[24] = a.c[0] * b.c[3] + a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[6] +
+            a.c[4] * b.c[7] + a.c[5] * b.c[4];
+  r.c[25] = -a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[3] * b.c[7] -
+            a.c[4] * b.c[6] + a.c[5] * b.c[5];
+  r.c[31] = a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.bits = 0x83b40020u;
+  return r;
+}
+
+// gp(circle, normalized_point) -> mv: 40 mul, 35 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = -a.c[3] + a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[7] = -a.c[4] - a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  r.c[8] = -a.c[5] - a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[9] = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  r.c[10] = -a.c[7] - a.c[0] * b.c[3] + a.c[6] * b.c[2];
+  r.c[11] = -a.c[8] - a.c[1] * b.c[3] - a.c[6] * b.c[1];
+  r.c[12] = -a.c[3] * b.c[3] - a.c[7] * b.c[1] - a.c[8] * b.c[2];
+  r.c[13] = -a.c[9] - a.c[2] * b.c[3] + a.c[6] * b.c[0];
+  r.c[14] = -a.c[4] * b.c[3] + a.c[7] * b.c[0] - a.c[9] * b.c[2];
+  r.c[15] = -a.c[5] * b.c[3] + a.c[8] * b.c[0] + a.c[9] * b.c[1];
+  r.c[26] = -a.c[6] + a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[27] = -a.c[7] + a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  r.c[28] = -a.c[8] + a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  r.c[29] = -a.c[9] + a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.c[30] = a.c[6] * b.c[3] - a.c[7] * b.c[2] + a.c[8] * b.c[1] - a.c[9] * b.c[0];
+  r.bits = 0x7c00ffc0u;
+  return r;
+}
+
+// gp(circle, dual_sphere) -> mv: 50 mul, 35 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_dual_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = a.c[0] * b.c[2] + a.c[1] * b.c[3] - a.c[3] * b.c[0];
+  r.c[7] = -a.c[0] * b.c[1] + a.c[2] * b.c[3] - a.c[4] * b.c[0];
+  r.c[8] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[5] * b.c[0];
+  r.c[9] = -a.c[3] * b.c[1] - a.c[4] * b.c[2] - a.c[5] * b.c[3];
+  r.c[10] = -a.c[0] * b.c[4] + a.c[6] * b.c[3] - a.c[7] * b.c[0];
+  r.c[11] = -a.c[1] * b.c[4] - a.c[6] * b.c[2] - a.c[8] * b.c[0];
+  r.c[12] = -a.c[3] * b.c[4] - a.c[7] * b.c[2] - a.c[8] * b.c[3];
+  r.c[13] = -a.c[2] * b.c[4] + a.c[6] * b.c[1] - a.c[9] * b.c[0];
+  r.c[14] = -a.c[4] * b.c[4] + a.c[7] * b.c[1] - a.c[9] * b.c[3];
+  r.c[15] = -a.c[5] * b.c[4] + a.c[8] * b.c[1] + a.c[9] * b.c[2];
+  r.c[26] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[6] * b.c[0];
+  r.c[27] = a.c[0] * b.c[4] - a.c[3] * b.c[2] + a.c[4] * b.c[1] - a.c[7] * b.c[0];
+  r.c[28] = a.c[1] * b.c[4] - a.c[3] * b.c[3] + a.c[5] * b.c[1] - a.c[8] * b.c[0];
+  r.c[29] = a.c[2] * b.c[4] - a.c[4] * b.c[3] + a.c[5] * b.c[2] - a.c[9] * b.c[0];
+  r.c[30] = a.c[6] * b.c[4] - a.c[7] * b.c[3] + a.c[8] * b.c[2] - a.c[9] * b.c[1];
+  r.bits = 0x7c00ffc0u;
+  return r;
+}
+
+// gp(circle, dual_plane) -> mv: 40 mul, 25 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_dual_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[7] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  r.c[8] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[9] = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  r.c[10] = -a.c[0] * b.c[3] + a.c[6] * b.c[2];
+  r.c[11] = -a.c[1] * b.c[3] - a.c[6] * b.c[1];
+  r.c[12] = -a.c[3] * b.c[3] - a.c[7] * b.c[1] - a.c[8] * b.c[2];
+  r.c[13] = -a.c[2] * b.c[3] + a.c[6] * b.c[0];
+  r.c[14] = -a.c[4] * b.c[3] + a.c[7] * b.c[0] - a.c[9] * b.c[2];
+  r.c[15] = -a.c[5] * b.c[3] + a.c[8] * b.c[0] + a.c[9] * b.c[1];
+  r.c[26] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[27] = a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  r.c[28] = a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  r.c[29] = a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.c[30] = a.c[6] * b.c[3] - a.c[7] * b.c[2] + a.c[8] * b.c[1] - a.c[9] * b.c[0];
+  r.bits = 0x7c00ffc0u;
+  return r;
+}
+
+// gp(circle, euclidean_vector) -> mv: 30 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_euclidean_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[7] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  r.c[8] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[9] = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  r.c[10] = a.c[6] * b.c[2];
+  r.c[11] = -a.c[6] * b.c[1];
+  r.c[12] = -a.c[7] * b.c[1] - a.c[8] * b.c[2];
+  r.c[13] = a.c[6] * b.c[0];
+  r.c[14] = a.c[7] * b.c[0] - a.c[9] * b.c[2];
+  r.c[15] = a.c[8] * b.c[0] + a.c[9] * b.c[1];
+  r.c[26] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[27] = -a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  r.c[28] = -a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  r.c[29] = -a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.c[30] = -a.c[7] * b.c[2] + a.c[8] * b.c[1] - a.c[9] * b.c[0];
+  r.bits = 0x7c00ffc0u;
+  return r;
+}
+
+// gp(circle, flat_point) -> mv: 40 mul, 25 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_flat_point<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[3];
+  r.c[3] = -a.c[0] * b.c[0] + a.c[2] * b.c[2] - a.c[4] * b.c[3];
+  r.c[4] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[5] * b.c[3];
+  r.c[5] = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  r.c[16] = a.c[0] * b.c[3];
+  r.c[17] = a.c[1] * b.c[3];
+  r.c[18] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  r.c[19] = a.c[2] * b.c[3];
+  r.c[20] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  r.c[21] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[22] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[23] = -a.c[3] * b.c[1] + a.c[4] * b.c[0] + a.c[6] * b.c[2] - a.c[7] * b.c[3];
+  r.c[24] = -a.c[3] * b.c[2] + a.c[5] * b.c[0] - a.c[6] * b.c[1] - a.c[8] * b.c[3];
+  r.c[25] = -a.c[4] * b.c[2] + a.c[5] * b.c[1] + a.c[6] * b.c[0] - a.c[9] * b.c[3];
+  r.c[31] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[6] * b.c[3];
+  r.bits = 0x83ff003cu;
+  return r;
+}
+
+// gp(circle, euclidean_bivector) -> mv: 30 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a,
+                                    const basic_euclidean_bivector<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[2] = -a.c[6] * b.c[2];
+  r.c[3] = a.c[6] * b.c[1];
+  r.c[4] = -a.c[6] * b.c[0];
+  r.c[5] = -a.c[7] * b.c[0] - a.c[8] * b.c[1] - a.c[9] * b.c[2];
+  r.c[16] = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[17] = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  r.c[18] = -a.c[4] * b.c[0] - a.c[5] * b.c[1];
+  r.c[19] = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  r.c[20] = a.c[3] * b.c[0] - a.c[5] * b.c[2];
+  r.c[21] = a.c[3] * b.c[1] + a.c[4] * b.c[2];
+  r.c[23] = -a.c[8] * b.c[2] + a.c[9] * b.c[1];
+  r.c[24] = a.c[7] * b.c[2] - a.c[9] * b.c[0];
+  r.c[25] = -a.c[7] * b.c[1] + a.c[8] * b.c[0];
+  r.c[31] = a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  r.bits = 0x83bf003eu;
+  return r;
+}
+
+// gp(circle, point_pair) -> mv: 100 mul, 84 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[7] - a.c[3] * b.c[0] -
+           a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  r.c[2] = a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[3] * b.c[3] - a.c[6] * b.c[7] - a.c[7] * b.c[1] -
+           a.c[8] * b.c[2];
+  r.c[3] = -a.c[0] * b.c[6] + a.c[2] * b.c[9] - a.c[4] * b.c[3] + a.c[6] * b.c[5] +
+           a.c[7] * b.c[0] - a.c[9] * b.c[2];
+  r.c[4] = -a.c[1] * b.c[6] - a.c[2] * b.c[8] - a.c[5] * b.c[3] - a.c[6] * b.c[4] +
+           a.c[8] * b.c[0] + a.c[9] * b.c[1];
+  r.c[5] = -a.c[3] * b.c[6] - a.c[4] * b.c[8] - a.c[5] * b.c[9] - a.c[7] * b.c[4] -
+           a.c[8] * b.c[5] - a.c[9] * b.c[7];
+  r.c[16] = a.c[0] * b.c[3] - a.c[1] * b.c[7] + a.c[2] * b.c[5] - a.c[3] * b.c[1] +
+            a.c[4] * b.c[0] - a.c[6] * b.c[2];
+  r.c[17] = a.c[0] * b.c[7] + a.c[1] * b.c[3] - a.c[2] * b.c[4] - a.c[3] * b.c[2] +
+            a.c[5] * b.c[0] + a.c[6] * b.c[1];
+  r.c[18] = a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[4] * b.c[4] - a.c[5] * b.c[5] +
+            a.c[7] * b.c[1] + a.c[8] * b.c[2];
+  r.c[19] = -a.c[0] * b.c[5] + a.c[1] * b.c[4] + a.c[2] * b.c[3] - a.c[4] * b.c[2] +
+            a.c[5] * b.c[1] - a.c[6] * b.c[0];
+  r.c[20] = -a.c[0] * b.c[6] + a.c[2] * b.c[9] + a.c[3] * b.c[4] - a.c[5] * b.c[7] -
+            a.c[7] * b.c[0] + a.c[9] * b.c[2];
+  r.c[21] = -a.c[1] * b.c[6] - a.c[2] * b.c[8] + a.c[3] * b.c[5] + a.c[4] * b.c[7] -
+            a.c[8] * b.c[0] - a.c[9] * b.c[1];
+  r.c[22] = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[6] - a.c[7] * b.c[2] +
+            a.c[8] * b.c[1] - a.c[9] * b.c[0];
+  r.c[23] = -a.c[3] * b.c[8] + a.c[4] * b.c[6] + a.c[6] * b.c[9] - a.c[7] * b.c[3] -
+            a.c[8] * b.c[7] + a.c[9] * b.c[5];
+  r.c[24] = -a.c[3] * b.c[9] + a.c[5] * b.c[6] - a.c[6] * b.c[8] + a.c[7] * b.c[7] -
+            a.c[8] * b.c[3] - a.c[9] * b.c[4];
+  r.c[25] = -a.c[4] * b.c[9] + a.c[5] * b.c[8] + a.c[6] * b.c[6] - a.c[7] * b.c[5] +
+            a.c[8] * b.c[4] - a.c[9] * b.c[3];
+  r.c[31] = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[6] + a.c[3] * b.c[7] -
+            a.c[4] * b.c[5] + a.c[5] * b.c[4] - a.c[6] * b.c[3] + a.c[7] * b.c[2] -
+            a.c[8] * b.c[1] + a.c[9] * b.c[0];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// gp(circle, dual_line) -> mv: 60 mul, 44 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_dual_line<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[2] = a.c[0] * b.c[4] + a.c[1] * b.c[5] - a.c[6] * b.c[2];
+  r.c[3] = -a.c[0] * b.c[3] + a.c[2] * b.c[5] + a.c[6] * b.c[1];
+  r.c[4] = -a.c[1] * b.c[3] - a.c[2] * b.c[4] - a.c[6] * b.c[0];
+  r.c[5] = -a.c[3] * b.c[3] - a.c[4] * b.c[4] - a.c[5] * b.c[5] - a.c[7] * b.c[0] -
+           a.c[8] * b.c[1] - a.c[9] * b.c[2];
+  r.c[16] = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[17] = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  r.c[18] = a.c[0] * b.c[4] + a.c[1] * b.c[5] - a.c[4] * b.c[0] - a.c[5] * b.c[1];
+  r.c[19] = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  r.c[20] = -a.c[0] * b.c[3] + a.c[2] * b.c[5] + a.c[3] * b.c[0] - a.c[5] * b.c[2];
+  r.c[21] = -a.c[1] * b.c[3] - a.c[2] * b.c[4] + a.c[3] * b.c[1] + a.c[4] * b.c[2];
+  r.c[22] = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3];
+  r.c[23] =
+      -a.c[3] * b.c[4] + a.c[4] * b.c[3] + a.c[6] * b.c[5] - a.c[8] * b.c[2] + a.c[9] * b.c[1];
+  r.c[24] =
+      -a.c[3] * b.c[5] + a.c[5] * b.c[3] - a.c[6] * b.c[4] + a.c[7] * b.c[2] - a.c[9] * b.c[0];
+  r.c[25] =
+      -a.c[4] * b.c[5] + a.c[5] * b.c[4] + a.c[6] * b.c[3] - a.c[7] * b.c[1] + a.c[8] * b.c[0];
+  r.c[31] = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3] + a.c[3] * b.c[2] -
+            a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// gp(circle, line) -> mv: 60 mul, 44 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_line<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] + a.c[4] * b.c[4] +
+           a.c[5] * b.c[5];
+  r.c[6] = -a.c[0] * b.c[4] - a.c[1] * b.c[5];
+  r.c[7] = a.c[0] * b.c[3] - a.c[2] * b.c[5];
+  r.c[8] = a.c[1] * b.c[3] + a.c[2] * b.c[4];
+  r.c[9] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[10] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[4] - a.c[4] * b.c[3];
+  r.c[11] = -a.c[0] * b.c[2] + a.c[2] * b.c[0] + a.c[3] * b.c[5] - a.c[5] * b.c[3];
+  r.c[12] = a.c[4] * b.c[0] + a.c[5] * b.c[1] - a.c[6] * b.c[2] - a.c[7] * b.c[4] - a.c[8] * b.c[5];
+  r.c[13] = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[4] * b.c[5] - a.c[5] * b.c[4];
+  r.c[14] =
+      -a.c[3] * b.c[0] + a.c[5] * b.c[2] + a.c[6] * b.c[1] + a.c[7] * b.c[3] - a.c[9] * b.c[5];
+  r.c[15] =
+      -a.c[3] * b.c[1] - a.c[4] * b.c[2] - a.c[6] * b.c[0] + a.c[8] * b.c[3] + a.c[9] * b.c[4];
+  r.c[26] = -a.c[0] * b.c[5] + a.c[1] * b.c[4] - a.c[2] * b.c[3];
+  r.c[27] = -a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[6] * b.c[5];
+  r.c[28] = a.c[0] * b.c[2] - a.c[2] * b.c[0] + a.c[6] * b.c[4];
+  r.c[29] = -a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[6] * b.c[3];
+  r.c[30] = -a.c[3] * b.c[2] + a.c[4] * b.c[1] - a.c[5] * b.c[0] - a.c[7] * b.c[5] +
+            a.c[8] * b.c[4] - a.c[9] * b.c[3];
+  r.bits = 0x7c00ffc1u;
+  return r;
+}
+
+// gp(circle, sphere) -> mv: 50 mul, 35 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3] + a.c[6] * b.c[0];
+  r.c[2] = -a.c[2] * b.c[4] + a.c[4] * b.c[1] + a.c[5] * b.c[2] + a.c[9] * b.c[0];
+  r.c[3] = a.c[1] * b.c[4] - a.c[3] * b.c[1] + a.c[5] * b.c[3] - a.c[8] * b.c[0];
+  r.c[4] = -a.c[0] * b.c[4] - a.c[3] * b.c[2] - a.c[4] * b.c[3] + a.c[7] * b.c[0];
+  r.c[5] = -a.c[6] * b.c[4] + a.c[7] * b.c[1] + a.c[8] * b.c[2] + a.c[9] * b.c[3];
+  r.c[16] = -a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[5] * b.c[0];
+  r.c[17] = a.c[0] * b.c[3] - a.c[2] * b.c[1] + a.c[4] * b.c[0];
+  r.c[18] = -a.c[2] * b.c[4] + a.c[6] * b.c[3] - a.c[9] * b.c[0];
+  r.c[19] = -a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[3] * b.c[0];
+  r.c[20] = a.c[1] * b.c[4] - a.c[6] * b.c[2] + a.c[8] * b.c[0];
+  r.c[21] = -a.c[0] * b.c[4] + a.c[6] * b.c[1] - a.c[7] * b.c[0];
+  r.c[22] = -a.c[3] * b.c[3] + a.c[4] * b.c[2] - a.c[5] * b.c[1];
+  r.c[23] = -a.c[5] * b.c[4] + a.c[8] * b.c[3] - a.c[9] * b.c[2];
+  r.c[24] = a.c[4] * b.c[4] - a.c[7] * b.c[3] + a.c[9] * b.c[1];
+  r.c[25] = -a.c[3] * b.c[4] + a.c[7] * b.c[2] - a.c[8] * b.c[1];
+  r.bits = 0x3ff003eu;
+  return r;
+}
+
+// gp(circle, plane) -> mv: 40 mul, 25 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  r.c[2] = -a.c[2] * b.c[0] + a.c[4] * b.c[1] + a.c[5] * b.c[2];
+  r.c[3] = a.c[1] * b.c[0] - a.c[3] * b.c[1] + a.c[5] * b.c[3];
+  r.c[4] = -a.c[0] * b.c[0] - a.c[3] * b.c[2] - a.c[4] * b.c[3];
+  r.c[5] = -a.c[6] * b.c[0] + a.c[7] * b.c[1] + a.c[8] * b.c[2] + a.c[9] * b.c[3];
+  r.c[16] = -a.c[1] * b.c[3] + a.c[2] * b.c[2];
+  r.c[17] = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  r.c[18] = -a.c[2] * b.c[0] + a.c[6] * b.c[3];
+  r.c[19] = -a.c[0] * b.c[2] + a.c[1] * b.c[1];
+  r.c[20] = a.c[1] * b.c[0] - a.c[6] * b.c[2];
+  r.c[21] = -a.c[0] * b.c[0] + a.c[6] * b.c[1];
+  r.c[22] = -a.c[3] * b.c[3] + a.c[4] * b.c[2] - a.c[5] * b.c[1];
+  r.c[23] = -a.c[5] * b.c[0] + a.c[8] * b.c[3] - a.c[9] * b.c[2];
+  r.c[24] = a.c[4] * b.c[0] - a.c[7] * b.c[3] + a.c[9] * b.c[1];
+  r.c[25] = -a.c[3] * b.c[0] + a.c[7] * b.c[2] - a.c[8] * b.c[1];
+  r.bits = 0x3ff003eu;
+  return r;
+}
+
+// gp(circle, pseudoscalar) -> point_pair: 10 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> gp(const basic_circle<T>& a,
+                                            const basic_pseudoscalar<T>& b) {
+  return basic_point_pair<T>(a.c[2] * b.c[0], -a.c[1] * b.c[0], a.c[0] * b.c[0], a.c[6] * b.c[0],
+                             a.c[5] * b.c[0], -a.c[4] * b.c[0], a.c[9] * b.c[0], a.c[3] * b.c[0],
+                             -a.c[8] * b.c[0], a.c[7] * b.c[0]);
+}
+
+// gp(circle, rotor) -> mv: 40 mul, 24 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  r.c[2] = -a.c[6] * b.c[3];
+  r.c[3] = a.c[6] * b.c[2];
+  r.c[4] = -a.c[6] * b.c[1];
+  r.c[5] = -a.c[7] * b.c[1] - a.c[8] * b.c[2] - a.c[9] * b.c[3];
+  r.c[16] = a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2];
+  r.c[17] = a.c[0] * b.c[3] + a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[18] = a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  r.c[19] = -a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[20] = a.c[3] * b.c[1] + a.c[4] * b.c[0] - a.c[5] * b.c[3];
+  r.c[21] = a.c[3] * b.c[2] + a.c[4] * b.c[3] + a.c[5] * b.c[0];
+  r.c[22] = a.c[6] * b.c[0];
+  r.c[23] = a.c[7] * b.c[0] - a.c[8] * b.c[3] + a.c[9] * b.c[2];
+  r.c[24] = a.c[7] * b.c[3] + a.c[8] * b.c[0] - a.c[9] * b.c[1];
+  r.c[25] = -a.c[7] * b.c[2] + a.c[8] * b.c[1] + a.c[9] * b.c[0];
+  r.c[31] = a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// gp(circle, translator) -> mv: 40 mul, 25 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[2] + a.c[1] * b.c[3];
+  r.c[3] = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  r.c[4] = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[5] = -a.c[3] * b.c[1] - a.c[4] * b.c[2] - a.c[5] * b.c[3];
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[1] * b.c[0];
+  r.c[18] = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[3] * b.c[0];
+  r.c[19] = a.c[2] * b.c[0];
+  r.c[20] = -a.c[0] * b.c[1] + a.c[2] * b.c[3] + a.c[4] * b.c[0];
+  r.c[21] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[5] * b.c[0];
+  r.c[22] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[6] * b.c[0];
+  r.c[23] = -a.c[3] * b.c[2] + a.c[4] * b.c[1] + a.c[6] * b.c[3] + a.c[7] * b.c[0];
+  r.c[24] = -a.c[3] * b.c[3] + a.c[5] * b.c[1] - a.c[6] * b.c[2] + a.c[8] * b.c[0];
+  r.c[25] = -a.c[4] * b.c[3] + a.c[5] * b.c[2] + a.c[6] * b.c[1] + a.c[9] * b.c[0];
+  r.c[31] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.bits = 0x83ff003cu;
+  return r;
+}
+
+// gp(circle, motor) -> mv: 80 mul, 64 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  r.c[2] = a.c[0] * b.c[5] + a.c[1] * b.c[6] - a.c[2] * b.c[7] - a.c[6] * b.c[3];
+  r.c[3] = -a.c[0] * b.c[4] + a.c[1] * b.c[7] + a.c[2] * b.c[6] + a.c[6] * b.c[2];
+  r.c[4] = -a.c[0] * b.c[7] - a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[6] * b.c[1];
+  r.c[5] = -a.c[3] * b.c[4] - a.c[4] * b.c[5] - a.c[5] * b.c[6] - a.c[6] * b.c[7] -
+           a.c[7] * b.c[1] - a.c[8] * b.c[2] - a.c[9] * b.c[3];
+  r.c[16] = a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2];
+  r.c[17] = a.c[0] * b.c[3] + a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  r.c[18] = a.c[0] * b.c[5] + a.c[1] * b.c[6] - a.c[2] * b.c[7] + a.c[3] * b.c[0] -
+            a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  r.c[19] = -a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[20] = -a.c[0] * b.c[4] + a.c[1] * b.c[7] + a.c[2] * b.c[6] + a.c[3] * b.c[1] +
+            a.c[4] * b.c[0] - a.c[5] * b.c[3];
+  r.c[21] = -a.c[0] * b.c[7] - a.c[1] * b.c[4] - a.c[2] * b.c[5] + a.c[3] * b.c[2] +
+            a.c[4] * b.c[3] + a.c[5] * b.c[0];
+  r.c[22] = a.c[0] * b.c[6] - a.c[1] * b.c[5] + a.c[2] * b.c[4] + a.c[6] * b.c[0];
+  r.c[23] = -a.c[3] * b.c[5] + a.c[4] * b.c[4] - a.c[5] * b.c[7] + a.c[6] * b.c[6] +
+            a.c[7] * b.c[0] - a.c[8] * b.c[3] + a.c[9] * b.c[2];
+  r.c[24] = -a.c[3] * b.c[6] + a.c[4] * b.c[7] + a.c[5] * b.c[4] - a.c[6] * b.c[5] +
+            a.c[7] * b.c[3] + a.c[8] * b.c[0] - a.c[9] * b.c[1];
+  r.c[25] = -a.c[3] * b.c[7] - a.c[4] * b.c[6] + a.c[5] * b.c[5] + a.c[6] * b.c[4] -
+            a.c[7] * b.c[2] + a.c[8] * b.c[1] + a.c[9] * b.c[0];
+  r.c[31] = a.c[0] * b.c[6] - a.c[1] * b.c[5] + a.c[2] * b.c[4] + a.c[3] * b.c[3] -
+            a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// gp(sphere, normalized_point) -> mv: 20 mul, 14 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = -a.c[1] + a.c[0] * b.c[2];
+  r.c[17] = -a.c[2] - a.c[0] * b.c[1];
+  r.c[18] = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[19] = -a.c[3] + a.c[0] * b.c[0];
+  r.c[20] = a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  r.c[21] = a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  r.c[22] = -a.c[4] + a.c[0] * b.c[3];
+  r.c[23] = a.c[1] * b.c[3] - a.c[4] * b.c[2];
+  r.c[24] = a.c[2] * b.c[3] + a.c[4] * b.c[1];
+  r.c[25] = a.c[3] * b.c[3] - a.c[4] * b.c[0];
+  r.c[31] = a.c[4] + a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// gp(sphere, dual_sphere) -> mv: 25 mul, 14 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_dual_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = a.c[0] * b.c[3] - a.c[1] * b.c[0];
+  r.c[17] = -a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  r.c[18] = -a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  r.c[19] = a.c[0] * b.c[1] - a.c[3] * b.c[0];
+  r.c[20] = a.c[1] * b.c[1] - a.c[3] * b.c[3];
+  r.c[21] = a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  r.c[22] = a.c[0] * b.c[4] - a.c[4] * b.c[0];
+  r.c[23] = a.c[1] * b.c[4] - a.c[4] * b.c[3];
+  r.c[24] = a.c[2] * b.c[4] + a.c[4] * b.c[2];
+  r.c[25] = a.c[3] * b.c[4] - a.c[4] * b.c[1];
+  r.c[31] = a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// gp(sphere, dual_plane) -> mv: 20 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_dual_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = a.c[0] * b.c[2];
+  r.c[17] = -a.c[0] * b.c[1];
+  r.c[18] = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[19] = a.c[0] * b.c[0];
+  r.c[20] = a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  r.c[21] = a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  r.c[22] = a.c[0] * b.c[3];
+  r.c[23] = a.c[1] * b.c[3] - a.c[4] * b.c[2];
+  r.c[24] = a.c[2] * b.c[3] + a.c[4] * b.c[1];
+  r.c[25] = a.c[3] * b.c[3] - a.c[4] * b.c[0];
+  r.c[31] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// gp(sphere, euclidean_vector) -> mv: 15 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_euclidean_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = a.c[0] * b.c[2];
+  r.c[17] = -a.c[0] * b.c[1];
+  r.c[18] = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[19] = a.c[0] * b.c[0];
+  r.c[20] = a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  r.c[21] = a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  r.c[23] = -a.c[4] * b.c[2];
+  r.c[24] = a.c[4] * b.c[1];
+  r.c[25] = -a.c[4] * b.c[0];
+  r.c[31] = -a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  r.bits = 0x83bf0000u;
+  return r;
+}
+
+// gp(sphere, flat_point) -> mv: 20 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_flat_point<T>& b) {
+  basic_mv<T> r;
+  r.c[10] = -a.c[0] * b.c[2] + a.c[1] * b.c[3];
+  r.c[11] = a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  r.c[12] = a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[13] = -a.c[0] * b.c[0] + a.c[3] * b.c[3];
+  r.c[14] = -a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  r.c[15] = -a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[26] = a.c[0] * b.c[3];
+  r.c[27] = a.c[0] * b.c[2];
+  r.c[28] = -a.c[0] * b.c[1];
+  r.c[29] = a.c[0] * b.c[0];
+  r.c[30] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0] - a.c[4] * b.c[3];
+  r.bits = 0x7c00fc00u;
+  return r;
+}
+
+// gp(sphere, euclidean_bivector) -> mv: 15 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a,
+                                    const basic_euclidean_bivector<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = -a.c[0] * b.c[2];
+  r.c[7] = a.c[0] * b.c[1];
+  r.c[8] = -a.c[0] * b.c[0];
+  r.c[9] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[12] = -a.c[4] * b.c[2];
+  r.c[14] = a.c[4] * b.c[1];
+  r.c[15] = -a.c[4] * b.c[0];
+  r.c[27] = -a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[28] = a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  r.c[29] = -a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.bits = 0x3800d3c0u;
+  return r;
+}
+
+// gp(sphere, point_pair) -> mv: 50 mul, 35 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = -a.c[0] * b.c[7] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[7] = a.c[0] * b.c[5] + a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  r.c[8] = -a.c[0] * b.c[4] + a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  r.c[9] = -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[7];
+  r.c[10] = -a.c[0] * b.c[9] + a.c[1] * b.c[3] - a.c[4] * b.c[2];
+  r.c[11] = a.c[0] * b.c[8] + a.c[2] * b.c[3] + a.c[4] * b.c[1];
+  r.c[12] = a.c[1] * b.c[8] + a.c[2] * b.c[9] - a.c[4] * b.c[7];
+  r.c[13] = -a.c[0] * b.c[6] + a.c[3] * b.c[3] - a.c[4] * b.c[0];
+  r.c[14] = -a.c[1] * b.c[6] + a.c[3] * b.c[9] + a.c[4] * b.c[5];
+  r.c[15] = -a.c[2] * b.c[6] - a.c[3] * b.c[8] - a.c[4] * b.c[4];
+  r.c[26] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  r.c[27] = a.c[0] * b.c[9] - a.c[2] * b.c[7] + a.c[3] * b.c[5] - a.c[4] * b.c[2];
+  r.c[28] = -a.c[0] * b.c[8] + a.c[1] * b.c[7] - a.c[3] * b.c[4] + a.c[4] * b.c[1];
+  r.c[29] = a.c[0] * b.c[6] - a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[4] * b.c[0];
+  r.c[30] = a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[6] - a.c[4] * b.c[3];
+  r.bits = 0x7c00ffc0u;
+  return r;
+}
+
+// gp(sphere, dual_line) -> mv: 30 mul, 16 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_dual_line<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = -a.c[0] * b.c[2];
+  r.c[7] = a.c[0] * b.c[1];
+  r.c[8] = -a.c[0] * b.c[0];
+  r.c[9] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[10] = -a.c[0] * b.c[5];
+  r.c[11] = a.c[0] * b.c[4];
+  r.c[12] = a.c[1] * b.c[4] + a.c[2] * b.c[5] - a.c[4] * b.c[2];
+  r.c[13] = -a.c[0] * b.c[3];
+  r.c[14] = -a.c[1] * b.c[3] + a.c[3] * b.c[5] + a.c[4] * b.c[1];
+  r.c[15] = -a.c[2] * b.c[3] - a.c[3] * b.c[4] - a.c[4] * b.c[0];
+  r.c[27] = a.c[0] * b.c[5] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[28] = -a.c[0] * b.c[4] + a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  r.c[29] = a.c[0] * b.c[3] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[30] = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3];
+  r.bits = 0x7800ffc0u;
+  return r;
+}
+
+// gp(sphere, line) -> mv: 30 mul, 16 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_line<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = -a.c[0] * b.c[2] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  r.c[3] = a.c[0] * b.c[1] + a.c[1] * b.c[3] - a.c[3] * b.c[5];
+  r.c[4] = -a.c[0] * b.c[0] + a.c[2] * b.c[3] + a.c[3] * b.c[4];
+  r.c[5] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[16] = -a.c[0] * b.c[5];
+  r.c[17] = a.c[0] * b.c[4];
+  r.c[18] = -a.c[0] * b.c[2];
+  r.c[19] = -a.c[0] * b.c[3];
+  r.c[20] = a.c[0] * b.c[1];
+  r.c[21] = -a.c[0] * b.c[0];
+  r.c[22] = -a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[3] * b.c[3];
+  r.c[23] = -a.c[2] * b.c[2] + a.c[3] * b.c[1] - a.c[4] * b.c[5];
+  r.c[24] = a.c[1] * b.c[2] - a.c[3] * b.c[0] + a.c[4] * b.c[4];
+  r.c[25] = -a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[4] * b.c[3];
+  r.bits = 0x3ff003cu;
+  return r;
+}
+
+// gp(sphere, circle) -> mv: 50 mul, 35 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[0] * b.c[6] + a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  r.c[2] = -a.c[0] * b.c[9] - a.c[1] * b.c[4] - a.c[2] * b.c[5] + a.c[4] * b.c[2];
+  r.c[3] = a.c[0] * b.c[8] + a.c[1] * b.c[3] - a.c[3] * b.c[5] - a.c[4] * b.c[1];
+  r.c[4] = -a.c[0] * b.c[7] + a.c[2] * b.c[3] + a.c[3] * b.c[4] + a.c[4] * b.c[0];
+  r.c[5] = -a.c[1] * b.c[7] - a.c[2] * b.c[8] - a.c[3] * b.c[9] + a.c[4] * b.c[6];
+  r.c[16] = -a.c[0] * b.c[5] + a.c[2] * b.c[2] - a.c[3] * b.c[1];
+  r.c[17] = a.c[0] * b.c[4] - a.c[1] * b.c[2] + a.c[3] * b.c[0];
+  r.c[18] = -a.c[0] * b.c[9] + a.c[3] * b.c[6] - a.c[4] * b.c[2];
+  r.c[19] = -a.c[0] * b.c[3] + a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  r.c[20] = a.c[0] * b.c[8] - a.c[2] * b.c[6] + a.c[4] * b.c[1];
+  r.c[21] = -a.c[0] * b.c[7] + a.c[1] * b.c[6] - a.c[4] * b.c[0];
+  r.c[22] = -a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[3] * b.c[3];
+  r.c[23] = -a.c[2] * b.c[9] + a.c[3] * b.c[8] - a.c[4] * b.c[5];
+  r.c[24] = a.c[1] * b.c[9] - a.c[3] * b.c[7] + a.c[4] * b.c[4];
+  r.c[25] = -a.c[1] * b.c[8] + a.c[2] * b.c[7] - a.c[4] * b.c[3];
+  r.bits = 0x3ff003eu;
+  return r;
+}
+
+// gp(sphere, sphere) -> mv: 25 mul, 14 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = a.c[0] * b.c[4] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3] + a.c[4] * b.c[0];
+  r.c[6] = -a.c[0] * b.c[3] + a.c[3] * b.c[0];
+  r.c[7] = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  r.c[8] = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  r.c[9] = -a.c[0] * b.c[4] + a.c[4] * b.c[0];
+  r.c[10] = -a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  r.c[11] = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  r.c[12] = -a.c[3] * b.c[4] + a.c[4] * b.c[3];
+  r.c[13] = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[14] = a.c[2] * b.c[4] - a.c[4] * b.c[2];
+  r.c[15] = -a.c[1] * b.c[4] + a.c[4] * b.c[1];
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// gp(sphere, plane) -> mv: 20 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  r.c[6] = -a.c[0] * b.c[3];
+  r.c[7] = a.c[0] * b.c[2];
+  r.c[8] = -a.c[0] * b.c[1];
+  r.c[9] = -a.c[0] * b.c[0];
+  r.c[10] = -a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  r.c[11] = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  r.c[12] = -a.c[3] * b.c[0] + a.c[4] * b.c[3];
+  r.c[13] = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[14] = a.c[2] * b.c[0] - a.c[4] * b.c[2];
+  r.c[15] = -a.c[1] * b.c[0] + a.c[4] * b.c[1];
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// gp(sphere, pseudoscalar) -> dual_sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> gp(const basic_sphere<T>& a,
+                                             const basic_pseudoscalar<T>& b) {
+  return basic_dual_sphere<T>(a.c[0] * b.c[0], a.c[3] * b.c[0], -a.c[2] * b.c[0], a.c[1] * b.c[0],
+                              a.c[4] * b.c[0]);
+}
+
+// gp(sphere, rotor) -> mv: 20 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = -a.c[0] * b.c[3];
+  r.c[7] = a.c[0] * b.c[2];
+  r.c[8] = -a.c[0] * b.c[1];
+  r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  r.c[12] = -a.c[4] * b.c[3];
+  r.c[14] = a.c[4] * b.c[2];
+  r.c[15] = -a.c[4] * b.c[1];
+  r.c[26] = a.c[0] * b.c[0];
+  r.c[27] = a.c[1] * b.c[0] - a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  r.c[28] = a.c[1] * b.c[3] + a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[29] = -a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[30] = a.c[4] * b.c[0];
+  r.bits = 0x7c00d3c0u;
+  return r;
+}
+
+// gp(sphere, translator) -> mv: 20 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[10] = -a.c[0] * b.c[3];
+  r.c[11] = a.c[0] * b.c[2];
+  r.c[12] = a.c[1] * b.c[2] + a.c[2] * b.c[3];
+  r.c[13] = -a.c[0] * b.c[1];
+  r.c[14] = -a.c[1] * b.c[1] + a.c[3] * b.c[3];
+  r.c[15] = -a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[26] = a.c[0] * b.c[0];
+  r.c[27] = a.c[0] * b.c[3] + a.c[1] * b.c[0];
+  r.c[28] = -a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  r.c[29] = a.c[0] * b.c[1] + a.c[3] * b.c[0];
+  r.c[30] = a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  r.bits = 0x7c00fc00u;
+  return r;
+}
+
+// gp(sphere, motor) -> mv: 40 mul, 24 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = a.c[0] * b.c[7];
+  r.c[6] = -a.c[0] * b.c[3];
+  r.c[7] = a.c[0] * b.c[2];
+  r.c[8] = -a.c[0] * b.c[1];
+  r.c[9] = -a.c[0] * b.c[7] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  r.c[10] = -a.c[0] * b.c[6];
+  r.c[11] = a.c[0] * b.c[5];
+  r.c[12] = a.c[1] * b.c[5] + a.c[2] * b.c[6] - a.c[3] * b.c[7] - a.c[4] * b.c[3];
+  r.c[13] = -a.c[0] * b.c[4];
+  r.c[14] = -a.c[1] * b.c[4] + a.c[2] * b.c[7] + a.c[3] * b.c[6] + a.c[4] * b.c[2];
+  r.c[15] = -a.c[1] * b.c[7] - a.c[2] * b.c[4] - a.c[3] * b.c[5] - a.c[4] * b.c[1];
+  r.c[26] = a.c[0] * b.c[0];
+  r.c[27] = a.c[0] * b.c[6] + a.c[1] * b.c[0] - a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  r.c[28] = -a.c[0] * b.c[5] + a.c[1] * b.c[3] + a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[29] = a.c[0] * b.c[4] - a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[30] = a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[4] + a.c[4] * b.c[0];
+  r.bits = 0x7c00ffc1u;
+  return r;
+}
+
+// gp(plane, normalized_point) -> mv: 15 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = -a.c[1];
+  r.c[17] = -a.c[2];
+  r.c[18] = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[19] = -a.c[3];
+  r.c[20] = a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  r.c[21] = a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  r.c[22] = -a.c[0];
+  r.c[23] = -a.c[0] * b.c[2] + a.c[1] * b.c[3];
+  r.c[24] = a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  r.c[25] = -a.c[0] * b.c[0] + a.c[3] * b.c[3];
+  r.c[31] = a.c[0] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// gp(plane, dual_sphere) -> mv: 20 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_dual_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = -a.c[1] * b.c[0];
+  r.c[17] = -a.c[2] * b.c[0];
+  r.c[18] = -a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  r.c[19] = -a.c[3] * b.c[0];
+  r.c[20] = a.c[1] * b.c[1] - a.c[3] * b.c[3];
+  r.c[21] = a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  r.c[22] = -a.c[0] * b.c[0];
+  r.c[23] = -a.c[0] * b.c[3] + a.c[1] * b.c[4];
+  r.c[24] = a.c[0] * b.c[2] + a.c[2] * b.c[4];
+  r.c[25] = -a.c[0] * b.c[1] + a.c[3] * b.c[4];
+  r.c[31] = a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[3] * b.c[1];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// gp(plane, dual_plane) -> mv: 15 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_dual_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[18] = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[20] = a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  r.c[21] = a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  r.c[23] = -a.c[0] * b.c[2] + a.c[1] * b.c[3];
+  r.c[24] = a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  r.c[25] = -a.c[0] * b.c[0] + a.c[3] * b.c[3];
+  r.c[31] = -a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  r.bits = 0x83b40000u;
+  return r;
+}
+
+// gp(plane, euclidean_vector) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_euclidean_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[18] = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[20] = a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  r.c[21] = a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  r.c[23] = -a.c[0] * b.c[2];
+  r.c[24] = a.c[0] * b.c[1];
+  r.c[25] = -a.c[0] * b.c[0];
+  r.c[31] = -a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  r.bits = 0x83b40000u;
+  return r;
+}
+
+// gp(plane, flat_point) -> motor: 13 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_plane<T>& a, const basic_flat_point<T>& b) {
+  return basic_motor<T>(T(0), a.c[1] * b.c[3], a.c[2] * b.c[3], a.c[3] * b.c[3],
+                        a.c[1] * b.c[1] + a.c[2] * b.c[2], -a.c[1] * b.c[0] + a.c[3] * b.c[2],
+                        -a.c[2] * b.c[0] - a.c[3] * b.c[1],
+                        -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0]);
+}
+
+// gp(plane, euclidean_bivector) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_euclidean_bivector<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[12] = -a.c[0] * b.c[2];
+  r.c[14] = a.c[0] * b.c[1];
+  r.c[15] = -a.c[0] * b.c[0];
+  r.c[27] = -a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[28] = a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  r.c[29] = -a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.bits = 0x3800d200u;
+  return r;
+}
+
+// gp(plane, point_pair) -> mv: 40 mul, 25 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[7] = a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  r.c[8] = a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  r.c[9] = -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[7];
+  r.c[10] = -a.c[0] * b.c[2] + a.c[1] * b.c[3];
+  r.c[11] = a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  r.c[12] = -a.c[0] * b.c[7] + a.c[1] * b.c[8] + a.c[2] * b.c[9];
+  r.c[13] = -a.c[0] * b.c[0] + a.c[3] * b.c[3];
+  r.c[14] = a.c[0] * b.c[5] - a.c[1] * b.c[6] + a.c[3] * b.c[9];
+  r.c[15] = -a.c[0] * b.c[4] - a.c[2] * b.c[6] - a.c[3] * b.c[8];
+  r.c[26] = -a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  r.c[27] = -a.c[0] * b.c[2] - a.c[2] * b.c[7] + a.c[3] * b.c[5];
+  r.c[28] = a.c[0] * b.c[1] + a.c[1] * b.c[7] - a.c[3] * b.c[4];
+  r.c[29] = -a.c[0] * b.c[0] - a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  r.c[30] = -a.c[0] * b.c[3] + a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[6];
+  r.bits = 0x7c00ffc0u;
+  return r;
+}
+
+// gp(plane, dual_line) -> mv: 21 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_dual_line<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[12] = -a.c[0] * b.c[2] + a.c[1] * b.c[4] + a.c[2] * b.c[5];
+  r.c[14] = a.c[0] * b.c[1] - a.c[1] * b.c[3] + a.c[3] * b.c[5];
+  r.c[15] = -a.c[0] * b.c[0] - a.c[2] * b.c[3] - a.c[3] * b.c[4];
+  r.c[27] = -a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[28] = a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  r.c[29] = -a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[30] = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// gp(plane, line) -> mv: 21 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_line<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = -a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  r.c[3] = a.c[1] * b.c[3] - a.c[3] * b.c[5];
+  r.c[4] = a.c[2] * b.c[3] + a.c[3] * b.c[4];
+  r.c[5] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[22] = -a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[3] * b.c[3];
+  r.c[23] = -a.c[0] * b.c[5] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[24] = a.c[0] * b.c[4] + a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  r.c[25] = -a.c[0] * b.c[3] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// gp(plane, circle) -> mv: 40 mul, 25 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  r.c[2] = a.c[0] * b.c[2] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  r.c[3] = -a.c[0] * b.c[1] + a.c[1] * b.c[3] - a.c[3] * b.c[5];
+  r.c[4] = a.c[0] * b.c[0] + a.c[2] * b.c[3] + a.c[3] * b.c[4];
+  r.c[5] = a.c[0] * b.c[6] - a.c[1] * b.c[7] - a.c[2] * b.c[8] - a.c[3] * b.c[9];
+  r.c[16] = a.c[2] * b.c[2] - a.c[3] * b.c[1];
+  r.c[17] = -a.c[1] * b.c[2] + a.c[3] * b.c[0];
+  r.c[18] = -a.c[0] * b.c[2] + a.c[3] * b.c[6];
+  r.c[19] = a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  r.c[20] = a.c[0] * b.c[1] - a.c[2] * b.c[6];
+  r.c[21] = -a.c[0] * b.c[0] + a.c[1] * b.c[6];
+  r.c[22] = -a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[3] * b.c[3];
+  r.c[23] = -a.c[0] * b.c[5] - a.c[2] * b.c[9] + a.c[3] * b.c[8];
+  r.c[24] = a.c[0] * b.c[4] + a.c[1] * b.c[9] - a.c[3] * b.c[7];
+  r.c[25] = -a.c[0] * b.c[3] - a.c[1] * b.c[8] + a.c[2] * b.c[7];
+  r.bits = 0x3ff003eu;
+  return r;
+}
+
+// gp(plane, sphere) -> mv: 20 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  r.c[6] = a.c[3] * b.c[0];
+  r.c[7] = -a.c[2] * b.c[0];
+  r.c[8] = a.c[1] * b.c[0];
+  r.c[9] = a.c[0] * b.c[0];
+  r.c[10] = -a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  r.c[11] = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  r.c[12] = a.c[0] * b.c[3] - a.c[3] * b.c[4];
+  r.c[13] = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[14] = -a.c[0] * b.c[2] + a.c[2] * b.c[4];
+  r.c[15] = a.c[0] * b.c[1] - a.c[1] * b.c[4];
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// gp(plane, plane) -> motor: 15 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_plane<T>& a, const basic_plane<T>& b) {
+  return basic_motor<T>(-a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3],
+                        -a.c[2] * b.c[3] + a.c[3] * b.c[2], a.c[1] * b.c[3] - a.c[3] * b.c[1],
+                        -a.c[1] * b.c[2] + a.c[2] * b.c[1], a.c[0] * b.c[3] - a.c[3] * b.c[0],
+                        -a.c[0] * b.c[2] + a.c[2] * b.c[0], a.c[0] * b.c[1] - a.c[1] * b.c[0],
+                        T(0));
+}
+
+// gp(plane, pseudoscalar) -> dual_plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> gp(const basic_plane<T>& a,
+                                            const basic_pseudoscalar<T>& b) {
+  return basic_dual_plane<T>(a.c[3] * b.c[0], -a.c[2] * b.c[0], a.c[1] * b.c[0], a.c[0] * b.c[0]);
+}
+
+// gp(plane, rotor) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  r.c[12] = -a.c[0] * b.c[3];
+  r.c[14] = a.c[0] * b.c[2];
+  r.c[15] = -a.c[0] * b.c[1];
+  r.c[27] = a.c[1] * b.c[0] - a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  r.c[28] = a.c[1] * b.c[3] + a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[29] = -a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[30] = a.c[0] * b.c[0];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// gp(plane, translator) -> mv: 13 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[12] = a.c[1] * b.c[2] + a.c[2] * b.c[3];
+  r.c[14] = -a.c[1] * b.c[1] + a.c[3] * b.c[3];
+  r.c[15] = -a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[27] = a.c[1] * b.c[0];
+  r.c[28] = a.c[2] * b.c[0];
+  r.c[29] = a.c[3] * b.c[0];
+  r.c[30] = a.c[0] * b.c[0] + a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.bits = 0x7800d000u;
+  return r;
+}
+
+// gp(plane, motor) -> mv: 28 mul, 20 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  r.c[12] = -a.c[0] * b.c[3] + a.c[1] * b.c[5] + a.c[2] * b.c[6] - a.c[3] * b.c[7];
+  r.c[14] = a.c[0] * b.c[2] - a.c[1] * b.c[4] + a.c[2] * b.c[7] + a.c[3] * b.c[6];
+  r.c[15] = -a.c[0] * b.c[1] - a.c[1] * b.c[7] - a.c[2] * b.c[4] - a.c[3] * b.c[5];
+  r.c[27] = a.c[1] * b.c[0] - a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  r.c[28] = a.c[1] * b.c[3] + a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[29] = -a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[30] = a.c[0] * b.c[0] + a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[4];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// gp(pseudoscalar, normalized_point) -> sphere: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> gp(const basic_pseudoscalar<T>& a,
+                                        const basic_normalized_point<T>& b) {
+  return basic_sphere<T>(-a.c[0], -a.c[0] * b.c[2], a.c[0] * b.c[1], -a.c[0] * b.c[0],
+                         -a.c[0] * b.c[3]);
+}
+
+// gp(pseudoscalar, dual_sphere) -> sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> gp(const basic_pseudoscalar<T>& a,
+                                        const basic_dual_sphere<T>& b) {
+  return basic_sphere<T>(-a.c[0] * b.c[0], -a.c[0] * b.c[3], a.c[0] * b.c[2], -a.c[0] * b.c[1],
+                         -a.c[0] * b.c[4]);
+}
+
+// gp(pseudoscalar, dual_plane) -> plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> gp(const basic_pseudoscalar<T>& a,
+                                       const basic_dual_plane<T>& b) {
+  return basic_plane<T>(-a.c[0] * b.c[3], -a.c[0] * b.c[2], a.c[0] * b.c[1], -a.c[0] * b.c[0]);
+}
+
+// gp(pseudoscalar, euclidean_vector) -> plane: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> gp(const basic_pseudoscalar<T>& a,
+                                       const basic_euclidean_vector<T>& b) {
+  return basic_plane<T>(T(0), -a.c[0] * b.c[2], a.c[0] * b.c[1], -a.c[0] * b.c[0]);
+}
+
+// gp(pseudoscalar, flat_point) -> circle: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> gp(const basic_pseudoscalar<T>& a,
+                                        const basic_flat_point<T>& b) {
+  return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0), -a.c[0] * b.c[3], -a.c[0] * b.c[2],
+                         a.c[0] * b.c[1], -a.c[0] * b.c[0]);
+}
+
+// gp(pseudoscalar, euclidean_bivector) -> line: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> gp(const basic_pseudoscalar<T>& a,
+                                      const basic_euclidean_bivector<T>& b) {
+  return basic_line<T>(T(0), T(0), T(0), -a.c[0] * b.c[2], a.c[0] * b.c[1], -a.c[0] * b.c[0]);
+}
+
+// gp(pseudoscalar, point_pair) -> circle: 10 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> gp(const basic_pseudoscalar<T>& a,
+                                        const basic_point_pair<T>& b) {
+  return basic_circle<T>(-a.c[0] * b.c[2], a.c[0] * b.c[1], -a.c[0] * b.c[0], -a.c[0] * b.c[7],
+                         a.c[0] * b.c[5], -a.c[0] * b.c[4], -a.c[0] * b.c[3], -a.c[0] * b.c[9],
+                         a.c[0] * b.c[8], -a.c[0] * b.c[6]);
+}
+
+// gp(pseudoscalar, dual_line) -> line: 6 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> gp(const basic_pseudoscalar<T>& a, const basic_dual_line<T>& b) {
+  return basic_line<T>(-a.c[0] * b.c[5], a.c[0] * b.c[4], -a.c[0] * b.c[3], -a.c[0] * b.c[2],
+                       a.c[0] * b.c[1], -a.c[0] * b.c[0]);
+}
+
+// gp(pseudoscalar, line) -> dual_line: 6 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> gp(const basic_pseudoscalar<T>& a, const basic_line<T>& b) {
+  return basic_dual_line<T>(a.c[0] * b.c[5], -a.c[0] * b.c[4], a.c[0] * b.c[3], a.c[0] * b.c[2],
+                            -a.c[0] * b.c[1], a.c[0] * b.c[0]);
+}
+
+// gp(pseudoscalar, circle) -> point_pair: 10 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> gp(const basic_pseudoscalar<T>& a,
+                                            const basic_circle<T>& b) {
+  return basic_point_pair<T>(a.c[0] * b.c[2], -a.c[0] * b.c[1], a.c[0] * b.c[0], a.c[0] * b.c[6],
+                             a.c[0] * b.c[5], -a.c[0] * b.c[4], a.c[0] * b.c[9], a.c[0] * b.c[3],
+                             -a.c[0] * b.c[8], a.c[0] * b.c[7]);
+}
+
+// gp(pseudoscalar, sphere) -> dual_sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> gp(const basic_pseudoscalar<T>& a,
+                                             const basic_sphere<T>& b) {
+  return basic_dual_sphere<T>(a.c[0] * b.c[0], a.c[0] * b.c[3], -a.c[0] * b.c[2], a.c[0] * b.c[1],
+                              a.c[0] * b.c[4]);
+}
+
+// gp(pseudoscalar, plane) -> dual_plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> gp(const basic_pseudoscalar<T>& a,
+                                            const basic_plane<T>& b) {
+  return basic_dual_plane<T>(a.c[0] * b.c[3], -a.c[0] * b.c[2], a.c[0] * b.c[1], a.c[0] * b.c[0]);
+}
+
+// gp(pseudoscalar, pseudoscalar) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T gp(const basic_pseudoscalar<T>& a, const basic_pseudoscalar<T>& b) {
+  return -a.c[0] * b.c[0];
+}
+
+// gp(pseudoscalar, rotor) -> mv: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_pseudoscalar<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[18] = -a.c[0] * b.c[3];
+  r.c[20] = a.c[0] * b.c[2];
+  r.c[21] = -a.c[0] * b.c[1];
+  r.c[31] = a.c[0] * b.c[0];
+  r.bits = 0x80340000u;
+  return r;
+}
+
+// gp(pseudoscalar, translator) -> mv: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_pseudoscalar<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[23] = -a.c[0] * b.c[3];
+  r.c[24] = a.c[0] * b.c[2];
+  r.c[25] = -a.c[0] * b.c[1];
+  r.c[31] = a.c[0] * b.c[0];
+  r.bits = 0x83800000u;
+  return r;
+}
+
+// gp(pseudoscalar, motor) -> mv: 8 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_pseudoscalar<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = a.c[0] * b.c[7];
+  r.c[18] = -a.c[0] * b.c[3];
+  r.c[20] = a.c[0] * b.c[2];
+  r.c[21] = -a.c[0] * b.c[1];
+  r.c[23] = -a.c[0] * b.c[6];
+  r.c[24] = a.c[0] * b.c[5];
+  r.c[25] = -a.c[0] * b.c[4];
+  r.c[31] = a.c[0] * b.c[0];
+  r.bits = 0x83b40020u;
+  return r;
+}
+
+// gp(rotor, normalized_point) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0];
+  r.c[2] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[3] = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  r.c[4] = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[5] = a.c[0] * b.c[3];
+  r.c[16] = a.c[1];
+  r.c[17] = a.c[2];
+  r.c[19] = a.c[3];
+  r.c[22] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[23] = a.c[1] * b.c[3];
+  r.c[24] = a.c[2] * b.c[3];
+  r.c[25] = a.c[3] * b.c[3];
+  r.bits = 0x3cb003eu;
+  return r;
+}
+
+// gp(rotor, dual_sphere) -> mv: 20 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_dual_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3];
+  r.c[3] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[3] * b.c[3];
+  r.c[4] = a.c[0] * b.c[3] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[5] = a.c[0] * b.c[4];
+  r.c[16] = a.c[1] * b.c[0];
+  r.c[17] = a.c[2] * b.c[0];
+  r.c[19] = a.c[3] * b.c[0];
+  r.c[22] = a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[23] = a.c[1] * b.c[4];
+  r.c[24] = a.c[2] * b.c[4];
+  r.c[25] = a.c[3] * b.c[4];
+  r.bits = 0x3cb003eu;
+  return r;
+}
+
+// gp(rotor, dual_plane) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_dual_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[3] = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  r.c[4] = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[5] = a.c[0] * b.c[3];
+  r.c[22] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[23] = a.c[1] * b.c[3];
+  r.c[24] = a.c[2] * b.c[3];
+  r.c[25] = a.c[3] * b.c[3];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// gp(rotor, euclidean_vector) -> mv: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_euclidean_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[3] = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  r.c[4] = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[22] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.bits = 0x40001cu;
+  return r;
+}
+
+// gp(rotor, flat_point) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_flat_point<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = a.c[0] * b.c[3];
+  r.c[12] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[14] = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  r.c[15] = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[27] = a.c[1] * b.c[3];
+  r.c[28] = a.c[2] * b.c[3];
+  r.c[29] = a.c[3] * b.c[3];
+  r.c[30] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// gp(rotor, euclidean_bivector) -> rotor: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> gp(const basic_rotor<T>& a,
+                                       const basic_euclidean_bivector<T>& b) {
+  return basic_rotor<T>(-a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2],
+                        a.c[0] * b.c[0] - a.c[2] * b.c[2] + a.c[3] * b.c[1],
+                        a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[0],
+                        a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0]);
+}
+
+// gp(rotor, point_pair) -> mv: 40 mul, 24 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[7];
+  r.c[6] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[7] = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  r.c[8] = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[9] = a.c[0] * b.c[3];
+  r.c[10] = a.c[0] * b.c[4] - a.c[2] * b.c[7] + a.c[3] * b.c[5];
+  r.c[11] = a.c[0] * b.c[5] + a.c[1] * b.c[7] - a.c[3] * b.c[4];
+  r.c[12] = a.c[0] * b.c[6] + a.c[1] * b.c[8] + a.c[2] * b.c[9];
+  r.c[13] = a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  r.c[14] = a.c[0] * b.c[8] - a.c[1] * b.c[6] + a.c[3] * b.c[9];
+  r.c[15] = a.c[0] * b.c[9] - a.c[2] * b.c[6] - a.c[3] * b.c[8];
+  r.c[26] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[27] = a.c[1] * b.c[3];
+  r.c[28] = a.c[2] * b.c[3];
+  r.c[29] = a.c[3] * b.c[3];
+  r.c[30] = a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[6];
+  r.bits = 0x7c00ffc1u;
+  return r;
+}
+
+// gp(rotor, dual_line) -> motor: 24 mul, 16 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_rotor<T>& a, const basic_dual_line<T>& b) {
+  return basic_motor<T>(-a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2],
+                        a.c[0] * b.c[0] - a.c[2] * b.c[2] + a.c[3] * b.c[1],
+                        a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[0],
+                        a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                        a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5],
+                        a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[5],
+                        a.c[0] * b.c[5] - a.c[2] * b.c[3] - a.c[3] * b.c[4],
+                        a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3]);
+}
+
+// gp(rotor, line) -> mv: 24 mul, 16 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_line<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[18] = a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5];
+  r.c[20] = a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[5];
+  r.c[21] = a.c[0] * b.c[5] - a.c[2] * b.c[3] - a.c[3] * b.c[4];
+  r.c[23] = a.c[0] * b.c[0] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[24] = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  r.c[25] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[31] = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3];
+  r.bits = 0x83b40020u;
+  return r;
+}
+
+// gp(rotor, circle) -> mv: 40 mul, 24 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[2] = -a.c[3] * b.c[6];
+  r.c[3] = a.c[2] * b.c[6];
+  r.c[4] = -a.c[1] * b.c[6];
+  r.c[5] = -a.c[1] * b.c[7] - a.c[2] * b.c[8] - a.c[3] * b.c[9];
+  r.c[16] = a.c[0] * b.c[0] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[17] = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  r.c[18] = a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5];
+  r.c[19] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[20] = a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[5];
+  r.c[21] = a.c[0] * b.c[5] - a.c[2] * b.c[3] - a.c[3] * b.c[4];
+  r.c[22] = a.c[0] * b.c[6];
+  r.c[23] = a.c[0] * b.c[7] - a.c[2] * b.c[9] + a.c[3] * b.c[8];
+  r.c[24] = a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[3] * b.c[7];
+  r.c[25] = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7];
+  r.c[31] = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// gp(rotor, sphere) -> mv: 20 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = -a.c[3] * b.c[0];
+  r.c[7] = a.c[2] * b.c[0];
+  r.c[8] = -a.c[1] * b.c[0];
+  r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  r.c[12] = -a.c[3] * b.c[4];
+  r.c[14] = a.c[2] * b.c[4];
+  r.c[15] = -a.c[1] * b.c[4];
+  r.c[26] = a.c[0] * b.c[0];
+  r.c[27] = a.c[0] * b.c[1] - a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  r.c[28] = a.c[0] * b.c[2] + a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  r.c[29] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[30] = a.c[0] * b.c[4];
+  r.bits = 0x7c00d3c0u;
+  return r;
+}
+
+// gp(rotor, plane) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  r.c[12] = -a.c[3] * b.c[0];
+  r.c[14] = a.c[2] * b.c[0];
+  r.c[15] = -a.c[1] * b.c[0];
+  r.c[27] = a.c[0] * b.c[1] - a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  r.c[28] = a.c[0] * b.c[2] + a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  r.c[29] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[30] = a.c[0] * b.c[0];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// gp(rotor, pseudoscalar) -> mv: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_pseudoscalar<T>& b) {
+  basic_mv<T> r;
+  r.c[18] = -a.c[3] * b.c[0];
+  r.c[20] = a.c[2] * b.c[0];
+  r.c[21] = -a.c[1] * b.c[0];
+  r.c[31] = a.c[0] * b.c[0];
+  r.bits = 0x80340000u;
+  return r;
+}
+
+// gp(rotor, motor) -> motor: 32 mul, 24 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_rotor<T>& a, const basic_motor<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3],
+                        a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3] + a.c[3] * b.c[2],
+                        a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0] - a.c[3] * b.c[1],
+                        a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[3] * b.c[0],
+                        a.c[0] * b.c[4] + a.c[1] * b.c[5] + a.c[2] * b.c[6] - a.c[3] * b.c[7],
+                        a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[7] + a.c[3] * b.c[6],
+                        a.c[0] * b.c[6] - a.c[1] * b.c[7] - a.c[2] * b.c[4] - a.c[3] * b.c[5],
+                        a.c[0] * b.c[7] + a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[4]);
+}
+
+// gp(translator, normalized_point) -> mv: 13 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a,
+                                    const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0];
+  r.c[2] = -a.c[1] + a.c[0] * b.c[0];
+  r.c[3] = -a.c[2] + a.c[0] * b.c[1];
+  r.c[4] = -a.c[3] + a.c[0] * b.c[2];
+  r.c[5] = a.c[0] * b.c[3] - a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[18] = a.c[1];
+  r.c[20] = a.c[2];
+  r.c[21] = a.c[3];
+  r.c[23] = -a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[24] = -a.c[1] * b.c[2] + a.c[3] * b.c[0];
+  r.c[25] = -a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.bits = 0x3b4003eu;
+  return r;
+}
+
+// gp(translator, dual_sphere) -> mv: 20 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_dual_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  r.c[3] = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  r.c[4] = a.c[0] * b.c[3] - a.c[3] * b.c[0];
+  r.c[5] = a.c[0] * b.c[4] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  r.c[18] = a.c[1] * b.c[0];
+  r.c[20] = a.c[2] * b.c[0];
+  r.c[21] = a.c[3] * b.c[0];
+  r.c[23] = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[24] = -a.c[1] * b.c[3] + a.c[3] * b.c[1];
+  r.c[25] = -a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  r.bits = 0x3b4003eu;
+  return r;
+}
+
+// gp(translator, dual_plane) -> mv: 13 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_dual_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[0] * b.c[1];
+  r.c[4] = a.c[0] * b.c[2];
+  r.c[5] = a.c[0] * b.c[3] - a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[23] = -a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[24] = -a.c[1] * b.c[2] + a.c[3] * b.c[0];
+  r.c[25] = -a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.bits = 0x380003cu;
+  return r;
+}
+
+// gp(translator, euclidean_vector) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a,
+                                    const basic_euclidean_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[0] * b.c[1];
+  r.c[4] = a.c[0] * b.c[2];
+  r.c[5] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[23] = -a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[24] = -a.c[1] * b.c[2] + a.c[3] * b.c[0];
+  r.c[25] = -a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.bits = 0x380003cu;
+  return r;
+}
+
+// gp(translator, flat_point) -> flat_point: 7 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> gp(const basic_translator<T>& a,
+                                            const basic_flat_point<T>& b) {
+  return basic_flat_point<T>(a.c[0] * b.c[0] - a.c[1] * b.c[3], a.c[0] * b.c[1] - a.c[2] * b.c[3],
+                             a.c[0] * b.c[2] - a.c[3] * b.c[3], a.c[0] * b.c[3]);
+}
+
+// gp(translator, euclidean_bivector) -> motor: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_translator<T>& a,
+                                       const basic_euclidean_bivector<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2],
+                        -a.c[2] * b.c[0] - a.c[3] * b.c[1], a.c[1] * b.c[0] - a.c[3] * b.c[2],
+                        a.c[1] * b.c[1] + a.c[2] * b.c[2],
+                        a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0]);
+}
+
+// gp(translator, point_pair) -> mv: 40 mul, 25 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[0] * b.c[1];
+  r.c[8] = a.c[0] * b.c[2];
+  r.c[9] = a.c[0] * b.c[3] - a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[10] = a.c[0] * b.c[4] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[11] = a.c[0] * b.c[5] - a.c[1] * b.c[2] + a.c[3] * b.c[0];
+  r.c[12] = a.c[0] * b.c[6] - a.c[1] * b.c[3] - a.c[2] * b.c[4] - a.c[3] * b.c[5];
+  r.c[13] = a.c[0] * b.c[7] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[14] = a.c[0] * b.c[8] + a.c[1] * b.c[4] - a.c[2] * b.c[3] - a.c[3] * b.c[7];
+  r.c[15] = a.c[0] * b.c[9] + a.c[1] * b.c[5] + a.c[2] * b.c[7] - a.c[3] * b.c[3];
+  r.c[27] = -a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[28] = -a.c[1] * b.c[2] + a.c[3] * b.c[0];
+  r.c[29] = -a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[30] = a.c[1] * b.c[7] - a.c[2] * b.c[5] + a.c[3] * b.c[4];
+  r.bits = 0x7800ffc1u;
+  return r;
+}
+
+// gp(translator, dual_line) -> motor: 15 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_translator<T>& a, const basic_dual_line<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2],
+                        a.c[0] * b.c[3] - a.c[2] * b.c[0] - a.c[3] * b.c[1],
+                        a.c[0] * b.c[4] + a.c[1] * b.c[0] - a.c[3] * b.c[2],
+                        a.c[0] * b.c[5] + a.c[1] * b.c[1] + a.c[2] * b.c[2],
+                        a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0]);
+}
+
+// gp(translator, line) -> mv: 15 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_line<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = -a.c[1] * b.c[3] - a.c[2] * b.c[4] - a.c[3] * b.c[5];
+  r.c[18] = a.c[0] * b.c[3];
+  r.c[20] = a.c[0] * b.c[4];
+  r.c[21] = a.c[0] * b.c[5];
+  r.c[23] = a.c[0] * b.c[0] - a.c[1] * b.c[4] + a.c[2] * b.c[3];
+  r.c[24] = a.c[0] * b.c[1] - a.c[1] * b.c[5] + a.c[3] * b.c[3];
+  r.c[25] = a.c[0] * b.c[2] - a.c[2] * b.c[5] + a.c[3] * b.c[4];
+  r.bits = 0x3b40020u;
+  return r;
+}
+
+// gp(translator, circle) -> mv: 40 mul, 25 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  r.c[3] = -a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  r.c[4] = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[5] = -a.c[1] * b.c[3] - a.c[2] * b.c[4] - a.c[3] * b.c[5];
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[0] * b.c[1];
+  r.c[18] = a.c[0] * b.c[3] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[19] = a.c[0] * b.c[2];
+  r.c[20] = a.c[0] * b.c[4] + a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  r.c[21] = a.c[0] * b.c[5] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[22] = a.c[0] * b.c[6] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  r.c[23] = a.c[0] * b.c[7] - a.c[1] * b.c[4] + a.c[2] * b.c[3] - a.c[3] * b.c[6];
+  r.c[24] = a.c[0] * b.c[8] - a.c[1] * b.c[5] + a.c[2] * b.c[6] + a.c[3] * b.c[3];
+  r.c[25] = a.c[0] * b.c[9] - a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[4];
+  r.c[31] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.bits = 0x83ff003cu;
+  return r;
+}
+
+// gp(translator, sphere) -> mv: 20 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[10] = -a.c[3] * b.c[0];
+  r.c[11] = a.c[2] * b.c[0];
+  r.c[12] = a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  r.c[13] = -a.c[1] * b.c[0];
+  r.c[14] = -a.c[1] * b.c[1] + a.c[3] * b.c[3];
+  r.c[15] = -a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  r.c[26] = a.c[0] * b.c[0];
+  r.c[27] = a.c[0] * b.c[1] - a.c[3] * b.c[0];
+  r.c[28] = a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  r.c[29] = a.c[0] * b.c[3] - a.c[1] * b.c[0];
+  r.c[30] = a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[3] * b.c[1];
+  r.bits = 0x7c00fc00u;
+  return r;
+}
+
+// gp(translator, plane) -> mv: 13 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[12] = a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  r.c[14] = -a.c[1] * b.c[1] + a.c[3] * b.c[3];
+  r.c[15] = -a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  r.c[27] = a.c[0] * b.c[1];
+  r.c[28] = a.c[0] * b.c[2];
+  r.c[29] = a.c[0] * b.c[3];
+  r.c[30] = a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[3] * b.c[1];
+  r.bits = 0x7800d000u;
+  return r;
+}
+
+// gp(translator, pseudoscalar) -> mv: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_pseudoscalar<T>& b) {
+  basic_mv<T> r;
+  r.c[23] = -a.c[3] * b.c[0];
+  r.c[24] = a.c[2] * b.c[0];
+  r.c[25] = -a.c[1] * b.c[0];
+  r.c[31] = a.c[0] * b.c[0];
+  r.bits = 0x83800000u;
+  return r;
+}
+
+// gp(translator, motor) -> motor: 20 mul, 12 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_translator<T>& a, const basic_motor<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                        a.c[0] * b.c[4] + a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2],
+                        a.c[0] * b.c[5] + a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[3] * b.c[3],
+                        a.c[0] * b.c[6] + a.c[1] * b.c[2] + a.c[2] * b.c[3] + a.c[3] * b.c[0],
+                        a.c[0] * b.c[7] + a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1]);
+}
+
+// gp(motor, normalized_point) -> mv: 28 mul, 24 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0];
+  r.c[2] = -a.c[4] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[3] = -a.c[5] + a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  r.c[4] = -a.c[6] + a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[5] = a.c[0] * b.c[3] - a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[6] * b.c[2];
+  r.c[16] = a.c[1];
+  r.c[17] = a.c[2];
+  r.c[18] = a.c[4];
+  r.c[19] = a.c[3];
+  r.c[20] = a.c[5];
+  r.c[21] = a.c[6];
+  r.c[22] = -a.c[7] + a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[23] = a.c[1] * b.c[3] - a.c[4] * b.c[1] + a.c[5] * b.c[0] - a.c[7] * b.c[2];
+  r.c[24] = a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[6] * b.c[0] + a.c[7] * b.c[1];
+  r.c[25] = a.c[3] * b.c[3] - a.c[5] * b.c[2] + a.c[6] * b.c[1] - a.c[7] * b.c[0];
+  r.c[31] = a.c[7];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// gp(motor, dual_sphere) -> mv: 40 mul, 24 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_dual_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] - a.c[4] * b.c[0];
+  r.c[3] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[3] * b.c[3] - a.c[5] * b.c[0];
+  r.c[4] = a.c[0] * b.c[3] - a.c[2] * b.c[1] - a.c[3] * b.c[2] - a.c[6] * b.c[0];
+  r.c[5] = a.c[0] * b.c[4] - a.c[4] * b.c[1] - a.c[5] * b.c[2] - a.c[6] * b.c[3];
+  r.c[16] = a.c[1] * b.c[0];
+  r.c[17] = a.c[2] * b.c[0];
+  r.c[18] = a.c[4] * b.c[0];
+  r.c[19] = a.c[3] * b.c[0];
+  r.c[20] = a.c[5] * b.c[0];
+  r.c[21] = a.c[6] * b.c[0];
+  r.c[22] = a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1] - a.c[7] * b.c[0];
+  r.c[23] = a.c[1] * b.c[4] - a.c[4] * b.c[2] + a.c[5] * b.c[1] - a.c[7] * b.c[3];
+  r.c[24] = a.c[2] * b.c[4] - a.c[4] * b.c[3] + a.c[6] * b.c[1] + a.c[7] * b.c[2];
+  r.c[25] = a.c[3] * b.c[4] - a.c[5] * b.c[3] + a.c[6] * b.c[2] - a.c[7] * b.c[1];
+  r.c[31] = a.c[7] * b.c[0];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// gp(motor, dual_plane) -> mv: 28 mul, 20 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_dual_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[3] = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  r.c[4] = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[5] = a.c[0] * b.c[3] - a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[6] * b.c[2];
+  r.c[22] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[23] = a.c[1] * b.c[3] - a.c[4] * b.c[1] + a.c[5] * b.c[0] - a.c[7] * b.c[2];
+  r.c[24] = a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[6] * b.c[0] + a.c[7] * b.c[1];
+  r.c[25] = a.c[3] * b.c[3] - a.c[5] * b.c[2] + a.c[6] * b.c[1] - a.c[7] * b.c[0];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// gp(motor, euclidean_vector) -> mv: 24 mul, 16 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_euclidean_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[3] = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  r.c[4] = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[5] = -a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[6] * b.c[2];
+  r.c[22] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[23] = -a.c[4] * b.c[1] + a.c[5] * b.c[0] - a.c[7] * b.c[2];
+  r.c[24] = -a.c[4] * b.c[2] + a.c[6] * b.c[0] + a.c[7] * b.c[1];
+  r.c[25] = -a.c[5] * b.c[2] + a.c[6] * b.c[1] - a.c[7] * b.c[0];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// gp(motor, flat_point) -> mv: 20 mul, 12 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_flat_point<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = a.c[0] * b.c[3];
+  r.c[12] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] - a.c[4] * b.c[3];
+  r.c[14] = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2] - a.c[5] * b.c[3];
+  r.c[15] = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[1] - a.c[6] * b.c[3];
+  r.c[27] = a.c[1] * b.c[3];
+  r.c[28] = a.c[2] * b.c[3];
+  r.c[29] = a.c[3] * b.c[3];
+  r.c[30] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0] - a.c[7] * b.c[3];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// gp(motor, euclidean_bivector) -> motor: 24 mul, 16 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_motor<T>& a,
+                                       const basic_euclidean_bivector<T>& b) {
+  return basic_motor<T>(-a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2],
+                        a.c[0] * b.c[0] - a.c[2] * b.c[2] + a.c[3] * b.c[1],
+                        a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[0],
+                        a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                        -a.c[5] * b.c[0] - a.c[6] * b.c[1] - a.c[7] * b.c[2],
+                        a.c[4] * b.c[0] - a.c[6] * b.c[2] + a.c[7] * b.c[1],
+                        a.c[4] * b.c[1] + a.c[5] * b.c[2] - a.c[7] * b.c[0],
+                        a.c[4] * b.c[2] - a.c[5] * b.c[1] + a.c[6] * b.c[0]);
+}
+
+// gp(motor, point_pair) -> mv: 80 mul, 64 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[7] - a.c[4] * b.c[0] -
+           a.c[5] * b.c[1] - a.c[6] * b.c[2];
+  r.c[6] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[7] = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  r.c[8] = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[9] = a.c[0] * b.c[3] - a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[6] * b.c[2];
+  r.c[10] = a.c[0] * b.c[4] - a.c[2] * b.c[7] + a.c[3] * b.c[5] - a.c[4] * b.c[1] +
+            a.c[5] * b.c[0] - a.c[7] * b.c[2];
+  r.c[11] = a.c[0] * b.c[5] + a.c[1] * b.c[7] - a.c[3] * b.c[4] - a.c[4] * b.c[2] +
+            a.c[6] * b.c[0] + a.c[7] * b.c[1];
+  r.c[12] = a.c[0] * b.c[6] + a.c[1] * b.c[8] + a.c[2] * b.c[9] - a.c[4] * b.c[3] -
+            a.c[5] * b.c[4] - a.c[6] * b.c[5] - a.c[7] * b.c[7];
+  r.c[13] = a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[5] * b.c[2] +
+            a.c[6] * b.c[1] - a.c[7] * b.c[0];
+  r.c[14] = a.c[0] * b.c[8] - a.c[1] * b.c[6] + a.c[3] * b.c[9] + a.c[4] * b.c[4] -
+            a.c[5] * b.c[3] - a.c[6] * b.c[7] + a.c[7] * b.c[5];
+  r.c[15] = a.c[0] * b.c[9] - a.c[2] * b.c[6] - a.c[3] * b.c[8] + a.c[4] * b.c[5] +
+            a.c[5] * b.c[7] - a.c[6] * b.c[3] - a.c[7] * b.c[4];
+  r.c[26] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[27] = a.c[1] * b.c[3] - a.c[4] * b.c[1] + a.c[5] * b.c[0] - a.c[7] * b.c[2];
+  r.c[28] = a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[6] * b.c[0] + a.c[7] * b.c[1];
+  r.c[29] = a.c[3] * b.c[3] - a.c[5] * b.c[2] + a.c[6] * b.c[1] - a.c[7] * b.c[0];
+  r.c[30] = a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[6] + a.c[4] * b.c[7] -
+            a.c[5] * b.c[5] + a.c[6] * b.c[4] - a.c[7] * b.c[3];
+  r.bits = 0x7c00ffc1u;
+  return r;
+}
+
+// gp(motor, dual_line) -> motor: 36 mul, 28 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_motor<T>& a, const basic_dual_line<T>& b) {
+  return basic_motor<T>(-a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2],
+                        a.c[0] * b.c[0] - a.c[2] * b.c[2] + a.c[3] * b.c[1],
+                        a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[0],
+                        a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                        a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5] - a.c[5] * b.c[0] -
+                            a.c[6] * b.c[1] - a.c[7] * b.c[2],
+                        a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[5] + a.c[4] * b.c[0] -
+                            a.c[6] * b.c[2] + a.c[7] * b.c[1],
+                        a.c[0] * b.c[5] - a.c[2] * b.c[3] - a.c[3] * b.c[4] + a.c[4] * b.c[1] +
+                            a.c[5] * b.c[2] - a.c[7] * b.c[0],
+                        a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3] + a.c[4] * b.c[2] -
+                            a.c[5] * b.c[1] + a.c[6] * b.c[0]);
+}
+
+// gp(motor, line) -> mv: 36 mul, 28 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_line<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2] - a.c[4] * b.c[3] -
+           a.c[5] * b.c[4] - a.c[6] * b.c[5];
+  r.c[18] = a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5];
+  r.c[20] = a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[5];
+  r.c[21] = a.c[0] * b.c[5] - a.c[2] * b.c[3] - a.c[3] * b.c[4];
+  r.c[23] = a.c[0] * b.c[0] - a.c[2] * b.c[2] + a.c[3] * b.c[1] - a.c[4] * b.c[4] +
+            a.c[5] * b.c[3] - a.c[7] * b.c[5];
+  r.c[24] = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[0] - a.c[4] * b.c[5] +
+            a.c[6] * b.c[3] + a.c[7] * b.c[4];
+  r.c[25] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[5] * b.c[5] +
+            a.c[6] * b.c[4] - a.c[7] * b.c[3];
+  r.c[31] = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3];
+  r.bits = 0x83b40020u;
+  return r;
+}
+
+// gp(motor, circle) -> mv: 80 mul, 64 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[2] = -a.c[3] * b.c[6] + a.c[5] * b.c[0] + a.c[6] * b.c[1] + a.c[7] * b.c[2];
+  r.c[3] = a.c[2] * b.c[6] - a.c[4] * b.c[0] + a.c[6] * b.c[2] - a.c[7] * b.c[1];
+  r.c[4] = -a.c[1] * b.c[6] - a.c[4] * b.c[1] - a.c[5] * b.c[2] + a.c[7] * b.c[0];
+  r.c[5] = -a.c[1] * b.c[7] - a.c[2] * b.c[8] - a.c[3] * b.c[9] - a.c[4] * b.c[3] -
+           a.c[5] * b.c[4] - a.c[6] * b.c[5] + a.c[7] * b.c[6];
+  r.c[16] = a.c[0] * b.c[0] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[17] = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  r.c[18] = a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5] - a.c[5] * b.c[0] -
+            a.c[6] * b.c[1] - a.c[7] * b.c[2];
+  r.c[19] = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[20] = a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[5] + a.c[4] * b.c[0] -
+            a.c[6] * b.c[2] + a.c[7] * b.c[1];
+  r.c[21] = a.c[0] * b.c[5] - a.c[2] * b.c[3] - a.c[3] * b.c[4] + a.c[4] * b.c[1] +
+            a.c[5] * b.c[2] - a.c[7] * b.c[0];
+  r.c[22] = a.c[0] * b.c[6] - a.c[4] * b.c[2] + a.c[5] * b.c[1] - a.c[6] * b.c[0];
+  r.c[23] = a.c[0] * b.c[7] - a.c[2] * b.c[9] + a.c[3] * b.c[8] - a.c[4] * b.c[4] +
+            a.c[5] * b.c[3] - a.c[6] * b.c[6] - a.c[7] * b.c[5];
+  r.c[24] = a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[3] * b.c[7] - a.c[4] * b.c[5] +
+            a.c[5] * b.c[6] + a.c[6] * b.c[3] + a.c[7] * b.c[4];
+  r.c[25] = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7] - a.c[4] * b.c[6] -
+            a.c[5] * b.c[5] + a.c[6] * b.c[4] - a.c[7] * b.c[3];
+  r.c[31] = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3] + a.c[4] * b.c[2] -
+            a.c[5] * b.c[1] + a.c[6] * b.c[0];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// gp(motor, sphere) -> mv: 40 mul, 24 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = a.c[7] * b.c[0];
+  r.c[6] = -a.c[3] * b.c[0];
+  r.c[7] = a.c[2] * b.c[0];
+  r.c[8] = -a.c[1] * b.c[0];
+  r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3] + a.c[7] * b.c[0];
+  r.c[10] = -a.c[6] * b.c[0];
+  r.c[11] = a.c[5] * b.c[0];
+  r.c[12] = -a.c[3] * b.c[4] + a.c[5] * b.c[1] + a.c[6] * b.c[2] + a.c[7] * b.c[3];
+  r.c[13] = -a.c[4] * b.c[0];
+  r.c[14] = a.c[2] * b.c[4] - a.c[4] * b.c[1] + a.c[6] * b.c[3] - a.c[7] * b.c[2];
+  r.c[15] = -a.c[1] * b.c[4] - a.c[4] * b.c[2] - a.c[5] * b.c[3] + a.c[7] * b.c[1];
+  r.c[26] = a.c[0] * b.c[0];
+  r.c[27] = a.c[0] * b.c[1] - a.c[2] * b.c[3] + a.c[3] * b.c[2] - a.c[6] * b.c[0];
+  r.c[28] = a.c[0] * b.c[2] + a.c[1] * b.c[3] - a.c[3] * b.c[1] + a.c[5] * b.c[0];
+  r.c[29] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[4] * b.c[0];
+  r.c[30] = a.c[0] * b.c[4] - a.c[4] * b.c[3] + a.c[5] * b.c[2] - a.c[6] * b.c[1];
+  r.bits = 0x7c00ffc1u;
+  return r;
+}
+
+// gp(motor, plane) -> mv: 28 mul, 20 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  r.c[12] = -a.c[3] * b.c[0] + a.c[5] * b.c[1] + a.c[6] * b.c[2] + a.c[7] * b.c[3];
+  r.c[14] = a.c[2] * b.c[0] - a.c[4] * b.c[1] + a.c[6] * b.c[3] - a.c[7] * b.c[2];
+  r.c[15] = -a.c[1] * b.c[0] - a.c[4] * b.c[2] - a.c[5] * b.c[3] + a.c[7] * b.c[1];
+  r.c[27] = a.c[0] * b.c[1] - a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  r.c[28] = a.c[0] * b.c[2] + a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  r.c[29] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[30] = a.c[0] * b.c[0] - a.c[4] * b.c[3] + a.c[5] * b.c[2] - a.c[6] * b.c[1];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// gp(motor, pseudoscalar) -> mv: 8 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_pseudoscalar<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = a.c[7] * b.c[0];
+  r.c[18] = -a.c[3] * b.c[0];
+  r.c[20] = a.c[2] * b.c[0];
+  r.c[21] = -a.c[1] * b.c[0];
+  r.c[23] = -a.c[6] * b.c[0];
+  r.c[24] = a.c[5] * b.c[0];
+  r.c[25] = -a.c[4] * b.c[0];
+  r.c[31] = a.c[0] * b.c[0];
+  r.bits = 0x83b40020u;
+  return r;
+}
+
+// gp(motor, rotor) -> motor: 32 mul, 24 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_motor<T>& a, const basic_rotor<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3],
+                        a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3] + a.c[3] * b.c[2],
+                        a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0] - a.c[3] * b.c[1],
+                        a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[3] * b.c[0],
+                        a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[6] * b.c[2] - a.c[7] * b.c[3],
+                        a.c[4] * b.c[1] + a.c[5] * b.c[0] - a.c[6] * b.c[3] + a.c[7] * b.c[2],
+                        a.c[4] * b.c[2] + a.c[5] * b.c[3] + a.c[6] * b.c[0] - a.c[7] * b.c[1],
+                        a.c[4] * b.c[3] - a.c[5] * b.c[2] + a.c[6] * b.c[1] + a.c[7] * b.c[0]);
+}
+
+// gp(motor, translator) -> motor: 20 mul, 12 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_motor<T>& a, const basic_translator<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                        a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] + a.c[4] * b.c[0],
+                        a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[3] * b.c[3] + a.c[5] * b.c[0],
+                        a.c[0] * b.c[3] - a.c[2] * b.c[1] - a.c[3] * b.c[2] + a.c[6] * b.c[0],
+                        a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1] + a.c[7] * b.c[0]);
+}
+
+// op(normalized_point, dual_sphere) -> point_pair: 16 mul, 10 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> op(const basic_normalized_point<T>& a,
+                                            const basic_dual_sphere<T>& b) {
+  return basic_point_pair<T>(b.c[1] - a.c[0] * b.c[0], b.c[2] - a.c[1] * b.c[0],
+                             b.c[3] - a.c[2] * b.c[0], b.c[4] - a.c[3] * b.c[0],
+                             a.c[0] * b.c[2] - a.c[1] * b.c[1], a.c[0] * b.c[3] - a.c[2] * b.c[1],
+                             a.c[0] * b.c[4] - a.c[3] * b.c[1], a.c[1] * b.c[3] - a.c[2] * b.c[2],
+                             a.c[1] * b.c[4] - a.c[3] * b.c[2], a.c[2] * b.c[4] - a.c[3] * b.c[3]);
+}
+
+// op(normalized_point, euclidean_vector) -> point_pair: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> op(const basic_normalized_point<T>& a,
+                                            const basic_euclidean_vector<T>& b) {
+  return basic_point_pair<T>(b.c[0], b.c[1], b.c[2], T(0), a.c[0] * b.c[1] - a.c[1] * b.c[0],
+                             a.c[0] * b.c[2] - a.c[2] * b.c[0], -a.c[3] * b.c[0],
+                             a.c[1] * b.c[2] - a.c[2] * b.c[1], -a.c[3] * b.c[1], -a.c[3] * b.c[2]);
+}
+
+// op(normalized_point, flat_point) -> line: 9 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> op(const basic_normalized_point<T>& a,
+                                      const basic_flat_point<T>& b) {
+  return basic_line<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                       a.c[1] * b.c[2] - a.c[2] * b.c[1], b.c[0] - a.c[0] * b.c[3],
+                       b.c[1] - a.c[1] * b.c[3], b.c[2] - a.c[2] * b.c[3]);
+}
+
+// op(normalized_point, euclidean_bivector) -> circle: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_normalized_point<T>& a,
+                                        const basic_euclidean_bivector<T>& b) {
+  return basic_circle<T>(b.c[0], b.c[1], b.c[2], T(0), T(0), T(0),
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], a.c[3] * b.c[0],
+                         a.c[3] * b.c[1], a.c[3] * b.c[2]);
+}
+
+// op(normalized_point, point_pair) -> circle: 24 mul, 20 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_normalized_point<T>& a,
+                                        const basic_point_pair<T>& b) {
+  return basic_circle<T>(
+      b.c[4] - a.c[0] * b.c[1] + a.c[1] * b.c[0], b.c[5] - a.c[0] * b.c[2] + a.c[2] * b.c[0],
+      b.c[7] - a.c[1] * b.c[2] + a.c[2] * b.c[1], b.c[6] - a.c[0] * b.c[3] + a.c[3] * b.c[0],
+      b.c[8] - a.c[1] * b.c[3] + a.c[3] * b.c[1], b.c[9] - a.c[2] * b.c[3] + a.c[3] * b.c[2],
+      a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4],
+      a.c[0] * b.c[8] - a.c[1] * b.c[6] + a.c[3] * b.c[4],
+      a.c[0] * b.c[9] - a.c[2] * b.c[6] + a.c[3] * b.c[5],
+      a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[7]);
+}
+
+// op(normalized_point, dual_line) -> circle: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_normalized_point<T>& a,
+                                        const basic_dual_line<T>& b) {
+  return basic_circle<T>(b.c[0], b.c[1], b.c[2], b.c[3], b.c[4], b.c[5],
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[0],
+                         a.c[0] * b.c[5] - a.c[2] * b.c[3] + a.c[3] * b.c[1],
+                         a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[2]);
+}
+
+// op(normalized_point, line) -> plane: 9 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_normalized_point<T>& a, const basic_line<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                        b.c[0] - a.c[0] * b.c[4] + a.c[1] * b.c[3],
+                        b.c[1] - a.c[0] * b.c[5] + a.c[2] * b.c[3],
+                        b.c[2] - a.c[1] * b.c[5] + a.c[2] * b.c[4]);
+}
+
+// op(normalized_point, circle) -> sphere: 16 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> op(const basic_normalized_point<T>& a,
+                                        const basic_circle<T>& b) {
+  return basic_sphere<T>(b.c[6] - a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0],
+                         b.c[7] - a.c[0] * b.c[4] + a.c[1] * b.c[3] - a.c[3] * b.c[0],
+                         b.c[8] - a.c[0] * b.c[5] + a.c[2] * b.c[3] - a.c[3] * b.c[1],
+                         b.c[9] - a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[3] * b.c[2],
+                         a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7] - a.c[3] * b.c[6]);
+}
+
+// op(normalized_point, sphere) -> pseudoscalar: 4 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_normalized_point<T>& a,
+                                              const basic_sphere<T>& b) {
+  return basic_pseudoscalar<T>(b.c[4] - a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1] +
+                               a.c[3] * b.c[0]);
+}
+
+// op(normalized_point, plane) -> pseudoscalar: 3 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_normalized_point<T>& a,
+                                              const basic_plane<T>& b) {
+  return basic_pseudoscalar<T>(b.c[0] - a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1]);
+}
+
+// op(normalized_point, rotor) -> mv: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_normalized_point<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = b.c[0];
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[1] * b.c[0];
+  r.c[4] = a.c[2] * b.c[0];
+  r.c[5] = a.c[3] * b.c[0];
+  r.c[16] = b.c[1];
+  r.c[17] = b.c[2];
+  r.c[19] = b.c[3];
+  r.c[22] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[23] = a.c[3] * b.c[1];
+  r.c[24] = a.c[3] * b.c[2];
+  r.c[25] = a.c[3] * b.c[3];
+  r.bits = 0x3cb003eu;
+  return r;
+}
+
+// op(normalized_point, translator) -> mv: 10 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_normalized_point<T>& a,
+                                    const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = b.c[0];
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[1] * b.c[0];
+  r.c[4] = a.c[2] * b.c[0];
+  r.c[5] = a.c[3] * b.c[0];
+  r.c[18] = b.c[1];
+  r.c[20] = b.c[2];
+  r.c[21] = b.c[3];
+  r.c[23] = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  r.c[24] = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  r.c[25] = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  r.bits = 0x3b4003eu;
+  return r;
+}
+
+// op(normalized_point, motor) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_normalized_point<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = b.c[0];
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[1] * b.c[0];
+  r.c[4] = a.c[2] * b.c[0];
+  r.c[5] = a.c[3] * b.c[0];
+  r.c[16] = b.c[1];
+  r.c[17] = b.c[2];
+  r.c[18] = b.c[4];
+  r.c[19] = b.c[3];
+  r.c[20] = b.c[5];
+  r.c[21] = b.c[6];
+  r.c[22] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[23] = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[3] * b.c[1];
+  r.c[24] = a.c[0] * b.c[6] - a.c[2] * b.c[4] + a.c[3] * b.c[2];
+  r.c[25] = a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[3];
+  r.c[31] = b.c[7];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// op(dual_sphere, normalized_point) -> point_pair: 16 mul, 10 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> op(const basic_dual_sphere<T>& a,
+                                            const basic_normalized_point<T>& b) {
+  return basic_point_pair<T>(-a.c[1] + a.c[0] * b.c[0], -a.c[2] + a.c[0] * b.c[1],
+                             -a.c[3] + a.c[0] * b.c[2], -a.c[4] + a.c[0] * b.c[3],
+                             a.c[1] * b.c[1] - a.c[2] * b.c[0], a.c[1] * b.c[2] - a.c[3] * b.c[0],
+                             a.c[1] * b.c[3] - a.c[4] * b.c[0], a.c[2] * b.c[2] - a.c[3] * b.c[1],
+                             a.c[2] * b.c[3] - a.c[4] * b.c[1], a.c[3] * b.c[3] - a.c[4] * b.c[2]);
+}
+
+// op(dual_sphere, euclidean_vector) -> point_pair: 12 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> op(const basic_dual_sphere<T>& a,
+                                            const basic_euclidean_vector<T>& b) {
+  return basic_point_pair<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], T(0),
+                             a.c[1] * b.c[1] - a.c[2] * b.c[0], a.c[1] * b.c[2] - a.c[3] * b.c[0],
+                             -a.c[4] * b.c[0], a.c[2] * b.c[2] - a.c[3] * b.c[1], -a.c[4] * b.c[1],
+                             -a.c[4] * b.c[2]);
+}
+
+// op(dual_sphere, flat_point) -> line: 12 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> op(const basic_dual_sphere<T>& a, const basic_flat_point<T>& b) {
+  return basic_line<T>(a.c[1] * b.c[1] - a.c[2] * b.c[0], a.c[1] * b.c[2] - a.c[3] * b.c[0],
+                       a.c[2] * b.c[2] - a.c[3] * b.c[1], a.c[0] * b.c[0] - a.c[1] * b.c[3],
+                       a.c[0] * b.c[1] - a.c[2] * b.c[3], a.c[0] * b.c[2] - a.c[3] * b.c[3]);
+}
+
+// op(dual_sphere, euclidean_bivector) -> circle: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_dual_sphere<T>& a,
+                                        const basic_euclidean_bivector<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], T(0), T(0), T(0),
+                         a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0], a.c[4] * b.c[0],
+                         a.c[4] * b.c[1], a.c[4] * b.c[2]);
+}
+
+// op(dual_sphere, point_pair) -> circle: 30 mul, 20 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_dual_sphere<T>& a,
+                                        const basic_point_pair<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[4] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         a.c[0] * b.c[5] - a.c[1] * b.c[2] + a.c[3] * b.c[0],
+                         a.c[0] * b.c[7] - a.c[2] * b.c[2] + a.c[3] * b.c[1],
+                         a.c[0] * b.c[6] - a.c[1] * b.c[3] + a.c[4] * b.c[0],
+                         a.c[0] * b.c[8] - a.c[2] * b.c[3] + a.c[4] * b.c[1],
+                         a.c[0] * b.c[9] - a.c[3] * b.c[3] + a.c[4] * b.c[2],
+                         a.c[1] * b.c[7] - a.c[2] * b.c[5] + a.c[3] * b.c[4],
+                         a.c[1] * b.c[8] - a.c[2] * b.c[6] + a.c[4] * b.c[4],
+                         a.c[1] * b.c[9] - a.c[3] * b.c[6] + a.c[4] * b.c[5],
+                         a.c[2] * b.c[9] - a.c[3] * b.c[8] + a.c[4] * b.c[7]);
+}
+
+// op(dual_sphere, dual_line) -> circle: 18 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_dual_sphere<T>& a,
+                                        const basic_dual_line<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                         a.c[0] * b.c[4], a.c[0] * b.c[5],
+                         a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0],
+                         a.c[1] * b.c[4] - a.c[2] * b.c[3] + a.c[4] * b.c[0],
+                         a.c[1] * b.c[5] - a.c[3] * b.c[3] + a.c[4] * b.c[1],
+                         a.c[2] * b.c[5] - a.c[3] * b.c[4] + a.c[4] * b.c[2]);
+}
+
+// op(dual_sphere, line) -> plane: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_dual_sphere<T>& a, const basic_line<T>& b) {
+  return basic_plane<T>(a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0],
+                        a.c[0] * b.c[0] - a.c[1] * b.c[4] + a.c[2] * b.c[3],
+                        a.c[0] * b.c[1] - a.c[1] * b.c[5] + a.c[3] * b.c[3],
+                        a.c[0] * b.c[2] - a.c[2] * b.c[5] + a.c[3] * b.c[4]);
+}
+
+// op(dual_sphere, circle) -> sphere: 20 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> op(const basic_dual_sphere<T>& a, const basic_circle<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[6] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0],
+                         a.c[0] * b.c[7] - a.c[1] * b.c[4] + a.c[2] * b.c[3] - a.c[4] * b.c[0],
+                         a.c[0] * b.c[8] - a.c[1] * b.c[5] + a.c[3] * b.c[3] - a.c[4] * b.c[1],
+                         a.c[0] * b.c[9] - a.c[2] * b.c[5] + a.c[3] * b.c[4] - a.c[4] * b.c[2],
+                         a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[7] - a.c[4] * b.c[6]);
+}
+
+// op(dual_sphere, sphere) -> pseudoscalar: 5 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_dual_sphere<T>& a,
+                                              const basic_sphere<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[2] * b.c[2] -
+                               a.c[3] * b.c[1] + a.c[4] * b.c[0]);
+}
+
+// op(dual_sphere, plane) -> pseudoscalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_dual_sphere<T>& a,
+                                              const basic_plane<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2] -
+                               a.c[3] * b.c[1]);
+}
+
+// op(dual_sphere, rotor) -> mv: 14 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_dual_sphere<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[1] * b.c[0];
+  r.c[3] = a.c[2] * b.c[0];
+  r.c[4] = a.c[3] * b.c[0];
+  r.c[5] = a.c[4] * b.c[0];
+  r.c[16] = a.c[0] * b.c[1];
+  r.c[17] = a.c[0] * b.c[2];
+  r.c[19] = a.c[0] * b.c[3];
+  r.c[22] = a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[23] = a.c[4] * b.c[1];
+  r.c[24] = a.c[4] * b.c[2];
+  r.c[25] = a.c[4] * b.c[3];
+  r.bits = 0x3cb003eu;
+  return r;
+}
+
+// op(dual_sphere, translator) -> mv: 14 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_dual_sphere<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[1] * b.c[0];
+  r.c[3] = a.c[2] * b.c[0];
+  r.c[4] = a.c[3] * b.c[0];
+  r.c[5] = a.c[4] * b.c[0];
+  r.c[18] = a.c[0] * b.c[1];
+  r.c[20] = a.c[0] * b.c[2];
+  r.c[21] = a.c[0] * b.c[3];
+  r.c[23] = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.c[24] = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  r.c[25] = a.c[2] * b.c[3] - a.c[3] * b.c[2];
+  r.bits = 0x3b4003eu;
+  return r;
+}
+
+// op(dual_sphere, motor) -> mv: 24 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_dual_sphere<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[1] * b.c[0];
+  r.c[3] = a.c[2] * b.c[0];
+  r.c[4] = a.c[3] * b.c[0];
+  r.c[5] = a.c[4] * b.c[0];
+  r.c[16] = a.c[0] * b.c[1];
+  r.c[17] = a.c[0] * b.c[2];
+  r.c[18] = a.c[0] * b.c[4];
+  r.c[19] = a.c[0] * b.c[3];
+  r.c[20] = a.c[0] * b.c[5];
+  r.c[21] = a.c[0] * b.c[6];
+  r.c[22] = a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[23] = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[4] * b.c[1];
+  r.c[24] = a.c[1] * b.c[6] - a.c[3] * b.c[4] + a.c[4] * b.c[2];
+  r.c[25] = a.c[2] * b.c[6] - a.c[3] * b.c[5] + a.c[4] * b.c[3];
+  r.c[31] = a.c[0] * b.c[7];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// op(dual_plane, normalized_point) -> point_pair: 12 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> op(const basic_dual_plane<T>& a,
+                                            const basic_normalized_point<T>& b) {
+  return basic_point_pair<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3], a.c[0] * b.c[1] - a.c[1] * b.c[0],
+                             a.c[0] * b.c[2] - a.c[2] * b.c[0], a.c[0] * b.c[3] - a.c[3] * b.c[0],
+                             a.c[1] * b.c[2] - a.c[2] * b.c[1], a.c[1] * b.c[3] - a.c[3] * b.c[1],
+                             a.c[2] * b.c[3] - a.c[3] * b.c[2]);
+}
+
+// op(dual_plane, dual_sphere) -> point_pair: 16 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> op(const basic_dual_plane<T>& a,
+                                            const basic_dual_sphere<T>& b) {
+  return basic_point_pair<T>(-a.c[0] * b.c[0], -a.c[1] * b.c[0], -a.c[2] * b.c[0], -a.c[3] * b.c[0],
+                             a.c[0] * b.c[2] - a.c[1] * b.c[1], a.c[0] * b.c[3] - a.c[2] * b.c[1],
+                             a.c[0] * b.c[4] - a.c[3] * b.c[1], a.c[1] * b.c[3] - a.c[2] * b.c[2],
+                             a.c[1] * b.c[4] - a.c[3] * b.c[2], a.c[2] * b.c[4] - a.c[3] * b.c[3]);
+}
+
+// op(dual_plane, dual_plane) -> dual_line: 12 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> op(const basic_dual_plane<T>& a,
+                                           const basic_dual_plane<T>& b) {
+  return basic_dual_line<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                            a.c[1] * b.c[2] - a.c[2] * b.c[1], a.c[0] * b.c[3] - a.c[3] * b.c[0],
+                            a.c[1] * b.c[3] - a.c[3] * b.c[1], a.c[2] * b.c[3] - a.c[3] * b.c[2]);
+}
+
+// op(dual_plane, euclidean_vector) -> dual_line: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> op(const basic_dual_plane<T>& a,
+                                           const basic_euclidean_vector<T>& b) {
+  return basic_dual_line<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                            a.c[1] * b.c[2] - a.c[2] * b.c[1], -a.c[3] * b.c[0], -a.c[3] * b.c[1],
+                            -a.c[3] * b.c[2]);
+}
+
+// op(dual_plane, flat_point) -> line: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> op(const basic_dual_plane<T>& a, const basic_flat_point<T>& b) {
+  return basic_line<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                       a.c[1] * b.c[2] - a.c[2] * b.c[1], -a.c[0] * b.c[3], -a.c[1] * b.c[3],
+                       -a.c[2] * b.c[3]);
+}
+
+// op(dual_plane, euclidean_bivector) -> circle: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_dual_plane<T>& a,
+                                        const basic_euclidean_bivector<T>& b) {
+  return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0),
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], a.c[3] * b.c[0],
+                         a.c[3] * b.c[1], a.c[3] * b.c[2]);
+}
+
+// op(dual_plane, point_pair) -> circle: 24 mul, 14 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_dual_plane<T>& a,
+                                        const basic_point_pair<T>& b) {
+  return basic_circle<T>(-a.c[0] * b.c[1] + a.c[1] * b.c[0], -a.c[0] * b.c[2] + a.c[2] * b.c[0],
+                         -a.c[1] * b.c[2] + a.c[2] * b.c[1], -a.c[0] * b.c[3] + a.c[3] * b.c[0],
+                         -a.c[1] * b.c[3] + a.c[3] * b.c[1], -a.c[2] * b.c[3] + a.c[3] * b.c[2],
+                         a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4],
+                         a.c[0] * b.c[8] - a.c[1] * b.c[6] + a.c[3] * b.c[4],
+                         a.c[0] * b.c[9] - a.c[2] * b.c[6] + a.c[3] * b.c[5],
+                         a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[7]);
+}
+
+// op(dual_plane, dual_line) -> circle: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_dual_plane<T>& a, const basic_dual_line<T>& b) {
+  return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0),
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[0],
+                         a.c[0] * b.c[5] - a.c[2] * b.c[3] + a.c[3] * b.c[1],
+                         a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[2]);
+}
+
+// op(dual_plane, line) -> plane: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_dual_plane<T>& a, const basic_line<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                        -a.c[0] * b.c[4] + a.c[1] * b.c[3], -a.c[0] * b.c[5] + a.c[2] * b.c[3],
+                        -a.c[1] * b.c[5] + a.c[2] * b.c[4]);
+}
+
+// op(dual_plane, circle) -> sphere: 16 mul, 11 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> op(const basic_dual_plane<T>& a, const basic_circle<T>& b) {
+  return basic_sphere<T>(-a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0],
+                         -a.c[0] * b.c[4] + a.c[1] * b.c[3] - a.c[3] * b.c[0],
+                         -a.c[0] * b.c[5] + a.c[2] * b.c[3] - a.c[3] * b.c[1],
+                         -a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[3] * b.c[2],
+                         a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7] - a.c[3] * b.c[6]);
+}
+
+// op(dual_plane, sphere) -> pseudoscalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_dual_plane<T>& a,
+                                              const basic_sphere<T>& b) {
+  return basic_pseudoscalar<T>(-a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1] +
+                               a.c[3] * b.c[0]);
+}
+
+// op(dual_plane, plane) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_dual_plane<T>& a,
+                                              const basic_plane<T>& b) {
+  return basic_pseudoscalar<T>(-a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1]);
+}
+
+// op(dual_plane, rotor) -> mv: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_dual_plane<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[1] * b.c[0];
+  r.c[4] = a.c[2] * b.c[0];
+  r.c[5] = a.c[3] * b.c[0];
+  r.c[22] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[23] = a.c[3] * b.c[1];
+  r.c[24] = a.c[3] * b.c[2];
+  r.c[25] = a.c[3] * b.c[3];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// op(dual_plane, translator) -> mv: 10 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_dual_plane<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[1] * b.c[0];
+  r.c[4] = a.c[2] * b.c[0];
+  r.c[5] = a.c[3] * b.c[0];
+  r.c[23] = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  r.c[24] = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  r.c[25] = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  r.bits = 0x380003cu;
+  return r;
+}
+
+// op(dual_plane, motor) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_dual_plane<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[1] * b.c[0];
+  r.c[4] = a.c[2] * b.c[0];
+  r.c[5] = a.c[3] * b.c[0];
+  r.c[22] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[23] = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[3] * b.c[1];
+  r.c[24] = a.c[0] * b.c[6] - a.c[2] * b.c[4] + a.c[3] * b.c[2];
+  r.c[25] = a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[3];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// op(euclidean_vector, normalized_point) -> point_pair: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> op(const basic_euclidean_vector<T>& a,
+                                            const basic_normalized_point<T>& b) {
+  return basic_point_pair<T>(-a.c[0], -a.c[1], -a.c[2], T(0), a.c[0] * b.c[1] - a.c[1] * b.c[0],
+                             a.c[0] * b.c[2] - a.c[2] * b.c[0], a.c[0] * b.c[3],
+                             a.c[1] * b.c[2] - a.c[2] * b.c[1], a.c[1] * b.c[3], a.c[2] * b.c[3]);
+}
+
+// op(euclidean_vector, dual_sphere) -> point_pair: 12 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> op(const basic_euclidean_vector<T>& a,
+                                            const basic_dual_sphere<T>& b) {
+  return basic_point_pair<T>(-a.c[0] * b.c[0], -a.c[1] * b.c[0], -a.c[2] * b.c[0], T(0),
+                             a.c[0] * b.c[2] - a.c[1] * b.c[1], a.c[0] * b.c[3] - a.c[2] * b.c[1],
+                             a.c[0] * b.c[4], a.c[1] * b.c[3] - a.c[2] * b.c[2], a.c[1] * b.c[4],
+                             a.c[2] * b.c[4]);
+}
+
+// op(euclidean_vector, dual_plane) -> dual_line: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> op(const basic_euclidean_vector<T>& a,
+                                           const basic_dual_plane<T>& b) {
+  return basic_dual_line<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                            a.c[1] * b.c[2] - a.c[2] * b.c[1], a.c[0] * b.c[3], a.c[1] * b.c[3],
+                            a.c[2] * b.c[3]);
+}
+
+// op(euclidean_vector, euclidean_vector) -> euclidean_bivector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> op(const basic_euclidean_vector<T>& a,
+                                                    const basic_euclidean_vector<T>& b) {
+  return basic_euclidean_bivector<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0],
+                                     a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                                     a.c[1] * b.c[2] - a.c[2] * b.c[1]);
+}
+
+// op(euclidean_vector, flat_point) -> line: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> op(const basic_euclidean_vector<T>& a,
+                                      const basic_flat_point<T>& b) {
+  return basic_line<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                       a.c[1] * b.c[2] - a.c[2] * b.c[1], -a.c[0] * b.c[3], -a.c[1] * b.c[3],
+                       -a.c[2] * b.c[3]);
+}
+
+// op(euclidean_vector, euclidean_bivector) -> circle: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_euclidean_vector<T>& a,
+                                        const basic_euclidean_bivector<T>& b) {
+  return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0),
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], T(0), T(0), T(0));
+}
+
+// op(euclidean_vector, point_pair) -> circle: 18 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_euclidean_vector<T>& a,
+                                        const basic_point_pair<T>& b) {
+  return basic_circle<T>(-a.c[0] * b.c[1] + a.c[1] * b.c[0], -a.c[0] * b.c[2] + a.c[2] * b.c[0],
+                         -a.c[1] * b.c[2] + a.c[2] * b.c[1], -a.c[0] * b.c[3], -a.c[1] * b.c[3],
+                         -a.c[2] * b.c[3], a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4],
+                         a.c[0] * b.c[8] - a.c[1] * b.c[6], a.c[0] * b.c[9] - a.c[2] * b.c[6],
+                         a.c[1] * b.c[9] - a.c[2] * b.c[8]);
+}
+
+// op(euclidean_vector, dual_line) -> circle: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_euclidean_vector<T>& a,
+                                        const basic_dual_line<T>& b) {
+  return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0),
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         a.c[0] * b.c[4] - a.c[1] * b.c[3], a.c[0] * b.c[5] - a.c[2] * b.c[3],
+                         a.c[1] * b.c[5] - a.c[2] * b.c[4]);
+}
+
+// op(euclidean_vector, line) -> plane: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_euclidean_vector<T>& a, const basic_line<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                        -a.c[0] * b.c[4] + a.c[1] * b.c[3], -a.c[0] * b.c[5] + a.c[2] * b.c[3],
+                        -a.c[1] * b.c[5] + a.c[2] * b.c[4]);
+}
+
+// op(euclidean_vector, circle) -> sphere: 12 mul, 7 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> op(const basic_euclidean_vector<T>& a,
+                                        const basic_circle<T>& b) {
+  return basic_sphere<T>(-a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0],
+                         -a.c[0] * b.c[4] + a.c[1] * b.c[3], -a.c[0] * b.c[5] + a.c[2] * b.c[3],
+                         -a.c[1] * b.c[5] + a.c[2] * b.c[4],
+                         a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7]);
+}
+
+// op(euclidean_vector, sphere) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_euclidean_vector<T>& a,
+                                              const basic_sphere<T>& b) {
+  return basic_pseudoscalar<T>(-a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1]);
+}
+
+// op(euclidean_vector, plane) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_euclidean_vector<T>& a,
+                                              const basic_plane<T>& b) {
+  return basic_pseudoscalar<T>(-a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1]);
+}
+
+// op(euclidean_vector, rotor) -> mv: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_euclidean_vector<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[1] * b.c[0];
+  r.c[4] = a.c[2] * b.c[0];
+  r.c[22] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.bits = 0x40001cu;
+  return r;
+}
+
+// op(euclidean_vector, translator) -> mv: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_euclidean_vector<T>& a,
+                                    const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[1] * b.c[0];
+  r.c[4] = a.c[2] * b.c[0];
+  r.c[23] = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  r.c[24] = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  r.c[25] = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  r.bits = 0x380001cu;
+  return r;
+}
+
+// op(euclidean_vector, motor) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_euclidean_vector<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[1] * b.c[0];
+  r.c[4] = a.c[2] * b.c[0];
+  r.c[22] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[23] = a.c[0] * b.c[5] - a.c[1] * b.c[4];
+  r.c[24] = a.c[0] * b.c[6] - a.c[2] * b.c[4];
+  r.c[25] = a.c[1] * b.c[6] - a.c[2] * b.c[5];
+  r.bits = 0x3c0001cu;
+  return r;
+}
+
+// op(flat_point, dual_sphere) -> line: 12 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> op(const basic_flat_point<T>& a, const basic_dual_sphere<T>& b) {
+  return basic_line<T>(-a.c[0] * b.c[2] + a.c[1] * b.c[1], -a.c[0] * b.c[3] + a.c[2] * b.c[1],
+                       -a.c[1] * b.c[3] + a.c[2] * b.c[2], a.c[0] * b.c[0] - a.c[3] * b.c[1],
+                       a.c[1] * b.c[0] - a.c[3] * b.c[2], a.c[2] * b.c[0] - a.c[3] * b.c[3]);
+}
+
+// op(flat_point, dual_plane) -> line: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> op(const basic_flat_point<T>& a, const basic_dual_plane<T>& b) {
+  return basic_line<T>(-a.c[0] * b.c[1] + a.c[1] * b.c[0], -a.c[0] * b.c[2] + a.c[2] * b.c[0],
+                       -a.c[1] * b.c[2] + a.c[2] * b.c[1], -a.c[3] * b.c[0], -a.c[3] * b.c[1],
+                       -a.c[3] * b.c[2]);
+}
+
+// op(flat_point, euclidean_vector) -> line: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> op(const basic_flat_point<T>& a,
+                                      const basic_euclidean_vector<T>& b) {
+  return basic_line<T>(-a.c[0] * b.c[1] + a.c[1] * b.c[0], -a.c[0] * b.c[2] + a.c[2] * b.c[0],
+                       -a.c[1] * b.c[2] + a.c[2] * b.c[1], -a.c[3] * b.c[0], -a.c[3] * b.c[1],
+                       -a.c[3] * b.c[2]);
+}
+
+// op(flat_point, euclidean_bivector) -> plane: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_flat_point<T>& a,
+                                       const basic_euclidean_bivector<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], a.c[3] * b.c[0],
+                        a.c[3] * b.c[1], a.c[3] * b.c[2]);
+}
+
+// op(flat_point, point_pair) -> plane: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_flat_point<T>& a, const basic_point_pair<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4],
+                        -a.c[0] * b.c[1] + a.c[1] * b.c[0] + a.c[3] * b.c[4],
+                        -a.c[0] * b.c[2] + a.c[2] * b.c[0] + a.c[3] * b.c[5],
+                        -a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[3] * b.c[7]);
+}
+
+// op(flat_point, dual_line) -> plane: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_flat_point<T>& a, const basic_dual_line<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], a.c[3] * b.c[0],
+                        a.c[3] * b.c[1], a.c[3] * b.c[2]);
+}
+
+// op(flat_point, circle) -> pseudoscalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_flat_point<T>& a,
+                                              const basic_circle<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] -
+                               a.c[3] * b.c[6]);
+}
+
+// op(flat_point, rotor) -> mv: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_flat_point<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = a.c[3] * b.c[0];
+  r.c[12] = a.c[0] * b.c[0];
+  r.c[14] = a.c[1] * b.c[0];
+  r.c[15] = a.c[2] * b.c[0];
+  r.c[27] = a.c[3] * b.c[1];
+  r.c[28] = a.c[3] * b.c[2];
+  r.c[29] = a.c[3] * b.c[3];
+  r.c[30] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// op(flat_point, translator) -> flat_point: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> op(const basic_flat_point<T>& a,
+                                            const basic_translator<T>& b) {
+  return basic_flat_point<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// op(flat_point, motor) -> mv: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_flat_point<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = a.c[3] * b.c[0];
+  r.c[12] = a.c[0] * b.c[0];
+  r.c[14] = a.c[1] * b.c[0];
+  r.c[15] = a.c[2] * b.c[0];
+  r.c[27] = a.c[3] * b.c[1];
+  r.c[28] = a.c[3] * b.c[2];
+  r.c[29] = a.c[3] * b.c[3];
+  r.c[30] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// op(euclidean_bivector, normalized_point) -> circle: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_euclidean_bivector<T>& a,
+                                        const basic_normalized_point<T>& b) {
+  return basic_circle<T>(a.c[0], a.c[1], a.c[2], T(0), T(0), T(0),
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], a.c[0] * b.c[3],
+                         a.c[1] * b.c[3], a.c[2] * b.c[3]);
+}
+
+// op(euclidean_bivector, dual_sphere) -> circle: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_euclidean_bivector<T>& a,
+                                        const basic_dual_sphere<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], T(0), T(0), T(0),
+                         a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1], a.c[0] * b.c[4],
+                         a.c[1] * b.c[4], a.c[2] * b.c[4]);
+}
+
+// op(euclidean_bivector, dual_plane) -> circle: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_euclidean_bivector<T>& a,
+                                        const basic_dual_plane<T>& b) {
+  return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0),
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], a.c[0] * b.c[3],
+                         a.c[1] * b.c[3], a.c[2] * b.c[3]);
+}
+
+// op(euclidean_bivector, euclidean_vector) -> circle: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_euclidean_bivector<T>& a,
+                                        const basic_euclidean_vector<T>& b) {
+  return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0),
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], T(0), T(0), T(0));
+}
+
+// op(euclidean_bivector, flat_point) -> plane: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_euclidean_bivector<T>& a,
+                                       const basic_flat_point<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], a.c[0] * b.c[3],
+                        a.c[1] * b.c[3], a.c[2] * b.c[3]);
+}
+
+// op(euclidean_bivector, point_pair) -> sphere: 9 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> op(const basic_euclidean_bivector<T>& a,
+                                        const basic_point_pair<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], a.c[0] * b.c[3],
+                         a.c[1] * b.c[3], a.c[2] * b.c[3],
+                         a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[6]);
+}
+
+// op(euclidean_bivector, dual_line) -> plane: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_euclidean_bivector<T>& a,
+                                       const basic_dual_line<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3], T(0), T(0), T(0));
+}
+
+// op(euclidean_bivector, line) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_euclidean_bivector<T>& a,
+                                              const basic_line<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3]);
+}
+
+// op(euclidean_bivector, circle) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_euclidean_bivector<T>& a,
+                                              const basic_circle<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3]);
+}
+
+// op(euclidean_bivector, rotor) -> euclidean_bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> op(const basic_euclidean_bivector<T>& a,
+                                                    const basic_rotor<T>& b) {
+  return basic_euclidean_bivector<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// op(euclidean_bivector, translator) -> motor: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_euclidean_bivector<T>& a,
+                                       const basic_translator<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], T(0), T(0), T(0),
+                        a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1]);
+}
+
+// op(euclidean_bivector, motor) -> motor: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_euclidean_bivector<T>& a,
+                                       const basic_motor<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], T(0), T(0), T(0),
+                        a.c[0] * b.c[6] - a.c[1] * b.c[5] + a.c[2] * b.c[4]);
+}
+
+// op(point_pair, dual_sphere) -> circle: 30 mul, 20 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_point_pair<T>& a,
+                                        const basic_dual_sphere<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[4] * b.c[0],
+                         a.c[0] * b.c[3] - a.c[2] * b.c[1] + a.c[5] * b.c[0],
+                         a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[7] * b.c[0],
+                         a.c[0] * b.c[4] - a.c[3] * b.c[1] + a.c[6] * b.c[0],
+                         a.c[1] * b.c[4] - a.c[3] * b.c[2] + a.c[8] * b.c[0],
+                         a.c[2] * b.c[4] - a.c[3] * b.c[3] + a.c[9] * b.c[0],
+                         a.c[4] * b.c[3] - a.c[5] * b.c[2] + a.c[7] * b.c[1],
+                         a.c[4] * b.c[4] - a.c[6] * b.c[2] + a.c[8] * b.c[1],
+                         a.c[5] * b.c[4] - a.c[6] * b.c[3] + a.c[9] * b.c[1],
+                         a.c[7] * b.c[4] - a.c[8] * b.c[3] + a.c[9] * b.c[2]);
+}
+
+// op(point_pair, dual_plane) -> circle: 24 mul, 14 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_point_pair<T>& a,
+                                        const basic_dual_plane<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                         a.c[1] * b.c[2] - a.c[2] * b.c[1], a.c[0] * b.c[3] - a.c[3] * b.c[0],
+                         a.c[1] * b.c[3] - a.c[3] * b.c[1], a.c[2] * b.c[3] - a.c[3] * b.c[2],
+                         a.c[4] * b.c[2] - a.c[5] * b.c[1] + a.c[7] * b.c[0],
+                         a.c[4] * b.c[3] - a.c[6] * b.c[1] + a.c[8] * b.c[0],
+                         a.c[5] * b.c[3] - a.c[6] * b.c[2] + a.c[9] * b.c[0],
+                         a.c[7] * b.c[3] - a.c[8] * b.c[2] + a.c[9] * b.c[1]);
+}
+
+// op(point_pair, euclidean_vector) -> circle: 18 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_point_pair<T>& a,
+                                        const basic_euclidean_vector<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                         a.c[1] * b.c[2] - a.c[2] * b.c[1], -a.c[3] * b.c[0], -a.c[3] * b.c[1],
+                         -a.c[3] * b.c[2], a.c[4] * b.c[2] - a.c[5] * b.c[1] + a.c[7] * b.c[0],
+                         -a.c[6] * b.c[1] + a.c[8] * b.c[0], -a.c[6] * b.c[2] + a.c[9] * b.c[0],
+                         -a.c[8] * b.c[2] + a.c[9] * b.c[1]);
+}
+
+// op(point_pair, flat_point) -> plane: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_point_pair<T>& a, const basic_flat_point<T>& b) {
+  return basic_plane<T>(a.c[4] * b.c[2] - a.c[5] * b.c[1] + a.c[7] * b.c[0],
+                        a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[4] * b.c[3],
+                        a.c[0] * b.c[2] - a.c[2] * b.c[0] + a.c[5] * b.c[3],
+                        a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[7] * b.c[3]);
+}
+
+// op(point_pair, euclidean_bivector) -> sphere: 9 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> op(const basic_point_pair<T>& a,
+                                        const basic_euclidean_bivector<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], a.c[3] * b.c[0],
+                         a.c[3] * b.c[1], a.c[3] * b.c[2],
+                         a.c[6] * b.c[2] - a.c[8] * b.c[1] + a.c[9] * b.c[0]);
+}
+
+// op(point_pair, dual_line) -> sphere: 18 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> op(const basic_point_pair<T>& a, const basic_dual_line<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[0],
+                         a.c[0] * b.c[5] - a.c[2] * b.c[3] + a.c[3] * b.c[1],
+                         a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[2],
+                         a.c[4] * b.c[5] - a.c[5] * b.c[4] + a.c[6] * b.c[2] + a.c[7] * b.c[3] -
+                             a.c[8] * b.c[1] + a.c[9] * b.c[0]);
+}
+
+// op(point_pair, line) -> pseudoscalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_point_pair<T>& a,
+                                              const basic_line<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] +
+                               a.c[4] * b.c[5] - a.c[5] * b.c[4] + a.c[7] * b.c[3]);
+}
+
+// op(point_pair, circle) -> pseudoscalar: 10 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_point_pair<T>& a,
+                                              const basic_circle<T>& b) {
+  return basic_pseudoscalar<T>(
+      a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7] - a.c[3] * b.c[6] + a.c[4] * b.c[5] -
+      a.c[5] * b.c[4] + a.c[6] * b.c[2] + a.c[7] * b.c[3] - a.c[8] * b.c[1] + a.c[9] * b.c[0]);
+}
+
+// op(point_pair, rotor) -> mv: 19 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_point_pair<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[1] * b.c[0];
+  r.c[8] = a.c[2] * b.c[0];
+  r.c[9] = a.c[3] * b.c[0];
+  r.c[10] = a.c[4] * b.c[0];
+  r.c[11] = a.c[5] * b.c[0];
+  r.c[12] = a.c[6] * b.c[0];
+  r.c[13] = a.c[7] * b.c[0];
+  r.c[14] = a.c[8] * b.c[0];
+  r.c[15] = a.c[9] * b.c[0];
+  r.c[26] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[27] = a.c[3] * b.c[1];
+  r.c[28] = a.c[3] * b.c[2];
+  r.c[29] = a.c[3] * b.c[3];
+  r.c[30] = a.c[6] * b.c[3] - a.c[8] * b.c[2] + a.c[9] * b.c[1];
+  r.bits = 0x7c00ffc0u;
+  return r;
+}
+
+// op(point_pair, translator) -> mv: 19 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_point_pair<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[1] * b.c[0];
+  r.c[8] = a.c[2] * b.c[0];
+  r.c[9] = a.c[3] * b.c[0];
+  r.c[10] = a.c[4] * b.c[0];
+  r.c[11] = a.c[5] * b.c[0];
+  r.c[12] = a.c[6] * b.c[0];
+  r.c[13] = a.c[7] * b.c[0];
+  r.c[14] = a.c[8] * b.c[0];
+  r.c[15] = a.c[9] * b.c[0];
+  r.c[27] = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  r.c[28] = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  r.c[29] = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  r.c[30] = a.c[4] * b.c[3] - a.c[5] * b.c[2] + a.c[7] * b.c[1];
+  r.bits = 0x7800ffc0u;
+  return r;
+}
+
+// op(point_pair, motor) -> mv: 28 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_point_pair<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[1] * b.c[0];
+  r.c[8] = a.c[2] * b.c[0];
+  r.c[9] = a.c[3] * b.c[0];
+  r.c[10] = a.c[4] * b.c[0];
+  r.c[11] = a.c[5] * b.c[0];
+  r.c[12] = a.c[6] * b.c[0];
+  r.c[13] = a.c[7] * b.c[0];
+  r.c[14] = a.c[8] * b.c[0];
+  r.c[15] = a.c[9] * b.c[0];
+  r.c[26] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[27] = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[3] * b.c[1];
+  r.c[28] = a.c[0] * b.c[6] - a.c[2] * b.c[4] + a.c[3] * b.c[2];
+  r.c[29] = a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[3];
+  r.c[30] = a.c[4] * b.c[6] - a.c[5] * b.c[5] + a.c[6] * b.c[3] + a.c[7] * b.c[4] -
+            a.c[8] * b.c[2] + a.c[9] * b.c[1];
+  r.bits = 0x7c00ffc0u;
+  return r;
+}
+
+// op(dual_line, normalized_point) -> circle: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_dual_line<T>& a,
+                                        const basic_normalized_point<T>& b) {
+  return basic_circle<T>(a.c[0], a.c[1], a.c[2], a.c[3], a.c[4], a.c[5],
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0],
+                         a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0],
+                         a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1]);
+}
+
+// op(dual_line, dual_sphere) -> circle: 18 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_dual_line<T>& a,
+                                        const basic_dual_sphere<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                         a.c[4] * b.c[0], a.c[5] * b.c[0],
+                         a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1],
+                         a.c[0] * b.c[4] - a.c[3] * b.c[2] + a.c[4] * b.c[1],
+                         a.c[1] * b.c[4] - a.c[3] * b.c[3] + a.c[5] * b.c[1],
+                         a.c[2] * b.c[4] - a.c[4] * b.c[3] + a.c[5] * b.c[2]);
+}
+
+// op(dual_line, dual_plane) -> circle: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_dual_line<T>& a, const basic_dual_plane<T>& b) {
+  return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0),
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0],
+                         a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0],
+                         a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1]);
+}
+
+// op(dual_line, euclidean_vector) -> circle: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> op(const basic_dual_line<T>& a,
+                                        const basic_euclidean_vector<T>& b) {
+  return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0),
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         -a.c[3] * b.c[1] + a.c[4] * b.c[0], -a.c[3] * b.c[2] + a.c[5] * b.c[0],
+                         -a.c[4] * b.c[2] + a.c[5] * b.c[1]);
+}
+
+// op(dual_line, flat_point) -> plane: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_dual_line<T>& a, const basic_flat_point<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], a.c[0] * b.c[3],
+                        a.c[1] * b.c[3], a.c[2] * b.c[3]);
+}
+
+// op(dual_line, euclidean_bivector) -> plane: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_dual_line<T>& a,
+                                       const basic_euclidean_bivector<T>& b) {
+  return basic_plane<T>(a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0], T(0), T(0), T(0));
+}
+
+// op(dual_line, point_pair) -> sphere: 18 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> op(const basic_dual_line<T>& a, const basic_point_pair<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0],
+                         a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0],
+                         a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1],
+                         a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[6] + a.c[3] * b.c[7] -
+                             a.c[4] * b.c[5] + a.c[5] * b.c[4]);
+}
+
+// op(dual_line, dual_line) -> plane: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_dual_line<T>& a, const basic_dual_line<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3] + a.c[3] * b.c[2] -
+                            a.c[4] * b.c[1] + a.c[5] * b.c[0],
+                        T(0), T(0), T(0));
+}
+
+// op(dual_line, line) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_dual_line<T>& a, const basic_line<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3]);
+}
+
+// op(dual_line, circle) -> pseudoscalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_dual_line<T>& a,
+                                              const basic_circle<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3] +
+                               a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0]);
+}
+
+// op(dual_line, rotor) -> motor: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_dual_line<T>& a, const basic_rotor<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                        a.c[4] * b.c[0], a.c[5] * b.c[0],
+                        a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1]);
+}
+
+// op(dual_line, translator) -> motor: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_dual_line<T>& a, const basic_translator<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                        a.c[4] * b.c[0], a.c[5] * b.c[0],
+                        a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1]);
+}
+
+// op(dual_line, motor) -> motor: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_dual_line<T>& a, const basic_motor<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                        a.c[4] * b.c[0], a.c[5] * b.c[0],
+                        a.c[0] * b.c[6] - a.c[1] * b.c[5] + a.c[2] * b.c[4] + a.c[3] * b.c[3] -
+                            a.c[4] * b.c[2] + a.c[5] * b.c[1]);
+}
+
+// op(line, dual_sphere) -> plane: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_line<T>& a, const basic_dual_sphere<T>& b) {
+  return basic_plane<T>(-a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1],
+                        -a.c[0] * b.c[0] - a.c[3] * b.c[2] + a.c[4] * b.c[1],
+                        -a.c[1] * b.c[0] - a.c[3] * b.c[3] + a.c[5] * b.c[1],
+                        -a.c[2] * b.c[0] - a.c[4] * b.c[3] + a.c[5] * b.c[2]);
+}
+
+// op(line, dual_plane) -> plane: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_line<T>& a, const basic_dual_plane<T>& b) {
+  return basic_plane<T>(-a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0],
+                        -a.c[3] * b.c[1] + a.c[4] * b.c[0], -a.c[3] * b.c[2] + a.c[5] * b.c[0],
+                        -a.c[4] * b.c[2] + a.c[5] * b.c[1]);
+}
+
+// op(line, euclidean_vector) -> plane: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_line<T>& a, const basic_euclidean_vector<T>& b) {
+  return basic_plane<T>(-a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0],
+                        -a.c[3] * b.c[1] + a.c[4] * b.c[0], -a.c[3] * b.c[2] + a.c[5] * b.c[0],
+                        -a.c[4] * b.c[2] + a.c[5] * b.c[1]);
+}
+
+// op(line, euclidean_bivector) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_line<T>& a,
+                                              const basic_euclidean_bivector<T>& b) {
+  return basic_pseudoscalar<T>(a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0]);
+}
+
+// op(line, point_pair) -> pseudoscalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_line<T>& a,
+                                              const basic_point_pair<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] +
+                               a.c[3] * b.c[7] - a.c[4] * b.c[5] + a.c[5] * b.c[4]);
+}
+
+// op(line, dual_line) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_line<T>& a, const basic_dual_line<T>& b) {
+  return basic_pseudoscalar<T>(a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0]);
+}
+
+// op(line, rotor) -> mv: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_line<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[18] = a.c[3] * b.c[0];
+  r.c[20] = a.c[4] * b.c[0];
+  r.c[21] = a.c[5] * b.c[0];
+  r.c[23] = a.c[0] * b.c[0];
+  r.c[24] = a.c[1] * b.c[0];
+  r.c[25] = a.c[2] * b.c[0];
+  r.c[31] = a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.bits = 0x83b40000u;
+  return r;
+}
+
+// op(line, translator) -> line: 6 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> op(const basic_line<T>& a, const basic_translator<T>& b) {
+  return basic_line<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                       a.c[4] * b.c[0], a.c[5] * b.c[0]);
+}
+
+// op(line, motor) -> mv: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_line<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[18] = a.c[3] * b.c[0];
+  r.c[20] = a.c[4] * b.c[0];
+  r.c[21] = a.c[5] * b.c[0];
+  r.c[23] = a.c[0] * b.c[0];
+  r.c[24] = a.c[1] * b.c[0];
+  r.c[25] = a.c[2] * b.c[0];
+  r.c[31] = a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.bits = 0x83b40000u;
+  return r;
+}
+
+// op(circle, dual_sphere) -> sphere: 20 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> op(const basic_circle<T>& a, const basic_dual_sphere<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[6] * b.c[0],
+                         a.c[0] * b.c[4] - a.c[3] * b.c[2] + a.c[4] * b.c[1] - a.c[7] * b.c[0],
+                         a.c[1] * b.c[4] - a.c[3] * b.c[3] + a.c[5] * b.c[1] - a.c[8] * b.c[0],
+                         a.c[2] * b.c[4] - a.c[4] * b.c[3] + a.c[5] * b.c[2] - a.c[9] * b.c[0],
+                         a.c[6] * b.c[4] - a.c[7] * b.c[3] + a.c[8] * b.c[2] - a.c[9] * b.c[1]);
+}
+
+// op(circle, dual_plane) -> sphere: 16 mul, 11 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> op(const basic_circle<T>& a, const basic_dual_plane<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0],
+                         a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0],
+                         a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1],
+                         a.c[6] * b.c[3] - a.c[7] * b.c[2] + a.c[8] * b.c[1] - a.c[9] * b.c[0]);
+}
+
+// op(circle, euclidean_vector) -> sphere: 12 mul, 7 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> op(const basic_circle<T>& a,
+                                        const basic_euclidean_vector<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         -a.c[3] * b.c[1] + a.c[4] * b.c[0], -a.c[3] * b.c[2] + a.c[5] * b.c[0],
+                         -a.c[4] * b.c[2] + a.c[5] * b.c[1],
+                         -a.c[7] * b.c[2] + a.c[8] * b.c[1] - a.c[9] * b.c[0]);
+}
+
+// op(circle, flat_point) -> pseudoscalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_circle<T>& a,
+                                              const basic_flat_point<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] -
+                               a.c[6] * b.c[3]);
+}
+
+// op(circle, euclidean_bivector) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_circle<T>& a,
+                                              const basic_euclidean_bivector<T>& b) {
+  return basic_pseudoscalar<T>(a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0]);
+}
+
+// op(circle, point_pair) -> pseudoscalar: 10 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_circle<T>& a,
+                                              const basic_point_pair<T>& b) {
+  return basic_pseudoscalar<T>(
+      a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[6] + a.c[3] * b.c[7] - a.c[4] * b.c[5] +
+      a.c[5] * b.c[4] - a.c[6] * b.c[3] + a.c[7] * b.c[2] - a.c[8] * b.c[1] + a.c[9] * b.c[0]);
+}
+
+// op(circle, dual_line) -> pseudoscalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_circle<T>& a,
+                                              const basic_dual_line<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3] +
+                               a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0]);
+}
+
+// op(circle, rotor) -> mv: 13 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_circle<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[1] * b.c[0];
+  r.c[18] = a.c[3] * b.c[0];
+  r.c[19] = a.c[2] * b.c[0];
+  r.c[20] = a.c[4] * b.c[0];
+  r.c[21] = a.c[5] * b.c[0];
+  r.c[22] = a.c[6] * b.c[0];
+  r.c[23] = a.c[7] * b.c[0];
+  r.c[24] = a.c[8] * b.c[0];
+  r.c[25] = a.c[9] * b.c[0];
+  r.c[31] = a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// op(circle, translator) -> mv: 13 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_circle<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[1] * b.c[0];
+  r.c[18] = a.c[3] * b.c[0];
+  r.c[19] = a.c[2] * b.c[0];
+  r.c[20] = a.c[4] * b.c[0];
+  r.c[21] = a.c[5] * b.c[0];
+  r.c[22] = a.c[6] * b.c[0];
+  r.c[23] = a.c[7] * b.c[0];
+  r.c[24] = a.c[8] * b.c[0];
+  r.c[25] = a.c[9] * b.c[0];
+  r.c[31] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// op(circle, motor) -> mv: 16 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_circle<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[1] * b.c[0];
+  r.c[18] = a.c[3] * b.c[0];
+  r.c[19] = a.c[2] * b.c[0];
+  r.c[20] = a.c[4] * b.c[0];
+  r.c[21] = a.c[5] * b.c[0];
+  r.c[22] = a.c[6] * b.c[0];
+  r.c[23] = a.c[7] * b.c[0];
+  r.c[24] = a.c[8] * b.c[0];
+  r.c[25] = a.c[9] * b.c[0];
+  r.c[31] = a.c[0] * b.c[6] - a.c[1] * b.c[5] + a.c[2] * b.c[4] + a.c[3] * b.c[3] -
+            a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// op(sphere, normalized_point) -> pseudoscalar: 4 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_sphere<T>& a,
+                                              const basic_normalized_point<T>& b) {
+  return basic_pseudoscalar<T>(a.c[4] + a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] -
+                               a.c[3] * b.c[0]);
+}
+
+// op(sphere, dual_sphere) -> pseudoscalar: 5 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_sphere<T>& a,
+                                              const basic_dual_sphere<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[2] * b.c[2] -
+                               a.c[3] * b.c[1] + a.c[4] * b.c[0]);
+}
+
+// op(sphere, dual_plane) -> pseudoscalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_sphere<T>& a,
+                                              const basic_dual_plane<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] -
+                               a.c[3] * b.c[0]);
+}
+
+// op(sphere, euclidean_vector) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_sphere<T>& a,
+                                              const basic_euclidean_vector<T>& b) {
+  return basic_pseudoscalar<T>(-a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0]);
+}
+
+// op(sphere, rotor) -> sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> op(const basic_sphere<T>& a, const basic_rotor<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                         a.c[4] * b.c[0]);
+}
+
+// op(sphere, translator) -> sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> op(const basic_sphere<T>& a, const basic_translator<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                         a.c[4] * b.c[0]);
+}
+
+// op(sphere, motor) -> sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> op(const basic_sphere<T>& a, const basic_motor<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                         a.c[4] * b.c[0]);
+}
+
+// op(plane, normalized_point) -> pseudoscalar: 3 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_plane<T>& a,
+                                              const basic_normalized_point<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0]);
+}
+
+// op(plane, dual_sphere) -> pseudoscalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_plane<T>& a,
+                                              const basic_dual_sphere<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2] -
+                               a.c[3] * b.c[1]);
+}
+
+// op(plane, dual_plane) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_plane<T>& a,
+                                              const basic_dual_plane<T>& b) {
+  return basic_pseudoscalar<T>(-a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0]);
+}
+
+// op(plane, euclidean_vector) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_plane<T>& a,
+                                              const basic_euclidean_vector<T>& b) {
+  return basic_pseudoscalar<T>(-a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0]);
+}
+
+// op(plane, rotor) -> plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_plane<T>& a, const basic_rotor<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// op(plane, translator) -> plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_plane<T>& a, const basic_translator<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// op(plane, motor) -> plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_plane<T>& a, const basic_motor<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// op(pseudoscalar, rotor) -> pseudoscalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_pseudoscalar<T>& a,
+                                              const basic_rotor<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[0]);
+}
+
+// op(pseudoscalar, translator) -> pseudoscalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_pseudoscalar<T>& a,
+                                              const basic_translator<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[0]);
+}
+
+// op(pseudoscalar, motor) -> pseudoscalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_pseudoscalar<T>& a,
+                                              const basic_motor<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[0]);
+}
+
+// op(rotor, normalized_point) -> mv: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0];
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[0] * b.c[1];
+  r.c[4] = a.c[0] * b.c[2];
+  r.c[5] = a.c[0] * b.c[3];
+  r.c[16] = a.c[1];
+  r.c[17] = a.c[2];
+  r.c[19] = a.c[3];
+  r.c[22] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[23] = a.c[1] * b.c[3];
+  r.c[24] = a.c[2] * b.c[3];
+  r.c[25] = a.c[3] * b.c[3];
+  r.bits = 0x3cb003eu;
+  return r;
+}
+
+// op(rotor, dual_sphere) -> mv: 14 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_dual_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[0] * b.c[1];
+  r.c[3] = a.c[0] * b.c[2];
+  r.c[4] = a.c[0] * b.c[3];
+  r.c[5] = a.c[0] * b.c[4];
+  r.c[16] = a.c[1] * b.c[0];
+  r.c[17] = a.c[2] * b.c[0];
+  r.c[19] = a.c[3] * b.c[0];
+  r.c[22] = a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[23] = a.c[1] * b.c[4];
+  r.c[24] = a.c[2] * b.c[4];
+  r.c[25] = a.c[3] * b.c[4];
+  r.bits = 0x3cb003eu;
+  return r;
+}
+
+// op(rotor, dual_plane) -> mv: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_dual_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[0] * b.c[1];
+  r.c[4] = a.c[0] * b.c[2];
+  r.c[5] = a.c[0] * b.c[3];
+  r.c[22] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[23] = a.c[1] * b.c[3];
+  r.c[24] = a.c[2] * b.c[3];
+  r.c[25] = a.c[3] * b.c[3];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// op(rotor, euclidean_vector) -> mv: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_euclidean_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[0] * b.c[1];
+  r.c[4] = a.c[0] * b.c[2];
+  r.c[22] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.bits = 0x40001cu;
+  return r;
+}
+
+// op(rotor, flat_point) -> mv: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_flat_point<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = a.c[0] * b.c[3];
+  r.c[12] = a.c[0] * b.c[0];
+  r.c[14] = a.c[0] * b.c[1];
+  r.c[15] = a.c[0] * b.c[2];
+  r.c[27] = a.c[1] * b.c[3];
+  r.c[28] = a.c[2] * b.c[3];
+  r.c[29] = a.c[3] * b.c[3];
+  r.c[30] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// op(rotor, euclidean_bivector) -> euclidean_bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> op(const basic_rotor<T>& a,
+                                                    const basic_euclidean_bivector<T>& b) {
+  return basic_euclidean_bivector<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// op(rotor, point_pair) -> mv: 19 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[0] * b.c[1];
+  r.c[8] = a.c[0] * b.c[2];
+  r.c[9] = a.c[0] * b.c[3];
+  r.c[10] = a.c[0] * b.c[4];
+  r.c[11] = a.c[0] * b.c[5];
+  r.c[12] = a.c[0] * b.c[6];
+  r.c[13] = a.c[0] * b.c[7];
+  r.c[14] = a.c[0] * b.c[8];
+  r.c[15] = a.c[0] * b.c[9];
+  r.c[26] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[27] = a.c[1] * b.c[3];
+  r.c[28] = a.c[2] * b.c[3];
+  r.c[29] = a.c[3] * b.c[3];
+  r.c[30] = a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[6];
+  r.bits = 0x7c00ffc0u;
+  return r;
+}
+
+// op(rotor, dual_line) -> motor: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_rotor<T>& a, const basic_dual_line<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                        a.c[0] * b.c[4], a.c[0] * b.c[5],
+                        a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3]);
+}
+
+// op(rotor, line) -> mv: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_line<T>& b) {
+  basic_mv<T> r;
+  r.c[18] = a.c[0] * b.c[3];
+  r.c[20] = a.c[0] * b.c[4];
+  r.c[21] = a.c[0] * b.c[5];
+  r.c[23] = a.c[0] * b.c[0];
+  r.c[24] = a.c[0] * b.c[1];
+  r.c[25] = a.c[0] * b.c[2];
+  r.c[31] = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3];
+  r.bits = 0x83b40000u;
+  return r;
+}
+
+// op(rotor, circle) -> mv: 13 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[0] * b.c[1];
+  r.c[18] = a.c[0] * b.c[3];
+  r.c[19] = a.c[0] * b.c[2];
+  r.c[20] = a.c[0] * b.c[4];
+  r.c[21] = a.c[0] * b.c[5];
+  r.c[22] = a.c[0] * b.c[6];
+  r.c[23] = a.c[0] * b.c[7];
+  r.c[24] = a.c[0] * b.c[8];
+  r.c[25] = a.c[0] * b.c[9];
+  r.c[31] = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// op(rotor, sphere) -> sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> op(const basic_rotor<T>& a, const basic_sphere<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                         a.c[0] * b.c[4]);
+}
+
+// op(rotor, plane) -> plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_rotor<T>& a, const basic_plane<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// op(rotor, pseudoscalar) -> pseudoscalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_rotor<T>& a,
+                                              const basic_pseudoscalar<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[0]);
+}
+
+// op(rotor, rotor) -> rotor: 7 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> op(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1] + a.c[1] * b.c[0],
+                        a.c[0] * b.c[2] + a.c[2] * b.c[0], a.c[0] * b.c[3] + a.c[3] * b.c[0]);
+}
+
+// op(rotor, translator) -> motor: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_rotor<T>& a, const basic_translator<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                        a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                        a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1]);
+}
+
+// op(rotor, motor) -> motor: 14 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_rotor<T>& a, const basic_motor<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1] + a.c[1] * b.c[0],
+                        a.c[0] * b.c[2] + a.c[2] * b.c[0], a.c[0] * b.c[3] + a.c[3] * b.c[0],
+                        a.c[0] * b.c[4], a.c[0] * b.c[5], a.c[0] * b.c[6],
+                        a.c[0] * b.c[7] + a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[4]);
+}
+
+// op(translator, normalized_point) -> mv: 10 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_translator<T>& a,
+                                    const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0];
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[0] * b.c[1];
+  r.c[4] = a.c[0] * b.c[2];
+  r.c[5] = a.c[0] * b.c[3];
+  r.c[18] = a.c[1];
+  r.c[20] = a.c[2];
+  r.c[21] = a.c[3];
+  r.c[23] = -a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[24] = -a.c[1] * b.c[2] + a.c[3] * b.c[0];
+  r.c[25] = -a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.bits = 0x3b4003eu;
+  return r;
+}
+
+// op(translator, dual_sphere) -> mv: 14 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_translator<T>& a, const basic_dual_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[0] * b.c[1];
+  r.c[3] = a.c[0] * b.c[2];
+  r.c[4] = a.c[0] * b.c[3];
+  r.c[5] = a.c[0] * b.c[4];
+  r.c[18] = a.c[1] * b.c[0];
+  r.c[20] = a.c[2] * b.c[0];
+  r.c[21] = a.c[3] * b.c[0];
+  r.c[23] = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[24] = -a.c[1] * b.c[3] + a.c[3] * b.c[1];
+  r.c[25] = -a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  r.bits = 0x3b4003eu;
+  return r;
+}
+
+// op(translator, dual_plane) -> mv: 10 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_translator<T>& a, const basic_dual_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[0] * b.c[1];
+  r.c[4] = a.c[0] * b.c[2];
+  r.c[5] = a.c[0] * b.c[3];
+  r.c[23] = -a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[24] = -a.c[1] * b.c[2] + a.c[3] * b.c[0];
+  r.c[25] = -a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.bits = 0x380003cu;
+  return r;
+}
+
+// op(translator, euclidean_vector) -> mv: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_translator<T>& a,
+                                    const basic_euclidean_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[0] * b.c[1];
+  r.c[4] = a.c[0] * b.c[2];
+  r.c[23] = -a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[24] = -a.c[1] * b.c[2] + a.c[3] * b.c[0];
+  r.c[25] = -a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.bits = 0x380001cu;
+  return r;
+}
+
+// op(translator, flat_point) -> flat_point: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> op(const basic_translator<T>& a,
+                                            const basic_flat_point<T>& b) {
+  return basic_flat_point<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// op(translator, euclidean_bivector) -> motor: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_translator<T>& a,
+                                       const basic_euclidean_bivector<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], T(0), T(0), T(0),
+                        a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0]);
+}
+
+// op(translator, point_pair) -> mv: 19 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_translator<T>& a, const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[0] * b.c[1];
+  r.c[8] = a.c[0] * b.c[2];
+  r.c[9] = a.c[0] * b.c[3];
+  r.c[10] = a.c[0] * b.c[4];
+  r.c[11] = a.c[0] * b.c[5];
+  r.c[12] = a.c[0] * b.c[6];
+  r.c[13] = a.c[0] * b.c[7];
+  r.c[14] = a.c[0] * b.c[8];
+  r.c[15] = a.c[0] * b.c[9];
+  r.c[27] = -a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[28] = -a.c[1] * b.c[2] + a.c[3] * b.c[0];
+  r.c[29] = -a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[30] = a.c[1] * b.c[7] - a.c[2] * b.c[5] + a.c[3] * b.c[4];
+  r.bits = 0x7800ffc0u;
+  return r;
+}
+
+// op(translator, dual_line) -> motor: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_translator<T>& a, const basic_dual_line<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                        a.c[0] * b.c[4], a.c[0] * b.c[5],
+                        a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0]);
+}
+
+// op(translator, line) -> line: 6 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> op(const basic_translator<T>& a, const basic_line<T>& b) {
+  return basic_line<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                       a.c[0] * b.c[4], a.c[0] * b.c[5]);
+}
+
+// op(translator, circle) -> mv: 13 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_translator<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[0] * b.c[1];
+  r.c[18] = a.c[0] * b.c[3];
+  r.c[19] = a.c[0] * b.c[2];
+  r.c[20] = a.c[0] * b.c[4];
+  r.c[21] = a.c[0] * b.c[5];
+  r.c[22] = a.c[0] * b.c[6];
+  r.c[23] = a.c[0] * b.c[7];
+  r.c[24] = a.c[0] * b.c[8];
+  r.c[25] = a.c[0] * b.c[9];
+  r.c[31] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// op(translator, sphere) -> sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> op(const basic_translator<T>& a, const basic_sphere<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                         a.c[0] * b.c[4]);
+}
+
+// op(translator, plane) -> plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_translator<T>& a, const basic_plane<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// op(translator, pseudoscalar) -> pseudoscalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_translator<T>& a,
+                                              const basic_pseudoscalar<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[0]);
+}
+
+// op(translator, rotor) -> motor: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_translator<T>& a, const basic_rotor<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                        a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                        a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1]);
+}
+
+// op(translator, translator) -> translator: 7 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> op(const basic_translator<T>& a,
+                                            const basic_translator<T>& b) {
+  return basic_translator<T>(a.c[0] * b.c[0], a.c[0] * b.c[1] + a.c[1] * b.c[0],
+                             a.c[0] * b.c[2] + a.c[2] * b.c[0], a.c[0] * b.c[3] + a.c[3] * b.c[0]);
+}
+
+// op(translator, motor) -> motor: 14 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_translator<T>& a, const basic_motor<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                        a.c[0] * b.c[4] + a.c[1] * b.c[0], a.c[0] * b.c[5] + a.c[2] * b.c[0],
+                        a.c[0] * b.c[6] + a.c[3] * b.c[0],
+                        a.c[0] * b.c[7] + a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1]);
+}
+
+// op(motor, normalized_point) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_motor<T>& a, const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0];
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[0] * b.c[1];
+  r.c[4] = a.c[0] * b.c[2];
+  r.c[5] = a.c[0] * b.c[3];
+  r.c[16] = a.c[1];
+  r.c[17] = a.c[2];
+  r.c[18] = a.c[4];
+  r.c[19] = a.c[3];
+  r.c[20] = a.c[5];
+  r.c[21] = a.c[6];
+  r.c[22] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[23] = a.c[1] * b.c[3] - a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  r.c[24] = a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[6] * b.c[0];
+  r.c[25] = a.c[3] * b.c[3] - a.c[5] * b.c[2] + a.c[6] * b.c[1];
+  r.c[31] = a.c[7];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// op(motor, dual_sphere) -> mv: 24 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_motor<T>& a, const basic_dual_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[0] * b.c[1];
+  r.c[3] = a.c[0] * b.c[2];
+  r.c[4] = a.c[0] * b.c[3];
+  r.c[5] = a.c[0] * b.c[4];
+  r.c[16] = a.c[1] * b.c[0];
+  r.c[17] = a.c[2] * b.c[0];
+  r.c[18] = a.c[4] * b.c[0];
+  r.c[19] = a.c[3] * b.c[0];
+  r.c[20] = a.c[5] * b.c[0];
+  r.c[21] = a.c[6] * b.c[0];
+  r.c[22] = a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[23] = a.c[1] * b.c[4] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.c[24] = a.c[2] * b.c[4] - a.c[4] * b.c[3] + a.c[6] * b.c[1];
+  r.c[25] = a.c[3] * b.c[4] - a.c[5] * b.c[3] + a.c[6] * b.c[2];
+  r.c[31] = a.c[7] * b.c[0];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// op(motor, dual_plane) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_motor<T>& a, const basic_dual_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[0] * b.c[1];
+  r.c[4] = a.c[0] * b.c[2];
+  r.c[5] = a.c[0] * b.c[3];
+  r.c[22] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[23] = a.c[1] * b.c[3] - a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  r.c[24] = a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[6] * b.c[0];
+  r.c[25] = a.c[3] * b.c[3] - a.c[5] * b.c[2] + a.c[6] * b.c[1];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// op(motor, euclidean_vector) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_motor<T>& a, const basic_euclidean_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[0] * b.c[1];
+  r.c[4] = a.c[0] * b.c[2];
+  r.c[22] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[23] = -a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  r.c[24] = -a.c[4] * b.c[2] + a.c[6] * b.c[0];
+  r.c[25] = -a.c[5] * b.c[2] + a.c[6] * b.c[1];
+  r.bits = 0x3c0001cu;
+  return r;
+}
+
+// op(motor, flat_point) -> mv: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_motor<T>& a, const basic_flat_point<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = a.c[0] * b.c[3];
+  r.c[12] = a.c[0] * b.c[0];
+  r.c[14] = a.c[0] * b.c[1];
+  r.c[15] = a.c[0] * b.c[2];
+  r.c[27] = a.c[1] * b.c[3];
+  r.c[28] = a.c[2] * b.c[3];
+  r.c[29] = a.c[3] * b.c[3];
+  r.c[30] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// op(motor, euclidean_bivector) -> motor: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_motor<T>& a,
+                                       const basic_euclidean_bivector<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], T(0), T(0), T(0),
+                        a.c[4] * b.c[2] - a.c[5] * b.c[1] + a.c[6] * b.c[0]);
+}
+
+// op(motor, point_pair) -> mv: 28 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_motor<T>& a, const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[0] * b.c[1];
+  r.c[8] = a.c[0] * b.c[2];
+  r.c[9] = a.c[0] * b.c[3];
+  r.c[10] = a.c[0] * b.c[4];
+  r.c[11] = a.c[0] * b.c[5];
+  r.c[12] = a.c[0] * b.c[6];
+  r.c[13] = a.c[0] * b.c[7];
+  r.c[14] = a.c[0] * b.c[8];
+  r.c[15] = a.c[0] * b.c[9];
+  r.c[26] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[27] = a.c[1] * b.c[3] - a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  r.c[28] = a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[6] * b.c[0];
+  r.c[29] = a.c[3] * b.c[3] - a.c[5] * b.c[2] + a.c[6] * b.c[1];
+  r.c[30] = a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[6] + a.c[4] * b.c[7] -
+            a.c[5] * b.c[5] + a.c[6] * b.c[4];
+  r.bits = 0x7c00ffc0u;
+  return r;
+}
+
+// op(motor, dual_line) -> motor: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_motor<T>& a, const basic_dual_line<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                        a.c[0] * b.c[4], a.c[0] * b.c[5],
+                        a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3] + a.c[4] * b.c[2] -
+                            a.c[5] * b.c[1] + a.c[6] * b.c[0]);
+}
+
+// op(motor, line) -> mv: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_motor<T>& a, const basic_line<T>& b) {
+  basic_mv<T> r;
+  r.c[18] = a.c[0] * b.c[3];
+  r.c[20] = a.c[0] * b.c[4];
+  r.c[21] = a.c[0] * b.c[5];
+  r.c[23] = a.c[0] * b.c[0];
+  r.c[24] = a.c[0] * b.c[1];
+  r.c[25] = a.c[0] * b.c[2];
+  r.c[31] = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3];
+  r.bits = 0x83b40000u;
+  return r;
+}
+
+// op(motor, circle) -> mv: 16 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_motor<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[0] * b.c[1];
+  r.c[18] = a.c[0] * b.c[3];
+  r.c[19] = a.c[0] * b.c[2];
+  r.c[20] = a.c[0] * b.c[4];
+  r.c[21] = a.c[0] * b.c[5];
+  r.c[22] = a.c[0] * b.c[6];
+  r.c[23] = a.c[0] * b.c[7];
+  r.c[24] = a.c[0] * b.c[8];
+  r.c[25] = a.c[0] * b.c[9];
+  r.c[31] = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3] + a.c[4] * b.c[2] -
+            a.c[5] * b.c[1] + a.c[6] * b.c[0];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// op(motor, sphere) -> sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> op(const basic_motor<T>& a, const basic_sphere<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                         a.c[0] * b.c[4]);
+}
+
+// op(motor, plane) -> plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> op(const basic_motor<T>& a, const basic_plane<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// op(motor, pseudoscalar) -> pseudoscalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_motor<T>& a,
+                                              const basic_pseudoscalar<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[0]);
+}
+
+// op(motor, rotor) -> motor: 14 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_motor<T>& a, const basic_rotor<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1] + a.c[1] * b.c[0],
+                        a.c[0] * b.c[2] + a.c[2] * b.c[0], a.c[0] * b.c[3] + a.c[3] * b.c[0],
+                        a.c[4] * b.c[0], a.c[5] * b.c[0], a.c[6] * b.c[0],
+                        a.c[4] * b.c[3] - a.c[5] * b.c[2] + a.c[6] * b.c[1] + a.c[7] * b.c[0]);
+}
+
+// op(motor, translator) -> motor: 14 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_motor<T>& a, const basic_translator<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                        a.c[0] * b.c[1] + a.c[4] * b.c[0], a.c[0] * b.c[2] + a.c[5] * b.c[0],
+                        a.c[0] * b.c[3] + a.c[6] * b.c[0],
+                        a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1] + a.c[7] * b.c[0]);
+}
+
+// lc(normalized_point, normalized_point) -> scalar: 3 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_normalized_point<T>& a, const basic_normalized_point<T>& b) {
+  return -a.c[3] - b.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// lc(normalized_point, dual_plane) -> scalar: 3 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_normalized_point<T>& a, const basic_dual_plane<T>& b) {
+  return -b.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// lc(normalized_point, euclidean_vector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_normalized_point<T>& a, const basic_euclidean_vector<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// lc(normalized_point, flat_point) -> dual_sphere: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> lc(const basic_normalized_point<T>& a,
+                                             const basic_flat_point<T>& b) {
+  return basic_dual_sphere<T>(
+      b.c[3], b.c[0], b.c[1], b.c[2],
+      a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] - a.c[3] * b.c[3]);
+}
+
+// lc(normalized_point, euclidean_bivector) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> lc(const basic_normalized_point<T>& a,
+                                                  const basic_euclidean_bivector<T>& b) {
+  return basic_euclidean_vector<T>(-a.c[1] * b.c[0] - a.c[2] * b.c[1],
+                                   a.c[0] * b.c[0] - a.c[2] * b.c[2],
+                                   a.c[0] * b.c[1] + a.c[1] * b.c[2]);
+}
+
+// lc(normalized_point, point_pair) -> dual_sphere: 16 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> lc(const basic_normalized_point<T>& a,
+                                             const basic_point_pair<T>& b) {
+  return basic_dual_sphere<T>(
+      b.c[3] - a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2],
+      b.c[6] - a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[0],
+      b.c[8] + a.c[0] * b.c[4] - a.c[2] * b.c[7] - a.c[3] * b.c[1],
+      b.c[9] + a.c[0] * b.c[5] + a.c[1] * b.c[7] - a.c[3] * b.c[2],
+      a.c[0] * b.c[6] + a.c[1] * b.c[8] + a.c[2] * b.c[9] - a.c[3] * b.c[3]);
+}
+
+// lc(normalized_point, dual_line) -> dual_plane: 9 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_normalized_point<T>& a,
+                                            const basic_dual_line<T>& b) {
+  return basic_dual_plane<T>(b.c[3] - a.c[1] * b.c[0] - a.c[2] * b.c[1],
+                             b.c[4] + a.c[0] * b.c[0] - a.c[2] * b.c[2],
+                             b.c[5] + a.c[0] * b.c[1] + a.c[1] * b.c[2],
+                             a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5]);
+}
+
+// lc(normalized_point, line) -> point_pair: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> lc(const basic_normalized_point<T>& a,
+                                            const basic_line<T>& b) {
+  return basic_point_pair<T>(-b.c[3], -b.c[4], -b.c[5],
+                             -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5], -b.c[0], -b.c[1],
+                             -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[3], -b.c[2],
+                             a.c[0] * b.c[0] - a.c[2] * b.c[2] - a.c[3] * b.c[4],
+                             a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[5]);
+}
+
+// lc(normalized_point, circle) -> point_pair: 24 mul, 20 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> lc(const basic_normalized_point<T>& a,
+                                            const basic_circle<T>& b) {
+  return basic_point_pair<T>(
+      -b.c[3] + a.c[1] * b.c[0] + a.c[2] * b.c[1], -b.c[4] - a.c[0] * b.c[0] + a.c[2] * b.c[2],
+      -b.c[5] - a.c[0] * b.c[1] - a.c[1] * b.c[2],
+      -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5],
+      -b.c[7] + a.c[2] * b.c[6] - a.c[3] * b.c[0], -b.c[8] - a.c[1] * b.c[6] - a.c[3] * b.c[1],
+      -a.c[1] * b.c[7] - a.c[2] * b.c[8] - a.c[3] * b.c[3],
+      -b.c[9] + a.c[0] * b.c[6] - a.c[3] * b.c[2],
+      a.c[0] * b.c[7] - a.c[2] * b.c[9] - a.c[3] * b.c[4],
+      a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[3] * b.c[5]);
+}
+
+// lc(normalized_point, sphere) -> circle: 16 mul, 10 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> lc(const basic_normalized_point<T>& a,
+                                        const basic_sphere<T>& b) {
+  return basic_circle<T>(b.c[1] - a.c[2] * b.c[0], b.c[2] + a.c[1] * b.c[0],
+                         b.c[3] - a.c[0] * b.c[0], a.c[1] * b.c[1] + a.c[2] * b.c[2],
+                         -a.c[0] * b.c[1] + a.c[2] * b.c[3], -a.c[0] * b.c[2] - a.c[1] * b.c[3],
+                         b.c[4] - a.c[3] * b.c[0], a.c[2] * b.c[4] - a.c[3] * b.c[1],
+                         -a.c[1] * b.c[4] - a.c[3] * b.c[2], a.c[0] * b.c[4] - a.c[3] * b.c[3]);
+}
+
+// lc(normalized_point, plane) -> circle: 12 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> lc(const basic_normalized_point<T>& a,
+                                        const basic_plane<T>& b) {
+  return basic_circle<T>(b.c[1], b.c[2], b.c[3], a.c[1] * b.c[1] + a.c[2] * b.c[2],
+                         -a.c[0] * b.c[1] + a.c[2] * b.c[3], -a.c[0] * b.c[2] - a.c[1] * b.c[3],
+                         b.c[0], a.c[2] * b.c[0] - a.c[3] * b.c[1],
+                         -a.c[1] * b.c[0] - a.c[3] * b.c[2], a.c[0] * b.c[0] - a.c[3] * b.c[3]);
+}
+
+// lc(normalized_point, pseudoscalar) -> sphere: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> lc(const basic_normalized_point<T>& a,
+                                        const basic_pseudoscalar<T>& b) {
+  return basic_sphere<T>(-b.c[0], -a.c[2] * b.c[0], a.c[1] * b.c[0], -a.c[0] * b.c[0],
+                         -a.c[3] * b.c[0]);
+}
+
+// lc(normalized_point, rotor) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> lc(const basic_normalized_point<T>& a,
+                                                  const basic_rotor<T>& b) {
+  return basic_euclidean_vector<T>(-a.c[1] * b.c[1] - a.c[2] * b.c[2],
+                                   a.c[0] * b.c[1] - a.c[2] * b.c[3],
+                                   a.c[0] * b.c[2] + a.c[1] * b.c[3]);
+}
+
+// lc(normalized_point, translator) -> dual_plane: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_normalized_point<T>& a,
+                                            const basic_translator<T>& b) {
+  return basic_dual_plane<T>(b.c[1], b.c[2], b.c[3],
+                             a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3]);
+}
+
+// lc(normalized_point, motor) -> mv: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_normalized_point<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = b.c[4] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[3] = b.c[5] + a.c[0] * b.c[1] - a.c[2] * b.c[3];
+  r.c[4] = b.c[6] + a.c[0] * b.c[2] + a.c[1] * b.c[3];
+  r.c[5] = a.c[0] * b.c[4] + a.c[1] * b.c[5] + a.c[2] * b.c[6];
+  r.c[22] = b.c[7];
+  r.c[23] = a.c[2] * b.c[7];
+  r.c[24] = -a.c[1] * b.c[7];
+  r.c[25] = a.c[0] * b.c[7];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// lc(dual_sphere, normalized_point) -> scalar: 4 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_dual_sphere<T>& a, const basic_normalized_point<T>& b) {
+  return -a.c[4] - a.c[0] * b.c[3] + a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
+}
+
+// lc(dual_sphere, dual_plane) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_dual_sphere<T>& a, const basic_dual_plane<T>& b) {
+  return -a.c[0] * b.c[3] + a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
+}
+
+// lc(dual_sphere, euclidean_vector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_dual_sphere<T>& a, const basic_euclidean_vector<T>& b) {
+  return a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
+}
+
+// lc(dual_sphere, flat_point) -> dual_sphere: 8 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> lc(const basic_dual_sphere<T>& a,
+                                             const basic_flat_point<T>& b) {
+  return basic_dual_sphere<T>(
+      a.c[0] * b.c[3], a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2],
+      a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2] - a.c[4] * b.c[3]);
+}
+
+// lc(dual_sphere, euclidean_bivector) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> lc(const basic_dual_sphere<T>& a,
+                                                  const basic_euclidean_bivector<T>& b) {
+  return basic_euclidean_vector<T>(-a.c[2] * b.c[0] - a.c[3] * b.c[1],
+                                   a.c[1] * b.c[0] - a.c[3] * b.c[2],
+                                   a.c[1] * b.c[1] + a.c[2] * b.c[2]);
+}
+
+// lc(dual_sphere, point_pair) -> dual_sphere: 20 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> lc(const basic_dual_sphere<T>& a,
+                                             const basic_point_pair<T>& b) {
+  return basic_dual_sphere<T>(
+      a.c[0] * b.c[3] - a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2],
+      a.c[0] * b.c[6] - a.c[2] * b.c[4] - a.c[3] * b.c[5] - a.c[4] * b.c[0],
+      a.c[0] * b.c[8] + a.c[1] * b.c[4] - a.c[3] * b.c[7] - a.c[4] * b.c[1],
+      a.c[0] * b.c[9] + a.c[1] * b.c[5] + a.c[2] * b.c[7] - a.c[4] * b.c[2],
+      a.c[1] * b.c[6] + a.c[2] * b.c[8] + a.c[3] * b.c[9] - a.c[4] * b.c[3]);
+}
+
+// lc(dual_sphere, dual_line) -> dual_plane: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_dual_sphere<T>& a,
+                                            const basic_dual_line<T>& b) {
+  return basic_dual_plane<T>(a.c[0] * b.c[3] - a.c[2] * b.c[0] - a.c[3] * b.c[1],
+                             a.c[0] * b.c[4] + a.c[1] * b.c[0] - a.c[3] * b.c[2],
+                             a.c[0] * b.c[5] + a.c[1] * b.c[1] + a.c[2] * b.c[2],
+                             a.c[1] * b.c[3] + a.c[2] * b.c[4] + a.c[3] * b.c[5]);
+}
+
+// lc(dual_sphere, line) -> point_pair: 18 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> lc(const basic_dual_sphere<T>& a, const basic_line<T>& b) {
+  return basic_point_pair<T>(-a.c[0] * b.c[3], -a.c[0] * b.c[4], -a.c[0] * b.c[5],
+                             -a.c[1] * b.c[3] - a.c[2] * b.c[4] - a.c[3] * b.c[5], -a.c[0] * b.c[0],
+                             -a.c[0] * b.c[1], -a.c[2] * b.c[0] - a.c[3] * b.c[1] - a.c[4] * b.c[3],
+                             -a.c[0] * b.c[2], a.c[1] * b.c[0] - a.c[3] * b.c[2] - a.c[4] * b.c[4],
+                             a.c[1] * b.c[1] + a.c[2] * b.c[2] - a.c[4] * b.c[5]);
+}
+
+// lc(dual_sphere, circle) -> point_pair: 30 mul, 20 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> lc(const basic_dual_sphere<T>& a,
+                                            const basic_circle<T>& b) {
+  return basic_point_pair<T>(-a.c[0] * b.c[3] + a.c[2] * b.c[0] + a.c[3] * b.c[1],
+                             -a.c[0] * b.c[4] - a.c[1] * b.c[0] + a.c[3] * b.c[2],
+                             -a.c[0] * b.c[5] - a.c[1] * b.c[1] - a.c[2] * b.c[2],
+                             -a.c[1] * b.c[3] - a.c[2] * b.c[4] - a.c[3] * b.c[5],
+                             -a.c[0] * b.c[7] + a.c[3] * b.c[6] - a.c[4] * b.c[0],
+                             -a.c[0] * b.c[8] - a.c[2] * b.c[6] - a.c[4] * b.c[1],
+                             -a.c[2] * b.c[7] - a.c[3] * b.c[8] - a.c[4] * b.c[3],
+                             -a.c[0] * b.c[9] + a.c[1] * b.c[6] - a.c[4] * b.c[2],
+                             a.c[1] * b.c[7] - a.c[3] * b.c[9] - a.c[4] * b.c[4],
+                             a.c[1] * b.c[8] + a.c[2] * b.c[9] - a.c[4] * b.c[5]);
+}
+
+// lc(dual_sphere, sphere) -> circle: 20 mul, 10 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> lc(const basic_dual_sphere<T>& a, const basic_sphere<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[1] - a.c[3] * b.c[0], a.c[0] * b.c[2] + a.c[2] * b.c[0],
+                         a.c[0] * b.c[3] - a.c[1] * b.c[0], a.c[2] * b.c[1] + a.c[3] * b.c[2],
+                         -a.c[1] * b.c[1] + a.c[3] * b.c[3], -a.c[1] * b.c[2] - a.c[2] * b.c[3],
+                         a.c[0] * b.c[4] - a.c[4] * b.c[0], a.c[3] * b.c[4] - a.c[4] * b.c[1],
+                         -a.c[2] * b.c[4] - a.c[4] * b.c[2], a.c[1] * b.c[4] - a.c[4] * b.c[3]);
+}
+
+// lc(dual_sphere, plane) -> circle: 16 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> lc(const basic_dual_sphere<T>& a, const basic_plane<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                         a.c[2] * b.c[1] + a.c[3] * b.c[2], -a.c[1] * b.c[1] + a.c[3] * b.c[3],
+                         -a.c[1] * b.c[2] - a.c[2] * b.c[3], a.c[0] * b.c[0],
+                         a.c[3] * b.c[0] - a.c[4] * b.c[1], -a.c[2] * b.c[0] - a.c[4] * b.c[2],
+                         a.c[1] * b.c[0] - a.c[4] * b.c[3]);
+}
+
+// lc(dual_sphere, pseudoscalar) -> sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> lc(const basic_dual_sphere<T>& a,
+                                        const basic_pseudoscalar<T>& b) {
+  return basic_sphere<T>(-a.c[0] * b.c[0], -a.c[3] * b.c[0], a.c[2] * b.c[0], -a.c[1] * b.c[0],
+                         -a.c[4] * b.c[0]);
+}
+
+// lc(dual_sphere, rotor) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> lc(const basic_dual_sphere<T>& a,
+                                                  const basic_rotor<T>& b) {
+  return basic_euclidean_vector<T>(-a.c[2] * b.c[1] - a.c[3] * b.c[2],
+                                   a.c[1] * b.c[1] - a.c[3] * b.c[3],
+                                   a.c[1] * b.c[2] + a.c[2] * b.c[3]);
+}
+
+// lc(dual_sphere, translator) -> dual_plane: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_dual_sphere<T>& a,
+                                            const basic_translator<T>& b) {
+  return basic_dual_plane<T>(a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                             a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3]);
+}
+
+// lc(dual_sphere, motor) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_dual_sphere<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[4] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[3] = a.c[0] * b.c[5] + a.c[1] * b.c[1] - a.c[3] * b.c[3];
+  r.c[4] = a.c[0] * b.c[6] + a.c[1] * b.c[2] + a.c[2] * b.c[3];
+  r.c[5] = a.c[1] * b.c[4] + a.c[2] * b.c[5] + a.c[3] * b.c[6];
+  r.c[22] = a.c[0] * b.c[7];
+  r.c[23] = a.c[3] * b.c[7];
+  r.c[24] = -a.c[2] * b.c[7];
+  r.c[25] = a.c[1] * b.c[7];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// lc(dual_plane, normalized_point) -> scalar: 3 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_dual_plane<T>& a, const basic_normalized_point<T>& b) {
+  return -a.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// lc(dual_plane, dual_sphere) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_dual_plane<T>& a, const basic_dual_sphere<T>& b) {
+  return a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] - a.c[3] * b.c[0];
+}
+
+// lc(dual_plane, dual_plane) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_dual_plane<T>& a, const basic_dual_plane<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// lc(dual_plane, euclidean_vector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_dual_plane<T>& a, const basic_euclidean_vector<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// lc(dual_plane, flat_point) -> dual_plane: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_dual_plane<T>& a,
+                                            const basic_flat_point<T>& b) {
+  return basic_dual_plane<T>(T(0), T(0), T(0),
+                             a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] - a.c[3] * b.c[3]);
+}
+
+// lc(dual_plane, euclidean_bivector) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> lc(const basic_dual_plane<T>& a,
+                                                  const basic_euclidean_bivector<T>& b) {
+  return basic_euclidean_vector<T>(-a.c[1] * b.c[0] - a.c[2] * b.c[1],
+                                   a.c[0] * b.c[0] - a.c[2] * b.c[2],
+                                   a.c[0] * b.c[1] + a.c[1] * b.c[2]);
+}
+
+// lc(dual_plane, point_pair) -> dual_sphere: 16 mul, 11 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> lc(const basic_dual_plane<T>& a,
+                                             const basic_point_pair<T>& b) {
+  return basic_dual_sphere<T>(
+      -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2],
+      -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[0],
+      a.c[0] * b.c[4] - a.c[2] * b.c[7] - a.c[3] * b.c[1],
+      a.c[0] * b.c[5] + a.c[1] * b.c[7] - a.c[3] * b.c[2],
+      a.c[0] * b.c[6] + a.c[1] * b.c[8] + a.c[2] * b.c[9] - a.c[3] * b.c[3]);
+}
+
+// lc(dual_plane, dual_line) -> dual_plane: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_dual_plane<T>& a,
+                                            const basic_dual_line<T>& b) {
+  return basic_dual_plane<T>(-a.c[1] * b.c[0] - a.c[2] * b.c[1], a.c[0] * b.c[0] - a.c[2] * b.c[2],
+                             a.c[0] * b.c[1] + a.c[1] * b.c[2],
+                             a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5]);
+}
+
+// lc(dual_plane, line) -> flat_point: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> lc(const basic_dual_plane<T>& a, const basic_line<T>& b) {
+  return basic_flat_point<T>(-a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[3],
+                             a.c[0] * b.c[0] - a.c[2] * b.c[2] - a.c[3] * b.c[4],
+                             a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[5],
+                             -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5]);
+}
+
+// lc(dual_plane, circle) -> point_pair: 24 mul, 14 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> lc(const basic_dual_plane<T>& a,
+                                            const basic_circle<T>& b) {
+  return basic_point_pair<T>(
+      a.c[1] * b.c[0] + a.c[2] * b.c[1], -a.c[0] * b.c[0] + a.c[2] * b.c[2],
+      -a.c[0] * b.c[1] - a.c[1] * b.c[2], -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5],
+      a.c[2] * b.c[6] - a.c[3] * b.c[0], -a.c[1] * b.c[6] - a.c[3] * b.c[1],
+      -a.c[1] * b.c[7] - a.c[2] * b.c[8] - a.c[3] * b.c[3], a.c[0] * b.c[6] - a.c[3] * b.c[2],
+      a.c[0] * b.c[7] - a.c[2] * b.c[9] - a.c[3] * b.c[4],
+      a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[3] * b.c[5]);
+}
+
+// lc(dual_plane, sphere) -> circle: 16 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> lc(const basic_dual_plane<T>& a, const basic_sphere<T>& b) {
+  return basic_circle<T>(-a.c[2] * b.c[0], a.c[1] * b.c[0], -a.c[0] * b.c[0],
+                         a.c[1] * b.c[1] + a.c[2] * b.c[2], -a.c[0] * b.c[1] + a.c[2] * b.c[3],
+                         -a.c[0] * b.c[2] - a.c[1] * b.c[3], -a.c[3] * b.c[0],
+                         a.c[2] * b.c[4] - a.c[3] * b.c[1], -a.c[1] * b.c[4] - a.c[3] * b.c[2],
+                         a.c[0] * b.c[4] - a.c[3] * b.c[3]);
+}
+
+// lc(dual_plane, plane) -> line: 12 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> lc(const basic_dual_plane<T>& a, const basic_plane<T>& b) {
+  return basic_line<T>(a.c[2] * b.c[0] - a.c[3] * b.c[1], -a.c[1] * b.c[0] - a.c[3] * b.c[2],
+                       a.c[0] * b.c[0] - a.c[3] * b.c[3], a.c[1] * b.c[1] + a.c[2] * b.c[2],
+                       -a.c[0] * b.c[1] + a.c[2] * b.c[3], -a.c[0] * b.c[2] - a.c[1] * b.c[3]);
+}
+
+// lc(dual_plane, pseudoscalar) -> plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> lc(const basic_dual_plane<T>& a,
+                                       const basic_pseudoscalar<T>& b) {
+  return basic_plane<T>(-a.c[3] * b.c[0], -a.c[2] * b.c[0], a.c[1] * b.c[0], -a.c[0] * b.c[0]);
+}
+
+// lc(dual_plane, rotor) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> lc(const basic_dual_plane<T>& a,
+                                                  const basic_rotor<T>& b) {
+  return basic_euclidean_vector<T>(-a.c[1] * b.c[1] - a.c[2] * b.c[2],
+                                   a.c[0] * b.c[1] - a.c[2] * b.c[3],
+                                   a.c[0] * b.c[2] + a.c[1] * b.c[3]);
+}
+
+// lc(dual_plane, translator) -> dual_plane: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_dual_plane<T>& a,
+                                            const basic_translator<T>& b) {
+  return basic_dual_plane<T>(T(0), T(0), T(0), a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3]);
+}
+
+// lc(dual_plane, motor) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_dual_plane<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[3] = a.c[0] * b.c[1] - a.c[2] * b.c[3];
+  r.c[4] = a.c[0] * b.c[2] + a.c[1] * b.c[3];
+  r.c[5] = a.c[0] * b.c[4] + a.c[1] * b.c[5] + a.c[2] * b.c[6];
+  r.c[23] = a.c[2] * b.c[7];
+  r.c[24] = -a.c[1] * b.c[7];
+  r.c[25] = a.c[0] * b.c[7];
+  r.bits = 0x380003cu;
+  return r;
+}
+
+// lc(euclidean_vector, normalized_point) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_euclidean_vector<T>& a, const basic_normalized_point<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// lc(euclidean_vector, dual_sphere) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_euclidean_vector<T>& a, const basic_dual_sphere<T>& b) {
+  return a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3];
+}
+
+// lc(euclidean_vector, dual_plane) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_euclidean_vector<T>& a, const basic_dual_plane<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// lc(euclidean_vector, euclidean_vector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_euclidean_vector<T>& a, const basic_euclidean_vector<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// lc(euclidean_vector, flat_point) -> dual_plane: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_euclidean_vector<T>& a,
+                                            const basic_flat_point<T>& b) {
+  return basic_dual_plane<T>(T(0), T(0), T(0), a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2]);
+}
+
+// lc(euclidean_vector, euclidean_bivector) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> lc(const basic_euclidean_vector<T>& a,
+                                                  const basic_euclidean_bivector<T>& b) {
+  return basic_euclidean_vector<T>(-a.c[1] * b.c[0] - a.c[2] * b.c[1],
+                                   a.c[0] * b.c[0] - a.c[2] * b.c[2],
+                                   a.c[0] * b.c[1] + a.c[1] * b.c[2]);
+}
+
+// lc(euclidean_vector, point_pair) -> dual_sphere: 12 mul, 7 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> lc(const basic_euclidean_vector<T>& a,
+                                             const basic_point_pair<T>& b) {
+  return basic_dual_sphere<T>(-a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2],
+                              -a.c[1] * b.c[4] - a.c[2] * b.c[5], a.c[0] * b.c[4] - a.c[2] * b.c[7],
+                              a.c[0] * b.c[5] + a.c[1] * b.c[7],
+                              a.c[0] * b.c[6] + a.c[1] * b.c[8] + a.c[2] * b.c[9]);
+}
+
+// lc(euclidean_vector, dual_line) -> dual_plane: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_euclidean_vector<T>& a,
+                                            const basic_dual_line<T>& b) {
+  return basic_dual_plane<T>(-a.c[1] * b.c[0] - a.c[2] * b.c[1], a.c[0] * b.c[0] - a.c[2] * b.c[2],
+                             a.c[0] * b.c[1] + a.c[1] * b.c[2],
+                             a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5]);
+}
+
+// lc(euclidean_vector, line) -> flat_point: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> lc(const basic_euclidean_vector<T>& a,
+                                            const basic_line<T>& b) {
+  return basic_flat_point<T>(-a.c[1] * b.c[0] - a.c[2] * b.c[1], a.c[0] * b.c[0] - a.c[2] * b.c[2],
+                             a.c[0] * b.c[1] + a.c[1] * b.c[2],
+                             -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5]);
+}
+
+// lc(euclidean_vector, circle) -> point_pair: 18 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> lc(const basic_euclidean_vector<T>& a,
+                                            const basic_circle<T>& b) {
+  return basic_point_pair<T>(a.c[1] * b.c[0] + a.c[2] * b.c[1], -a.c[0] * b.c[0] + a.c[2] * b.c[2],
+                             -a.c[0] * b.c[1] - a.c[1] * b.c[2],
+                             -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5], a.c[2] * b.c[6],
+                             -a.c[1] * b.c[6], -a.c[1] * b.c[7] - a.c[2] * b.c[8], a.c[0] * b.c[6],
+                             a.c[0] * b.c[7] - a.c[2] * b.c[9], a.c[0] * b.c[8] + a.c[1] * b.c[9]);
+}
+
+// lc(euclidean_vector, sphere) -> circle: 12 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> lc(const basic_euclidean_vector<T>& a,
+                                        const basic_sphere<T>& b) {
+  return basic_circle<T>(-a.c[2] * b.c[0], a.c[1] * b.c[0], -a.c[0] * b.c[0],
+                         a.c[1] * b.c[1] + a.c[2] * b.c[2], -a.c[0] * b.c[1] + a.c[2] * b.c[3],
+                         -a.c[0] * b.c[2] - a.c[1] * b.c[3], T(0), a.c[2] * b.c[4],
+                         -a.c[1] * b.c[4], a.c[0] * b.c[4]);
+}
+
+// lc(euclidean_vector, plane) -> line: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> lc(const basic_euclidean_vector<T>& a, const basic_plane<T>& b) {
+  return basic_line<T>(a.c[2] * b.c[0], -a.c[1] * b.c[0], a.c[0] * b.c[0],
+                       a.c[1] * b.c[1] + a.c[2] * b.c[2], -a.c[0] * b.c[1] + a.c[2] * b.c[3],
+                       -a.c[0] * b.c[2] - a.c[1] * b.c[3]);
+}
+
+// lc(euclidean_vector, pseudoscalar) -> plane: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> lc(const basic_euclidean_vector<T>& a,
+                                       const basic_pseudoscalar<T>& b) {
+  return basic_plane<T>(T(0), -a.c[2] * b.c[0], a.c[1] * b.c[0], -a.c[0] * b.c[0]);
+}
+
+// lc(euclidean_vector, rotor) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> lc(const basic_euclidean_vector<T>& a,
+                                                  const basic_rotor<T>& b) {
+  return basic_euclidean_vector<T>(-a.c[1] * b.c[1] - a.c[2] * b.c[2],
+                                   a.c[0] * b.c[1] - a.c[2] * b.c[3],
+                                   a.c[0] * b.c[2] + a.c[1] * b.c[3]);
+}
+
+// lc(euclidean_vector, translator) -> dual_plane: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_euclidean_vector<T>& a,
+                                            const basic_translator<T>& b) {
+  return basic_dual_plane<T>(T(0), T(0), T(0), a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3]);
+}
+
+// lc(euclidean_vector, motor) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_euclidean_vector<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[3] = a.c[0] * b.c[1] - a.c[2] * b.c[3];
+  r.c[4] = a.c[0] * b.c[2] + a.c[1] * b.c[3];
+  r.c[5] = a.c[0] * b.c[4] + a.c[1] * b.c[5] + a.c[2] * b.c[6];
+  r.c[23] = a.c[2] * b.c[7];
+  r.c[24] = -a.c[1] * b.c[7];
+  r.c[25] = a.c[0] * b.c[7];
+  r.bits = 0x380003cu;
+  return r;
+}
+
+// lc(flat_point, flat_point) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_flat_point<T>& a, const basic_flat_point<T>& b) {
+  return a.c[3] * b.c[3];
+}
+
+// lc(flat_point, point_pair) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_flat_point<T>& a, const basic_point_pair<T>& b) {
+  return -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[3];
+}
+
+// lc(flat_point, line) -> dual_plane: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_flat_point<T>& a, const basic_line<T>& b) {
+  return basic_dual_plane<T>(-a.c[3] * b.c[3], -a.c[3] * b.c[4], -a.c[3] * b.c[5],
+                             -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5]);
+}
+
+// lc(flat_point, circle) -> dual_plane: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_flat_point<T>& a,
+                                            const basic_circle<T>& b) {
+  return basic_dual_plane<T>(a.c[1] * b.c[0] + a.c[2] * b.c[1] - a.c[3] * b.c[3],
+                             -a.c[0] * b.c[0] + a.c[2] * b.c[2] - a.c[3] * b.c[4],
+                             -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[3] * b.c[5],
+                             -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5]);
+}
+
+// lc(flat_point, sphere) -> dual_line: 12 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> lc(const basic_flat_point<T>& a, const basic_sphere<T>& b) {
+  return basic_dual_line<T>(-a.c[2] * b.c[0] + a.c[3] * b.c[1], a.c[1] * b.c[0] + a.c[3] * b.c[2],
+                            -a.c[0] * b.c[0] + a.c[3] * b.c[3], a.c[1] * b.c[1] + a.c[2] * b.c[2],
+                            -a.c[0] * b.c[1] + a.c[2] * b.c[3], -a.c[0] * b.c[2] - a.c[1] * b.c[3]);
+}
+
+// lc(flat_point, plane) -> dual_line: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> lc(const basic_flat_point<T>& a, const basic_plane<T>& b) {
+  return basic_dual_line<T>(a.c[3] * b.c[1], a.c[3] * b.c[2], a.c[3] * b.c[3],
+                            a.c[1] * b.c[1] + a.c[2] * b.c[2], -a.c[0] * b.c[1] + a.c[2] * b.c[3],
+                            -a.c[0] * b.c[2] - a.c[1] * b.c[3]);
+}
+
+// lc(flat_point, pseudoscalar) -> circle: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> lc(const basic_flat_point<T>& a,
+                                        const basic_pseudoscalar<T>& b) {
+  return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0), -a.c[3] * b.c[0], -a.c[2] * b.c[0],
+                         a.c[1] * b.c[0], -a.c[0] * b.c[0]);
+}
+
+// lc(euclidean_bivector, euclidean_bivector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_euclidean_bivector<T>& a,
+                          const basic_euclidean_bivector<T>& b) {
+  return -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+}
+
+// lc(euclidean_bivector, point_pair) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_euclidean_bivector<T>& a, const basic_point_pair<T>& b) {
+  return -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[7];
+}
+
+// lc(euclidean_bivector, dual_line) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_euclidean_bivector<T>& a, const basic_dual_line<T>& b) {
+  return -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+}
+
+// lc(euclidean_bivector, line) -> dual_plane: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_euclidean_bivector<T>& a,
+                                            const basic_line<T>& b) {
+  return basic_dual_plane<T>(T(0), T(0), T(0),
+                             -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2]);
+}
+
+// lc(euclidean_bivector, circle) -> dual_sphere: 9 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> lc(const basic_euclidean_bivector<T>& a,
+                                             const basic_circle<T>& b) {
+  return basic_dual_sphere<T>(-a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2],
+                              -a.c[2] * b.c[6], a.c[1] * b.c[6], -a.c[0] * b.c[6],
+                              -a.c[0] * b.c[7] - a.c[1] * b.c[8] - a.c[2] * b.c[9]);
+}
+
+// lc(euclidean_bivector, sphere) -> point_pair: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> lc(const basic_euclidean_bivector<T>& a,
+                                            const basic_sphere<T>& b) {
+  return basic_point_pair<T>(-a.c[2] * b.c[0], a.c[1] * b.c[0], -a.c[0] * b.c[0],
+                             -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3], T(0), T(0),
+                             -a.c[2] * b.c[4], T(0), a.c[1] * b.c[4], -a.c[0] * b.c[4]);
+}
+
+// lc(euclidean_bivector, plane) -> flat_point: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> lc(const basic_euclidean_bivector<T>& a,
+                                            const basic_plane<T>& b) {
+  return basic_flat_point<T>(-a.c[2] * b.c[0], a.c[1] * b.c[0], -a.c[0] * b.c[0],
+                             -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3]);
+}
+
+// lc(euclidean_bivector, pseudoscalar) -> line: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> lc(const basic_euclidean_bivector<T>& a,
+                                      const basic_pseudoscalar<T>& b) {
+  return basic_line<T>(T(0), T(0), T(0), -a.c[2] * b.c[0], a.c[1] * b.c[0], -a.c[0] * b.c[0]);
+}
+
+// lc(euclidean_bivector, rotor) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_euclidean_bivector<T>& a, const basic_rotor<T>& b) {
+  return -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+}
+
+// lc(euclidean_bivector, motor) -> translator: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> lc(const basic_euclidean_bivector<T>& a,
+                                            const basic_motor<T>& b) {
+  return basic_translator<T>(-a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3], -a.c[2] * b.c[7],
+                             a.c[1] * b.c[7], -a.c[0] * b.c[7]);
+}
+
+// lc(point_pair, flat_point) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_point_pair<T>& a, const basic_flat_point<T>& b) {
+  return -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[3];
+}
+
+// lc(point_pair, euclidean_bivector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_point_pair<T>& a, const basic_euclidean_bivector<T>& b) {
+  return -a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[7] * b.c[2];
+}
+
+// lc(point_pair, dual_line) -> scalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_point_pair<T>& a, const basic_dual_line<T>& b) {
+  return -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[4] * b.c[0] - a.c[5] * b.c[1] -
+         a.c[7] * b.c[2];
+}
+
+// lc(point_pair, line) -> dual_sphere: 18 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> lc(const basic_point_pair<T>& a, const basic_line<T>& b) {
+  return basic_dual_sphere<T>(-a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5],
+                              -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[3],
+                              a.c[0] * b.c[0] - a.c[2] * b.c[2] - a.c[3] * b.c[4],
+                              a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[5],
+                              -a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[6] * b.c[3] -
+                                  a.c[7] * b.c[2] - a.c[8] * b.c[4] - a.c[9] * b.c[5]);
+}
+
+// lc(point_pair, circle) -> dual_sphere: 30 mul, 25 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> lc(const basic_point_pair<T>& a,
+                                             const basic_circle<T>& b) {
+  return basic_dual_sphere<T>(-a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5] -
+                                  a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[7] * b.c[2],
+                              -a.c[1] * b.c[7] - a.c[2] * b.c[8] - a.c[3] * b.c[3] -
+                                  a.c[7] * b.c[6] + a.c[8] * b.c[0] + a.c[9] * b.c[1],
+                              a.c[0] * b.c[7] - a.c[2] * b.c[9] - a.c[3] * b.c[4] +
+                                  a.c[5] * b.c[6] - a.c[6] * b.c[0] + a.c[9] * b.c[2],
+                              a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[3] * b.c[5] -
+                                  a.c[4] * b.c[6] - a.c[6] * b.c[1] - a.c[8] * b.c[2],
+                              -a.c[4] * b.c[7] - a.c[5] * b.c[8] - a.c[6] * b.c[3] -
+                                  a.c[7] * b.c[9] - a.c[8] * b.c[4] - a.c[9] * b.c[5]);
+}
+
+// lc(point_pair, sphere) -> point_pair: 30 mul, 20 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> lc(const basic_point_pair<T>& a,
+                                            const basic_sphere<T>& b) {
+  return basic_point_pair<T>(-a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[7] * b.c[0],
+                             a.c[0] * b.c[1] - a.c[2] * b.c[3] + a.c[5] * b.c[0],
+                             a.c[0] * b.c[2] + a.c[1] * b.c[3] - a.c[4] * b.c[0],
+                             -a.c[4] * b.c[1] - a.c[5] * b.c[2] - a.c[7] * b.c[3],
+                             -a.c[2] * b.c[4] + a.c[3] * b.c[1] - a.c[9] * b.c[0],
+                             a.c[1] * b.c[4] + a.c[3] * b.c[2] + a.c[8] * b.c[0],
+                             -a.c[7] * b.c[4] + a.c[8] * b.c[1] + a.c[9] * b.c[2],
+                             -a.c[0] * b.c[4] + a.c[3] * b.c[3] - a.c[6] * b.c[0],
+                             a.c[5] * b.c[4] - a.c[6] * b.c[1] + a.c[9] * b.c[3],
+                             -a.c[4] * b.c[4] - a.c[6] * b.c[2] - a.c[8] * b.c[3]);
+}
+
+// lc(point_pair, plane) -> point_pair: 24 mul, 14 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> lc(const basic_point_pair<T>& a, const basic_plane<T>& b) {
+  return basic_point_pair<T>(
+      -a.c[1] * b.c[1] - a.c[2] * b.c[2], a.c[0] * b.c[1] - a.c[2] * b.c[3],
+      a.c[0] * b.c[2] + a.c[1] * b.c[3], -a.c[4] * b.c[1] - a.c[5] * b.c[2] - a.c[7] * b.c[3],
+      -a.c[2] * b.c[0] + a.c[3] * b.c[1], a.c[1] * b.c[0] + a.c[3] * b.c[2],
+      -a.c[7] * b.c[0] + a.c[8] * b.c[1] + a.c[9] * b.c[2], -a.c[0] * b.c[0] + a.c[3] * b.c[3],
+      a.c[5] * b.c[0] - a.c[6] * b.c[1] + a.c[9] * b.c[3],
+      -a.c[4] * b.c[0] - a.c[6] * b.c[2] - a.c[8] * b.c[3]);
+}
+
+// lc(point_pair, pseudoscalar) -> circle: 10 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> lc(const basic_point_pair<T>& a,
+                                        const basic_pseudoscalar<T>& b) {
+  return basic_circle<T>(-a.c[2] * b.c[0], a.c[1] * b.c[0], -a.c[0] * b.c[0], -a.c[7] * b.c[0],
+                         a.c[5] * b.c[0], -a.c[4] * b.c[0], -a.c[3] * b.c[0], -a.c[9] * b.c[0],
+                         a.c[8] * b.c[0], -a.c[6] * b.c[0]);
+}
+
+// lc(point_pair, rotor) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_point_pair<T>& a, const basic_rotor<T>& b) {
+  return -a.c[4] * b.c[1] - a.c[5] * b.c[2] - a.c[7] * b.c[3];
+}
+
+// lc(point_pair, translator) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_point_pair<T>& a, const basic_translator<T>& b) {
+  return -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+}
+
+// lc(point_pair, motor) -> motor: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> lc(const basic_point_pair<T>& a, const basic_motor<T>& b) {
+  return basic_motor<T>(-a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[6] - a.c[4] * b.c[1] -
+                            a.c[5] * b.c[2] - a.c[7] * b.c[3],
+                        -a.c[2] * b.c[7], a.c[1] * b.c[7], -a.c[0] * b.c[7], -a.c[7] * b.c[7],
+                        a.c[5] * b.c[7], -a.c[4] * b.c[7], T(0));
+}
+
+// lc(dual_line, euclidean_bivector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_dual_line<T>& a, const basic_euclidean_bivector<T>& b) {
+  return -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+}
+
+// lc(dual_line, point_pair) -> scalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_dual_line<T>& a, const basic_point_pair<T>& b) {
+  return -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[7] - a.c[3] * b.c[0] - a.c[4] * b.c[1] -
+         a.c[5] * b.c[2];
+}
+
+// lc(dual_line, dual_line) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_dual_line<T>& a, const basic_dual_line<T>& b) {
+  return -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+}
+
+// lc(dual_line, line) -> dual_plane: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_dual_line<T>& a, const basic_line<T>& b) {
+  return basic_dual_plane<T>(T(0), T(0), T(0),
+                             -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] -
+                                 a.c[3] * b.c[3] - a.c[4] * b.c[4] - a.c[5] * b.c[5]);
+}
+
+// lc(dual_line, circle) -> dual_sphere: 18 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> lc(const basic_dual_line<T>& a,
+                                             const basic_circle<T>& b) {
+  return basic_dual_sphere<T>(-a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2],
+                              -a.c[2] * b.c[6] + a.c[4] * b.c[0] + a.c[5] * b.c[1],
+                              a.c[1] * b.c[6] - a.c[3] * b.c[0] + a.c[5] * b.c[2],
+                              -a.c[0] * b.c[6] - a.c[3] * b.c[1] - a.c[4] * b.c[2],
+                              -a.c[0] * b.c[7] - a.c[1] * b.c[8] - a.c[2] * b.c[9] -
+                                  a.c[3] * b.c[3] - a.c[4] * b.c[4] - a.c[5] * b.c[5]);
+}
+
+// lc(dual_line, sphere) -> point_pair: 18 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> lc(const basic_dual_line<T>& a, const basic_sphere<T>& b) {
+  return basic_point_pair<T>(-a.c[2] * b.c[0], a.c[1] * b.c[0], -a.c[0] * b.c[0],
+                             -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3], -a.c[5] * b.c[0],
+                             a.c[4] * b.c[0], -a.c[2] * b.c[4] + a.c[4] * b.c[1] + a.c[5] * b.c[2],
+                             -a.c[3] * b.c[0], a.c[1] * b.c[4] - a.c[3] * b.c[1] + a.c[5] * b.c[3],
+                             -a.c[0] * b.c[4] - a.c[3] * b.c[2] - a.c[4] * b.c[3]);
+}
+
+// lc(dual_line, plane) -> flat_point: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> lc(const basic_dual_line<T>& a, const basic_plane<T>& b) {
+  return basic_flat_point<T>(-a.c[2] * b.c[0] + a.c[4] * b.c[1] + a.c[5] * b.c[2],
+                             a.c[1] * b.c[0] - a.c[3] * b.c[1] + a.c[5] * b.c[3],
+                             -a.c[0] * b.c[0] - a.c[3] * b.c[2] - a.c[4] * b.c[3],
+                             -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3]);
+}
+
+// lc(dual_line, pseudoscalar) -> line: 6 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> lc(const basic_dual_line<T>& a, const basic_pseudoscalar<T>& b) {
+  return basic_line<T>(-a.c[5] * b.c[0], a.c[4] * b.c[0], -a.c[3] * b.c[0], -a.c[2] * b.c[0],
+                       a.c[1] * b.c[0], -a.c[0] * b.c[0]);
+}
+
+// lc(dual_line, rotor) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_dual_line<T>& a, const basic_rotor<T>& b) {
+  return -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+}
+
+// lc(dual_line, motor) -> translator: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> lc(const basic_dual_line<T>& a, const basic_motor<T>& b) {
+  return basic_translator<T>(-a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3], -a.c[2] * b.c[7],
+                             a.c[1] * b.c[7], -a.c[0] * b.c[7]);
+}
+
+// lc(line, line) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_line<T>& a, const basic_line<T>& b) {
+  return a.c[3] * b.c[3] + a.c[4] * b.c[4] + a.c[5] * b.c[5];
+}
+
+// lc(line, circle) -> scalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_line<T>& a, const basic_circle<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] + a.c[4] * b.c[4] +
+         a.c[5] * b.c[5];
+}
+
+// lc(line, sphere) -> dual_plane: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_line<T>& a, const basic_sphere<T>& b) {
+  return basic_dual_plane<T>(a.c[2] * b.c[0] + a.c[4] * b.c[1] + a.c[5] * b.c[2],
+                             -a.c[1] * b.c[0] - a.c[3] * b.c[1] + a.c[5] * b.c[3],
+                             a.c[0] * b.c[0] - a.c[3] * b.c[2] - a.c[4] * b.c[3],
+                             a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3]);
+}
+
+// lc(line, plane) -> dual_plane: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_line<T>& a, const basic_plane<T>& b) {
+  return basic_dual_plane<T>(a.c[4] * b.c[1] + a.c[5] * b.c[2], -a.c[3] * b.c[1] + a.c[5] * b.c[3],
+                             -a.c[3] * b.c[2] - a.c[4] * b.c[3],
+                             a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3]);
+}
+
+// lc(line, pseudoscalar) -> dual_line: 6 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> lc(const basic_line<T>& a, const basic_pseudoscalar<T>& b) {
+  return basic_dual_line<T>(a.c[5] * b.c[0], -a.c[4] * b.c[0], a.c[3] * b.c[0], a.c[2] * b.c[0],
+                            -a.c[1] * b.c[0], a.c[0] * b.c[0]);
+}
+
+// lc(circle, line) -> scalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_circle<T>& a, const basic_line<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] + a.c[4] * b.c[4] +
+         a.c[5] * b.c[5];
+}
+
+// lc(circle, circle) -> scalar: 10 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_circle<T>& a, const basic_circle<T>& b) {
+  return a.c[0] * b.c[7] + a.c[1] * b.c[8] + a.c[2] * b.c[9] + a.c[3] * b.c[3] + a.c[4] * b.c[4] +
+         a.c[5] * b.c[5] - a.c[6] * b.c[6] + a.c[7] * b.c[0] + a.c[8] * b.c[1] + a.c[9] * b.c[2];
+}
+
+// lc(circle, sphere) -> dual_sphere: 20 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> lc(const basic_circle<T>& a, const basic_sphere<T>& b) {
+  return basic_dual_sphere<T>(
+      -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3] + a.c[6] * b.c[0],
+      -a.c[2] * b.c[4] + a.c[4] * b.c[1] + a.c[5] * b.c[2] + a.c[9] * b.c[0],
+      a.c[1] * b.c[4] - a.c[3] * b.c[1] + a.c[5] * b.c[3] - a.c[8] * b.c[0],
+      -a.c[0] * b.c[4] - a.c[3] * b.c[2] - a.c[4] * b.c[3] + a.c[7] * b.c[0],
+      -a.c[6] * b.c[4] + a.c[7] * b.c[1] + a.c[8] * b.c[2] + a.c[9] * b.c[3]);
+}
+
+// lc(circle, plane) -> dual_sphere: 16 mul, 11 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> lc(const basic_circle<T>& a, const basic_plane<T>& b) {
+  return basic_dual_sphere<T>(
+      -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3],
+      -a.c[2] * b.c[0] + a.c[4] * b.c[1] + a.c[5] * b.c[2],
+      a.c[1] * b.c[0] - a.c[3] * b.c[1] + a.c[5] * b.c[3],
+      -a.c[0] * b.c[0] - a.c[3] * b.c[2] - a.c[4] * b.c[3],
+      -a.c[6] * b.c[0] + a.c[7] * b.c[1] + a.c[8] * b.c[2] + a.c[9] * b.c[3]);
+}
+
+// lc(circle, pseudoscalar) -> point_pair: 10 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> lc(const basic_circle<T>& a,
+                                            const basic_pseudoscalar<T>& b) {
+  return basic_point_pair<T>(a.c[2] * b.c[0], -a.c[1] * b.c[0], a.c[0] * b.c[0], a.c[6] * b.c[0],
+                             a.c[5] * b.c[0], -a.c[4] * b.c[0], a.c[9] * b.c[0], a.c[3] * b.c[0],
+                             -a.c[8] * b.c[0], a.c[7] * b.c[0]);
+}
+
+// lc(circle, motor) -> dual_plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_circle<T>& a, const basic_motor<T>& b) {
+  return basic_dual_plane<T>(-a.c[2] * b.c[7], a.c[1] * b.c[7], -a.c[0] * b.c[7], -a.c[6] * b.c[7]);
+}
+
+// lc(sphere, sphere) -> scalar: 5 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_sphere<T>& a, const basic_sphere<T>& b) {
+  return a.c[0] * b.c[4] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3] + a.c[4] * b.c[0];
+}
+
+// lc(sphere, plane) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_sphere<T>& a, const basic_plane<T>& b) {
+  return a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+}
+
+// lc(sphere, pseudoscalar) -> dual_sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> lc(const basic_sphere<T>& a,
+                                             const basic_pseudoscalar<T>& b) {
+  return basic_dual_sphere<T>(a.c[0] * b.c[0], a.c[3] * b.c[0], -a.c[2] * b.c[0], a.c[1] * b.c[0],
+                              a.c[4] * b.c[0]);
+}
+
+// lc(sphere, motor) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_sphere<T>& a, const basic_motor<T>& b) {
+  return a.c[0] * b.c[7];
+}
+
+// lc(plane, sphere) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_plane<T>& a, const basic_sphere<T>& b) {
+  return a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+}
+
+// lc(plane, plane) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_plane<T>& a, const basic_plane<T>& b) {
+  return -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+}
+
+// lc(plane, pseudoscalar) -> dual_plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_plane<T>& a,
+                                            const basic_pseudoscalar<T>& b) {
+  return basic_dual_plane<T>(a.c[3] * b.c[0], -a.c[2] * b.c[0], a.c[1] * b.c[0], a.c[0] * b.c[0]);
+}
+
+// lc(pseudoscalar, pseudoscalar) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_pseudoscalar<T>& a, const basic_pseudoscalar<T>& b) {
+  return -a.c[0] * b.c[0];
+}
+
+// lc(rotor, normalized_point) -> dual_sphere: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> lc(const basic_rotor<T>& a,
+                                             const basic_normalized_point<T>& b) {
+  return basic_dual_sphere<T>(a.c[0], a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2],
+                              a.c[0] * b.c[3]);
+}
+
+// lc(rotor, dual_sphere) -> dual_sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> lc(const basic_rotor<T>& a,
+                                             const basic_dual_sphere<T>& b) {
+  return basic_dual_sphere<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                              a.c[0] * b.c[4]);
+}
+
+// lc(rotor, dual_plane) -> dual_plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_rotor<T>& a, const basic_dual_plane<T>& b) {
+  return basic_dual_plane<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// lc(rotor, euclidean_vector) -> euclidean_vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> lc(const basic_rotor<T>& a,
+                                                  const basic_euclidean_vector<T>& b) {
+  return basic_euclidean_vector<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// lc(rotor, flat_point) -> flat_point: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> lc(const basic_rotor<T>& a, const basic_flat_point<T>& b) {
+  return basic_flat_point<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// lc(rotor, euclidean_bivector) -> rotor: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> lc(const basic_rotor<T>& a,
+                                       const basic_euclidean_bivector<T>& b) {
+  return basic_rotor<T>(-a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2], a.c[0] * b.c[0],
+                        a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// lc(rotor, point_pair) -> mv: 13 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_rotor<T>& a, const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[7];
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[0] * b.c[1];
+  r.c[8] = a.c[0] * b.c[2];
+  r.c[9] = a.c[0] * b.c[3];
+  r.c[10] = a.c[0] * b.c[4];
+  r.c[11] = a.c[0] * b.c[5];
+  r.c[12] = a.c[0] * b.c[6];
+  r.c[13] = a.c[0] * b.c[7];
+  r.c[14] = a.c[0] * b.c[8];
+  r.c[15] = a.c[0] * b.c[9];
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// lc(rotor, dual_line) -> motor: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> lc(const basic_rotor<T>& a, const basic_dual_line<T>& b) {
+  return basic_motor<T>(-a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2], a.c[0] * b.c[0],
+                        a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3], a.c[0] * b.c[4],
+                        a.c[0] * b.c[5], T(0));
+}
+
+// lc(rotor, line) -> mv: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_rotor<T>& a, const basic_line<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[18] = a.c[0] * b.c[3];
+  r.c[20] = a.c[0] * b.c[4];
+  r.c[21] = a.c[0] * b.c[5];
+  r.c[23] = a.c[0] * b.c[0];
+  r.c[24] = a.c[0] * b.c[1];
+  r.c[25] = a.c[0] * b.c[2];
+  r.bits = 0x3b40020u;
+  return r;
+}
+
+// lc(rotor, circle) -> mv: 19 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_rotor<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[2] = -a.c[3] * b.c[6];
+  r.c[3] = a.c[2] * b.c[6];
+  r.c[4] = -a.c[1] * b.c[6];
+  r.c[5] = -a.c[1] * b.c[7] - a.c[2] * b.c[8] - a.c[3] * b.c[9];
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[0] * b.c[1];
+  r.c[18] = a.c[0] * b.c[3];
+  r.c[19] = a.c[0] * b.c[2];
+  r.c[20] = a.c[0] * b.c[4];
+  r.c[21] = a.c[0] * b.c[5];
+  r.c[22] = a.c[0] * b.c[6];
+  r.c[23] = a.c[0] * b.c[7];
+  r.c[24] = a.c[0] * b.c[8];
+  r.c[25] = a.c[0] * b.c[9];
+  r.bits = 0x3ff003eu;
+  return r;
+}
+
+// lc(rotor, sphere) -> mv: 14 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_rotor<T>& a, const basic_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = -a.c[3] * b.c[0];
+  r.c[7] = a.c[2] * b.c[0];
+  r.c[8] = -a.c[1] * b.c[0];
+  r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  r.c[12] = -a.c[3] * b.c[4];
+  r.c[14] = a.c[2] * b.c[4];
+  r.c[15] = -a.c[1] * b.c[4];
+  r.c[26] = a.c[0] * b.c[0];
+  r.c[27] = a.c[0] * b.c[1];
+  r.c[28] = a.c[0] * b.c[2];
+  r.c[29] = a.c[0] * b.c[3];
+  r.c[30] = a.c[0] * b.c[4];
+  r.bits = 0x7c00d3c0u;
+  return r;
+}
+
+// lc(rotor, plane) -> mv: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_rotor<T>& a, const basic_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  r.c[12] = -a.c[3] * b.c[0];
+  r.c[14] = a.c[2] * b.c[0];
+  r.c[15] = -a.c[1] * b.c[0];
+  r.c[27] = a.c[0] * b.c[1];
+  r.c[28] = a.c[0] * b.c[2];
+  r.c[29] = a.c[0] * b.c[3];
+  r.c[30] = a.c[0] * b.c[0];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// lc(rotor, pseudoscalar) -> mv: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_rotor<T>& a, const basic_pseudoscalar<T>& b) {
+  basic_mv<T> r;
+  r.c[18] = -a.c[3] * b.c[0];
+  r.c[20] = a.c[2] * b.c[0];
+  r.c[21] = -a.c[1] * b.c[0];
+  r.c[31] = a.c[0] * b.c[0];
+  r.bits = 0x80340000u;
+  return r;
+}
+
+// lc(rotor, rotor) -> rotor: 7 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> lc(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3],
+                        a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// lc(rotor, translator) -> translator: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> lc(const basic_rotor<T>& a, const basic_translator<T>& b) {
+  return basic_translator<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// lc(rotor, motor) -> motor: 14 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> lc(const basic_rotor<T>& a, const basic_motor<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3],
+                        a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                        a.c[0] * b.c[4] - a.c[3] * b.c[7], a.c[0] * b.c[5] + a.c[2] * b.c[7],
+                        a.c[0] * b.c[6] - a.c[1] * b.c[7], a.c[0] * b.c[7]);
+}
+
+// lc(translator, normalized_point) -> dual_sphere: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> lc(const basic_translator<T>& a,
+                                             const basic_normalized_point<T>& b) {
+  return basic_dual_sphere<T>(a.c[0], a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2],
+                              a.c[0] * b.c[3]);
+}
+
+// lc(translator, dual_sphere) -> dual_sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> lc(const basic_translator<T>& a,
+                                             const basic_dual_sphere<T>& b) {
+  return basic_dual_sphere<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                              a.c[0] * b.c[4]);
+}
+
+// lc(translator, dual_plane) -> dual_plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_translator<T>& a,
+                                            const basic_dual_plane<T>& b) {
+  return basic_dual_plane<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// lc(translator, euclidean_vector) -> euclidean_vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> lc(const basic_translator<T>& a,
+                                                  const basic_euclidean_vector<T>& b) {
+  return basic_euclidean_vector<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// lc(translator, flat_point) -> flat_point: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> lc(const basic_translator<T>& a,
+                                            const basic_flat_point<T>& b) {
+  return basic_flat_point<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// lc(translator, euclidean_bivector) -> euclidean_bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> lc(const basic_translator<T>& a,
+                                                    const basic_euclidean_bivector<T>& b) {
+  return basic_euclidean_bivector<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// lc(translator, point_pair) -> mv: 13 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_translator<T>& a, const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[0] * b.c[1];
+  r.c[8] = a.c[0] * b.c[2];
+  r.c[9] = a.c[0] * b.c[3];
+  r.c[10] = a.c[0] * b.c[4];
+  r.c[11] = a.c[0] * b.c[5];
+  r.c[12] = a.c[0] * b.c[6];
+  r.c[13] = a.c[0] * b.c[7];
+  r.c[14] = a.c[0] * b.c[8];
+  r.c[15] = a.c[0] * b.c[9];
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// lc(translator, dual_line) -> dual_line: 6 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> lc(const basic_translator<T>& a,
+                                           const basic_dual_line<T>& b) {
+  return basic_dual_line<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                            a.c[0] * b.c[4], a.c[0] * b.c[5]);
+}
+
+// lc(translator, line) -> mv: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_translator<T>& a, const basic_line<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = -a.c[1] * b.c[3] - a.c[2] * b.c[4] - a.c[3] * b.c[5];
+  r.c[18] = a.c[0] * b.c[3];
+  r.c[20] = a.c[0] * b.c[4];
+  r.c[21] = a.c[0] * b.c[5];
+  r.c[23] = a.c[0] * b.c[0];
+  r.c[24] = a.c[0] * b.c[1];
+  r.c[25] = a.c[0] * b.c[2];
+  r.bits = 0x3b40020u;
+  return r;
+}
+
+// lc(translator, circle) -> mv: 19 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_translator<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  r.c[3] = -a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  r.c[4] = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[5] = -a.c[1] * b.c[3] - a.c[2] * b.c[4] - a.c[3] * b.c[5];
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[0] * b.c[1];
+  r.c[18] = a.c[0] * b.c[3];
+  r.c[19] = a.c[0] * b.c[2];
+  r.c[20] = a.c[0] * b.c[4];
+  r.c[21] = a.c[0] * b.c[5];
+  r.c[22] = a.c[0] * b.c[6];
+  r.c[23] = a.c[0] * b.c[7];
+  r.c[24] = a.c[0] * b.c[8];
+  r.c[25] = a.c[0] * b.c[9];
+  r.bits = 0x3ff003cu;
+  return r;
+}
+
+// lc(translator, sphere) -> mv: 14 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_translator<T>& a, const basic_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[10] = -a.c[3] * b.c[0];
+  r.c[11] = a.c[2] * b.c[0];
+  r.c[12] = a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  r.c[13] = -a.c[1] * b.c[0];
+  r.c[14] = -a.c[1] * b.c[1] + a.c[3] * b.c[3];
+  r.c[15] = -a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  r.c[26] = a.c[0] * b.c[0];
+  r.c[27] = a.c[0] * b.c[1];
+  r.c[28] = a.c[0] * b.c[2];
+  r.c[29] = a.c[0] * b.c[3];
+  r.c[30] = a.c[0] * b.c[4];
+  r.bits = 0x7c00fc00u;
+  return r;
+}
+
+// lc(translator, plane) -> mv: 10 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_translator<T>& a, const basic_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[12] = a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  r.c[14] = -a.c[1] * b.c[1] + a.c[3] * b.c[3];
+  r.c[15] = -a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  r.c[27] = a.c[0] * b.c[1];
+  r.c[28] = a.c[0] * b.c[2];
+  r.c[29] = a.c[0] * b.c[3];
+  r.c[30] = a.c[0] * b.c[0];
+  r.bits = 0x7800d000u;
+  return r;
+}
+
+// lc(translator, pseudoscalar) -> mv: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_translator<T>& a, const basic_pseudoscalar<T>& b) {
+  basic_mv<T> r;
+  r.c[23] = -a.c[3] * b.c[0];
+  r.c[24] = a.c[2] * b.c[0];
+  r.c[25] = -a.c[1] * b.c[0];
+  r.c[31] = a.c[0] * b.c[0];
+  r.bits = 0x83800000u;
+  return r;
+}
+
+// lc(translator, rotor) -> rotor: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> lc(const basic_translator<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// lc(translator, translator) -> translator: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> lc(const basic_translator<T>& a,
+                                            const basic_translator<T>& b) {
+  return basic_translator<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// lc(translator, motor) -> motor: 8 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> lc(const basic_translator<T>& a, const basic_motor<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                        a.c[0] * b.c[4], a.c[0] * b.c[5], a.c[0] * b.c[6], a.c[0] * b.c[7]);
+}
+
+// lc(motor, normalized_point) -> dual_sphere: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> lc(const basic_motor<T>& a,
+                                             const basic_normalized_point<T>& b) {
+  return basic_dual_sphere<T>(a.c[0], a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2],
+                              a.c[0] * b.c[3]);
+}
+
+// lc(motor, dual_sphere) -> dual_sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> lc(const basic_motor<T>& a,
+                                             const basic_dual_sphere<T>& b) {
+  return basic_dual_sphere<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                              a.c[0] * b.c[4]);
+}
+
+// lc(motor, dual_plane) -> dual_plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_motor<T>& a, const basic_dual_plane<T>& b) {
+  return basic_dual_plane<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// lc(motor, euclidean_vector) -> euclidean_vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> lc(const basic_motor<T>& a,
+                                                  const basic_euclidean_vector<T>& b) {
+  return basic_euclidean_vector<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// lc(motor, flat_point) -> flat_point: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> lc(const basic_motor<T>& a, const basic_flat_point<T>& b) {
+  return basic_flat_point<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// lc(motor, euclidean_bivector) -> rotor: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> lc(const basic_motor<T>& a,
+                                       const basic_euclidean_bivector<T>& b) {
+  return basic_rotor<T>(-a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2], a.c[0] * b.c[0],
+                        a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// lc(motor, point_pair) -> mv: 16 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_motor<T>& a, const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[7] - a.c[4] * b.c[0] -
+           a.c[5] * b.c[1] - a.c[6] * b.c[2];
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[0] * b.c[1];
+  r.c[8] = a.c[0] * b.c[2];
+  r.c[9] = a.c[0] * b.c[3];
+  r.c[10] = a.c[0] * b.c[4];
+  r.c[11] = a.c[0] * b.c[5];
+  r.c[12] = a.c[0] * b.c[6];
+  r.c[13] = a.c[0] * b.c[7];
+  r.c[14] = a.c[0] * b.c[8];
+  r.c[15] = a.c[0] * b.c[9];
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// lc(motor, dual_line) -> motor: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> lc(const basic_motor<T>& a, const basic_dual_line<T>& b) {
+  return basic_motor<T>(-a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2], a.c[0] * b.c[0],
+                        a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3], a.c[0] * b.c[4],
+                        a.c[0] * b.c[5], T(0));
+}
+
+// lc(motor, line) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_motor<T>& a, const basic_line<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2] - a.c[4] * b.c[3] -
+           a.c[5] * b.c[4] - a.c[6] * b.c[5];
+  r.c[18] = a.c[0] * b.c[3];
+  r.c[20] = a.c[0] * b.c[4];
+  r.c[21] = a.c[0] * b.c[5];
+  r.c[23] = a.c[0] * b.c[0];
+  r.c[24] = a.c[0] * b.c[1];
+  r.c[25] = a.c[0] * b.c[2];
+  r.bits = 0x3b40020u;
+  return r;
+}
+
+// lc(motor, circle) -> mv: 28 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_motor<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[2] = -a.c[3] * b.c[6] + a.c[5] * b.c[0] + a.c[6] * b.c[1];
+  r.c[3] = a.c[2] * b.c[6] - a.c[4] * b.c[0] + a.c[6] * b.c[2];
+  r.c[4] = -a.c[1] * b.c[6] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  r.c[5] = -a.c[1] * b.c[7] - a.c[2] * b.c[8] - a.c[3] * b.c[9] - a.c[4] * b.c[3] -
+           a.c[5] * b.c[4] - a.c[6] * b.c[5];
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[0] * b.c[1];
+  r.c[18] = a.c[0] * b.c[3];
+  r.c[19] = a.c[0] * b.c[2];
+  r.c[20] = a.c[0] * b.c[4];
+  r.c[21] = a.c[0] * b.c[5];
+  r.c[22] = a.c[0] * b.c[6];
+  r.c[23] = a.c[0] * b.c[7];
+  r.c[24] = a.c[0] * b.c[8];
+  r.c[25] = a.c[0] * b.c[9];
+  r.bits = 0x3ff003eu;
+  return r;
+}
+
+// lc(motor, sphere) -> mv: 24 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_motor<T>& a, const basic_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = a.c[7] * b.c[0];
+  r.c[6] = -a.c[3] * b.c[0];
+  r.c[7] = a.c[2] * b.c[0];
+  r.c[8] = -a.c[1] * b.c[0];
+  r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  r.c[10] = -a.c[6] * b.c[0];
+  r.c[11] = a.c[5] * b.c[0];
+  r.c[12] = -a.c[3] * b.c[4] + a.c[5] * b.c[1] + a.c[6] * b.c[2];
+  r.c[13] = -a.c[4] * b.c[0];
+  r.c[14] = a.c[2] * b.c[4] - a.c[4] * b.c[1] + a.c[6] * b.c[3];
+  r.c[15] = -a.c[1] * b.c[4] - a.c[4] * b.c[2] - a.c[5] * b.c[3];
+  r.c[26] = a.c[0] * b.c[0];
+  r.c[27] = a.c[0] * b.c[1];
+  r.c[28] = a.c[0] * b.c[2];
+  r.c[29] = a.c[0] * b.c[3];
+  r.c[30] = a.c[0] * b.c[4];
+  r.bits = 0x7c00ffc1u;
+  return r;
+}
+
+// lc(motor, plane) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_motor<T>& a, const basic_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  r.c[12] = -a.c[3] * b.c[0] + a.c[5] * b.c[1] + a.c[6] * b.c[2];
+  r.c[14] = a.c[2] * b.c[0] - a.c[4] * b.c[1] + a.c[6] * b.c[3];
+  r.c[15] = -a.c[1] * b.c[0] - a.c[4] * b.c[2] - a.c[5] * b.c[3];
+  r.c[27] = a.c[0] * b.c[1];
+  r.c[28] = a.c[0] * b.c[2];
+  r.c[29] = a.c[0] * b.c[3];
+  r.c[30] = a.c[0] * b.c[0];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// lc(motor, pseudoscalar) -> mv: 8 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_motor<T>& a, const basic_pseudoscalar<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = a.c[7] * b.c[0];
+  r.c[18] = -a.c[3] * b.c[0];
+  r.c[20] = a.c[2] * b.c[0];
+  r.c[21] = -a.c[1] * b.c[0];
+  r.c[23] = -a.c[6] * b.c[0];
+  r.c[24] = a.c[5] * b.c[0];
+  r.c[25] = -a.c[4] * b.c[0];
+  r.c[31] = a.c[0] * b.c[0];
+  r.bits = 0x83b40020u;
+  return r;
+}
+
+// lc(motor, rotor) -> rotor: 7 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> lc(const basic_motor<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3],
+                        a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// lc(motor, translator) -> translator: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> lc(const basic_motor<T>& a, const basic_translator<T>& b) {
+  return basic_translator<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// rc(normalized_point, normalized_point) -> scalar: 3 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_normalized_point<T>& a, const basic_normalized_point<T>& b) {
+  return -a.c[3] - b.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// rc(normalized_point, dual_sphere) -> scalar: 4 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_normalized_point<T>& a, const basic_dual_sphere<T>& b) {
+  return -b.c[4] + a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] - a.c[3] * b.c[0];
+}
+
+// rc(normalized_point, dual_plane) -> scalar: 3 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_normalized_point<T>& a, const basic_dual_plane<T>& b) {
+  return -b.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// rc(normalized_point, euclidean_vector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_normalized_point<T>& a, const basic_euclidean_vector<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// rc(normalized_point, rotor) -> dual_sphere: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> rc(const basic_normalized_point<T>& a,
+                                             const basic_rotor<T>& b) {
+  return basic_dual_sphere<T>(b.c[0], a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0],
+                              a.c[3] * b.c[0]);
+}
+
+// rc(normalized_point, translator) -> dual_sphere: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> rc(const basic_normalized_point<T>& a,
+                                             const basic_translator<T>& b) {
+  return basic_dual_sphere<T>(b.c[0], a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0],
+                              a.c[3] * b.c[0]);
+}
+
+// rc(normalized_point, motor) -> dual_sphere: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> rc(const basic_normalized_point<T>& a,
+                                             const basic_motor<T>& b) {
+  return basic_dual_sphere<T>(b.c[0], a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0],
+                              a.c[3] * b.c[0]);
+}
+
+// rc(dual_sphere, normalized_point) -> scalar: 4 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_dual_sphere<T>& a, const basic_normalized_point<T>& b) {
+  return -a.c[4] - a.c[0] * b.c[3] + a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
+}
+
+// rc(dual_sphere, dual_sphere) -> scalar: 5 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
+  return -a.c[0] * b.c[4] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] - a.c[4] * b.c[0];
+}
+
+// rc(dual_sphere, dual_plane) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_dual_sphere<T>& a, const basic_dual_plane<T>& b) {
+  return -a.c[0] * b.c[3] + a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
+}
+
+// rc(dual_sphere, euclidean_vector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_dual_sphere<T>& a, const basic_euclidean_vector<T>& b) {
+  return a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
+}
+
+// rc(dual_sphere, rotor) -> dual_sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> rc(const basic_dual_sphere<T>& a,
+                                             const basic_rotor<T>& b) {
+  return basic_dual_sphere<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                              a.c[4] * b.c[0]);
+}
+
+// rc(dual_sphere, translator) -> dual_sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> rc(const basic_dual_sphere<T>& a,
+                                             const basic_translator<T>& b) {
+  return basic_dual_sphere<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                              a.c[4] * b.c[0]);
+}
+
+// rc(dual_sphere, motor) -> dual_sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> rc(const basic_dual_sphere<T>& a,
+                                             const basic_motor<T>& b) {
+  return basic_dual_sphere<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                              a.c[4] * b.c[0]);
+}
+
+// rc(dual_plane, normalized_point) -> scalar: 3 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_dual_plane<T>& a, const basic_normalized_point<T>& b) {
+  return -a.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// rc(dual_plane, dual_sphere) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_dual_plane<T>& a, const basic_dual_sphere<T>& b) {
+  return a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] - a.c[3] * b.c[0];
+}
+
+// rc(dual_plane, dual_plane) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_dual_plane<T>& a, const basic_dual_plane<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// rc(dual_plane, euclidean_vector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_dual_plane<T>& a, const basic_euclidean_vector<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// rc(dual_plane, rotor) -> dual_plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> rc(const basic_dual_plane<T>& a, const basic_rotor<T>& b) {
+  return basic_dual_plane<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// rc(dual_plane, translator) -> dual_plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> rc(const basic_dual_plane<T>& a,
+                                            const basic_translator<T>& b) {
+  return basic_dual_plane<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// rc(dual_plane, motor) -> dual_plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> rc(const basic_dual_plane<T>& a, const basic_motor<T>& b) {
+  return basic_dual_plane<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// rc(euclidean_vector, normalized_point) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_euclidean_vector<T>& a, const basic_normalized_point<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// rc(euclidean_vector, dual_sphere) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_euclidean_vector<T>& a, const basic_dual_sphere<T>& b) {
+  return a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3];
+}
+
+// rc(euclidean_vector, dual_plane) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_euclidean_vector<T>& a, const basic_dual_plane<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// rc(euclidean_vector, euclidean_vector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_euclidean_vector<T>& a, const basic_euclidean_vector<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// rc(euclidean_vector, rotor) -> euclidean_vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> rc(const basic_euclidean_vector<T>& a,
+                                                  const basic_rotor<T>& b) {
+  return basic_euclidean_vector<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// rc(euclidean_vector, translator) -> euclidean_vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> rc(const basic_euclidean_vector<T>& a,
+                                                  const basic_translator<T>& b) {
+  return basic_euclidean_vector<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// rc(euclidean_vector, motor) -> euclidean_vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> rc(const basic_euclidean_vector<T>& a,
+                                                  const basic_motor<T>& b) {
+  return basic_euclidean_vector<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// rc(flat_point, normalized_point) -> dual_sphere: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> rc(const basic_flat_point<T>& a,
+                                             const basic_normalized_point<T>& b) {
+  return basic_dual_sphere<T>(
+      -a.c[3], -a.c[0], -a.c[1], -a.c[2],
+      -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[3]);
+}
+
+// rc(flat_point, dual_sphere) -> dual_sphere: 8 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> rc(const basic_flat_point<T>& a,
+                                             const basic_dual_sphere<T>& b) {
+  return basic_dual_sphere<T>(
+      -a.c[3] * b.c[0], -a.c[0] * b.c[0], -a.c[1] * b.c[0], -a.c[2] * b.c[0],
+      -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3] + a.c[3] * b.c[4]);
+}
+
+// rc(flat_point, dual_plane) -> dual_plane: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> rc(const basic_flat_point<T>& a,
+                                            const basic_dual_plane<T>& b) {
+  return basic_dual_plane<T>(
+      T(0), T(0), T(0), -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[3]);
+}
+
+// rc(flat_point, euclidean_vector) -> dual_plane: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> rc(const basic_flat_point<T>& a,
+                                            const basic_euclidean_vector<T>& b) {
+  return basic_dual_plane<T>(T(0), T(0), T(0),
+                             -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2]);
+}
+
+// rc(flat_point, flat_point) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_flat_point<T>& a, const basic_flat_point<T>& b) {
+  return a.c[3] * b.c[3];
+}
+
+// rc(flat_point, point_pair) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_flat_point<T>& a, const basic_point_pair<T>& b) {
+  return -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[3];
+}
+
+// rc(flat_point, rotor) -> flat_point: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> rc(const basic_flat_point<T>& a, const basic_rotor<T>& b) {
+  return basic_flat_point<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// rc(flat_point, translator) -> flat_point: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> rc(const basic_flat_point<T>& a,
+                                            const basic_translator<T>& b) {
+  return basic_flat_point<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// rc(flat_point, motor) -> flat_point: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> rc(const basic_flat_point<T>& a, const basic_motor<T>& b) {
+  return basic_flat_point<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// rc(euclidean_bivector, normalized_point) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> rc(const basic_euclidean_bivector<T>& a,
+                                                  const basic_normalized_point<T>& b) {
+  return basic_euclidean_vector<T>(a.c[0] * b.c[1] + a.c[1] * b.c[2],
+                                   -a.c[0] * b.c[0] + a.c[2] * b.c[2],
+                                   -a.c[1] * b.c[0] - a.c[2] * b.c[1]);
+}
+
+// rc(euclidean_bivector, dual_sphere) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> rc(const basic_euclidean_bivector<T>& a,
+                                                  const basic_dual_sphere<T>& b) {
+  return basic_euclidean_vector<T>(a.c[0] * b.c[2] + a.c[1] * b.c[3],
+                                   -a.c[0] * b.c[1] + a.c[2] * b.c[3],
+                                   -a.c[1] * b.c[1] - a.c[2] * b.c[2]);
+}
+
+// rc(euclidean_bivector, dual_plane) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> rc(const basic_euclidean_bivector<T>& a,
+                                                  const basic_dual_plane<T>& b) {
+  return basic_euclidean_vector<T>(a.c[0] * b.c[1] + a.c[1] * b.c[2],
+                                   -a.c[0] * b.c[0] + a.c[2] * b.c[2],
+                                   -a.c[1] * b.c[0] - a.c[2] * b.c[1]);
+}
+
+// rc(euclidean_bivector, euclidean_vector) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> rc(const basic_euclidean_bivector<T>& a,
+                                                  const basic_euclidean_vector<T>& b) {
+  return basic_euclidean_vector<T>(a.c[0] * b.c[1] + a.c[1] * b.c[2],
+                                   -a.c[0] * b.c[0] + a.c[2] * b.c[2],
+                                   -a.c[1] * b.c[0] - a.c[2] * b.c[1]);
+}
+
+// rc(euclidean_bivector, euclidean_bivector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_euclidean_bivector<T>& a,
+                          const basic_euclidean_bivector<T>& b) {
+  return -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+}
+
+// rc(euclidean_bivector, point_pair) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_euclidean_bivector<T>& a, const basic_point_pair<T>& b) {
+  return -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[7];
+}
+
+// rc(euclidean_bivector, dual_line) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_euclidean_bivector<T>& a, const basic_dual_line<T>& b) {
+  return -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+}
+
+// rc(euclidean_bivector, rotor) -> rotor: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> rc(const basic_euclidean_bivector<T>& a,
+                                       const basic_rotor<T>& b) {
+  return basic_rotor<T>(-a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3], a.c[0] * b.c[0],
+                        a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// rc(euclidean_bivector, translator) -> euclidean_bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> rc(const basic_euclidean_bivector<T>& a,
+                                                    const basic_translator<T>& b) {
+  return basic_euclidean_bivector<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// rc(euclidean_bivector, motor) -> rotor: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> rc(const basic_euclidean_bivector<T>& a,
+                                       const basic_motor<T>& b) {
+  return basic_rotor<T>(-a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3], a.c[0] * b.c[0],
+                        a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// rc(point_pair, normalized_point) -> dual_sphere: 16 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> rc(const basic_point_pair<T>& a,
+                                             const basic_normalized_point<T>& b) {
+  return basic_dual_sphere<T>(
+      -a.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2],
+      -a.c[6] + a.c[0] * b.c[3] + a.c[4] * b.c[1] + a.c[5] * b.c[2],
+      -a.c[8] + a.c[1] * b.c[3] - a.c[4] * b.c[0] + a.c[7] * b.c[2],
+      -a.c[9] + a.c[2] * b.c[3] - a.c[5] * b.c[0] - a.c[7] * b.c[1],
+      a.c[3] * b.c[3] - a.c[6] * b.c[0] - a.c[8] * b.c[1] - a.c[9] * b.c[2]);
+}
+
+// rc(point_pair, dual_sphere) -> dual_sphere: 20 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> rc(const basic_point_pair<T>& a,
+                                             const basic_dual_sphere<T>& b) {
+  return basic_dual_sphere<T>(
+      a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] - a.c[3] * b.c[0],
+      a.c[0] * b.c[4] + a.c[4] * b.c[2] + a.c[5] * b.c[3] - a.c[6] * b.c[0],
+      a.c[1] * b.c[4] - a.c[4] * b.c[1] + a.c[7] * b.c[3] - a.c[8] * b.c[0],
+      a.c[2] * b.c[4] - a.c[5] * b.c[1] - a.c[7] * b.c[2] - a.c[9] * b.c[0],
+      a.c[3] * b.c[4] - a.c[6] * b.c[1] - a.c[8] * b.c[2] - a.c[9] * b.c[3]);
+}
+
+// rc(point_pair, dual_plane) -> dual_sphere: 16 mul, 11 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> rc(const basic_point_pair<T>& a,
+                                             const basic_dual_plane<T>& b) {
+  return basic_dual_sphere<T>(
+      a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2],
+      a.c[0] * b.c[3] + a.c[4] * b.c[1] + a.c[5] * b.c[2],
+      a.c[1] * b.c[3] - a.c[4] * b.c[0] + a.c[7] * b.c[2],
+      a.c[2] * b.c[3] - a.c[5] * b.c[0] - a.c[7] * b.c[1],
+      a.c[3] * b.c[3] - a.c[6] * b.c[0] - a.c[8] * b.c[1] - a.c[9] * b.c[2]);
+}
+
+// rc(point_pair, euclidean_vector) -> dual_sphere: 12 mul, 7 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> rc(const basic_point_pair<T>& a,
+                                             const basic_euclidean_vector<T>& b) {
+  return basic_dual_sphere<T>(a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2],
+                              a.c[4] * b.c[1] + a.c[5] * b.c[2], -a.c[4] * b.c[0] + a.c[7] * b.c[2],
+                              -a.c[5] * b.c[0] - a.c[7] * b.c[1],
+                              -a.c[6] * b.c[0] - a.c[8] * b.c[1] - a.c[9] * b.c[2]);
+}
+
+// rc(point_pair, flat_point) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_point_pair<T>& a, const basic_flat_point<T>& b) {
+  return -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[3];
+}
+
+// rc(point_pair, euclidean_bivector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_point_pair<T>& a, const basic_euclidean_bivector<T>& b) {
+  return -a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[7] * b.c[2];
+}
+
+// rc(point_pair, point_pair) -> scalar: 10 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
+  return -a.c[0] * b.c[6] - a.c[1] * b.c[8] - a.c[2] * b.c[9] + a.c[3] * b.c[3] - a.c[4] * b.c[4] -
+         a.c[5] * b.c[5] - a.c[6] * b.c[0] - a.c[7] * b.c[7] - a.c[8] * b.c[1] - a.c[9] * b.c[2];
+}
+
+// rc(point_pair, dual_line) -> scalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_point_pair<T>& a, const basic_dual_line<T>& b) {
+  return -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[4] * b.c[0] - a.c[5] * b.c[1] -
+         a.c[7] * b.c[2];
+}
+
+// rc(point_pair, rotor) -> mv: 13 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_point_pair<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[4] * b.c[1] - a.c[5] * b.c[2] - a.c[7] * b.c[3];
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[1] * b.c[0];
+  r.c[8] = a.c[2] * b.c[0];
+  r.c[9] = a.c[3] * b.c[0];
+  r.c[10] = a.c[4] * b.c[0];
+  r.c[11] = a.c[5] * b.c[0];
+  r.c[12] = a.c[6] * b.c[0];
+  r.c[13] = a.c[7] * b.c[0];
+  r.c[14] = a.c[8] * b.c[0];
+  r.c[15] = a.c[9] * b.c[0];
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// rc(point_pair, translator) -> mv: 13 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_point_pair<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[1] * b.c[0];
+  r.c[8] = a.c[2] * b.c[0];
+  r.c[9] = a.c[3] * b.c[0];
+  r.c[10] = a.c[4] * b.c[0];
+  r.c[11] = a.c[5] * b.c[0];
+  r.c[12] = a.c[6] * b.c[0];
+  r.c[13] = a.c[7] * b.c[0];
+  r.c[14] = a.c[8] * b.c[0];
+  r.c[15] = a.c[9] * b.c[0];
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// rc(point_pair, motor) -> mv: 16 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_point_pair<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[6] - a.c[4] * b.c[1] -
+           a.c[5] * b.c[2] - a.c[7] * b.c[3];
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[1] * b.c[0];
+  r.c[8] = a.c[2] * b.c[0];
+  r.c[9] = a.c[3] * b.c[0];
+  r.c[10] = a.c[4] * b.c[0];
+  r.c[11] = a.c[5] * b.c[0];
+  r.c[12] = a.c[6] * b.c[0];
+  r.c[13] = a.c[7] * b.c[0];
+  r.c[14] = a.c[8] * b.c[0];
+  r.c[15] = a.c[9] * b.c[0];
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// rc(dual_line, normalized_point) -> dual_plane: 9 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> rc(const basic_dual_line<T>& a,
+                                            const basic_normalized_point<T>& b) {
+  return basic_dual_plane<T>(-a.c[3] + a.c[0] * b.c[1] + a.c[1] * b.c[2],
+                             -a.c[4] - a.c[0] * b.c[0] + a.c[2] * b.c[2],
+                             -a.c[5] - a.c[1] * b.c[0] - a.c[2] * b.c[1],
+                             -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2]);
+}
+
+// rc(dual_line, dual_sphere) -> dual_plane: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> rc(const basic_dual_line<T>& a,
+                                            const basic_dual_sphere<T>& b) {
+  return basic_dual_plane<T>(a.c[0] * b.c[2] + a.c[1] * b.c[3] - a.c[3] * b.c[0],
+                             -a.c[0] * b.c[1] + a.c[2] * b.c[3] - a.c[4] * b.c[0],
+                             -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[5] * b.c[0],
+                             -a.c[3] * b.c[1] - a.c[4] * b.c[2] - a.c[5] * b.c[3]);
+}
+
+// rc(dual_line, dual_plane) -> dual_plane: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> rc(const basic_dual_line<T>& a,
+                                            const basic_dual_plane<T>& b) {
+  return basic_dual_plane<T>(a.c[0] * b.c[1] + a.c[1] * b.c[2], -a.c[0] * b.c[0] + a.c[2] * b.c[2],
+                             -a.c[1] * b.c[0] - a.c[2] * b.c[1],
+                             -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2]);
+}
+
+// rc(dual_line, euclidean_vector) -> dual_plane: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> rc(const basic_dual_line<T>& a,
+                                            const basic_euclidean_vector<T>& b) {
+  return basic_dual_plane<T>(a.c[0] * b.c[1] + a.c[1] * b.c[2], -a.c[0] * b.c[0] + a.c[2] * b.c[2],
+                             -a.c[1] * b.c[0] - a.c[2] * b.c[1],
+                             -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2]);
+}
+
+// rc(dual_line, euclidean_bivector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_dual_line<T>& a, const basic_euclidean_bivector<T>& b) {
+  return -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+}
+
+// rc(dual_line, point_pair) -> scalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_dual_line<T>& a, const basic_point_pair<T>& b) {
+  return -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[7] - a.c[3] * b.c[0] - a.c[4] * b.c[1] -
+         a.c[5] * b.c[2];
+}
+
+// rc(dual_line, dual_line) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_dual_line<T>& a, const basic_dual_line<T>& b) {
+  return -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+}
+
+// rc(dual_line, rotor) -> motor: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> rc(const basic_dual_line<T>& a, const basic_rotor<T>& b) {
+  return basic_motor<T>(-a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3], a.c[0] * b.c[0],
+                        a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0], a.c[4] * b.c[0],
+                        a.c[5] * b.c[0], T(0));
+}
+
+// rc(dual_line, translator) -> dual_line: 6 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> rc(const basic_dual_line<T>& a,
+                                           const basic_translator<T>& b) {
+  return basic_dual_line<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                            a.c[4] * b.c[0], a.c[5] * b.c[0]);
+}
+
+// rc(dual_line, motor) -> motor: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> rc(const basic_dual_line<T>& a, const basic_motor<T>& b) {
+  return basic_motor<T>(-a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3], a.c[0] * b.c[0],
+                        a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0], a.c[4] * b.c[0],
+                        a.c[5] * b.c[0], T(0));
+}
+
+// rc(line, normalized_point) -> point_pair: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> rc(const basic_line<T>& a,
+                                            const basic_normalized_point<T>& b) {
+  return basic_point_pair<T>(-a.c[3], -a.c[4], -a.c[5],
+                             -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2], -a.c[0], -a.c[1],
+                             -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[3] * b.c[3], -a.c[2],
+                             a.c[0] * b.c[0] - a.c[2] * b.c[2] - a.c[4] * b.c[3],
+                             a.c[1] * b.c[0] + a.c[2] * b.c[1] - a.c[5] * b.c[3]);
+}
+
+// rc(line, dual_sphere) -> point_pair: 18 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> rc(const basic_line<T>& a, const basic_dual_sphere<T>& b) {
+  return basic_point_pair<T>(-a.c[3] * b.c[0], -a.c[4] * b.c[0], -a.c[5] * b.c[0],
+                             -a.c[3] * b.c[1] - a.c[4] * b.c[2] - a.c[5] * b.c[3], -a.c[0] * b.c[0],
+                             -a.c[1] * b.c[0], -a.c[0] * b.c[2] - a.c[1] * b.c[3] - a.c[3] * b.c[4],
+                             -a.c[2] * b.c[0], a.c[0] * b.c[1] - a.c[2] * b.c[3] - a.c[4] * b.c[4],
+                             a.c[1] * b.c[1] + a.c[2] * b.c[2] - a.c[5] * b.c[4]);
+}
+
+// rc(line, dual_plane) -> flat_point: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> rc(const basic_line<T>& a, const basic_dual_plane<T>& b) {
+  return basic_flat_point<T>(-a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[3] * b.c[3],
+                             a.c[0] * b.c[0] - a.c[2] * b.c[2] - a.c[4] * b.c[3],
+                             a.c[1] * b.c[0] + a.c[2] * b.c[1] - a.c[5] * b.c[3],
+                             -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2]);
+}
+
+// rc(line, euclidean_vector) -> flat_point: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> rc(const basic_line<T>& a,
+                                            const basic_euclidean_vector<T>& b) {
+  return basic_flat_point<T>(-a.c[0] * b.c[1] - a.c[1] * b.c[2], a.c[0] * b.c[0] - a.c[2] * b.c[2],
+                             a.c[1] * b.c[0] + a.c[2] * b.c[1],
+                             -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2]);
+}
+
+// rc(line, flat_point) -> dual_plane: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> rc(const basic_line<T>& a, const basic_flat_point<T>& b) {
+  return basic_dual_plane<T>(-a.c[3] * b.c[3], -a.c[4] * b.c[3], -a.c[5] * b.c[3],
+                             -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2]);
+}
+
+// rc(line, euclidean_bivector) -> dual_plane: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> rc(const basic_line<T>& a,
+                                            const basic_euclidean_bivector<T>& b) {
+  return basic_dual_plane<T>(T(0), T(0), T(0),
+                             -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2]);
+}
+
+// rc(line, point_pair) -> dual_sphere: 18 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> rc(const basic_line<T>& a, const basic_point_pair<T>& b) {
+  return basic_dual_sphere<T>(-a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2],
+                              -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[3] * b.c[3],
+                              a.c[0] * b.c[0] - a.c[2] * b.c[2] - a.c[4] * b.c[3],
+                              a.c[1] * b.c[0] + a.c[2] * b.c[1] - a.c[5] * b.c[3],
+                              -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[7] -
+                                  a.c[3] * b.c[6] - a.c[4] * b.c[8] - a.c[5] * b.c[9]);
+}
+
+// rc(line, dual_line) -> dual_plane: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> rc(const basic_line<T>& a, const basic_dual_line<T>& b) {
+  return basic_dual_plane<T>(T(0), T(0), T(0),
+                             -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] -
+                                 a.c[3] * b.c[3] - a.c[4] * b.c[4] - a.c[5] * b.c[5]);
+}
+
+// rc(line, line) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_line<T>& a, const basic_line<T>& b) {
+  return a.c[3] * b.c[3] + a.c[4] * b.c[4] + a.c[5] * b.c[5];
+}
+
+// rc(line, circle) -> scalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_line<T>& a, const basic_circle<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] + a.c[4] * b.c[4] +
+         a.c[5] * b.c[5];
+}
+
+// rc(line, rotor) -> mv: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_line<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  r.c[18] = a.c[3] * b.c[0];
+  r.c[20] = a.c[4] * b.c[0];
+  r.c[21] = a.c[5] * b.c[0];
+  r.c[23] = a.c[0] * b.c[0];
+  r.c[24] = a.c[1] * b.c[0];
+  r.c[25] = a.c[2] * b.c[0];
+  r.bits = 0x3b40020u;
+  return r;
+}
+
+// rc(line, translator) -> mv: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_line<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = -a.c[3] * b.c[1] - a.c[4] * b.c[2] - a.c[5] * b.c[3];
+  r.c[18] = a.c[3] * b.c[0];
+  r.c[20] = a.c[4] * b.c[0];
+  r.c[21] = a.c[5] * b.c[0];
+  r.c[23] = a.c[0] * b.c[0];
+  r.c[24] = a.c[1] * b.c[0];
+  r.c[25] = a.c[2] * b.c[0];
+  r.bits = 0x3b40020u;
+  return r;
+}
+
+// rc(line, motor) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_line<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3] - a.c[3] * b.c[4] -
+           a.c[4] * b.c[5] - a.c[5] * b.c[6];
+  r.c[18] = a.c[3] * b.c[0];
+  r.c[20] = a.c[4] * b.c[0];
+  r.c[21] = a.c[5] * b.c[0];
+  r.c[23] = a.c[0] * b.c[0];
+  r.c[24] = a.c[1] * b.c[0];
+  r.c[25] = a.c[2] * b.c[0];
+  r.bits = 0x3b40020u;
+  return r;
+}
+
+// rc(circle, normalized_point) -> point_pair: 24 mul, 20 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> rc(const basic_circle<T>& a,
+                                            const basic_normalized_point<T>& b) {
+  return basic_point_pair<T>(
+      -a.c[3] + a.c[0] * b.c[1] + a.c[1] * b.c[2], -a.c[4] - a.c[0] * b.c[0] + a.c[2] * b.c[2],
+      -a.c[5] - a.c[1] * b.c[0] - a.c[2] * b.c[1],
+      -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2],
+      -a.c[7] - a.c[0] * b.c[3] + a.c[6] * b.c[2], -a.c[8] - a.c[1] * b.c[3] - a.c[6] * b.c[1],
+      -a.c[3] * b.c[3] - a.c[7] * b.c[1] - a.c[8] * b.c[2],
+      -a.c[9] - a.c[2] * b.c[3] + a.c[6] * b.c[0],
+      -a.c[4] * b.c[3] + a.c[7] * b.c[0] - a.c[9] * b.c[2],
+      -a.c[5] * b.c[3] + a.c[8] * b.c[0] + a.c[9] * b.c[1]);
+}
+
+// rc(circle, dual_sphere) -> point_pair: 30 mul, 20 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> rc(const basic_circle<T>& a,
+                                            const basic_dual_sphere<T>& b) {
+  return basic_point_pair<T>(a.c[0] * b.c[2] + a.c[1] * b.c[3] - a.c[3] * b.c[0],
+                             -a.c[0] * b.c[1] + a.c[2] * b.c[3] - a.c[4] * b.c[0],
+                             -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[5] * b.c[0],
+                             -a.c[3] * b.c[1] - a.c[4] * b.c[2] - a.c[5] * b.c[3],
+                             -a.c[0] * b.c[4] + a.c[6] * b.c[3] - a.c[7] * b.c[0],
+                             -a.c[1] * b.c[4] - a.c[6] * b.c[2] - a.c[8] * b.c[0],
+                             -a.c[3] * b.c[4] - a.c[7] * b.c[2] - a.c[8] * b.c[3],
+                             -a.c[2] * b.c[4] + a.c[6] * b.c[1] - a.c[9] * b.c[0],
+                             -a.c[4] * b.c[4] + a.c[7] * b.c[1] - a.c[9] * b.c[3],
+                             -a.c[5] * b.c[4] + a.c[8] * b.c[1] + a.c[9] * b.c[2]);
+}
+
+// rc(circle, dual_plane) -> point_pair: 24 mul, 14 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> rc(const basic_circle<T>& a,
+                                            const basic_dual_plane<T>& b) {
+  return basic_point_pair<T>(
+      a.c[0] * b.c[1] + a.c[1] * b.c[2], -a.c[0] * b.c[0] + a.c[2] * b.c[2],
+      -a.c[1] * b.c[0] - a.c[2] * b.c[1], -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2],
+      -a.c[0] * b.c[3] + a.c[6] * b.c[2], -a.c[1] * b.c[3] - a.c[6] * b.c[1],
+      -a.c[3] * b.c[3] - a.c[7] * b.c[1] - a.c[8] * b.c[2], -a.c[2] * b.c[3] + a.c[6] * b.c[0],
+      -a.c[4] * b.c[3] + a.c[7] * b.c[0] - a.c[9] * b.c[2],
+      -a.c[5] * b.c[3] + a.c[8] * b.c[0] + a.c[9] * b.c[1]);
+}
+
+// rc(circle, euclidean_vector) -> point_pair: 18 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> rc(const basic_circle<T>& a,
+                                            const basic_euclidean_vector<T>& b) {
+  return basic_point_pair<T>(a.c[0] * b.c[1] + a.c[1] * b.c[2], -a.c[0] * b.c[0] + a.c[2] * b.c[2],
+                             -a.c[1] * b.c[0] - a.c[2] * b.c[1],
+                             -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2], a.c[6] * b.c[2],
+                             -a.c[6] * b.c[1], -a.c[7] * b.c[1] - a.c[8] * b.c[2], a.c[6] * b.c[0],
+                             a.c[7] * b.c[0] - a.c[9] * b.c[2], a.c[8] * b.c[0] + a.c[9] * b.c[1]);
+}
+
+// rc(circle, flat_point) -> dual_plane: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> rc(const basic_circle<T>& a,
+                                            const basic_flat_point<T>& b) {
+  return basic_dual_plane<T>(a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[3],
+                             -a.c[0] * b.c[0] + a.c[2] * b.c[2] - a.c[4] * b.c[3],
+                             -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[5] * b.c[3],
+                             -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2]);
+}
+
+// rc(circle, euclidean_bivector) -> dual_sphere: 9 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> rc(const basic_circle<T>& a,
+                                             const basic_euclidean_bivector<T>& b) {
+  return basic_dual_sphere<T>(-a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2],
+                              -a.c[6] * b.c[2], a.c[6] * b.c[1], -a.c[6] * b.c[0],
+                              -a.c[7] * b.c[0] - a.c[8] * b.c[1] - a.c[9] * b.c[2]);
+}
+
+// rc(circle, point_pair) -> dual_sphere: 30 mul, 25 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> rc(const basic_circle<T>& a,
+                                             const basic_point_pair<T>& b) {
+  return basic_dual_sphere<T>(-a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[7] -
+                                  a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2],
+                              a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[3] * b.c[3] -
+                                  a.c[6] * b.c[7] - a.c[7] * b.c[1] - a.c[8] * b.c[2],
+                              -a.c[0] * b.c[6] + a.c[2] * b.c[9] - a.c[4] * b.c[3] +
+                                  a.c[6] * b.c[5] + a.c[7] * b.c[0] - a.c[9] * b.c[2],
+                              -a.c[1] * b.c[6] - a.c[2] * b.c[8] - a.c[5] * b.c[3] -
+                                  a.c[6] * b.c[4] + a.c[8] * b.c[0] + a.c[9] * b.c[1],
+                              -a.c[3] * b.c[6] - a.c[4] * b.c[8] - a.c[5] * b.c[9] -
+                                  a.c[7] * b.c[4] - a.c[8] * b.c[5] - a.c[9] * b.c[7]);
+}
+
+// rc(circle, dual_line) -> dual_sphere: 18 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> rc(const basic_circle<T>& a,
+                                             const basic_dual_line<T>& b) {
+  return basic_dual_sphere<T>(-a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2],
+                              a.c[0] * b.c[4] + a.c[1] * b.c[5] - a.c[6] * b.c[2],
+                              -a.c[0] * b.c[3] + a.c[2] * b.c[5] + a.c[6] * b.c[1],
+                              -a.c[1] * b.c[3] - a.c[2] * b.c[4] - a.c[6] * b.c[0],
+                              -a.c[3] * b.c[3] - a.c[4] * b.c[4] - a.c[5] * b.c[5] -
+                                  a.c[7] * b.c[0] - a.c[8] * b.c[1] - a.c[9] * b.c[2]);
+}
+
+// rc(circle, line) -> scalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_circle<T>& a, const basic_line<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] + a.c[4] * b.c[4] +
+         a.c[5] * b.c[5];
+}
+
+// rc(circle, circle) -> scalar: 10 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_circle<T>& a, const basic_circle<T>& b) {
+  return a.c[0] * b.c[7] + a.c[1] * b.c[8] + a.c[2] * b.c[9] + a.c[3] * b.c[3] + a.c[4] * b.c[4] +
+         a.c[5] * b.c[5] - a.c[6] * b.c[6] + a.c[7] * b.c[0] + a.c[8] * b.c[1] + a.c[9] * b.c[2];
+}
+
+// rc(circle, rotor) -> mv: 19 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_circle<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  r.c[2] = -a.c[6] * b.c[3];
+  r.c[3] = a.c[6] * b.c[2];
+  r.c[4] = -a.c[6] * b.c[1];
+  r.c[5] = -a.c[7] * b.c[1] - a.c[8] * b.c[2] - a.c[9] * b.c[3];
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[1] * b.c[0];
+  r.c[18] = a.c[3] * b.c[0];
+  r.c[19] = a.c[2] * b.c[0];
+  r.c[20] = a.c[4] * b.c[0];
+  r.c[21] = a.c[5] * b.c[0];
+  r.c[22] = a.c[6] * b.c[0];
+  r.c[23] = a.c[7] * b.c[0];
+  r.c[24] = a.c[8] * b.c[0];
+  r.c[25] = a.c[9] * b.c[0];
+  r.bits = 0x3ff003eu;
+  return r;
+}
+
+// rc(circle, translator) -> mv: 19 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_circle<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[2] + a.c[1] * b.c[3];
+  r.c[3] = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  r.c[4] = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  r.c[5] = -a.c[3] * b.c[1] - a.c[4] * b.c[2] - a.c[5] * b.c[3];
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[1] * b.c[0];
+  r.c[18] = a.c[3] * b.c[0];
+  r.c[19] = a.c[2] * b.c[0];
+  r.c[20] = a.c[4] * b.c[0];
+  r.c[21] = a.c[5] * b.c[0];
+  r.c[22] = a.c[6] * b.c[0];
+  r.c[23] = a.c[7] * b.c[0];
+  r.c[24] = a.c[8] * b.c[0];
+  r.c[25] = a.c[9] * b.c[0];
+  r.bits = 0x3ff003cu;
+  return r;
+}
+
+// rc(circle, motor) -> mv: 28 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_circle<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  r.c[2] = a.c[0] * b.c[5] + a.c[1] * b.c[6] - a.c[6] * b.c[3];
+  r.c[3] = -a.c[0] * b.c[4] + a.c[2] * b.c[6] + a.c[6] * b.c[2];
+  r.c[4] = -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[6] * b.c[1];
+  r.c[5] = -a.c[3] * b.c[4] - a.c[4] * b.c[5] - a.c[5] * b.c[6] - a.c[7] * b.c[1] -
+           a.c[8] * b.c[2] - a.c[9] * b.c[3];
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[1] * b.c[0];
+  r.c[18] = a.c[3] * b.c[0];
+  r.c[19] = a.c[2] * b.c[0];
+  r.c[20] = a.c[4] * b.c[0];
+  r.c[21] = a.c[5] * b.c[0];
+  r.c[22] = a.c[6] * b.c[0];
+  r.c[23] = a.c[7] * b.c[0];
+  r.c[24] = a.c[8] * b.c[0];
+  r.c[25] = a.c[9] * b.c[0];
+  r.bits = 0x3ff003eu;
+  return r;
+}
+
+// rc(sphere, normalized_point) -> circle: 16 mul, 10 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> rc(const basic_sphere<T>& a,
+                                        const basic_normalized_point<T>& b) {
+  return basic_circle<T>(-a.c[1] + a.c[0] * b.c[2], -a.c[2] - a.c[0] * b.c[1],
+                         -a.c[3] + a.c[0] * b.c[0], -a.c[1] * b.c[1] - a.c[2] * b.c[2],
+                         a.c[1] * b.c[0] - a.c[3] * b.c[2], a.c[2] * b.c[0] + a.c[3] * b.c[1],
+                         -a.c[4] + a.c[0] * b.c[3], a.c[1] * b.c[3] - a.c[4] * b.c[2],
+                         a.c[2] * b.c[3] + a.c[4] * b.c[1], a.c[3] * b.c[3] - a.c[4] * b.c[0]);
+}
+
+// rc(sphere, dual_sphere) -> circle: 20 mul, 10 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> rc(const basic_sphere<T>& a, const basic_dual_sphere<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[3] - a.c[1] * b.c[0], -a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                         a.c[0] * b.c[1] - a.c[3] * b.c[0], -a.c[1] * b.c[2] - a.c[2] * b.c[3],
+                         a.c[1] * b.c[1] - a.c[3] * b.c[3], a.c[2] * b.c[1] + a.c[3] * b.c[2],
+                         a.c[0] * b.c[4] - a.c[4] * b.c[0], a.c[1] * b.c[4] - a.c[4] * b.c[3],
+                         a.c[2] * b.c[4] + a.c[4] * b.c[2], a.c[3] * b.c[4] - a.c[4] * b.c[1]);
+}
+
+// rc(sphere, dual_plane) -> circle: 16 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> rc(const basic_sphere<T>& a, const basic_dual_plane<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[2], -a.c[0] * b.c[1], a.c[0] * b.c[0],
+                         -a.c[1] * b.c[1] - a.c[2] * b.c[2], a.c[1] * b.c[0] - a.c[3] * b.c[2],
+                         a.c[2] * b.c[0] + a.c[3] * b.c[1], a.c[0] * b.c[3],
+                         a.c[1] * b.c[3] - a.c[4] * b.c[2], a.c[2] * b.c[3] + a.c[4] * b.c[1],
+                         a.c[3] * b.c[3] - a.c[4] * b.c[0]);
+}
+
+// rc(sphere, euclidean_vector) -> circle: 12 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> rc(const basic_sphere<T>& a,
+                                        const basic_euclidean_vector<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[2], -a.c[0] * b.c[1], a.c[0] * b.c[0],
+                         -a.c[1] * b.c[1] - a.c[2] * b.c[2], a.c[1] * b.c[0] - a.c[3] * b.c[2],
+                         a.c[2] * b.c[0] + a.c[3] * b.c[1], T(0), -a.c[4] * b.c[2], a.c[4] * b.c[1],
+                         -a.c[4] * b.c[0]);
+}
+
+// rc(sphere, flat_point) -> dual_line: 12 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> rc(const basic_sphere<T>& a, const basic_flat_point<T>& b) {
+  return basic_dual_line<T>(-a.c[0] * b.c[2] + a.c[1] * b.c[3], a.c[0] * b.c[1] + a.c[2] * b.c[3],
+                            -a.c[0] * b.c[0] + a.c[3] * b.c[3], a.c[1] * b.c[1] + a.c[2] * b.c[2],
+                            -a.c[1] * b.c[0] + a.c[3] * b.c[2], -a.c[2] * b.c[0] - a.c[3] * b.c[1]);
+}
+
+// rc(sphere, euclidean_bivector) -> point_pair: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> rc(const basic_sphere<T>& a,
+                                            const basic_euclidean_bivector<T>& b) {
+  return basic_point_pair<T>(-a.c[0] * b.c[2], a.c[0] * b.c[1], -a.c[0] * b.c[0],
+                             -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2], T(0), T(0),
+                             -a.c[4] * b.c[2], T(0), a.c[4] * b.c[1], -a.c[4] * b.c[0]);
+}
+
+// rc(sphere, point_pair) -> point_pair: 30 mul, 20 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> rc(const basic_sphere<T>& a,
+                                            const basic_point_pair<T>& b) {
+  return basic_point_pair<T>(-a.c[0] * b.c[7] - a.c[1] * b.c[1] - a.c[2] * b.c[2],
+                             a.c[0] * b.c[5] + a.c[1] * b.c[0] - a.c[3] * b.c[2],
+                             -a.c[0] * b.c[4] + a.c[2] * b.c[0] + a.c[3] * b.c[1],
+                             -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[7],
+                             -a.c[0] * b.c[9] + a.c[1] * b.c[3] - a.c[4] * b.c[2],
+                             a.c[0] * b.c[8] + a.c[2] * b.c[3] + a.c[4] * b.c[1],
+                             a.c[1] * b.c[8] + a.c[2] * b.c[9] - a.c[4] * b.c[7],
+                             -a.c[0] * b.c[6] + a.c[3] * b.c[3] - a.c[4] * b.c[0],
+                             -a.c[1] * b.c[6] + a.c[3] * b.c[9] + a.c[4] * b.c[5],
+                             -a.c[2] * b.c[6] - a.c[3] * b.c[8] - a.c[4] * b.c[4]);
+}
+
+// rc(sphere, dual_line) -> point_pair: 18 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> rc(const basic_sphere<T>& a, const basic_dual_line<T>& b) {
+  return basic_point_pair<T>(-a.c[0] * b.c[2], a.c[0] * b.c[1], -a.c[0] * b.c[0],
+                             -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2], -a.c[0] * b.c[5],
+                             a.c[0] * b.c[4], a.c[1] * b.c[4] + a.c[2] * b.c[5] - a.c[4] * b.c[2],
+                             -a.c[0] * b.c[3], -a.c[1] * b.c[3] + a.c[3] * b.c[5] + a.c[4] * b.c[1],
+                             -a.c[2] * b.c[3] - a.c[3] * b.c[4] - a.c[4] * b.c[0]);
+}
+
+// rc(sphere, line) -> dual_plane: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> rc(const basic_sphere<T>& a, const basic_line<T>& b) {
+  return basic_dual_plane<T>(-a.c[0] * b.c[2] - a.c[1] * b.c[4] - a.c[2] * b.c[5],
+                             a.c[0] * b.c[1] + a.c[1] * b.c[3] - a.c[3] * b.c[5],
+                             -a.c[0] * b.c[0] + a.c[2] * b.c[3] + a.c[3] * b.c[4],
+                             -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2]);
+}
+
+// rc(sphere, circle) -> dual_sphere: 20 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> rc(const basic_sphere<T>& a, const basic_circle<T>& b) {
+  return basic_dual_sphere<T>(
+      -a.c[0] * b.c[6] + a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2],
+      -a.c[0] * b.c[9] - a.c[1] * b.c[4] - a.c[2] * b.c[5] + a.c[4] * b.c[2],
+      a.c[0] * b.c[8] + a.c[1] * b.c[3] - a.c[3] * b.c[5] - a.c[4] * b.c[1],
+      -a.c[0] * b.c[7] + a.c[2] * b.c[3] + a.c[3] * b.c[4] + a.c[4] * b.c[0],
+      -a.c[1] * b.c[7] - a.c[2] * b.c[8] - a.c[3] * b.c[9] + a.c[4] * b.c[6]);
+}
+
+// rc(sphere, sphere) -> scalar: 5 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_sphere<T>& a, const basic_sphere<T>& b) {
+  return a.c[0] * b.c[4] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3] + a.c[4] * b.c[0];
+}
+
+// rc(sphere, plane) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_sphere<T>& a, const basic_plane<T>& b) {
+  return a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+}
+
+// rc(sphere, rotor) -> mv: 14 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_sphere<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = -a.c[0] * b.c[3];
+  r.c[7] = a.c[0] * b.c[2];
+  r.c[8] = -a.c[0] * b.c[1];
+  r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  r.c[12] = -a.c[4] * b.c[3];
+  r.c[14] = a.c[4] * b.c[2];
+  r.c[15] = -a.c[4] * b.c[1];
+  r.c[26] = a.c[0] * b.c[0];
+  r.c[27] = a.c[1] * b.c[0];
+  r.c[28] = a.c[2] * b.c[0];
+  r.c[29] = a.c[3] * b.c[0];
+  r.c[30] = a.c[4] * b.c[0];
+  r.bits = 0x7c00d3c0u;
+  return r;
+}
+
+// rc(sphere, translator) -> mv: 14 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_sphere<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[10] = -a.c[0] * b.c[3];
+  r.c[11] = a.c[0] * b.c[2];
+  r.c[12] = a.c[1] * b.c[2] + a.c[2] * b.c[3];
+  r.c[13] = -a.c[0] * b.c[1];
+  r.c[14] = -a.c[1] * b.c[1] + a.c[3] * b.c[3];
+  r.c[15] = -a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[26] = a.c[0] * b.c[0];
+  r.c[27] = a.c[1] * b.c[0];
+  r.c[28] = a.c[2] * b.c[0];
+  r.c[29] = a.c[3] * b.c[0];
+  r.c[30] = a.c[4] * b.c[0];
+  r.bits = 0x7c00fc00u;
+  return r;
+}
+
+// rc(sphere, motor) -> mv: 24 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_sphere<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[0] = a.c[0] * b.c[7];
+  r.c[6] = -a.c[0] * b.c[3];
+  r.c[7] = a.c[0] * b.c[2];
+  r.c[8] = -a.c[0] * b.c[1];
+  r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  r.c[10] = -a.c[0] * b.c[6];
+  r.c[11] = a.c[0] * b.c[5];
+  r.c[12] = a.c[1] * b.c[5] + a.c[2] * b.c[6] - a.c[4] * b.c[3];
+  r.c[13] = -a.c[0] * b.c[4];
+  r.c[14] = -a.c[1] * b.c[4] + a.c[3] * b.c[6] + a.c[4] * b.c[2];
+  r.c[15] = -a.c[2] * b.c[4] - a.c[3] * b.c[5] - a.c[4] * b.c[1];
+  r.c[26] = a.c[0] * b.c[0];
+  r.c[27] = a.c[1] * b.c[0];
+  r.c[28] = a.c[2] * b.c[0];
+  r.c[29] = a.c[3] * b.c[0];
+  r.c[30] = a.c[4] * b.c[0];
+  r.bits = 0x7c00ffc1u;
+  return r;
+}
+
+// rc(plane, normalized_point) -> circle: 12 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> rc(const basic_plane<T>& a,
+                                        const basic_normalized_point<T>& b) {
+  return basic_circle<T>(-a.c[1], -a.c[2], -a.c[3], -a.c[1] * b.c[1] - a.c[2] * b.c[2],
+                         a.c[1] * b.c[0] - a.c[3] * b.c[2], a.c[2] * b.c[0] + a.c[3] * b.c[1],
+                         -a.c[0], -a.c[0] * b.c[2] + a.c[1] * b.c[3],
+                         a.c[0] * b.c[1] + a.c[2] * b.c[3], -a.c[0] * b.c[0] + a.c[3] * b.c[3]);
+}
+
+// rc(plane, dual_sphere) -> circle: 16 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> rc(const basic_plane<T>& a, const basic_dual_sphere<T>& b) {
+  return basic_circle<T>(-a.c[1] * b.c[0], -a.c[2] * b.c[0], -a.c[3] * b.c[0],
+                         -a.c[1] * b.c[2] - a.c[2] * b.c[3], a.c[1] * b.c[1] - a.c[3] * b.c[3],
+                         a.c[2] * b.c[1] + a.c[3] * b.c[2], -a.c[0] * b.c[0],
+                         -a.c[0] * b.c[3] + a.c[1] * b.c[4], a.c[0] * b.c[2] + a.c[2] * b.c[4],
+                         -a.c[0] * b.c[1] + a.c[3] * b.c[4]);
+}
+
+// rc(plane, dual_plane) -> line: 12 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> rc(const basic_plane<T>& a, const basic_dual_plane<T>& b) {
+  return basic_line<T>(-a.c[0] * b.c[2] + a.c[1] * b.c[3], a.c[0] * b.c[1] + a.c[2] * b.c[3],
+                       -a.c[0] * b.c[0] + a.c[3] * b.c[3], -a.c[1] * b.c[1] - a.c[2] * b.c[2],
+                       a.c[1] * b.c[0] - a.c[3] * b.c[2], a.c[2] * b.c[0] + a.c[3] * b.c[1]);
+}
+
+// rc(plane, euclidean_vector) -> line: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> rc(const basic_plane<T>& a, const basic_euclidean_vector<T>& b) {
+  return basic_line<T>(-a.c[0] * b.c[2], a.c[0] * b.c[1], -a.c[0] * b.c[0],
+                       -a.c[1] * b.c[1] - a.c[2] * b.c[2], a.c[1] * b.c[0] - a.c[3] * b.c[2],
+                       a.c[2] * b.c[0] + a.c[3] * b.c[1]);
+}
+
+// rc(plane, flat_point) -> dual_line: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> rc(const basic_plane<T>& a, const basic_flat_point<T>& b) {
+  return basic_dual_line<T>(a.c[1] * b.c[3], a.c[2] * b.c[3], a.c[3] * b.c[3],
+                            a.c[1] * b.c[1] + a.c[2] * b.c[2], -a.c[1] * b.c[0] + a.c[3] * b.c[2],
+                            -a.c[2] * b.c[0] - a.c[3] * b.c[1]);
+}
+
+// rc(plane, euclidean_bivector) -> flat_point: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> rc(const basic_plane<T>& a,
+                                            const basic_euclidean_bivector<T>& b) {
+  return basic_flat_point<T>(-a.c[0] * b.c[2], a.c[0] * b.c[1], -a.c[0] * b.c[0],
+                             -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2]);
+}
+
+// rc(plane, point_pair) -> point_pair: 24 mul, 14 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> rc(const basic_plane<T>& a, const basic_point_pair<T>& b) {
+  return basic_point_pair<T>(
+      -a.c[1] * b.c[1] - a.c[2] * b.c[2], a.c[1] * b.c[0] - a.c[3] * b.c[2],
+      a.c[2] * b.c[0] + a.c[3] * b.c[1], -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[7],
+      -a.c[0] * b.c[2] + a.c[1] * b.c[3], a.c[0] * b.c[1] + a.c[2] * b.c[3],
+      -a.c[0] * b.c[7] + a.c[1] * b.c[8] + a.c[2] * b.c[9], -a.c[0] * b.c[0] + a.c[3] * b.c[3],
+      a.c[0] * b.c[5] - a.c[1] * b.c[6] + a.c[3] * b.c[9],
+      -a.c[0] * b.c[4] - a.c[2] * b.c[6] - a.c[3] * b.c[8]);
+}
+
+// rc(plane, dual_line) -> flat_point: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> rc(const basic_plane<T>& a, const basic_dual_line<T>& b) {
+  return basic_flat_point<T>(-a.c[0] * b.c[2] + a.c[1] * b.c[4] + a.c[2] * b.c[5],
+                             a.c[0] * b.c[1] - a.c[1] * b.c[3] + a.c[3] * b.c[5],
+                             -a.c[0] * b.c[0] - a.c[2] * b.c[3] - a.c[3] * b.c[4],
+                             -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2]);
+}
+
+// rc(plane, line) -> dual_plane: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> rc(const basic_plane<T>& a, const basic_line<T>& b) {
+  return basic_dual_plane<T>(-a.c[1] * b.c[4] - a.c[2] * b.c[5], a.c[1] * b.c[3] - a.c[3] * b.c[5],
+                             a.c[2] * b.c[3] + a.c[3] * b.c[4],
+                             -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2]);
+}
+
+// rc(plane, circle) -> dual_sphere: 16 mul, 11 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> rc(const basic_plane<T>& a, const basic_circle<T>& b) {
+  return basic_dual_sphere<T>(
+      a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2],
+      a.c[0] * b.c[2] - a.c[1] * b.c[4] - a.c[2] * b.c[5],
+      -a.c[0] * b.c[1] + a.c[1] * b.c[3] - a.c[3] * b.c[5],
+      a.c[0] * b.c[0] + a.c[2] * b.c[3] + a.c[3] * b.c[4],
+      a.c[0] * b.c[6] - a.c[1] * b.c[7] - a.c[2] * b.c[8] - a.c[3] * b.c[9]);
+}
+
+// rc(plane, sphere) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_plane<T>& a, const basic_sphere<T>& b) {
+  return a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+}
+
+// rc(plane, plane) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_plane<T>& a, const basic_plane<T>& b) {
+  return -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+}
+
+// rc(plane, rotor) -> mv: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_plane<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  r.c[12] = -a.c[0] * b.c[3];
+  r.c[14] = a.c[0] * b.c[2];
+  r.c[15] = -a.c[0] * b.c[1];
+  r.c[27] = a.c[1] * b.c[0];
+  r.c[28] = a.c[2] * b.c[0];
+  r.c[29] = a.c[3] * b.c[0];
+  r.c[30] = a.c[0] * b.c[0];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// rc(plane, translator) -> mv: 10 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_plane<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[12] = a.c[1] * b.c[2] + a.c[2] * b.c[3];
+  r.c[14] = -a.c[1] * b.c[1] + a.c[3] * b.c[3];
+  r.c[15] = -a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  r.c[27] = a.c[1] * b.c[0];
+  r.c[28] = a.c[2] * b.c[0];
+  r.c[29] = a.c[3] * b.c[0];
+  r.c[30] = a.c[0] * b.c[0];
+  r.bits = 0x7800d000u;
+  return r;
+}
+
+// rc(plane, motor) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_plane<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  r.c[12] = -a.c[0] * b.c[3] + a.c[1] * b.c[5] + a.c[2] * b.c[6];
+  r.c[14] = a.c[0] * b.c[2] - a.c[1] * b.c[4] + a.c[3] * b.c[6];
+  r.c[15] = -a.c[0] * b.c[1] - a.c[2] * b.c[4] - a.c[3] * b.c[5];
+  r.c[27] = a.c[1] * b.c[0];
+  r.c[28] = a.c[2] * b.c[0];
+  r.c[29] = a.c[3] * b.c[0];
+  r.c[30] = a.c[0] * b.c[0];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// rc(pseudoscalar, normalized_point) -> sphere: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> rc(const basic_pseudoscalar<T>& a,
+                                        const basic_normalized_point<T>& b) {
+  return basic_sphere<T>(-a.c[0], -a.c[0] * b.c[2], a.c[0] * b.c[1], -a.c[0] * b.c[0],
+                         -a.c[0] * b.c[3]);
+}
+
+// rc(pseudoscalar, dual_sphere) -> sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> rc(const basic_pseudoscalar<T>& a,
+                                        const basic_dual_sphere<T>& b) {
+  return basic_sphere<T>(-a.c[0] * b.c[0], -a.c[0] * b.c[3], a.c[0] * b.c[2], -a.c[0] * b.c[1],
+                         -a.c[0] * b.c[4]);
+}
+
+// rc(pseudoscalar, dual_plane) -> plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> rc(const basic_pseudoscalar<T>& a,
+                                       const basic_dual_plane<T>& b) {
+  return basic_plane<T>(-a.c[0] * b.c[3], -a.c[0] * b.c[2], a.c[0] * b.c[1], -a.c[0] * b.c[0]);
+}
+
+// rc(pseudoscalar, euclidean_vector) -> plane: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> rc(const basic_pseudoscalar<T>& a,
+                                       const basic_euclidean_vector<T>& b) {
+  return basic_plane<T>(T(0), -a.c[0] * b.c[2], a.c[0] * b.c[1], -a.c[0] * b.c[0]);
+}
+
+// rc(pseudoscalar, flat_point) -> circle: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> rc(const basic_pseudoscalar<T>& a,
+                                        const basic_flat_point<T>& b) {
+  return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0), -a.c[0] * b.c[3], -a.c[0] * b.c[2],
+                         a.c[0] * b.c[1], -a.c[0] * b.c[0]);
+}
+
+// rc(pseudoscalar, euclidean_bivector) -> line: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> rc(const basic_pseudoscalar<T>& a,
+                                      const basic_euclidean_bivector<T>& b) {
+  return basic_line<T>(T(0), T(0), T(0), -a.c[0] * b.c[2], a.c[0] * b.c[1], -a.c[0] * b.c[0]);
+}
+
+// rc(pseudoscalar, point_pair) -> circle: 10 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> rc(const basic_pseudoscalar<T>& a,
+                                        const basic_point_pair<T>& b) {
+  return basic_circle<T>(-a.c[0] * b.c[2], a.c[0] * b.c[1], -a.c[0] * b.c[0], -a.c[0] * b.c[7],
+                         a.c[0] * b.c[5], -a.c[0] * b.c[4], -a.c[0] * b.c[3], -a.c[0] * b.c[9],
+                         a.c[0] * b.c[8], -a.c[0] * b.c[6]);
+}
+
+// rc(pseudoscalar, dual_line) -> line: 6 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> rc(const basic_pseudoscalar<T>& a, const basic_dual_line<T>& b) {
+  return basic_line<T>(-a.c[0] * b.c[5], a.c[0] * b.c[4], -a.c[0] * b.c[3], -a.c[0] * b.c[2],
+                       a.c[0] * b.c[1], -a.c[0] * b.c[0]);
+}
+
+// rc(pseudoscalar, line) -> dual_line: 6 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> rc(const basic_pseudoscalar<T>& a, const basic_line<T>& b) {
+  return basic_dual_line<T>(a.c[0] * b.c[5], -a.c[0] * b.c[4], a.c[0] * b.c[3], a.c[0] * b.c[2],
+                            -a.c[0] * b.c[1], a.c[0] * b.c[0]);
+}
+
+// rc(pseudoscalar, circle) -> point_pair: 10 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> rc(const basic_pseudoscalar<T>& a,
+                                            const basic_circle<T>& b) {
+  return basic_point_pair<T>(a.c[0] * b.c[2], -a.c[0] * b.c[1], a.c[0] * b.c[0], a.c[0] * b.c[6],
+                             a.c[0] * b.c[5], -a.c[0] * b.c[4], a.c[0] * b.c[9], a.c[0] * b.c[3],
+                             -a.c[0] * b.c[8], a.c[0] * b.c[7]);
+}
+
+// rc(pseudoscalar, sphere) -> dual_sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> rc(const basic_pseudoscalar<T>& a,
+                                             const basic_sphere<T>& b) {
+  return basic_dual_sphere<T>(a.c[0] * b.c[0], a.c[0] * b.c[3], -a.c[0] * b.c[2], a.c[0] * b.c[1],
+                              a.c[0] * b.c[4]);
+}
+
+// rc(pseudoscalar, plane) -> dual_plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> rc(const basic_pseudoscalar<T>& a,
+                                            const basic_plane<T>& b) {
+  return basic_dual_plane<T>(a.c[0] * b.c[3], -a.c[0] * b.c[2], a.c[0] * b.c[1], a.c[0] * b.c[0]);
+}
+
+// rc(pseudoscalar, pseudoscalar) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_pseudoscalar<T>& a, const basic_pseudoscalar<T>& b) {
+  return -a.c[0] * b.c[0];
+}
+
+// rc(pseudoscalar, rotor) -> mv: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_pseudoscalar<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[18] = -a.c[0] * b.c[3];
+  r.c[20] = a.c[0] * b.c[2];
+  r.c[21] = -a.c[0] * b.c[1];
+  r.c[31] = a.c[0] * b.c[0];
+  r.bits = 0x80340000u;
+  return r;
+}
+
+// rc(pseudoscalar, translator) -> mv: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_pseudoscalar<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[23] = -a.c[0] * b.c[3];
+  r.c[24] = a.c[0] * b.c[2];
+  r.c[25] = -a.c[0] * b.c[1];
+  r.c[31] = a.c[0] * b.c[0];
+  r.bits = 0x83800000u;
+  return r;
+}
+
+// rc(pseudoscalar, motor) -> mv: 8 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_pseudoscalar<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[5] = a.c[0] * b.c[7];
+  r.c[18] = -a.c[0] * b.c[3];
+  r.c[20] = a.c[0] * b.c[2];
+  r.c[21] = -a.c[0] * b.c[1];
+  r.c[23] = -a.c[0] * b.c[6];
+  r.c[24] = a.c[0] * b.c[5];
+  r.c[25] = -a.c[0] * b.c[4];
+  r.c[31] = a.c[0] * b.c[0];
+  r.bits = 0x83b40020u;
+  return r;
+}
+
+// rc(rotor, normalized_point) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> rc(const basic_rotor<T>& a,
+                                                  const basic_normalized_point<T>& b) {
+  return basic_euclidean_vector<T>(a.c[1] * b.c[1] + a.c[2] * b.c[2],
+                                   -a.c[1] * b.c[0] + a.c[3] * b.c[2],
+                                   -a.c[2] * b.c[0] - a.c[3] * b.c[1]);
+}
+
+// rc(rotor, dual_sphere) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> rc(const basic_rotor<T>& a,
+                                                  const basic_dual_sphere<T>& b) {
+  return basic_euclidean_vector<T>(a.c[1] * b.c[2] + a.c[2] * b.c[3],
+                                   -a.c[1] * b.c[1] + a.c[3] * b.c[3],
+                                   -a.c[2] * b.c[1] - a.c[3] * b.c[2]);
+}
+
+// rc(rotor, dual_plane) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> rc(const basic_rotor<T>& a,
+                                                  const basic_dual_plane<T>& b) {
+  return basic_euclidean_vector<T>(a.c[1] * b.c[1] + a.c[2] * b.c[2],
+                                   -a.c[1] * b.c[0] + a.c[3] * b.c[2],
+                                   -a.c[2] * b.c[0] - a.c[3] * b.c[1]);
+}
+
+// rc(rotor, euclidean_vector) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> rc(const basic_rotor<T>& a,
+                                                  const basic_euclidean_vector<T>& b) {
+  return basic_euclidean_vector<T>(a.c[1] * b.c[1] + a.c[2] * b.c[2],
+                                   -a.c[1] * b.c[0] + a.c[3] * b.c[2],
+                                   -a.c[2] * b.c[0] - a.c[3] * b.c[1]);
+}
+
+// rc(rotor, euclidean_bivector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_rotor<T>& a, const basic_euclidean_bivector<T>& b) {
+  return -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+}
+
+// rc(rotor, point_pair) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_rotor<T>& a, const basic_point_pair<T>& b) {
+  return -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[7];
+}
+
+// rc(rotor, dual_line) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_rotor<T>& a, const basic_dual_line<T>& b) {
+  return -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+}
+
+// rc(rotor, rotor) -> rotor: 7 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> rc(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3],
+                        a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// rc(rotor, translator) -> rotor: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> rc(const basic_rotor<T>& a, const basic_translator<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// rc(rotor, motor) -> rotor: 7 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> rc(const basic_rotor<T>& a, const basic_motor<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3],
+                        a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// rc(translator, normalized_point) -> dual_plane: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> rc(const basic_translator<T>& a,
+                                            const basic_normalized_point<T>& b) {
+  return basic_dual_plane<T>(-a.c[1], -a.c[2], -a.c[3],
+                             -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2]);
+}
+
+// rc(translator, dual_sphere) -> dual_plane: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> rc(const basic_translator<T>& a,
+                                            const basic_dual_sphere<T>& b) {
+  return basic_dual_plane<T>(-a.c[1] * b.c[0], -a.c[2] * b.c[0], -a.c[3] * b.c[0],
+                             -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3]);
+}
+
+// rc(translator, dual_plane) -> dual_plane: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> rc(const basic_translator<T>& a,
+                                            const basic_dual_plane<T>& b) {
+  return basic_dual_plane<T>(T(0), T(0), T(0),
+                             -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2]);
+}
+
+// rc(translator, euclidean_vector) -> dual_plane: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> rc(const basic_translator<T>& a,
+                                            const basic_euclidean_vector<T>& b) {
+  return basic_dual_plane<T>(T(0), T(0), T(0),
+                             -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2]);
+}
+
+// rc(translator, point_pair) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_translator<T>& a, const basic_point_pair<T>& b) {
+  return -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+}
+
+// rc(translator, rotor) -> translator: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> rc(const basic_translator<T>& a, const basic_rotor<T>& b) {
+  return basic_translator<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// rc(translator, translator) -> translator: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> rc(const basic_translator<T>& a,
+                                            const basic_translator<T>& b) {
+  return basic_translator<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// rc(translator, motor) -> translator: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> rc(const basic_translator<T>& a, const basic_motor<T>& b) {
+  return basic_translator<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// rc(motor, normalized_point) -> mv: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_motor<T>& a, const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = -a.c[4] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[3] = -a.c[5] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  r.c[4] = -a.c[6] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[5] = -a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[6] * b.c[2];
+  r.c[22] = -a.c[7];
+  r.c[23] = -a.c[7] * b.c[2];
+  r.c[24] = a.c[7] * b.c[1];
+  r.c[25] = -a.c[7] * b.c[0];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// rc(motor, dual_sphere) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_motor<T>& a, const basic_dual_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[1] * b.c[2] + a.c[2] * b.c[3] - a.c[4] * b.c[0];
+  r.c[3] = -a.c[1] * b.c[1] + a.c[3] * b.c[3] - a.c[5] * b.c[0];
+  r.c[4] = -a.c[2] * b.c[1] - a.c[3] * b.c[2] - a.c[6] * b.c[0];
+  r.c[5] = -a.c[4] * b.c[1] - a.c[5] * b.c[2] - a.c[6] * b.c[3];
+  r.c[22] = -a.c[7] * b.c[0];
+  r.c[23] = -a.c[7] * b.c[3];
+  r.c[24] = a.c[7] * b.c[2];
+  r.c[25] = -a.c[7] * b.c[1];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// rc(motor, dual_plane) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_motor<T>& a, const basic_dual_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[3] = -a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  r.c[4] = -a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[5] = -a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[6] * b.c[2];
+  r.c[23] = -a.c[7] * b.c[2];
+  r.c[24] = a.c[7] * b.c[1];
+  r.c[25] = -a.c[7] * b.c[0];
+  r.bits = 0x380003cu;
+  return r;
+}
+
+// rc(motor, euclidean_vector) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_motor<T>& a, const basic_euclidean_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  r.c[3] = -a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  r.c[4] = -a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  r.c[5] = -a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[6] * b.c[2];
+  r.c[23] = -a.c[7] * b.c[2];
+  r.c[24] = a.c[7] * b.c[1];
+  r.c[25] = -a.c[7] * b.c[0];
+  r.bits = 0x380003cu;
+  return r;
+}
+
+// rc(motor, euclidean_bivector) -> translator: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> rc(const basic_motor<T>& a,
+                                            const basic_euclidean_bivector<T>& b) {
+  return basic_translator<T>(-a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2], -a.c[7] * b.c[2],
+                             a.c[7] * b.c[1], -a.c[7] * b.c[0]);
+}
+
+// rc(motor, point_pair) -> motor: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> rc(const basic_motor<T>& a, const basic_point_pair<T>& b) {
+  return basic_motor<T>(-a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[7] - a.c[4] * b.c[0] -
+                            a.c[5] * b.c[1] - a.c[6] * b.c[2],
+                        -a.c[7] * b.c[2], a.c[7] * b.c[1], -a.c[7] * b.c[0], -a.c[7] * b.c[7],
+                        a.c[7] * b.c[5], -a.c[7] * b.c[4], T(0));
+}
+
+// rc(motor, dual_line) -> translator: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> rc(const basic_motor<T>& a, const basic_dual_line<T>& b) {
+  return basic_translator<T>(-a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2], -a.c[7] * b.c[2],
+                             a.c[7] * b.c[1], -a.c[7] * b.c[0]);
+}
+
+// rc(motor, circle) -> dual_plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> rc(const basic_motor<T>& a, const basic_circle<T>& b) {
+  return basic_dual_plane<T>(a.c[7] * b.c[2], -a.c[7] * b.c[1], a.c[7] * b.c[0], a.c[7] * b.c[6]);
+}
+
+// rc(motor, sphere) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_motor<T>& a, const basic_sphere<T>& b) {
+  return a.c[7] * b.c[0];
+}
+
+// rc(motor, rotor) -> motor: 14 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> rc(const basic_motor<T>& a, const basic_rotor<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3],
+                        a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                        a.c[4] * b.c[0] - a.c[7] * b.c[3], a.c[5] * b.c[0] + a.c[7] * b.c[2],
+                        a.c[6] * b.c[0] - a.c[7] * b.c[1], a.c[7] * b.c[0]);
+}
+
+// rc(motor, translator) -> motor: 8 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> rc(const basic_motor<T>& a, const basic_translator<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                        a.c[4] * b.c[0], a.c[5] * b.c[0], a.c[6] * b.c[0], a.c[7] * b.c[0]);
+}
+
+// rc(motor, motor) -> motor: 14 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> rc(const basic_motor<T>& a, const basic_motor<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3],
+                        a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                        a.c[4] * b.c[0] - a.c[7] * b.c[3], a.c[5] * b.c[0] + a.c[7] * b.c[2],
+                        a.c[6] * b.c[0] - a.c[7] * b.c[1], a.c[7] * b.c[0]);
+}
+
+// scp(normalized_point, dual_plane) -> scalar: 3 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_normalized_point<T>& a, const basic_dual_plane<T>& b) {
+  return -b.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// scp(normalized_point, euclidean_vector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_normalized_point<T>& a, const basic_euclidean_vector<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// scp(dual_sphere, normalized_point) -> scalar: 4 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_dual_sphere<T>& a, const basic_normalized_point<T>& b) {
+  return -a.c[4] - a.c[0] * b.c[3] + a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
+}
+
+// scp(dual_sphere, dual_plane) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_dual_sphere<T>& a, const basic_dual_plane<T>& b) {
+  return -a.c[0] * b.c[3] + a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
+}
+
+// scp(dual_sphere, euclidean_vector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_dual_sphere<T>& a, const basic_euclidean_vector<T>& b) {
+  return a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
+}
+
+// scp(dual_plane, normalized_point) -> scalar: 3 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_dual_plane<T>& a, const basic_normalized_point<T>& b) {
+  return -a.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// scp(dual_plane, dual_sphere) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_dual_plane<T>& a, const basic_dual_sphere<T>& b) {
+  return a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] - a.c[3] * b.c[0];
+}
+
+// scp(dual_plane, dual_plane) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_dual_plane<T>& a, const basic_dual_plane<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// scp(dual_plane, euclidean_vector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_dual_plane<T>& a, const basic_euclidean_vector<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// scp(euclidean_vector, normalized_point) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_euclidean_vector<T>& a, const basic_normalized_point<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// scp(euclidean_vector, dual_sphere) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_euclidean_vector<T>& a, const basic_dual_sphere<T>& b) {
+  return a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3];
+}
+
+// scp(euclidean_vector, dual_plane) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_euclidean_vector<T>& a, const basic_dual_plane<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// scp(euclidean_vector, euclidean_vector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_euclidean_vector<T>& a, const basic_euclidean_vector<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// scp(flat_point, flat_point) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_flat_point<T>& a, const basic_flat_point<T>& b) {
+  return a.c[3] * b.c[3];
+}
+
+// scp(flat_point, point_pair) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_flat_point<T>& a, const basic_point_pair<T>& b) {
+  return -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[3];
+}
+
+// scp(euclidean_bivector, euclidean_bivector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_euclidean_bivector<T>& a,
+                           const basic_euclidean_bivector<T>& b) {
+  return -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+}
+
+// scp(euclidean_bivector, point_pair) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_euclidean_bivector<T>& a, const basic_point_pair<T>& b) {
+  return -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[7];
+}
+
+// scp(euclidean_bivector, dual_line) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_euclidean_bivector<T>& a, const basic_dual_line<T>& b) {
+  return -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+}
+
+// scp(euclidean_bivector, rotor) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_euclidean_bivector<T>& a, const basic_rotor<T>& b) {
+  return -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+}
+
+// scp(euclidean_bivector, motor) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_euclidean_bivector<T>& a, const basic_motor<T>& b) {
+  return -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+}
+
+// scp(point_pair, flat_point) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_point_pair<T>& a, const basic_flat_point<T>& b) {
+  return -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[3];
+}
+
+// scp(point_pair, euclidean_bivector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_point_pair<T>& a, const basic_euclidean_bivector<T>& b) {
+  return -a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[7] * b.c[2];
+}
+
+// scp(point_pair, dual_line) -> scalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_point_pair<T>& a, const basic_dual_line<T>& b) {
+  return -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[4] * b.c[0] - a.c[5] * b.c[1] -
+         a.c[7] * b.c[2];
+}
+
+// scp(point_pair, rotor) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_point_pair<T>& a, const basic_rotor<T>& b) {
+  return -a.c[4] * b.c[1] - a.c[5] * b.c[2] - a.c[7] * b.c[3];
+}
+
+// scp(point_pair, translator) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_point_pair<T>& a, const basic_translator<T>& b) {
+  return -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+}
+
+// scp(point_pair, motor) -> scalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_point_pair<T>& a, const basic_motor<T>& b) {
+  return -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[6] - a.c[4] * b.c[1] - a.c[5] * b.c[2] -
+         a.c[7] * b.c[3];
+}
+
+// scp(dual_line, euclidean_bivector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_dual_line<T>& a, const basic_euclidean_bivector<T>& b) {
+  return -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+}
+
+// scp(dual_line, point_pair) -> scalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_dual_line<T>& a, const basic_point_pair<T>& b) {
+  return -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[7] - a.c[3] * b.c[0] - a.c[4] * b.c[1] -
+         a.c[5] * b.c[2];
+}
+
+// scp(dual_line, dual_line) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_dual_line<T>& a, const basic_dual_line<T>& b) {
+  return -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+}
+
+// scp(dual_line, rotor) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_dual_line<T>& a, const basic_rotor<T>& b) {
+  return -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+}
+
+// scp(dual_line, motor) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_dual_line<T>& a, const basic_motor<T>& b) {
+  return -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+}
+
+// scp(line, line) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_line<T>& a, const basic_line<T>& b) {
+  return a.c[3] * b.c[3] + a.c[4] * b.c[4] + a.c[5] * b.c[5];
+}
+
+// scp(line, circle) -> scalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_line<T>& a, const basic_circle<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] + a.c[4] * b.c[4] +
+         a.c[5] * b.c[5];
+}
+
+// scp(circle, line) -> scalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_circle<T>& a, const basic_line<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] + a.c[4] * b.c[4] +
+         a.c[5] * b.c[5];
+}
+
+// scp(circle, circle) -> scalar: 10 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_circle<T>& a, const basic_circle<T>& b) {
+  return a.c[0] * b.c[7] + a.c[1] * b.c[8] + a.c[2] * b.c[9] + a.c[3] * b.c[3] + a.c[4] * b.c[4] +
+         a.c[5] * b.c[5] - a.c[6] * b.c[6] + a.c[7] * b.c[0] + a.c[8] * b.c[1] + a.c[9] * b.c[2];
+}
+
+// scp(sphere, sphere) -> scalar: 5 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_sphere<T>& a, const basic_sphere<T>& b) {
+  return a.c[0] * b.c[4] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3] + a.c[4] * b.c[0];
+}
+
+// scp(sphere, plane) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_sphere<T>& a, const basic_plane<T>& b) {
+  return a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+}
+
+// scp(sphere, motor) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_sphere<T>& a, const basic_motor<T>& b) {
+  return a.c[0] * b.c[7];
+}
+
+// scp(plane, sphere) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_plane<T>& a, const basic_sphere<T>& b) {
+  return a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+}
+
+// scp(plane, plane) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_plane<T>& a, const basic_plane<T>& b) {
+  return -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+}
+
+// scp(pseudoscalar, pseudoscalar) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_pseudoscalar<T>& a, const basic_pseudoscalar<T>& b) {
+  return -a.c[0] * b.c[0];
+}
+
+// scp(rotor, euclidean_bivector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_rotor<T>& a, const basic_euclidean_bivector<T>& b) {
+  return -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+}
+
+// scp(rotor, point_pair) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_rotor<T>& a, const basic_point_pair<T>& b) {
+  return -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[7];
+}
+
+// scp(rotor, dual_line) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_rotor<T>& a, const basic_dual_line<T>& b) {
+  return -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+}
+
+// scp(rotor, rotor) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+  return a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+}
+
+// scp(rotor, translator) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_rotor<T>& a, const basic_translator<T>& b) {
+  return a.c[0] * b.c[0];
+}
+
+// scp(rotor, motor) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_rotor<T>& a, const basic_motor<T>& b) {
+  return a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+}
+
+// scp(translator, point_pair) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_translator<T>& a, const basic_point_pair<T>& b) {
+  return -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+}
+
+// scp(translator, rotor) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_translator<T>& a, const basic_rotor<T>& b) {
+  return a.c[0] * b.c[0];
+}
+
+// scp(translator, translator) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_translator<T>& a, const basic_translator<T>& b) {
+  return a.c[0] * b.c[0];
+}
+
+// scp(translator, motor) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_translator<T>& a, const basic_motor<T>& b) {
+  return a.c[0] * b.c[0];
+}
+
+// scp(motor, euclidean_bivector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_motor<T>& a, const basic_euclidean_bivector<T>& b) {
+  return -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+}
+
+// scp(motor, point_pair) -> scalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_motor<T>& a, const basic_point_pair<T>& b) {
+  return -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[7] - a.c[4] * b.c[0] - a.c[5] * b.c[1] -
+         a.c[6] * b.c[2];
+}
+
+// scp(motor, dual_line) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_motor<T>& a, const basic_dual_line<T>& b) {
+  return -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+}
+
+// scp(motor, sphere) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_motor<T>& a, const basic_sphere<T>& b) {
+  return a.c[7] * b.c[0];
+}
+
+// scp(motor, rotor) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_motor<T>& a, const basic_rotor<T>& b) {
+  return a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+}
+
+// scp(motor, translator) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_motor<T>& a, const basic_translator<T>& b) {
+  return a.c[0] * b.c[0];
+}
+
+// meet(normalized_point, sphere) -> scalar: 4 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_normalized_point<T>& a, const basic_sphere<T>& b) {
+  return b.c[4] - a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+}
+
+// meet(normalized_point, plane) -> scalar: 3 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_normalized_point<T>& a, const basic_plane<T>& b) {
+  return b.c[0] - a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1];
+}
+
+// meet(normalized_point, pseudoscalar) -> dual_sphere: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> meet(const basic_normalized_point<T>& a,
+                                               const basic_pseudoscalar<T>& b) {
+  return basic_dual_sphere<T>(b.c[0], a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0],
+                              a.c[3] * b.c[0]);
+}
+
+// meet(normalized_point, motor) -> scalar: 0 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet([[maybe_unused]] const basic_normalized_point<T>& a,
+                            const basic_motor<T>& b) {
+  return b.c[7];
+}
+
+// meet(dual_sphere, sphere) -> scalar: 5 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_dual_sphere<T>& a, const basic_sphere<T>& b) {
+  return a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+}
+
+// meet(dual_sphere, plane) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_dual_sphere<T>& a, const basic_plane<T>& b) {
+  return a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[3] * b.c[1];
+}
+
+// meet(dual_sphere, pseudoscalar) -> dual_sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> meet(const basic_dual_sphere<T>& a,
+                                               const basic_pseudoscalar<T>& b) {
+  return basic_dual_sphere<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                              a.c[4] * b.c[0]);
+}
+
+// meet(dual_sphere, motor) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_dual_sphere<T>& a, const basic_motor<T>& b) {
+  return a.c[0] * b.c[7];
+}
+
+// meet(dual_plane, sphere) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_dual_plane<T>& a, const basic_sphere<T>& b) {
+  return -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+}
+
+// meet(dual_plane, plane) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_dual_plane<T>& a, const basic_plane<T>& b) {
+  return -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1];
+}
+
+// meet(dual_plane, pseudoscalar) -> dual_plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> meet(const basic_dual_plane<T>& a,
+                                              const basic_pseudoscalar<T>& b) {
+  return basic_dual_plane<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// meet(euclidean_vector, sphere) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_euclidean_vector<T>& a, const basic_sphere<T>& b) {
+  return -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1];
+}
+
+// meet(euclidean_vector, plane) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_euclidean_vector<T>& a, const basic_plane<T>& b) {
+  return -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1];
+}
+
+// meet(euclidean_vector, pseudoscalar) -> euclidean_vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> meet(const basic_euclidean_vector<T>& a,
+                                                    const basic_pseudoscalar<T>& b) {
+  return basic_euclidean_vector<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// meet(flat_point, circle) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_flat_point<T>& a, const basic_circle<T>& b) {
+  return a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[3] * b.c[6];
+}
+
+// meet(flat_point, sphere) -> dual_sphere: 8 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> meet(const basic_flat_point<T>& a,
+                                               const basic_sphere<T>& b) {
+  return basic_dual_sphere<T>(
+      a.c[3] * b.c[0], a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0],
+      a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[4]);
+}
+
+// meet(flat_point, plane) -> dual_plane: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> meet(const basic_flat_point<T>& a,
+                                              const basic_plane<T>& b) {
+  return basic_dual_plane<T>(T(0), T(0), T(0),
+                             a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0]);
+}
+
+// meet(flat_point, pseudoscalar) -> flat_point: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> meet(const basic_flat_point<T>& a,
+                                              const basic_pseudoscalar<T>& b) {
+  return basic_flat_point<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// meet(flat_point, motor) -> dual_plane: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> meet(const basic_flat_point<T>& a,
+                                              const basic_motor<T>& b) {
+  return basic_dual_plane<T>(T(0), T(0), T(0), -a.c[3] * b.c[7]);
+}
+
+// meet(euclidean_bivector, line) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_euclidean_bivector<T>& a, const basic_line<T>& b) {
+  return a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3];
+}
+
+// meet(euclidean_bivector, circle) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_euclidean_bivector<T>& a, const basic_circle<T>& b) {
+  return a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3];
+}
+
+// meet(euclidean_bivector, sphere) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> meet(const basic_euclidean_bivector<T>& a,
+                                                    const basic_sphere<T>& b) {
+  return basic_euclidean_vector<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1],
+                                   a.c[0] * b.c[3] - a.c[2] * b.c[1],
+                                   a.c[1] * b.c[3] - a.c[2] * b.c[2]);
+}
+
+// meet(euclidean_bivector, plane) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> meet(const basic_euclidean_bivector<T>& a,
+                                                    const basic_plane<T>& b) {
+  return basic_euclidean_vector<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1],
+                                   a.c[0] * b.c[3] - a.c[2] * b.c[1],
+                                   a.c[1] * b.c[3] - a.c[2] * b.c[2]);
+}
+
+// meet(euclidean_bivector, pseudoscalar) -> euclidean_bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> meet(const basic_euclidean_bivector<T>& a,
+                                                      const basic_pseudoscalar<T>& b) {
+  return basic_euclidean_bivector<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// meet(point_pair, line) -> scalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_point_pair<T>& a, const basic_line<T>& b) {
+  return a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] + a.c[4] * b.c[5] - a.c[5] * b.c[4] +
+         a.c[7] * b.c[3];
+}
+
+// meet(point_pair, circle) -> scalar: 10 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_point_pair<T>& a, const basic_circle<T>& b) {
+  return a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7] - a.c[3] * b.c[6] + a.c[4] * b.c[5] -
+         a.c[5] * b.c[4] + a.c[6] * b.c[2] + a.c[7] * b.c[3] - a.c[8] * b.c[1] + a.c[9] * b.c[0];
+}
+
+// meet(point_pair, sphere) -> dual_sphere: 20 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> meet(const basic_point_pair<T>& a,
+                                               const basic_sphere<T>& b) {
+  return basic_dual_sphere<T>(
+      -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0],
+      -a.c[0] * b.c[4] + a.c[4] * b.c[2] - a.c[5] * b.c[1] + a.c[6] * b.c[0],
+      -a.c[1] * b.c[4] + a.c[4] * b.c[3] - a.c[7] * b.c[1] + a.c[8] * b.c[0],
+      -a.c[2] * b.c[4] + a.c[5] * b.c[3] - a.c[7] * b.c[2] + a.c[9] * b.c[0],
+      -a.c[3] * b.c[4] + a.c[6] * b.c[3] - a.c[8] * b.c[2] + a.c[9] * b.c[1]);
+}
+
+// meet(point_pair, plane) -> dual_sphere: 16 mul, 11 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> meet(const basic_point_pair<T>& a,
+                                               const basic_plane<T>& b) {
+  return basic_dual_sphere<T>(
+      -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1],
+      -a.c[0] * b.c[0] + a.c[4] * b.c[2] - a.c[5] * b.c[1],
+      -a.c[1] * b.c[0] + a.c[4] * b.c[3] - a.c[7] * b.c[1],
+      -a.c[2] * b.c[0] + a.c[5] * b.c[3] - a.c[7] * b.c[2],
+      -a.c[3] * b.c[0] + a.c[6] * b.c[3] - a.c[8] * b.c[2] + a.c[9] * b.c[1]);
+}
+
+// meet(point_pair, pseudoscalar) -> point_pair: 10 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> meet(const basic_point_pair<T>& a,
+                                              const basic_pseudoscalar<T>& b) {
+  return basic_point_pair<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                             a.c[4] * b.c[0], a.c[5] * b.c[0], a.c[6] * b.c[0], a.c[7] * b.c[0],
+                             a.c[8] * b.c[0], a.c[9] * b.c[0]);
+}
+
+// meet(point_pair, motor) -> dual_plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> meet(const basic_point_pair<T>& a,
+                                              const basic_motor<T>& b) {
+  return basic_dual_plane<T>(-a.c[0] * b.c[7], -a.c[1] * b.c[7], -a.c[2] * b.c[7],
+                             -a.c[3] * b.c[7]);
+}
+
+// meet(dual_line, line) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_dual_line<T>& a, const basic_line<T>& b) {
+  return a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3];
+}
+
+// meet(dual_line, circle) -> scalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_dual_line<T>& a, const basic_circle<T>& b) {
+  return a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3] + a.c[3] * b.c[2] - a.c[4] * b.c[1] +
+         a.c[5] * b.c[0];
+}
+
+// meet(dual_line, sphere) -> dual_plane: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> meet(const basic_dual_line<T>& a,
+                                              const basic_sphere<T>& b) {
+  return basic_dual_plane<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[3] * b.c[0],
+                             a.c[0] * b.c[3] - a.c[2] * b.c[1] + a.c[4] * b.c[0],
+                             a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[5] * b.c[0],
+                             a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1]);
+}
+
+// meet(dual_line, plane) -> dual_plane: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> meet(const basic_dual_line<T>& a,
+                                              const basic_plane<T>& b) {
+  return basic_dual_plane<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1], a.c[0] * b.c[3] - a.c[2] * b.c[1],
+                             a.c[1] * b.c[3] - a.c[2] * b.c[2],
+                             a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1]);
+}
+
+// meet(dual_line, pseudoscalar) -> dual_line: 6 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> meet(const basic_dual_line<T>& a,
+                                             const basic_pseudoscalar<T>& b) {
+  return basic_dual_line<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                            a.c[4] * b.c[0], a.c[5] * b.c[0]);
+}
+
+// meet(line, euclidean_bivector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_line<T>& a, const basic_euclidean_bivector<T>& b) {
+  return a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0];
+}
+
+// meet(line, point_pair) -> scalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_line<T>& a, const basic_point_pair<T>& b) {
+  return a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] + a.c[3] * b.c[7] - a.c[4] * b.c[5] +
+         a.c[5] * b.c[4];
+}
+
+// meet(line, dual_line) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_line<T>& a, const basic_dual_line<T>& b) {
+  return a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0];
+}
+
+// meet(line, line) -> dual_plane: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> meet(const basic_line<T>& a, const basic_line<T>& b) {
+  return basic_dual_plane<T>(T(0), T(0), T(0),
+                             a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3] + a.c[3] * b.c[2] -
+                                 a.c[4] * b.c[1] + a.c[5] * b.c[0]);
+}
+
+// meet(line, circle) -> dual_sphere: 18 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> meet(const basic_line<T>& a, const basic_circle<T>& b) {
+  return basic_dual_sphere<T>(a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0],
+                              -a.c[0] * b.c[1] + a.c[1] * b.c[0] + a.c[3] * b.c[6],
+                              -a.c[0] * b.c[2] + a.c[2] * b.c[0] + a.c[4] * b.c[6],
+                              -a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[5] * b.c[6],
+                              a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3] +
+                                  a.c[3] * b.c[9] - a.c[4] * b.c[8] + a.c[5] * b.c[7]);
+}
+
+// meet(line, sphere) -> point_pair: 18 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> meet(const basic_line<T>& a, const basic_sphere<T>& b) {
+  return basic_point_pair<T>(a.c[3] * b.c[0], a.c[4] * b.c[0], a.c[5] * b.c[0],
+                             a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1], a.c[0] * b.c[0],
+                             a.c[1] * b.c[0], -a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[3] * b.c[4],
+                             a.c[2] * b.c[0], -a.c[0] * b.c[3] + a.c[2] * b.c[1] + a.c[4] * b.c[4],
+                             -a.c[1] * b.c[3] + a.c[2] * b.c[2] + a.c[5] * b.c[4]);
+}
+
+// meet(line, plane) -> flat_point: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> meet(const basic_line<T>& a, const basic_plane<T>& b) {
+  return basic_flat_point<T>(-a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[3] * b.c[0],
+                             -a.c[0] * b.c[3] + a.c[2] * b.c[1] + a.c[4] * b.c[0],
+                             -a.c[1] * b.c[3] + a.c[2] * b.c[2] + a.c[5] * b.c[0],
+                             a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1]);
+}
+
+// meet(line, pseudoscalar) -> line: 6 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> meet(const basic_line<T>& a, const basic_pseudoscalar<T>& b) {
+  return basic_line<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                       a.c[4] * b.c[0], a.c[5] * b.c[0]);
+}
+
+// meet(line, rotor) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_line<T>& a, const basic_rotor<T>& b) {
+  return a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+}
+
+// meet(line, motor) -> translator: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> meet(const basic_line<T>& a, const basic_motor<T>& b) {
+  return basic_translator<T>(a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1], a.c[3] * b.c[7],
+                             a.c[4] * b.c[7], a.c[5] * b.c[7]);
+}
+
+// meet(circle, flat_point) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_circle<T>& a, const basic_flat_point<T>& b) {
+  return a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[6] * b.c[3];
+}
+
+// meet(circle, euclidean_bivector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_circle<T>& a, const basic_euclidean_bivector<T>& b) {
+  return a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0];
+}
+
+// meet(circle, point_pair) -> scalar: 10 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_circle<T>& a, const basic_point_pair<T>& b) {
+  return a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[6] + a.c[3] * b.c[7] - a.c[4] * b.c[5] +
+         a.c[5] * b.c[4] - a.c[6] * b.c[3] + a.c[7] * b.c[2] - a.c[8] * b.c[1] + a.c[9] * b.c[0];
+}
+
+// meet(circle, dual_line) -> scalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_circle<T>& a, const basic_dual_line<T>& b) {
+  return a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3] + a.c[3] * b.c[2] - a.c[4] * b.c[1] +
+         a.c[5] * b.c[0];
+}
+
+// meet(circle, line) -> dual_sphere: 18 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> meet(const basic_circle<T>& a, const basic_line<T>& b) {
+  return basic_dual_sphere<T>(a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3],
+                              a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[6] * b.c[3],
+                              a.c[0] * b.c[2] - a.c[2] * b.c[0] + a.c[6] * b.c[4],
+                              a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[6] * b.c[5],
+                              a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0] +
+                                  a.c[7] * b.c[5] - a.c[8] * b.c[4] + a.c[9] * b.c[3]);
+}
+
+// meet(circle, circle) -> dual_sphere: 30 mul, 25 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> meet(const basic_circle<T>& a, const basic_circle<T>& b) {
+  return basic_dual_sphere<T>(a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3] +
+                                  a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0],
+                              a.c[0] * b.c[8] - a.c[1] * b.c[7] + a.c[3] * b.c[6] +
+                                  a.c[6] * b.c[3] - a.c[7] * b.c[1] + a.c[8] * b.c[0],
+                              a.c[0] * b.c[9] - a.c[2] * b.c[7] + a.c[4] * b.c[6] +
+                                  a.c[6] * b.c[4] - a.c[7] * b.c[2] + a.c[9] * b.c[0],
+                              a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[5] * b.c[6] +
+                                  a.c[6] * b.c[5] - a.c[8] * b.c[2] + a.c[9] * b.c[1],
+                              a.c[3] * b.c[9] - a.c[4] * b.c[8] + a.c[5] * b.c[7] +
+                                  a.c[7] * b.c[5] - a.c[8] * b.c[4] + a.c[9] * b.c[3]);
+}
+
+// meet(circle, sphere) -> point_pair: 30 mul, 20 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> meet(const basic_circle<T>& a, const basic_sphere<T>& b) {
+  return basic_point_pair<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[3] * b.c[0],
+                             a.c[0] * b.c[3] - a.c[2] * b.c[1] + a.c[4] * b.c[0],
+                             a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[5] * b.c[0],
+                             a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1],
+                             a.c[0] * b.c[4] - a.c[6] * b.c[1] + a.c[7] * b.c[0],
+                             a.c[1] * b.c[4] - a.c[6] * b.c[2] + a.c[8] * b.c[0],
+                             a.c[3] * b.c[4] - a.c[7] * b.c[2] + a.c[8] * b.c[1],
+                             a.c[2] * b.c[4] - a.c[6] * b.c[3] + a.c[9] * b.c[0],
+                             a.c[4] * b.c[4] - a.c[7] * b.c[3] + a.c[9] * b.c[1],
+                             a.c[5] * b.c[4] - a.c[8] * b.c[3] + a.c[9] * b.c[2]);
+}
+
+// meet(circle, plane) -> point_pair: 24 mul, 14 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> meet(const basic_circle<T>& a, const basic_plane<T>& b) {
+  return basic_point_pair<T>(
+      a.c[0] * b.c[2] - a.c[1] * b.c[1], a.c[0] * b.c[3] - a.c[2] * b.c[1],
+      a.c[1] * b.c[3] - a.c[2] * b.c[2], a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1],
+      a.c[0] * b.c[0] - a.c[6] * b.c[1], a.c[1] * b.c[0] - a.c[6] * b.c[2],
+      a.c[3] * b.c[0] - a.c[7] * b.c[2] + a.c[8] * b.c[1], a.c[2] * b.c[0] - a.c[6] * b.c[3],
+      a.c[4] * b.c[0] - a.c[7] * b.c[3] + a.c[9] * b.c[1],
+      a.c[5] * b.c[0] - a.c[8] * b.c[3] + a.c[9] * b.c[2]);
+}
+
+// meet(circle, pseudoscalar) -> circle: 10 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> meet(const basic_circle<T>& a,
+                                          const basic_pseudoscalar<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                         a.c[4] * b.c[0], a.c[5] * b.c[0], a.c[6] * b.c[0], a.c[7] * b.c[0],
+                         a.c[8] * b.c[0], a.c[9] * b.c[0]);
+}
+
+// meet(circle, rotor) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_circle<T>& a, const basic_rotor<T>& b) {
+  return a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+}
+
+// meet(circle, translator) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_circle<T>& a, const basic_translator<T>& b) {
+  return a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+}
+
+// meet(circle, motor) -> motor: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> meet(const basic_circle<T>& a, const basic_motor<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[6] - a.c[1] * b.c[5] + a.c[2] * b.c[4] + a.c[3] * b.c[3] -
+                            a.c[4] * b.c[2] + a.c[5] * b.c[1],
+                        a.c[0] * b.c[7], a.c[1] * b.c[7], a.c[2] * b.c[7], a.c[3] * b.c[7],
+                        a.c[4] * b.c[7], a.c[5] * b.c[7], T(0));
+}
+
+// meet(sphere, normalized_point) -> scalar: 4 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_sphere<T>& a, const basic_normalized_point<T>& b) {
+  return a.c[4] + a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+}
+
+// meet(sphere, dual_sphere) -> scalar: 5 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_sphere<T>& a, const basic_dual_sphere<T>& b) {
+  return a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+}
+
+// meet(sphere, dual_plane) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_sphere<T>& a, const basic_dual_plane<T>& b) {
+  return a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+}
+
+// meet(sphere, euclidean_vector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_sphere<T>& a, const basic_euclidean_vector<T>& b) {
+  return -a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+}
+
+// meet(sphere, flat_point) -> dual_sphere: 8 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> meet(const basic_sphere<T>& a,
+                                               const basic_flat_point<T>& b) {
+  return basic_dual_sphere<T>(
+      -a.c[0] * b.c[3], -a.c[0] * b.c[0], -a.c[0] * b.c[1], -a.c[0] * b.c[2],
+      -a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0] + a.c[4] * b.c[3]);
+}
+
+// meet(sphere, euclidean_bivector) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> meet(const basic_sphere<T>& a,
+                                                    const basic_euclidean_bivector<T>& b) {
+  return basic_euclidean_vector<T>(a.c[1] * b.c[1] - a.c[2] * b.c[0],
+                                   a.c[1] * b.c[2] - a.c[3] * b.c[0],
+                                   a.c[2] * b.c[2] - a.c[3] * b.c[1]);
+}
+
+// meet(sphere, point_pair) -> dual_sphere: 20 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> meet(const basic_sphere<T>& a,
+                                               const basic_point_pair<T>& b) {
+  return basic_dual_sphere<T>(
+      -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0],
+      -a.c[0] * b.c[6] + a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[4] * b.c[0],
+      -a.c[0] * b.c[8] + a.c[1] * b.c[7] - a.c[3] * b.c[4] + a.c[4] * b.c[1],
+      -a.c[0] * b.c[9] + a.c[2] * b.c[7] - a.c[3] * b.c[5] + a.c[4] * b.c[2],
+      -a.c[1] * b.c[9] + a.c[2] * b.c[8] - a.c[3] * b.c[6] + a.c[4] * b.c[3]);
+}
+
+// meet(sphere, dual_line) -> dual_plane: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> meet(const basic_sphere<T>& a,
+                                              const basic_dual_line<T>& b) {
+  return basic_dual_plane<T>(-a.c[0] * b.c[3] + a.c[1] * b.c[1] - a.c[2] * b.c[0],
+                             -a.c[0] * b.c[4] + a.c[1] * b.c[2] - a.c[3] * b.c[0],
+                             -a.c[0] * b.c[5] + a.c[2] * b.c[2] - a.c[3] * b.c[1],
+                             -a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[3] * b.c[3]);
+}
+
+// meet(sphere, line) -> point_pair: 18 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> meet(const basic_sphere<T>& a, const basic_line<T>& b) {
+  return basic_point_pair<T>(a.c[0] * b.c[3], a.c[0] * b.c[4], a.c[0] * b.c[5],
+                             a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3], a.c[0] * b.c[0],
+                             a.c[0] * b.c[1], a.c[1] * b.c[1] - a.c[2] * b.c[0] + a.c[4] * b.c[3],
+                             a.c[0] * b.c[2], a.c[1] * b.c[2] - a.c[3] * b.c[0] + a.c[4] * b.c[4],
+                             a.c[2] * b.c[2] - a.c[3] * b.c[1] + a.c[4] * b.c[5]);
+}
+
+// meet(sphere, circle) -> point_pair: 30 mul, 20 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> meet(const basic_sphere<T>& a, const basic_circle<T>& b) {
+  return basic_point_pair<T>(a.c[0] * b.c[3] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                             a.c[0] * b.c[4] - a.c[1] * b.c[2] + a.c[3] * b.c[0],
+                             a.c[0] * b.c[5] - a.c[2] * b.c[2] + a.c[3] * b.c[1],
+                             a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3],
+                             a.c[0] * b.c[7] - a.c[1] * b.c[6] + a.c[4] * b.c[0],
+                             a.c[0] * b.c[8] - a.c[2] * b.c[6] + a.c[4] * b.c[1],
+                             a.c[1] * b.c[8] - a.c[2] * b.c[7] + a.c[4] * b.c[3],
+                             a.c[0] * b.c[9] - a.c[3] * b.c[6] + a.c[4] * b.c[2],
+                             a.c[1] * b.c[9] - a.c[3] * b.c[7] + a.c[4] * b.c[4],
+                             a.c[2] * b.c[9] - a.c[3] * b.c[8] + a.c[4] * b.c[5]);
+}
+
+// meet(sphere, pseudoscalar) -> sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> meet(const basic_sphere<T>& a,
+                                          const basic_pseudoscalar<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                         a.c[4] * b.c[0]);
+}
+
+// meet(sphere, rotor) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> meet(const basic_sphere<T>& a,
+                                                    const basic_rotor<T>& b) {
+  return basic_euclidean_vector<T>(a.c[1] * b.c[2] - a.c[2] * b.c[1],
+                                   a.c[1] * b.c[3] - a.c[3] * b.c[1],
+                                   a.c[2] * b.c[3] - a.c[3] * b.c[2]);
+}
+
+// meet(sphere, translator) -> dual_plane: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> meet(const basic_sphere<T>& a,
+                                              const basic_translator<T>& b) {
+  return basic_dual_plane<T>(-a.c[0] * b.c[1], -a.c[0] * b.c[2], -a.c[0] * b.c[3],
+                             -a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[3] * b.c[1]);
+}
+
+// meet(sphere, motor) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> meet(const basic_sphere<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = -a.c[0] * b.c[4] + a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.c[3] = -a.c[0] * b.c[5] + a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  r.c[4] = -a.c[0] * b.c[6] + a.c[2] * b.c[3] - a.c[3] * b.c[2];
+  r.c[5] = -a.c[1] * b.c[6] + a.c[2] * b.c[5] - a.c[3] * b.c[4];
+  r.c[22] = -a.c[0] * b.c[7];
+  r.c[23] = -a.c[1] * b.c[7];
+  r.c[24] = -a.c[2] * b.c[7];
+  r.c[25] = -a.c[3] * b.c[7];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// meet(plane, normalized_point) -> scalar: 3 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_plane<T>& a, const basic_normalized_point<T>& b) {
+  return a.c[0] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+}
+
+// meet(plane, dual_sphere) -> scalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_plane<T>& a, const basic_dual_sphere<T>& b) {
+  return a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[3] * b.c[1];
+}
+
+// meet(plane, dual_plane) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_plane<T>& a, const basic_dual_plane<T>& b) {
+  return -a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+}
+
+// meet(plane, euclidean_vector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_plane<T>& a, const basic_euclidean_vector<T>& b) {
+  return -a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+}
+
+// meet(plane, flat_point) -> dual_plane: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> meet(const basic_plane<T>& a,
+                                              const basic_flat_point<T>& b) {
+  return basic_dual_plane<T>(T(0), T(0), T(0),
+                             a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0]);
+}
+
+// meet(plane, euclidean_bivector) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> meet(const basic_plane<T>& a,
+                                                    const basic_euclidean_bivector<T>& b) {
+  return basic_euclidean_vector<T>(a.c[1] * b.c[1] - a.c[2] * b.c[0],
+                                   a.c[1] * b.c[2] - a.c[3] * b.c[0],
+                                   a.c[2] * b.c[2] - a.c[3] * b.c[1]);
+}
+
+// meet(plane, point_pair) -> dual_sphere: 16 mul, 11 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> meet(const basic_plane<T>& a,
+                                               const basic_point_pair<T>& b) {
+  return basic_dual_sphere<T>(
+      a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0],
+      a.c[0] * b.c[0] + a.c[1] * b.c[5] - a.c[2] * b.c[4],
+      a.c[0] * b.c[1] + a.c[1] * b.c[7] - a.c[3] * b.c[4],
+      a.c[0] * b.c[2] + a.c[2] * b.c[7] - a.c[3] * b.c[5],
+      a.c[0] * b.c[3] - a.c[1] * b.c[9] + a.c[2] * b.c[8] - a.c[3] * b.c[6]);
+}
+
+// meet(plane, dual_line) -> dual_plane: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> meet(const basic_plane<T>& a,
+                                              const basic_dual_line<T>& b) {
+  return basic_dual_plane<T>(a.c[1] * b.c[1] - a.c[2] * b.c[0], a.c[1] * b.c[2] - a.c[3] * b.c[0],
+                             a.c[2] * b.c[2] - a.c[3] * b.c[1],
+                             -a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[3] * b.c[3]);
+}
+
+// meet(plane, line) -> flat_point: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> meet(const basic_plane<T>& a, const basic_line<T>& b) {
+  return basic_flat_point<T>(a.c[0] * b.c[3] + a.c[1] * b.c[1] - a.c[2] * b.c[0],
+                             a.c[0] * b.c[4] + a.c[1] * b.c[2] - a.c[3] * b.c[0],
+                             a.c[0] * b.c[5] + a.c[2] * b.c[2] - a.c[3] * b.c[1],
+                             a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3]);
+}
+
+// meet(plane, circle) -> point_pair: 24 mul, 14 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> meet(const basic_plane<T>& a, const basic_circle<T>& b) {
+  return basic_point_pair<T>(
+      -a.c[1] * b.c[1] + a.c[2] * b.c[0], -a.c[1] * b.c[2] + a.c[3] * b.c[0],
+      -a.c[2] * b.c[2] + a.c[3] * b.c[1], a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3],
+      a.c[0] * b.c[0] - a.c[1] * b.c[6], a.c[0] * b.c[1] - a.c[2] * b.c[6],
+      a.c[0] * b.c[3] + a.c[1] * b.c[8] - a.c[2] * b.c[7], a.c[0] * b.c[2] - a.c[3] * b.c[6],
+      a.c[0] * b.c[4] + a.c[1] * b.c[9] - a.c[3] * b.c[7],
+      a.c[0] * b.c[5] + a.c[2] * b.c[9] - a.c[3] * b.c[8]);
+}
+
+// meet(plane, sphere) -> circle: 16 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> meet(const basic_plane<T>& a, const basic_sphere<T>& b) {
+  return basic_circle<T>(a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                         -a.c[1] * b.c[2] + a.c[2] * b.c[1], -a.c[1] * b.c[3] + a.c[3] * b.c[1],
+                         -a.c[2] * b.c[3] + a.c[3] * b.c[2], a.c[0] * b.c[0],
+                         a.c[0] * b.c[1] - a.c[1] * b.c[4], a.c[0] * b.c[2] - a.c[2] * b.c[4],
+                         a.c[0] * b.c[3] - a.c[3] * b.c[4]);
+}
+
+// meet(plane, plane) -> line: 12 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> meet(const basic_plane<T>& a, const basic_plane<T>& b) {
+  return basic_line<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                       a.c[0] * b.c[3] - a.c[3] * b.c[0], -a.c[1] * b.c[2] + a.c[2] * b.c[1],
+                       -a.c[1] * b.c[3] + a.c[3] * b.c[1], -a.c[2] * b.c[3] + a.c[3] * b.c[2]);
+}
+
+// meet(plane, pseudoscalar) -> plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> meet(const basic_plane<T>& a, const basic_pseudoscalar<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// meet(plane, rotor) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> meet(const basic_plane<T>& a,
+                                                    const basic_rotor<T>& b) {
+  return basic_euclidean_vector<T>(a.c[1] * b.c[2] - a.c[2] * b.c[1],
+                                   a.c[1] * b.c[3] - a.c[3] * b.c[1],
+                                   a.c[2] * b.c[3] - a.c[3] * b.c[2]);
+}
+
+// meet(plane, translator) -> dual_plane: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> meet(const basic_plane<T>& a,
+                                              const basic_translator<T>& b) {
+  return basic_dual_plane<T>(T(0), T(0), T(0),
+                             -a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[3] * b.c[1]);
+}
+
+// meet(plane, motor) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> meet(const basic_plane<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.c[3] = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  r.c[4] = a.c[2] * b.c[3] - a.c[3] * b.c[2];
+  r.c[5] = -a.c[1] * b.c[6] + a.c[2] * b.c[5] - a.c[3] * b.c[4];
+  r.c[23] = -a.c[1] * b.c[7];
+  r.c[24] = -a.c[2] * b.c[7];
+  r.c[25] = -a.c[3] * b.c[7];
+  r.bits = 0x380003cu;
+  return r;
+}
+
+// meet(pseudoscalar, normalized_point) -> dual_sphere: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> meet(const basic_pseudoscalar<T>& a,
+                                               const basic_normalized_point<T>& b) {
+  return basic_dual_sphere<T>(a.c[0], a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2],
+                              a.c[0] * b.c[3]);
+}
+
+// meet(pseudoscalar, dual_sphere) -> dual_sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> meet(const basic_pseudoscalar<T>& a,
+                                               const basic_dual_sphere<T>& b) {
+  return basic_dual_sphere<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                              a.c[0] * b.c[4]);
+}
+
+// meet(pseudoscalar, dual_plane) -> dual_plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> meet(const basic_pseudoscalar<T>& a,
+                                              const basic_dual_plane<T>& b) {
+  return basic_dual_plane<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// meet(pseudoscalar, euclidean_vector) -> euclidean_vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> meet(const basic_pseudoscalar<T>& a,
+                                                    const basic_euclidean_vector<T>& b) {
+  return basic_euclidean_vector<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// meet(pseudoscalar, flat_point) -> flat_point: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> meet(const basic_pseudoscalar<T>& a,
+                                              const basic_flat_point<T>& b) {
+  return basic_flat_point<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// meet(pseudoscalar, euclidean_bivector) -> euclidean_bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> meet(const basic_pseudoscalar<T>& a,
+                                                      const basic_euclidean_bivector<T>& b) {
+  return basic_euclidean_bivector<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// meet(pseudoscalar, point_pair) -> point_pair: 10 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> meet(const basic_pseudoscalar<T>& a,
+                                              const basic_point_pair<T>& b) {
+  return basic_point_pair<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                             a.c[0] * b.c[4], a.c[0] * b.c[5], a.c[0] * b.c[6], a.c[0] * b.c[7],
+                             a.c[0] * b.c[8], a.c[0] * b.c[9]);
+}
+
+// meet(pseudoscalar, dual_line) -> dual_line: 6 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> meet(const basic_pseudoscalar<T>& a,
+                                             const basic_dual_line<T>& b) {
+  return basic_dual_line<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                            a.c[0] * b.c[4], a.c[0] * b.c[5]);
+}
+
+// meet(pseudoscalar, line) -> line: 6 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> meet(const basic_pseudoscalar<T>& a, const basic_line<T>& b) {
+  return basic_line<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                       a.c[0] * b.c[4], a.c[0] * b.c[5]);
+}
+
+// meet(pseudoscalar, circle) -> circle: 10 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> meet(const basic_pseudoscalar<T>& a,
+                                          const basic_circle<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                         a.c[0] * b.c[4], a.c[0] * b.c[5], a.c[0] * b.c[6], a.c[0] * b.c[7],
+                         a.c[0] * b.c[8], a.c[0] * b.c[9]);
+}
+
+// meet(pseudoscalar, sphere) -> sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> meet(const basic_pseudoscalar<T>& a,
+                                          const basic_sphere<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                         a.c[0] * b.c[4]);
+}
+
+// meet(pseudoscalar, plane) -> plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> meet(const basic_pseudoscalar<T>& a, const basic_plane<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// meet(pseudoscalar, pseudoscalar) -> pseudoscalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> meet(const basic_pseudoscalar<T>& a,
+                                                const basic_pseudoscalar<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[0]);
+}
+
+// meet(pseudoscalar, rotor) -> rotor: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> meet(const basic_pseudoscalar<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// meet(pseudoscalar, translator) -> translator: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> meet(const basic_pseudoscalar<T>& a,
+                                              const basic_translator<T>& b) {
+  return basic_translator<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// meet(pseudoscalar, motor) -> motor: 8 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> meet(const basic_pseudoscalar<T>& a, const basic_motor<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                        a.c[0] * b.c[4], a.c[0] * b.c[5], a.c[0] * b.c[6], a.c[0] * b.c[7]);
+}
+
+// meet(rotor, line) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_rotor<T>& a, const basic_line<T>& b) {
+  return a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3];
+}
+
+// meet(rotor, circle) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_rotor<T>& a, const basic_circle<T>& b) {
+  return a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3];
+}
+
+// meet(rotor, sphere) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> meet(const basic_rotor<T>& a,
+                                                    const basic_sphere<T>& b) {
+  return basic_euclidean_vector<T>(a.c[1] * b.c[2] - a.c[2] * b.c[1],
+                                   a.c[1] * b.c[3] - a.c[3] * b.c[1],
+                                   a.c[2] * b.c[3] - a.c[3] * b.c[2]);
+}
+
+// meet(rotor, plane) -> euclidean_vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> meet(const basic_rotor<T>& a,
+                                                    const basic_plane<T>& b) {
+  return basic_euclidean_vector<T>(a.c[1] * b.c[2] - a.c[2] * b.c[1],
+                                   a.c[1] * b.c[3] - a.c[3] * b.c[1],
+                                   a.c[2] * b.c[3] - a.c[3] * b.c[2]);
+}
+
+// meet(rotor, pseudoscalar) -> rotor: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> meet(const basic_rotor<T>& a, const basic_pseudoscalar<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// meet(translator, circle) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_translator<T>& a, const basic_circle<T>& b) {
+  return a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+}
+
+// meet(translator, sphere) -> dual_plane: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> meet(const basic_translator<T>& a,
+                                              const basic_sphere<T>& b) {
+  return basic_dual_plane<T>(a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                             a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1]);
+}
+
+// meet(translator, plane) -> dual_plane: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> meet(const basic_translator<T>& a,
+                                              const basic_plane<T>& b) {
+  return basic_dual_plane<T>(T(0), T(0), T(0), a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1]);
+}
+
+// meet(translator, pseudoscalar) -> translator: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> meet(const basic_translator<T>& a,
+                                              const basic_pseudoscalar<T>& b) {
+  return basic_translator<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// meet(motor, normalized_point) -> scalar: 0 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_motor<T>& a,
+                            [[maybe_unused]] const basic_normalized_point<T>& b) {
+  return a.c[7];
+}
+
+// meet(motor, dual_sphere) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_motor<T>& a, const basic_dual_sphere<T>& b) {
+  return a.c[7] * b.c[0];
+}
+
+// meet(motor, flat_point) -> dual_plane: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> meet(const basic_motor<T>& a,
+                                              const basic_flat_point<T>& b) {
+  return basic_dual_plane<T>(T(0), T(0), T(0), a.c[7] * b.c[3]);
+}
+
+// meet(motor, point_pair) -> dual_plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> meet(const basic_motor<T>& a,
+                                              const basic_point_pair<T>& b) {
+  return basic_dual_plane<T>(a.c[7] * b.c[0], a.c[7] * b.c[1], a.c[7] * b.c[2], a.c[7] * b.c[3]);
+}
+
+// meet(motor, line) -> translator: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> meet(const basic_motor<T>& a, const basic_line<T>& b) {
+  return basic_translator<T>(a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3], a.c[7] * b.c[3],
+                             a.c[7] * b.c[4], a.c[7] * b.c[5]);
+}
+
+// meet(motor, circle) -> motor: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> meet(const basic_motor<T>& a, const basic_circle<T>& b) {
+  return basic_motor<T>(a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3] + a.c[4] * b.c[2] -
+                            a.c[5] * b.c[1] + a.c[6] * b.c[0],
+                        a.c[7] * b.c[0], a.c[7] * b.c[1], a.c[7] * b.c[2], a.c[7] * b.c[3],
+                        a.c[7] * b.c[4], a.c[7] * b.c[5], T(0));
+}
+
+// meet(motor, sphere) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> meet(const basic_motor<T>& a, const basic_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[4] * b.c[0];
+  r.c[3] = a.c[1] * b.c[3] - a.c[3] * b.c[1] + a.c[5] * b.c[0];
+  r.c[4] = a.c[2] * b.c[3] - a.c[3] * b.c[2] + a.c[6] * b.c[0];
+  r.c[5] = a.c[4] * b.c[3] - a.c[5] * b.c[2] + a.c[6] * b.c[1];
+  r.c[22] = a.c[7] * b.c[0];
+  r.c[23] = a.c[7] * b.c[1];
+  r.c[24] = a.c[7] * b.c[2];
+  r.c[25] = a.c[7] * b.c[3];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// meet(motor, plane) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> meet(const basic_motor<T>& a, const basic_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.c[3] = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  r.c[4] = a.c[2] * b.c[3] - a.c[3] * b.c[2];
+  r.c[5] = a.c[4] * b.c[3] - a.c[5] * b.c[2] + a.c[6] * b.c[1];
+  r.c[23] = a.c[7] * b.c[1];
+  r.c[24] = a.c[7] * b.c[2];
+  r.c[25] = a.c[7] * b.c[3];
+  r.bits = 0x380003cu;
+  return r;
+}
+
+// meet(motor, pseudoscalar) -> motor: 8 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> meet(const basic_motor<T>& a, const basic_pseudoscalar<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                        a.c[4] * b.c[0], a.c[5] * b.c[0], a.c[6] * b.c[0], a.c[7] * b.c[0]);
+}
+
+// join(normalized_point, normalized_point) -> point_pair: 12 mul, 10 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> join(const basic_normalized_point<T>& a,
+                                              const basic_normalized_point<T>& b) {
+  return basic_point_pair<T>(-a.c[0] + b.c[0], -a.c[1] + b.c[1], -a.c[2] + b.c[2], -a.c[3] + b.c[3],
+                             a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                             a.c[0] * b.c[3] - a.c[3] * b.c[0], a.c[1] * b.c[2] - a.c[2] * b.c[1],
+                             a.c[1] * b.c[3] - a.c[3] * b.c[1], a.c[2] * b.c[3] - a.c[3] * b.c[2]);
+}
+
+// join(normalized_point, dual_sphere) -> point_pair: 16 mul, 10 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> join(const basic_normalized_point<T>& a,
+                                              const basic_dual_sphere<T>& b) {
+  return basic_point_pair<T>(b.c[1] - a.c[0] * b.c[0], b.c[2] - a.c[1] * b.c[0],
+                             b.c[3] - a.c[2] * b.c[0], b.c[4] - a.c[3] * b.c[0],
+                             a.c[0] * b.c[2] - a.c[1] * b.c[1], a.c[0] * b.c[3] - a.c[2] * b.c[1],
+                             a.c[0] * b.c[4] - a.c[3] * b.c[1], a.c[1] * b.c[3] - a.c[2] * b.c[2],
+                             a.c[1] * b.c[4] - a.c[3] * b.c[2], a.c[2] * b.c[4] - a.c[3] * b.c[3]);
+}
+
+// join(normalized_point, dual_plane) -> point_pair: 12 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> join(const basic_normalized_point<T>& a,
+                                              const basic_dual_plane<T>& b) {
+  return basic_point_pair<T>(b.c[0], b.c[1], b.c[2], b.c[3], a.c[0] * b.c[1] - a.c[1] * b.c[0],
+                             a.c[0] * b.c[2] - a.c[2] * b.c[0], a.c[0] * b.c[3] - a.c[3] * b.c[0],
+                             a.c[1] * b.c[2] - a.c[2] * b.c[1], a.c[1] * b.c[3] - a.c[3] * b.c[1],
+                             a.c[2] * b.c[3] - a.c[3] * b.c[2]);
+}
+
+// join(normalized_point, euclidean_vector) -> point_pair: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> join(const basic_normalized_point<T>& a,
+                                              const basic_euclidean_vector<T>& b) {
+  return basic_point_pair<T>(b.c[0], b.c[1], b.c[2], T(0), a.c[0] * b.c[1] - a.c[1] * b.c[0],
+                             a.c[0] * b.c[2] - a.c[2] * b.c[0], -a.c[3] * b.c[0],
+                             a.c[1] * b.c[2] - a.c[2] * b.c[1], -a.c[3] * b.c[1], -a.c[3] * b.c[2]);
+}
+
+// join(normalized_point, flat_point) -> line: 9 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> join(const basic_normalized_point<T>& a,
+                                        const basic_flat_point<T>& b) {
+  return basic_line<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                       a.c[1] * b.c[2] - a.c[2] * b.c[1], b.c[0] - a.c[0] * b.c[3],
+                       b.c[1] - a.c[1] * b.c[3], b.c[2] - a.c[2] * b.c[3]);
+}
+
+// join(normalized_point, euclidean_bivector) -> circle: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_normalized_point<T>& a,
+                                          const basic_euclidean_bivector<T>& b) {
+  return basic_circle<T>(b.c[0], b.c[1], b.c[2], T(0), T(0), T(0),
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], a.c[3] * b.c[0],
+                         a.c[3] * b.c[1], a.c[3] * b.c[2]);
+}
+
+// join(normalized_point, point_pair) -> circle: 24 mul, 20 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_normalized_point<T>& a,
+                                          const basic_point_pair<T>& b) {
+  return basic_circle<T>(
+      b.c[4] - a.c[0] * b.c[1] + a.c[1] * b.c[0], b.c[5] - a.c[0] * b.c[2] + a.c[2] * b.c[0],
+      b.c[7] - a.c[1] * b.c[2] + a.c[2] * b.c[1], b.c[6] - a.c[0] * b.c[3] + a.c[3] * b.c[0],
+      b.c[8] - a.c[1] * b.c[3] + a.c[3] * b.c[1], b.c[9] - a.c[2] * b.c[3] + a.c[3] * b.c[2],
+      a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4],
+      a.c[0] * b.c[8] - a.c[1] * b.c[6] + a.c[3] * b.c[4],
+      a.c[0] * b.c[9] - a.c[2] * b.c[6] + a.c[3] * b.c[5],
+      a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[7]);
+}
+
+// join(normalized_point, dual_line) -> circle: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_normalized_point<T>& a,
+                                          const basic_dual_line<T>& b) {
+  return basic_circle<T>(b.c[0], b.c[1], b.c[2], b.c[3], b.c[4], b.c[5],
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[0],
+                         a.c[0] * b.c[5] - a.c[2] * b.c[3] + a.c[3] * b.c[1],
+                         a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[2]);
+}
+
+// join(normalized_point, line) -> plane: 9 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_normalized_point<T>& a,
+                                         const basic_line<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                        b.c[0] - a.c[0] * b.c[4] + a.c[1] * b.c[3],
+                        b.c[1] - a.c[0] * b.c[5] + a.c[2] * b.c[3],
+                        b.c[2] - a.c[1] * b.c[5] + a.c[2] * b.c[4]);
+}
+
+// join(normalized_point, circle) -> sphere: 16 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> join(const basic_normalized_point<T>& a,
+                                          const basic_circle<T>& b) {
+  return basic_sphere<T>(b.c[6] - a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0],
+                         b.c[7] - a.c[0] * b.c[4] + a.c[1] * b.c[3] - a.c[3] * b.c[0],
+                         b.c[8] - a.c[0] * b.c[5] + a.c[2] * b.c[3] - a.c[3] * b.c[1],
+                         b.c[9] - a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[3] * b.c[2],
+                         a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7] - a.c[3] * b.c[6]);
+}
+
+// join(normalized_point, sphere) -> pseudoscalar: 4 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_normalized_point<T>& a,
+                                                const basic_sphere<T>& b) {
+  return basic_pseudoscalar<T>(b.c[4] - a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1] +
+                               a.c[3] * b.c[0]);
+}
+
+// join(normalized_point, plane) -> pseudoscalar: 3 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_normalized_point<T>& a,
+                                                const basic_plane<T>& b) {
+  return basic_pseudoscalar<T>(b.c[0] - a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1]);
+}
+
+// join(normalized_point, rotor) -> mv: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_normalized_point<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = b.c[0];
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[1] * b.c[0];
+  r.c[4] = a.c[2] * b.c[0];
+  r.c[5] = a.c[3] * b.c[0];
+  r.c[16] = b.c[1];
+  r.c[17] = b.c[2];
+  r.c[19] = b.c[3];
+  r.c[22] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[23] = a.c[3] * b.c[1];
+  r.c[24] = a.c[3] * b.c[2];
+  r.c[25] = a.c[3] * b.c[3];
+  r.bits = 0x3cb003eu;
+  return r;
+}
+
+// join(normalized_point, translator) -> mv: 10 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_normalized_point<T>& a,
+                                      const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = b.c[0];
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[1] * b.c[0];
+  r.c[4] = a.c[2] * b.c[0];
+  r.c[5] = a.c[3] * b.c[0];
+  r.c[18] = b.c[1];
+  r.c[20] = b.c[2];
+  r.c[21] = b.c[3];
+  r.c[23] = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  r.c[24] = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  r.c[25] = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  r.bits = 0x3b4003eu;
+  return r;
+}
+
+// join(normalized_point, motor) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_normalized_point<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = b.c[0];
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[1] * b.c[0];
+  r.c[4] = a.c[2] * b.c[0];
+  r.c[5] = a.c[3] * b.c[0];
+  r.c[16] = b.c[1];
+  r.c[17] = b.c[2];
+  r.c[18] = b.c[4];
+  r.c[19] = b.c[3];
+  r.c[20] = b.c[5];
+  r.c[21] = b.c[6];
+  r.c[22] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[23] = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[3] * b.c[1];
+  r.c[24] = a.c[0] * b.c[6] - a.c[2] * b.c[4] + a.c[3] * b.c[2];
+  r.c[25] = a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[3];
+  r.c[31] = b.c[7];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// join(dual_sphere, normalized_point) -> point_pair: 16 mul, 10 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> join(const basic_dual_sphere<T>& a,
+                                              const basic_normalized_point<T>& b) {
+  return basic_point_pair<T>(-a.c[1] + a.c[0] * b.c[0], -a.c[2] + a.c[0] * b.c[1],
+                             -a.c[3] + a.c[0] * b.c[2], -a.c[4] + a.c[0] * b.c[3],
+                             a.c[1] * b.c[1] - a.c[2] * b.c[0], a.c[1] * b.c[2] - a.c[3] * b.c[0],
+                             a.c[1] * b.c[3] - a.c[4] * b.c[0], a.c[2] * b.c[2] - a.c[3] * b.c[1],
+                             a.c[2] * b.c[3] - a.c[4] * b.c[1], a.c[3] * b.c[3] - a.c[4] * b.c[2]);
+}
+
+// join(dual_sphere, dual_sphere) -> point_pair: 20 mul, 10 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> join(const basic_dual_sphere<T>& a,
+                                              const basic_dual_sphere<T>& b) {
+  return basic_point_pair<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                             a.c[0] * b.c[3] - a.c[3] * b.c[0], a.c[0] * b.c[4] - a.c[4] * b.c[0],
+                             a.c[1] * b.c[2] - a.c[2] * b.c[1], a.c[1] * b.c[3] - a.c[3] * b.c[1],
+                             a.c[1] * b.c[4] - a.c[4] * b.c[1], a.c[2] * b.c[3] - a.c[3] * b.c[2],
+                             a.c[2] * b.c[4] - a.c[4] * b.c[2], a.c[3] * b.c[4] - a.c[4] * b.c[3]);
+}
+
+// join(dual_sphere, dual_plane) -> point_pair: 16 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> join(const basic_dual_sphere<T>& a,
+                                              const basic_dual_plane<T>& b) {
+  return basic_point_pair<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                             a.c[1] * b.c[1] - a.c[2] * b.c[0], a.c[1] * b.c[2] - a.c[3] * b.c[0],
+                             a.c[1] * b.c[3] - a.c[4] * b.c[0], a.c[2] * b.c[2] - a.c[3] * b.c[1],
+                             a.c[2] * b.c[3] - a.c[4] * b.c[1], a.c[3] * b.c[3] - a.c[4] * b.c[2]);
+}
+
+// join(dual_sphere, euclidean_vector) -> point_pair: 12 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> join(const basic_dual_sphere<T>& a,
+                                              const basic_euclidean_vector<T>& b) {
+  return basic_point_pair<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], T(0),
+                             a.c[1] * b.c[1] - a.c[2] * b.c[0], a.c[1] * b.c[2] - a.c[3] * b.c[0],
+                             -a.c[4] * b.c[0], a.c[2] * b.c[2] - a.c[3] * b.c[1], -a.c[4] * b.c[1],
+                             -a.c[4] * b.c[2]);
+}
+
+// join(dual_sphere, flat_point) -> line: 12 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> join(const basic_dual_sphere<T>& a,
+                                        const basic_flat_point<T>& b) {
+  return basic_line<T>(a.c[1] * b.c[1] - a.c[2] * b.c[0], a.c[1] * b.c[2] - a.c[3] * b.c[0],
+                       a.c[2] * b.c[2] - a.c[3] * b.c[1], a.c[0] * b.c[0] - a.c[1] * b.c[3],
+                       a.c[0] * b.c[1] - a.c[2] * b.c[3], a.c[0] * b.c[2] - a.c[3] * b.c[3]);
+}
+
+// join(dual_sphere, euclidean_bivector) -> circle: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_dual_sphere<T>& a,
+                                          const basic_euclidean_bivector<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], T(0), T(0), T(0),
+                         a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0], a.c[4] * b.c[0],
+                         a.c[4] * b.c[1], a.c[4] * b.c[2]);
+}
+
+// join(dual_sphere, point_pair) -> circle: 30 mul, 20 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_dual_sphere<T>& a,
+                                          const basic_point_pair<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[4] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         a.c[0] * b.c[5] - a.c[1] * b.c[2] + a.c[3] * b.c[0],
+                         a.c[0] * b.c[7] - a.c[2] * b.c[2] + a.c[3] * b.c[1],
+                         a.c[0] * b.c[6] - a.c[1] * b.c[3] + a.c[4] * b.c[0],
+                         a.c[0] * b.c[8] - a.c[2] * b.c[3] + a.c[4] * b.c[1],
+                         a.c[0] * b.c[9] - a.c[3] * b.c[3] + a.c[4] * b.c[2],
+                         a.c[1] * b.c[7] - a.c[2] * b.c[5] + a.c[3] * b.c[4],
+                         a.c[1] * b.c[8] - a.c[2] * b.c[6] + a.c[4] * b.c[4],
+                         a.c[1] * b.c[9] - a.c[3] * b.c[6] + a.c[4] * b.c[5],
+                         a.c[2] * b.c[9] - a.c[3] * b.c[8] + a.c[4] * b.c[7]);
+}
+
+// join(dual_sphere, dual_line) -> circle: 18 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_dual_sphere<T>& a,
+                                          const basic_dual_line<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                         a.c[0] * b.c[4], a.c[0] * b.c[5],
+                         a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0],
+                         a.c[1] * b.c[4] - a.c[2] * b.c[3] + a.c[4] * b.c[0],
+                         a.c[1] * b.c[5] - a.c[3] * b.c[3] + a.c[4] * b.c[1],
+                         a.c[2] * b.c[5] - a.c[3] * b.c[4] + a.c[4] * b.c[2]);
+}
+
+// join(dual_sphere, line) -> plane: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_dual_sphere<T>& a, const basic_line<T>& b) {
+  return basic_plane<T>(a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0],
+                        a.c[0] * b.c[0] - a.c[1] * b.c[4] + a.c[2] * b.c[3],
+                        a.c[0] * b.c[1] - a.c[1] * b.c[5] + a.c[3] * b.c[3],
+                        a.c[0] * b.c[2] - a.c[2] * b.c[5] + a.c[3] * b.c[4]);
+}
+
+// join(dual_sphere, circle) -> sphere: 20 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> join(const basic_dual_sphere<T>& a, const basic_circle<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[6] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0],
+                         a.c[0] * b.c[7] - a.c[1] * b.c[4] + a.c[2] * b.c[3] - a.c[4] * b.c[0],
+                         a.c[0] * b.c[8] - a.c[1] * b.c[5] + a.c[3] * b.c[3] - a.c[4] * b.c[1],
+                         a.c[0] * b.c[9] - a.c[2] * b.c[5] + a.c[3] * b.c[4] - a.c[4] * b.c[2],
+                         a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[7] - a.c[4] * b.c[6]);
+}
+
+// join(dual_sphere, sphere) -> pseudoscalar: 5 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_dual_sphere<T>& a,
+                                                const basic_sphere<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[2] * b.c[2] -
+                               a.c[3] * b.c[1] + a.c[4] * b.c[0]);
+}
+
+// join(dual_sphere, plane) -> pseudoscalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_dual_sphere<T>& a,
+                                                const basic_plane<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2] -
+                               a.c[3] * b.c[1]);
+}
+
+// join(dual_sphere, rotor) -> mv: 14 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_dual_sphere<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[1] * b.c[0];
+  r.c[3] = a.c[2] * b.c[0];
+  r.c[4] = a.c[3] * b.c[0];
+  r.c[5] = a.c[4] * b.c[0];
+  r.c[16] = a.c[0] * b.c[1];
+  r.c[17] = a.c[0] * b.c[2];
+  r.c[19] = a.c[0] * b.c[3];
+  r.c[22] = a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[23] = a.c[4] * b.c[1];
+  r.c[24] = a.c[4] * b.c[2];
+  r.c[25] = a.c[4] * b.c[3];
+  r.bits = 0x3cb003eu;
+  return r;
+}
+
+// join(dual_sphere, translator) -> mv: 14 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_dual_sphere<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[1] * b.c[0];
+  r.c[3] = a.c[2] * b.c[0];
+  r.c[4] = a.c[3] * b.c[0];
+  r.c[5] = a.c[4] * b.c[0];
+  r.c[18] = a.c[0] * b.c[1];
+  r.c[20] = a.c[0] * b.c[2];
+  r.c[21] = a.c[0] * b.c[3];
+  r.c[23] = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  r.c[24] = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  r.c[25] = a.c[2] * b.c[3] - a.c[3] * b.c[2];
+  r.bits = 0x3b4003eu;
+  return r;
+}
+
+// join(dual_sphere, motor) -> mv: 24 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_dual_sphere<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[1] * b.c[0];
+  r.c[3] = a.c[2] * b.c[0];
+  r.c[4] = a.c[3] * b.c[0];
+  r.c[5] = a.c[4] * b.c[0];
+  r.c[16] = a.c[0] * b.c[1];
+  r.c[17] = a.c[0] * b.c[2];
+  r.c[18] = a.c[0] * b.c[4];
+  r.c[19] = a.c[0] * b.c[3];
+  r.c[20] = a.c[0] * b.c[5];
+  r.c[21] = a.c[0] * b.c[6];
+  r.c[22] = a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[23] = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[4] * b.c[1];
+  r.c[24] = a.c[1] * b.c[6] - a.c[3] * b.c[4] + a.c[4] * b.c[2];
+  r.c[25] = a.c[2] * b.c[6] - a.c[3] * b.c[5] + a.c[4] * b.c[3];
+  r.c[31] = a.c[0] * b.c[7];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// join(dual_plane, normalized_point) -> point_pair: 12 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> join(const basic_dual_plane<T>& a,
+                                              const basic_normalized_point<T>& b) {
+  return basic_point_pair<T>(-a.c[0], -a.c[1], -a.c[2], -a.c[3], a.c[0] * b.c[1] - a.c[1] * b.c[0],
+                             a.c[0] * b.c[2] - a.c[2] * b.c[0], a.c[0] * b.c[3] - a.c[3] * b.c[0],
+                             a.c[1] * b.c[2] - a.c[2] * b.c[1], a.c[1] * b.c[3] - a.c[3] * b.c[1],
+                             a.c[2] * b.c[3] - a.c[3] * b.c[2]);
+}
+
+// join(dual_plane, dual_sphere) -> point_pair: 16 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> join(const basic_dual_plane<T>& a,
+                                              const basic_dual_sphere<T>& b) {
+  return basic_point_pair<T>(-a.c[0] * b.c[0], -a.c[1] * b.c[0], -a.c[2] * b.c[0], -a.c[3] * b.c[0],
+                             a.c[0] * b.c[2] - a.c[1] * b.c[1], a.c[0] * b.c[3] - a.c[2] * b.c[1],
+                             a.c[0] * b.c[4] - a.c[3] * b.c[1], a.c[1] * b.c[3] - a.c[2] * b.c[2],
+                             a.c[1] * b.c[4] - a.c[3] * b.c[2], a.c[2] * b.c[4] - a.c[3] * b.c[3]);
+}
+
+// join(dual_plane, dual_plane) -> dual_line: 12 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> join(const basic_dual_plane<T>& a,
+                                             const basic_dual_plane<T>& b) {
+  return basic_dual_line<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                            a.c[1] * b.c[2] - a.c[2] * b.c[1], a.c[0] * b.c[3] - a.c[3] * b.c[0],
+                            a.c[1] * b.c[3] - a.c[3] * b.c[1], a.c[2] * b.c[3] - a.c[3] * b.c[2]);
+}
+
+// join(dual_plane, euclidean_vector) -> dual_line: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> join(const basic_dual_plane<T>& a,
+                                             const basic_euclidean_vector<T>& b) {
+  return basic_dual_line<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                            a.c[1] * b.c[2] - a.c[2] * b.c[1], -a.c[3] * b.c[0], -a.c[3] * b.c[1],
+                            -a.c[3] * b.c[2]);
+}
+
+// join(dual_plane, flat_point) -> line: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> join(const basic_dual_plane<T>& a,
+                                        const basic_flat_point<T>& b) {
+  return basic_line<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                       a.c[1] * b.c[2] - a.c[2] * b.c[1], -a.c[0] * b.c[3], -a.c[1] * b.c[3],
+                       -a.c[2] * b.c[3]);
+}
+
+// join(dual_plane, euclidean_bivector) -> circle: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_dual_plane<T>& a,
+                                          const basic_euclidean_bivector<T>& b) {
+  return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0),
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], a.c[3] * b.c[0],
+                         a.c[3] * b.c[1], a.c[3] * b.c[2]);
+}
+
+// join(dual_plane, point_pair) -> circle: 24 mul, 14 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_dual_plane<T>& a,
+                                          const basic_point_pair<T>& b) {
+  return basic_circle<T>(-a.c[0] * b.c[1] + a.c[1] * b.c[0], -a.c[0] * b.c[2] + a.c[2] * b.c[0],
+                         -a.c[1] * b.c[2] + a.c[2] * b.c[1], -a.c[0] * b.c[3] + a.c[3] * b.c[0],
+                         -a.c[1] * b.c[3] + a.c[3] * b.c[1], -a.c[2] * b.c[3] + a.c[3] * b.c[2],
+                         a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4],
+                         a.c[0] * b.c[8] - a.c[1] * b.c[6] + a.c[3] * b.c[4],
+                         a.c[0] * b.c[9] - a.c[2] * b.c[6] + a.c[3] * b.c[5],
+                         a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[7]);
+}
+
+// join(dual_plane, dual_line) -> circle: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_dual_plane<T>& a,
+                                          const basic_dual_line<T>& b) {
+  return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0),
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[0],
+                         a.c[0] * b.c[5] - a.c[2] * b.c[3] + a.c[3] * b.c[1],
+                         a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[2]);
+}
+
+// join(dual_plane, line) -> plane: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_dual_plane<T>& a, const basic_line<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                        -a.c[0] * b.c[4] + a.c[1] * b.c[3], -a.c[0] * b.c[5] + a.c[2] * b.c[3],
+                        -a.c[1] * b.c[5] + a.c[2] * b.c[4]);
+}
+
+// join(dual_plane, circle) -> sphere: 16 mul, 11 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> join(const basic_dual_plane<T>& a, const basic_circle<T>& b) {
+  return basic_sphere<T>(-a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0],
+                         -a.c[0] * b.c[4] + a.c[1] * b.c[3] - a.c[3] * b.c[0],
+                         -a.c[0] * b.c[5] + a.c[2] * b.c[3] - a.c[3] * b.c[1],
+                         -a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[3] * b.c[2],
+                         a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7] - a.c[3] * b.c[6]);
+}
+
+// join(dual_plane, sphere) -> pseudoscalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_dual_plane<T>& a,
+                                                const basic_sphere<T>& b) {
+  return basic_pseudoscalar<T>(-a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1] +
+                               a.c[3] * b.c[0]);
+}
+
+// join(dual_plane, plane) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_dual_plane<T>& a,
+                                                const basic_plane<T>& b) {
+  return basic_pseudoscalar<T>(-a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1]);
+}
+
+// join(dual_plane, rotor) -> mv: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_dual_plane<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[1] * b.c[0];
+  r.c[4] = a.c[2] * b.c[0];
+  r.c[5] = a.c[3] * b.c[0];
+  r.c[22] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[23] = a.c[3] * b.c[1];
+  r.c[24] = a.c[3] * b.c[2];
+  r.c[25] = a.c[3] * b.c[3];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// join(dual_plane, translator) -> mv: 10 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_dual_plane<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[1] * b.c[0];
+  r.c[4] = a.c[2] * b.c[0];
+  r.c[5] = a.c[3] * b.c[0];
+  r.c[23] = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  r.c[24] = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  r.c[25] = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  r.bits = 0x380003cu;
+  return r;
+}
+
+// join(dual_plane, motor) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_dual_plane<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[1] * b.c[0];
+  r.c[4] = a.c[2] * b.c[0];
+  r.c[5] = a.c[3] * b.c[0];
+  r.c[22] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[23] = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[3] * b.c[1];
+  r.c[24] = a.c[0] * b.c[6] - a.c[2] * b.c[4] + a.c[3] * b.c[2];
+  r.c[25] = a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[3];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// join(euclidean_vector, normalized_point) -> point_pair: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> join(const basic_euclidean_vector<T>& a,
+                                              const basic_normalized_point<T>& b) {
+  return basic_point_pair<T>(-a.c[0], -a.c[1], -a.c[2], T(0), a.c[0] * b.c[1] - a.c[1] * b.c[0],
+                             a.c[0] * b.c[2] - a.c[2] * b.c[0], a.c[0] * b.c[3],
+                             a.c[1] * b.c[2] - a.c[2] * b.c[1], a.c[1] * b.c[3], a.c[2] * b.c[3]);
+}
+
+// join(euclidean_vector, dual_sphere) -> point_pair: 12 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> join(const basic_euclidean_vector<T>& a,
+                                              const basic_dual_sphere<T>& b) {
+  return basic_point_pair<T>(-a.c[0] * b.c[0], -a.c[1] * b.c[0], -a.c[2] * b.c[0], T(0),
+                             a.c[0] * b.c[2] - a.c[1] * b.c[1], a.c[0] * b.c[3] - a.c[2] * b.c[1],
+                             a.c[0] * b.c[4], a.c[1] * b.c[3] - a.c[2] * b.c[2], a.c[1] * b.c[4],
+                             a.c[2] * b.c[4]);
+}
+
+// join(euclidean_vector, dual_plane) -> dual_line: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> join(const basic_euclidean_vector<T>& a,
+                                             const basic_dual_plane<T>& b) {
+  return basic_dual_line<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                            a.c[1] * b.c[2] - a.c[2] * b.c[1], a.c[0] * b.c[3], a.c[1] * b.c[3],
+                            a.c[2] * b.c[3]);
+}
+
+// join(euclidean_vector, euclidean_vector) -> euclidean_bivector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> join(const basic_euclidean_vector<T>& a,
+                                                      const basic_euclidean_vector<T>& b) {
+  return basic_euclidean_bivector<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0],
+                                     a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                                     a.c[1] * b.c[2] - a.c[2] * b.c[1]);
+}
+
+// join(euclidean_vector, flat_point) -> line: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> join(const basic_euclidean_vector<T>& a,
+                                        const basic_flat_point<T>& b) {
+  return basic_line<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                       a.c[1] * b.c[2] - a.c[2] * b.c[1], -a.c[0] * b.c[3], -a.c[1] * b.c[3],
+                       -a.c[2] * b.c[3]);
+}
+
+// join(euclidean_vector, euclidean_bivector) -> circle: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_euclidean_vector<T>& a,
+                                          const basic_euclidean_bivector<T>& b) {
+  return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0),
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], T(0), T(0), T(0));
+}
+
+// join(euclidean_vector, point_pair) -> circle: 18 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_euclidean_vector<T>& a,
+                                          const basic_point_pair<T>& b) {
+  return basic_circle<T>(-a.c[0] * b.c[1] + a.c[1] * b.c[0], -a.c[0] * b.c[2] + a.c[2] * b.c[0],
+                         -a.c[1] * b.c[2] + a.c[2] * b.c[1], -a.c[0] * b.c[3], -a.c[1] * b.c[3],
+                         -a.c[2] * b.c[3], a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4],
+                         a.c[0] * b.c[8] - a.c[1] * b.c[6], a.c[0] * b.c[9] - a.c[2] * b.c[6],
+                         a.c[1] * b.c[9] - a.c[2] * b.c[8]);
+}
+
+// join(euclidean_vector, dual_line) -> circle: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_euclidean_vector<T>& a,
+                                          const basic_dual_line<T>& b) {
+  return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0),
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         a.c[0] * b.c[4] - a.c[1] * b.c[3], a.c[0] * b.c[5] - a.c[2] * b.c[3],
+                         a.c[1] * b.c[5] - a.c[2] * b.c[4]);
+}
+
+// join(euclidean_vector, line) -> plane: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_euclidean_vector<T>& a,
+                                         const basic_line<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                        -a.c[0] * b.c[4] + a.c[1] * b.c[3], -a.c[0] * b.c[5] + a.c[2] * b.c[3],
+                        -a.c[1] * b.c[5] + a.c[2] * b.c[4]);
+}
+
+// join(euclidean_vector, circle) -> sphere: 12 mul, 7 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> join(const basic_euclidean_vector<T>& a,
+                                          const basic_circle<T>& b) {
+  return basic_sphere<T>(-a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0],
+                         -a.c[0] * b.c[4] + a.c[1] * b.c[3], -a.c[0] * b.c[5] + a.c[2] * b.c[3],
+                         -a.c[1] * b.c[5] + a.c[2] * b.c[4],
+                         a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7]);
+}
+
+// join(euclidean_vector, sphere) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_euclidean_vector<T>& a,
+                                                const basic_sphere<T>& b) {
+  return basic_pseudoscalar<T>(-a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1]);
+}
+
+// join(euclidean_vector, plane) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_euclidean_vector<T>& a,
+                                                const basic_plane<T>& b) {
+  return basic_pseudoscalar<T>(-a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1]);
+}
+
+// join(euclidean_vector, rotor) -> mv: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_euclidean_vector<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[1] * b.c[0];
+  r.c[4] = a.c[2] * b.c[0];
+  r.c[22] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.bits = 0x40001cu;
+  return r;
+}
+
+// join(euclidean_vector, translator) -> mv: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_euclidean_vector<T>& a,
+                                      const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[1] * b.c[0];
+  r.c[4] = a.c[2] * b.c[0];
+  r.c[23] = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  r.c[24] = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  r.c[25] = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  r.bits = 0x380001cu;
+  return r;
+}
+
+// join(euclidean_vector, motor) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_euclidean_vector<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[1] * b.c[0];
+  r.c[4] = a.c[2] * b.c[0];
+  r.c[22] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[23] = a.c[0] * b.c[5] - a.c[1] * b.c[4];
+  r.c[24] = a.c[0] * b.c[6] - a.c[2] * b.c[4];
+  r.c[25] = a.c[1] * b.c[6] - a.c[2] * b.c[5];
+  r.bits = 0x3c0001cu;
+  return r;
+}
+
+// join(flat_point, normalized_point) -> line: 9 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> join(const basic_flat_point<T>& a,
+                                        const basic_normalized_point<T>& b) {
+  return basic_line<T>(-a.c[0] * b.c[1] + a.c[1] * b.c[0], -a.c[0] * b.c[2] + a.c[2] * b.c[0],
+                       -a.c[1] * b.c[2] + a.c[2] * b.c[1], a.c[0] - a.c[3] * b.c[0],
+                       a.c[1] - a.c[3] * b.c[1], a.c[2] - a.c[3] * b.c[2]);
+}
+
+// join(flat_point, dual_sphere) -> line: 12 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> join(const basic_flat_point<T>& a,
+                                        const basic_dual_sphere<T>& b) {
+  return basic_line<T>(-a.c[0] * b.c[2] + a.c[1] * b.c[1], -a.c[0] * b.c[3] + a.c[2] * b.c[1],
+                       -a.c[1] * b.c[3] + a.c[2] * b.c[2], a.c[0] * b.c[0] - a.c[3] * b.c[1],
+                       a.c[1] * b.c[0] - a.c[3] * b.c[2], a.c[2] * b.c[0] - a.c[3] * b.c[3]);
+}
+
+// join(flat_point, dual_plane) -> line: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> join(const basic_flat_point<T>& a,
+                                        const basic_dual_plane<T>& b) {
+  return basic_line<T>(-a.c[0] * b.c[1] + a.c[1] * b.c[0], -a.c[0] * b.c[2] + a.c[2] * b.c[0],
+                       -a.c[1] * b.c[2] + a.c[2] * b.c[1], -a.c[3] * b.c[0], -a.c[3] * b.c[1],
+                       -a.c[3] * b.c[2]);
+}
+
+// join(flat_point, euclidean_vector) -> line: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> join(const basic_flat_point<T>& a,
+                                        const basic_euclidean_vector<T>& b) {
+  return basic_line<T>(-a.c[0] * b.c[1] + a.c[1] * b.c[0], -a.c[0] * b.c[2] + a.c[2] * b.c[0],
+                       -a.c[1] * b.c[2] + a.c[2] * b.c[1], -a.c[3] * b.c[0], -a.c[3] * b.c[1],
+                       -a.c[3] * b.c[2]);
+}
+
+// join(flat_point, euclidean_bivector) -> plane: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_flat_point<T>& a,
+                                         const basic_euclidean_bivector<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], a.c[3] * b.c[0],
+                        a.c[3] * b.c[1], a.c[3] * b.c[2]);
+}
+
+// join(flat_point, point_pair) -> plane: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_flat_point<T>& a,
+                                         const basic_point_pair<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4],
+                        -a.c[0] * b.c[1] + a.c[1] * b.c[0] + a.c[3] * b.c[4],
+                        -a.c[0] * b.c[2] + a.c[2] * b.c[0] + a.c[3] * b.c[5],
+                        -a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[3] * b.c[7]);
+}
+
+// join(flat_point, dual_line) -> plane: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_flat_point<T>& a,
+                                         const basic_dual_line<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], a.c[3] * b.c[0],
+                        a.c[3] * b.c[1], a.c[3] * b.c[2]);
+}
+
+// join(flat_point, circle) -> pseudoscalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_flat_point<T>& a,
+                                                const basic_circle<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] -
+                               a.c[3] * b.c[6]);
+}
+
+// join(flat_point, rotor) -> mv: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_flat_point<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = a.c[3] * b.c[0];
+  r.c[12] = a.c[0] * b.c[0];
+  r.c[14] = a.c[1] * b.c[0];
+  r.c[15] = a.c[2] * b.c[0];
+  r.c[27] = a.c[3] * b.c[1];
+  r.c[28] = a.c[3] * b.c[2];
+  r.c[29] = a.c[3] * b.c[3];
+  r.c[30] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// join(flat_point, translator) -> flat_point: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> join(const basic_flat_point<T>& a,
+                                              const basic_translator<T>& b) {
+  return basic_flat_point<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// join(flat_point, motor) -> mv: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_flat_point<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = a.c[3] * b.c[0];
+  r.c[12] = a.c[0] * b.c[0];
+  r.c[14] = a.c[1] * b.c[0];
+  r.c[15] = a.c[2] * b.c[0];
+  r.c[27] = a.c[3] * b.c[1];
+  r.c[28] = a.c[3] * b.c[2];
+  r.c[29] = a.c[3] * b.c[3];
+  r.c[30] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// join(euclidean_bivector, normalized_point) -> circle: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_euclidean_bivector<T>& a,
+                                          const basic_normalized_point<T>& b) {
+  return basic_circle<T>(a.c[0], a.c[1], a.c[2], T(0), T(0), T(0),
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], a.c[0] * b.c[3],
+                         a.c[1] * b.c[3], a.c[2] * b.c[3]);
+}
+
+// join(euclidean_bivector, dual_sphere) -> circle: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_euclidean_bivector<T>& a,
+                                          const basic_dual_sphere<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], T(0), T(0), T(0),
+                         a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1], a.c[0] * b.c[4],
+                         a.c[1] * b.c[4], a.c[2] * b.c[4]);
+}
+
+// join(euclidean_bivector, dual_plane) -> circle: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_euclidean_bivector<T>& a,
+                                          const basic_dual_plane<T>& b) {
+  return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0),
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], a.c[0] * b.c[3],
+                         a.c[1] * b.c[3], a.c[2] * b.c[3]);
+}
+
+// join(euclidean_bivector, euclidean_vector) -> circle: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_euclidean_bivector<T>& a,
+                                          const basic_euclidean_vector<T>& b) {
+  return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0),
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], T(0), T(0), T(0));
+}
+
+// join(euclidean_bivector, flat_point) -> plane: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_euclidean_bivector<T>& a,
+                                         const basic_flat_point<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], a.c[0] * b.c[3],
+                        a.c[1] * b.c[3], a.c[2] * b.c[3]);
+}
+
+// join(euclidean_bivector, point_pair) -> sphere: 9 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> join(const basic_euclidean_bivector<T>& a,
+                                          const basic_point_pair<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], a.c[0] * b.c[3],
+                         a.c[1] * b.c[3], a.c[2] * b.c[3],
+                         a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[6]);
+}
+
+// join(euclidean_bivector, dual_line) -> plane: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_euclidean_bivector<T>& a,
+                                         const basic_dual_line<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3], T(0), T(0), T(0));
+}
+
+// join(euclidean_bivector, line) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_euclidean_bivector<T>& a,
+                                                const basic_line<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3]);
+}
+
+// join(euclidean_bivector, circle) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_euclidean_bivector<T>& a,
+                                                const basic_circle<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3]);
+}
+
+// join(euclidean_bivector, rotor) -> euclidean_bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> join(const basic_euclidean_bivector<T>& a,
+                                                      const basic_rotor<T>& b) {
+  return basic_euclidean_bivector<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// join(euclidean_bivector, translator) -> motor: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_euclidean_bivector<T>& a,
+                                         const basic_translator<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], T(0), T(0), T(0),
+                        a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1]);
+}
+
+// join(euclidean_bivector, motor) -> motor: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_euclidean_bivector<T>& a,
+                                         const basic_motor<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], T(0), T(0), T(0),
+                        a.c[0] * b.c[6] - a.c[1] * b.c[5] + a.c[2] * b.c[4]);
+}
+
+// join(point_pair, normalized_point) -> circle: 24 mul, 20 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_point_pair<T>& a,
+                                          const basic_normalized_point<T>& b) {
+  return basic_circle<T>(
+      a.c[4] + a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[5] + a.c[0] * b.c[2] - a.c[2] * b.c[0],
+      a.c[7] + a.c[1] * b.c[2] - a.c[2] * b.c[1], a.c[6] + a.c[0] * b.c[3] - a.c[3] * b.c[0],
+      a.c[8] + a.c[1] * b.c[3] - a.c[3] * b.c[1], a.c[9] + a.c[2] * b.c[3] - a.c[3] * b.c[2],
+      a.c[4] * b.c[2] - a.c[5] * b.c[1] + a.c[7] * b.c[0],
+      a.c[4] * b.c[3] - a.c[6] * b.c[1] + a.c[8] * b.c[0],
+      a.c[5] * b.c[3] - a.c[6] * b.c[2] + a.c[9] * b.c[0],
+      a.c[7] * b.c[3] - a.c[8] * b.c[2] + a.c[9] * b.c[1]);
+}
+
+// join(point_pair, dual_sphere) -> circle: 30 mul, 20 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_point_pair<T>& a,
+                                          const basic_dual_sphere<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[4] * b.c[0],
+                         a.c[0] * b.c[3] - a.c[2] * b.c[1] + a.c[5] * b.c[0],
+                         a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[7] * b.c[0],
+                         a.c[0] * b.c[4] - a.c[3] * b.c[1] + a.c[6] * b.c[0],
+                         a.c[1] * b.c[4] - a.c[3] * b.c[2] + a.c[8] * b.c[0],
+                         a.c[2] * b.c[4] - a.c[3] * b.c[3] + a.c[9] * b.c[0],
+                         a.c[4] * b.c[3] - a.c[5] * b.c[2] + a.c[7] * b.c[1],
+                         a.c[4] * b.c[4] - a.c[6] * b.c[2] + a.c[8] * b.c[1],
+                         a.c[5] * b.c[4] - a.c[6] * b.c[3] + a.c[9] * b.c[1],
+                         a.c[7] * b.c[4] - a.c[8] * b.c[3] + a.c[9] * b.c[2]);
+}
+
+// join(point_pair, dual_plane) -> circle: 24 mul, 14 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_point_pair<T>& a,
+                                          const basic_dual_plane<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                         a.c[1] * b.c[2] - a.c[2] * b.c[1], a.c[0] * b.c[3] - a.c[3] * b.c[0],
+                         a.c[1] * b.c[3] - a.c[3] * b.c[1], a.c[2] * b.c[3] - a.c[3] * b.c[2],
+                         a.c[4] * b.c[2] - a.c[5] * b.c[1] + a.c[7] * b.c[0],
+                         a.c[4] * b.c[3] - a.c[6] * b.c[1] + a.c[8] * b.c[0],
+                         a.c[5] * b.c[3] - a.c[6] * b.c[2] + a.c[9] * b.c[0],
+                         a.c[7] * b.c[3] - a.c[8] * b.c[2] + a.c[9] * b.c[1]);
+}
+
+// join(point_pair, euclidean_vector) -> circle: 18 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_point_pair<T>& a,
+                                          const basic_euclidean_vector<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                         a.c[1] * b.c[2] - a.c[2] * b.c[1], -a.c[3] * b.c[0], -a.c[3] * b.c[1],
+                         -a.c[3] * b.c[2], a.c[4] * b.c[2] - a.c[5] * b.c[1] + a.c[7] * b.c[0],
+                         -a.c[6] * b.c[1] + a.c[8] * b.c[0], -a.c[6] * b.c[2] + a.c[9] * b.c[0],
+                         -a.c[8] * b.c[2] + a.c[9] * b.c[1]);
+}
+
+// join(point_pair, flat_point) -> plane: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_point_pair<T>& a,
+                                         const basic_flat_point<T>& b) {
+  return basic_plane<T>(a.c[4] * b.c[2] - a.c[5] * b.c[1] + a.c[7] * b.c[0],
+                        a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[4] * b.c[3],
+                        a.c[0] * b.c[2] - a.c[2] * b.c[0] + a.c[5] * b.c[3],
+                        a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[7] * b.c[3]);
+}
+
+// join(point_pair, euclidean_bivector) -> sphere: 9 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> join(const basic_point_pair<T>& a,
+                                          const basic_euclidean_bivector<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], a.c[3] * b.c[0],
+                         a.c[3] * b.c[1], a.c[3] * b.c[2],
+                         a.c[6] * b.c[2] - a.c[8] * b.c[1] + a.c[9] * b.c[0]);
+}
+
+// join(point_pair, point_pair) -> sphere: 30 mul, 25 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> join(const basic_point_pair<T>& a,
+                                          const basic_point_pair<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4] + a.c[4] * b.c[2] -
+                             a.c[5] * b.c[1] + a.c[7] * b.c[0],
+                         a.c[0] * b.c[8] - a.c[1] * b.c[6] + a.c[3] * b.c[4] + a.c[4] * b.c[3] -
+                             a.c[6] * b.c[1] + a.c[8] * b.c[0],
+                         a.c[0] * b.c[9] - a.c[2] * b.c[6] + a.c[3] * b.c[5] + a.c[5] * b.c[3] -
+                             a.c[6] * b.c[2] + a.c[9] * b.c[0],
+                         a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[7] + a.c[7] * b.c[3] -
+                             a.c[8] * b.c[2] + a.c[9] * b.c[1],
+                         a.c[4] * b.c[9] - a.c[5] * b.c[8] + a.c[6] * b.c[7] + a.c[7] * b.c[6] -
+                             a.c[8] * b.c[5] + a.c[9] * b.c[4]);
+}
+
+// join(point_pair, dual_line) -> sphere: 18 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> join(const basic_point_pair<T>& a,
+                                          const basic_dual_line<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[0],
+                         a.c[0] * b.c[5] - a.c[2] * b.c[3] + a.c[3] * b.c[1],
+                         a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[2],
+                         a.c[4] * b.c[5] - a.c[5] * b.c[4] + a.c[6] * b.c[2] + a.c[7] * b.c[3] -
+                             a.c[8] * b.c[1] + a.c[9] * b.c[0]);
+}
+
+// join(point_pair, line) -> pseudoscalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_point_pair<T>& a,
+                                                const basic_line<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] +
+                               a.c[4] * b.c[5] - a.c[5] * b.c[4] + a.c[7] * b.c[3]);
+}
+
+// join(point_pair, circle) -> pseudoscalar: 10 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_point_pair<T>& a,
+                                                const basic_circle<T>& b) {
+  return basic_pseudoscalar<T>(
+      a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7] - a.c[3] * b.c[6] + a.c[4] * b.c[5] -
+      a.c[5] * b.c[4] + a.c[6] * b.c[2] + a.c[7] * b.c[3] - a.c[8] * b.c[1] + a.c[9] * b.c[0]);
+}
+
+// join(point_pair, rotor) -> mv: 19 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_point_pair<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[1] * b.c[0];
+  r.c[8] = a.c[2] * b.c[0];
+  r.c[9] = a.c[3] * b.c[0];
+  r.c[10] = a.c[4] * b.c[0];
+  r.c[11] = a.c[5] * b.c[0];
+  r.c[12] = a.c[6] * b.c[0];
+  r.c[13] = a.c[7] * b.c[0];
+  r.c[14] = a.c[8] * b.c[0];
+  r.c[15] = a.c[9] * b.c[0];
+  r.c[26] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[27] = a.c[3] * b.c[1];
+  r.c[28] = a.c[3] * b.c[2];
+  r.c[29] = a.c[3] * b.c[3];
+  r.c[30] = a.c[6] * b.c[3] - a.c[8] * b.c[2] + a.c[9] * b.c[1];
+  r.bits = 0x7c00ffc0u;
+  return r;
+}
+
+// join(point_pair, translator) -> mv: 19 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_point_pair<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[1] * b.c[0];
+  r.c[8] = a.c[2] * b.c[0];
+  r.c[9] = a.c[3] * b.c[0];
+  r.c[10] = a.c[4] * b.c[0];
+  r.c[11] = a.c[5] * b.c[0];
+  r.c[12] = a.c[6] * b.c[0];
+  r.c[13] = a.c[7] * b.c[0];
+  r.c[14] = a.c[8] * b.c[0];
+  r.c[15] = a.c[9] * b.c[0];
+  r.c[27] = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  r.c[28] = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  r.c[29] = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  r.c[30] = a.c[4] * b.c[3] - a.c[5] * b.c[2] + a.c[7] * b.c[1];
+  r.bits = 0x7800ffc0u;
+  return r;
+}
+
+// join(point_pair, motor) -> mv: 28 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_point_pair<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[1] * b.c[0];
+  r.c[8] = a.c[2] * b.c[0];
+  r.c[9] = a.c[3] * b.c[0];
+  r.c[10] = a.c[4] * b.c[0];
+  r.c[11] = a.c[5] * b.c[0];
+  r.c[12] = a.c[6] * b.c[0];
+  r.c[13] = a.c[7] * b.c[0];
+  r.c[14] = a.c[8] * b.c[0];
+  r.c[15] = a.c[9] * b.c[0];
+  r.c[26] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[27] = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[3] * b.c[1];
+  r.c[28] = a.c[0] * b.c[6] - a.c[2] * b.c[4] + a.c[3] * b.c[2];
+  r.c[29] = a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[3];
+  r.c[30] = a.c[4] * b.c[6] - a.c[5] * b.c[5] + a.c[6] * b.c[3] + a.c[7] * b.c[4] -
+            a.c[8] * b.c[2] + a.c[9] * b.c[1];
+  r.bits = 0x7c00ffc0u;
+  return r;
+}
+
+// join(dual_line, normalized_point) -> circle: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_dual_line<T>& a,
+                                          const basic_normalized_point<T>& b) {
+  return basic_circle<T>(a.c[0], a.c[1], a.c[2], a.c[3], a.c[4], a.c[5],
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0],
+                         a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0],
+                         a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1]);
+}
+
+// join(dual_line, dual_sphere) -> circle: 18 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_dual_line<T>& a,
+                                          const basic_dual_sphere<T>& b) {
+  return basic_circle<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                         a.c[4] * b.c[0], a.c[5] * b.c[0],
+                         a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1],
+                         a.c[0] * b.c[4] - a.c[3] * b.c[2] + a.c[4] * b.c[1],
+                         a.c[1] * b.c[4] - a.c[3] * b.c[3] + a.c[5] * b.c[1],
+                         a.c[2] * b.c[4] - a.c[4] * b.c[3] + a.c[5] * b.c[2]);
+}
+
+// join(dual_line, dual_plane) -> circle: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_dual_line<T>& a,
+                                          const basic_dual_plane<T>& b) {
+  return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0),
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0],
+                         a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0],
+                         a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1]);
+}
+
+// join(dual_line, euclidean_vector) -> circle: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> join(const basic_dual_line<T>& a,
+                                          const basic_euclidean_vector<T>& b) {
+  return basic_circle<T>(T(0), T(0), T(0), T(0), T(0), T(0),
+                         a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         -a.c[3] * b.c[1] + a.c[4] * b.c[0], -a.c[3] * b.c[2] + a.c[5] * b.c[0],
+                         -a.c[4] * b.c[2] + a.c[5] * b.c[1]);
+}
+
+// join(dual_line, flat_point) -> plane: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_dual_line<T>& a,
+                                         const basic_flat_point<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0], a.c[0] * b.c[3],
+                        a.c[1] * b.c[3], a.c[2] * b.c[3]);
+}
+
+// join(dual_line, euclidean_bivector) -> plane: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_dual_line<T>& a,
+                                         const basic_euclidean_bivector<T>& b) {
+  return basic_plane<T>(a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0], T(0), T(0), T(0));
+}
+
+// join(dual_line, point_pair) -> sphere: 18 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> join(const basic_dual_line<T>& a,
+                                          const basic_point_pair<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0],
+                         a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0],
+                         a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1],
+                         a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[6] + a.c[3] * b.c[7] -
+                             a.c[4] * b.c[5] + a.c[5] * b.c[4]);
+}
+
+// join(dual_line, dual_line) -> plane: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_dual_line<T>& a, const basic_dual_line<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3] + a.c[3] * b.c[2] -
+                            a.c[4] * b.c[1] + a.c[5] * b.c[0],
+                        T(0), T(0), T(0));
+}
+
+// join(dual_line, line) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_dual_line<T>& a,
+                                                const basic_line<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3]);
+}
+
+// join(dual_line, circle) -> pseudoscalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_dual_line<T>& a,
+                                                const basic_circle<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3] +
+                               a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0]);
+}
+
+// join(dual_line, rotor) -> motor: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_dual_line<T>& a, const basic_rotor<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                        a.c[4] * b.c[0], a.c[5] * b.c[0],
+                        a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1]);
+}
+
+// join(dual_line, translator) -> motor: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_dual_line<T>& a,
+                                         const basic_translator<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                        a.c[4] * b.c[0], a.c[5] * b.c[0],
+                        a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1]);
+}
+
+// join(dual_line, motor) -> motor: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_dual_line<T>& a, const basic_motor<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                        a.c[4] * b.c[0], a.c[5] * b.c[0],
+                        a.c[0] * b.c[6] - a.c[1] * b.c[5] + a.c[2] * b.c[4] + a.c[3] * b.c[3] -
+                            a.c[4] * b.c[2] + a.c[5] * b.c[1]);
+}
+
+// join(line, normalized_point) -> plane: 9 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_line<T>& a,
+                                         const basic_normalized_point<T>& b) {
+  return basic_plane<T>(-a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0],
+                        -a.c[0] - a.c[3] * b.c[1] + a.c[4] * b.c[0],
+                        -a.c[1] - a.c[3] * b.c[2] + a.c[5] * b.c[0],
+                        -a.c[2] - a.c[4] * b.c[2] + a.c[5] * b.c[1]);
+}
+
+// join(line, dual_sphere) -> plane: 12 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_line<T>& a, const basic_dual_sphere<T>& b) {
+  return basic_plane<T>(-a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1],
+                        -a.c[0] * b.c[0] - a.c[3] * b.c[2] + a.c[4] * b.c[1],
+                        -a.c[1] * b.c[0] - a.c[3] * b.c[3] + a.c[5] * b.c[1],
+                        -a.c[2] * b.c[0] - a.c[4] * b.c[3] + a.c[5] * b.c[2]);
+}
+
+// join(line, dual_plane) -> plane: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_line<T>& a, const basic_dual_plane<T>& b) {
+  return basic_plane<T>(-a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0],
+                        -a.c[3] * b.c[1] + a.c[4] * b.c[0], -a.c[3] * b.c[2] + a.c[5] * b.c[0],
+                        -a.c[4] * b.c[2] + a.c[5] * b.c[1]);
+}
+
+// join(line, euclidean_vector) -> plane: 9 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_line<T>& a,
+                                         const basic_euclidean_vector<T>& b) {
+  return basic_plane<T>(-a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0],
+                        -a.c[3] * b.c[1] + a.c[4] * b.c[0], -a.c[3] * b.c[2] + a.c[5] * b.c[0],
+                        -a.c[4] * b.c[2] + a.c[5] * b.c[1]);
+}
+
+// join(line, euclidean_bivector) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_line<T>& a,
+                                                const basic_euclidean_bivector<T>& b) {
+  return basic_pseudoscalar<T>(a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0]);
+}
+
+// join(line, point_pair) -> pseudoscalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_line<T>& a,
+                                                const basic_point_pair<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] +
+                               a.c[3] * b.c[7] - a.c[4] * b.c[5] + a.c[5] * b.c[4]);
+}
+
+// join(line, dual_line) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_line<T>& a,
+                                                const basic_dual_line<T>& b) {
+  return basic_pseudoscalar<T>(a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0]);
+}
+
+// join(line, rotor) -> mv: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_line<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[18] = a.c[3] * b.c[0];
+  r.c[20] = a.c[4] * b.c[0];
+  r.c[21] = a.c[5] * b.c[0];
+  r.c[23] = a.c[0] * b.c[0];
+  r.c[24] = a.c[1] * b.c[0];
+  r.c[25] = a.c[2] * b.c[0];
+  r.c[31] = a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.bits = 0x83b40000u;
+  return r;
+}
+
+// join(line, translator) -> line: 6 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> join(const basic_line<T>& a, const basic_translator<T>& b) {
+  return basic_line<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                       a.c[4] * b.c[0], a.c[5] * b.c[0]);
+}
+
+// join(line, motor) -> mv: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_line<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[18] = a.c[3] * b.c[0];
+  r.c[20] = a.c[4] * b.c[0];
+  r.c[21] = a.c[5] * b.c[0];
+  r.c[23] = a.c[0] * b.c[0];
+  r.c[24] = a.c[1] * b.c[0];
+  r.c[25] = a.c[2] * b.c[0];
+  r.c[31] = a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.bits = 0x83b40000u;
+  return r;
+}
+
+// join(circle, normalized_point) -> sphere: 16 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> join(const basic_circle<T>& a,
+                                          const basic_normalized_point<T>& b) {
+  return basic_sphere<T>(-a.c[6] + a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         -a.c[7] + a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0],
+                         -a.c[8] + a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0],
+                         -a.c[9] + a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1],
+                         a.c[6] * b.c[3] - a.c[7] * b.c[2] + a.c[8] * b.c[1] - a.c[9] * b.c[0]);
+}
+
+// join(circle, dual_sphere) -> sphere: 20 mul, 15 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> join(const basic_circle<T>& a, const basic_dual_sphere<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[6] * b.c[0],
+                         a.c[0] * b.c[4] - a.c[3] * b.c[2] + a.c[4] * b.c[1] - a.c[7] * b.c[0],
+                         a.c[1] * b.c[4] - a.c[3] * b.c[3] + a.c[5] * b.c[1] - a.c[8] * b.c[0],
+                         a.c[2] * b.c[4] - a.c[4] * b.c[3] + a.c[5] * b.c[2] - a.c[9] * b.c[0],
+                         a.c[6] * b.c[4] - a.c[7] * b.c[3] + a.c[8] * b.c[2] - a.c[9] * b.c[1]);
+}
+
+// join(circle, dual_plane) -> sphere: 16 mul, 11 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> join(const basic_circle<T>& a, const basic_dual_plane<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0],
+                         a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0],
+                         a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1],
+                         a.c[6] * b.c[3] - a.c[7] * b.c[2] + a.c[8] * b.c[1] - a.c[9] * b.c[0]);
+}
+
+// join(circle, euclidean_vector) -> sphere: 12 mul, 7 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> join(const basic_circle<T>& a,
+                                          const basic_euclidean_vector<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0],
+                         -a.c[3] * b.c[1] + a.c[4] * b.c[0], -a.c[3] * b.c[2] + a.c[5] * b.c[0],
+                         -a.c[4] * b.c[2] + a.c[5] * b.c[1],
+                         -a.c[7] * b.c[2] + a.c[8] * b.c[1] - a.c[9] * b.c[0]);
+}
+
+// join(circle, flat_point) -> pseudoscalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_circle<T>& a,
+                                                const basic_flat_point<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] -
+                               a.c[6] * b.c[3]);
+}
+
+// join(circle, euclidean_bivector) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_circle<T>& a,
+                                                const basic_euclidean_bivector<T>& b) {
+  return basic_pseudoscalar<T>(a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0]);
+}
+
+// join(circle, point_pair) -> pseudoscalar: 10 mul, 9 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_circle<T>& a,
+                                                const basic_point_pair<T>& b) {
+  return basic_pseudoscalar<T>(
+      a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[6] + a.c[3] * b.c[7] - a.c[4] * b.c[5] +
+      a.c[5] * b.c[4] - a.c[6] * b.c[3] + a.c[7] * b.c[2] - a.c[8] * b.c[1] + a.c[9] * b.c[0]);
+}
+
+// join(circle, dual_line) -> pseudoscalar: 6 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_circle<T>& a,
+                                                const basic_dual_line<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3] +
+                               a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0]);
+}
+
+// join(circle, rotor) -> mv: 13 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_circle<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[1] * b.c[0];
+  r.c[18] = a.c[3] * b.c[0];
+  r.c[19] = a.c[2] * b.c[0];
+  r.c[20] = a.c[4] * b.c[0];
+  r.c[21] = a.c[5] * b.c[0];
+  r.c[22] = a.c[6] * b.c[0];
+  r.c[23] = a.c[7] * b.c[0];
+  r.c[24] = a.c[8] * b.c[0];
+  r.c[25] = a.c[9] * b.c[0];
+  r.c[31] = a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// join(circle, translator) -> mv: 13 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_circle<T>& a, const basic_translator<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[1] * b.c[0];
+  r.c[18] = a.c[3] * b.c[0];
+  r.c[19] = a.c[2] * b.c[0];
+  r.c[20] = a.c[4] * b.c[0];
+  r.c[21] = a.c[5] * b.c[0];
+  r.c[22] = a.c[6] * b.c[0];
+  r.c[23] = a.c[7] * b.c[0];
+  r.c[24] = a.c[8] * b.c[0];
+  r.c[25] = a.c[9] * b.c[0];
+  r.c[31] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// join(circle, motor) -> mv: 16 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_circle<T>& a, const basic_motor<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[1] * b.c[0];
+  r.c[18] = a.c[3] * b.c[0];
+  r.c[19] = a.c[2] * b.c[0];
+  r.c[20] = a.c[4] * b.c[0];
+  r.c[21] = a.c[5] * b.c[0];
+  r.c[22] = a.c[6] * b.c[0];
+  r.c[23] = a.c[7] * b.c[0];
+  r.c[24] = a.c[8] * b.c[0];
+  r.c[25] = a.c[9] * b.c[0];
+  r.c[31] = a.c[0] * b.c[6] - a.c[1] * b.c[5] + a.c[2] * b.c[4] + a.c[3] * b.c[3] -
+            a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// join(sphere, normalized_point) -> pseudoscalar: 4 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_sphere<T>& a,
+                                                const basic_normalized_point<T>& b) {
+  return basic_pseudoscalar<T>(a.c[4] + a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] -
+                               a.c[3] * b.c[0]);
+}
+
+// join(sphere, dual_sphere) -> pseudoscalar: 5 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_sphere<T>& a,
+                                                const basic_dual_sphere<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[2] * b.c[2] -
+                               a.c[3] * b.c[1] + a.c[4] * b.c[0]);
+}
+
+// join(sphere, dual_plane) -> pseudoscalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_sphere<T>& a,
+                                                const basic_dual_plane<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] -
+                               a.c[3] * b.c[0]);
+}
+
+// join(sphere, euclidean_vector) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_sphere<T>& a,
+                                                const basic_euclidean_vector<T>& b) {
+  return basic_pseudoscalar<T>(-a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0]);
+}
+
+// join(sphere, rotor) -> sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> join(const basic_sphere<T>& a, const basic_rotor<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                         a.c[4] * b.c[0]);
+}
+
+// join(sphere, translator) -> sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> join(const basic_sphere<T>& a, const basic_translator<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                         a.c[4] * b.c[0]);
+}
+
+// join(sphere, motor) -> sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> join(const basic_sphere<T>& a, const basic_motor<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                         a.c[4] * b.c[0]);
+}
+
+// join(plane, normalized_point) -> pseudoscalar: 3 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_plane<T>& a,
+                                                const basic_normalized_point<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0]);
+}
+
+// join(plane, dual_sphere) -> pseudoscalar: 4 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_plane<T>& a,
+                                                const basic_dual_sphere<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2] -
+                               a.c[3] * b.c[1]);
+}
+
+// join(plane, dual_plane) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_plane<T>& a,
+                                                const basic_dual_plane<T>& b) {
+  return basic_pseudoscalar<T>(-a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0]);
+}
+
+// join(plane, euclidean_vector) -> pseudoscalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_plane<T>& a,
+                                                const basic_euclidean_vector<T>& b) {
+  return basic_pseudoscalar<T>(-a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0]);
+}
+
+// join(plane, rotor) -> plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_plane<T>& a, const basic_rotor<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// join(plane, translator) -> plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_plane<T>& a, const basic_translator<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// join(plane, motor) -> plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_plane<T>& a, const basic_motor<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// join(pseudoscalar, rotor) -> pseudoscalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_pseudoscalar<T>& a,
+                                                const basic_rotor<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[0]);
+}
+
+// join(pseudoscalar, translator) -> pseudoscalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_pseudoscalar<T>& a,
+                                                const basic_translator<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[0]);
+}
+
+// join(pseudoscalar, motor) -> pseudoscalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_pseudoscalar<T>& a,
+                                                const basic_motor<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[0]);
+}
+
+// join(rotor, normalized_point) -> mv: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0];
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[0] * b.c[1];
+  r.c[4] = a.c[0] * b.c[2];
+  r.c[5] = a.c[0] * b.c[3];
+  r.c[16] = a.c[1];
+  r.c[17] = a.c[2];
+  r.c[19] = a.c[3];
+  r.c[22] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[23] = a.c[1] * b.c[3];
+  r.c[24] = a.c[2] * b.c[3];
+  r.c[25] = a.c[3] * b.c[3];
+  r.bits = 0x3cb003eu;
+  return r;
+}
+
+// join(rotor, dual_sphere) -> mv: 14 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_dual_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[0] * b.c[1];
+  r.c[3] = a.c[0] * b.c[2];
+  r.c[4] = a.c[0] * b.c[3];
+  r.c[5] = a.c[0] * b.c[4];
+  r.c[16] = a.c[1] * b.c[0];
+  r.c[17] = a.c[2] * b.c[0];
+  r.c[19] = a.c[3] * b.c[0];
+  r.c[22] = a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[23] = a.c[1] * b.c[4];
+  r.c[24] = a.c[2] * b.c[4];
+  r.c[25] = a.c[3] * b.c[4];
+  r.bits = 0x3cb003eu;
+  return r;
+}
+
+// join(rotor, dual_plane) -> mv: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_dual_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[0] * b.c[1];
+  r.c[4] = a.c[0] * b.c[2];
+  r.c[5] = a.c[0] * b.c[3];
+  r.c[22] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[23] = a.c[1] * b.c[3];
+  r.c[24] = a.c[2] * b.c[3];
+  r.c[25] = a.c[3] * b.c[3];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// join(rotor, euclidean_vector) -> mv: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_euclidean_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[0] * b.c[1];
+  r.c[4] = a.c[0] * b.c[2];
+  r.c[22] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.bits = 0x40001cu;
+  return r;
+}
+
+// join(rotor, flat_point) -> mv: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_flat_point<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = a.c[0] * b.c[3];
+  r.c[12] = a.c[0] * b.c[0];
+  r.c[14] = a.c[0] * b.c[1];
+  r.c[15] = a.c[0] * b.c[2];
+  r.c[27] = a.c[1] * b.c[3];
+  r.c[28] = a.c[2] * b.c[3];
+  r.c[29] = a.c[3] * b.c[3];
+  r.c[30] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// join(rotor, euclidean_bivector) -> euclidean_bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> join(const basic_rotor<T>& a,
+                                                      const basic_euclidean_bivector<T>& b) {
+  return basic_euclidean_bivector<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// join(rotor, point_pair) -> mv: 19 mul, 4 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[0] * b.c[1];
+  r.c[8] = a.c[0] * b.c[2];
+  r.c[9] = a.c[0] * b.c[3];
+  r.c[10] = a.c[0] * b.c[4];
+  r.c[11] = a.c[0] * b.c[5];
+  r.c[12] = a.c[0] * b.c[6];
+  r.c[13] = a.c[0] * b.c[7];
+  r.c[14] = a.c[0] * b.c[8];
+  r.c[15] = a.c[0] * b.c[9];
+  r.c[26] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[27] = a.c[1] * b.c[3];
+  r.c[28] = a.c[2] * b.c[3];
+  r.c[29] = a.c[3] * b.c[3];
+  r.c[30] = a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[6];
+  r.bits = 0x7c00ffc0u;
+  return r;
+}
+
+// join(rotor, dual_line) -> motor: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_rotor<T>& a, const basic_dual_line<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                        a.c[0] * b.c[4], a.c[0] * b.c[5],
+                        a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3]);
+}
+
+// join(rotor, line) -> mv: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_line<T>& b) {
+  basic_mv<T> r;
+  r.c[18] = a.c[0] * b.c[3];
+  r.c[20] = a.c[0] * b.c[4];
+  r.c[21] = a.c[0] * b.c[5];
+  r.c[23] = a.c[0] * b.c[0];
+  r.c[24] = a.c[0] * b.c[1];
+  r.c[25] = a.c[0] * b.c[2];
+  r.c[31] = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3];
+  r.bits = 0x83b40000u;
+  return r;
+}
+
+// join(rotor, circle) -> mv: 13 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[0] * b.c[1];
+  r.c[18] = a.c[0] * b.c[3];
+  r.c[19] = a.c[0] * b.c[2];
+  r.c[20] = a.c[0] * b.c[4];
+  r.c[21] = a.c[0] * b.c[5];
+  r.c[22] = a.c[0] * b.c[6];
+  r.c[23] = a.c[0] * b.c[7];
+  r.c[24] = a.c[0] * b.c[8];
+  r.c[25] = a.c[0] * b.c[9];
+  r.c[31] = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// join(rotor, sphere) -> sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> join(const basic_rotor<T>& a, const basic_sphere<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                         a.c[0] * b.c[4]);
+}
+
+// join(rotor, plane) -> plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_rotor<T>& a, const basic_plane<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// join(rotor, pseudoscalar) -> pseudoscalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_rotor<T>& a,
+                                                const basic_pseudoscalar<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[0]);
+}
+
+// join(rotor, rotor) -> rotor: 7 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> join(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1] + a.c[1] * b.c[0],
+                        a.c[0] * b.c[2] + a.c[2] * b.c[0], a.c[0] * b.c[3] + a.c[3] * b.c[0]);
+}
+
+// join(rotor, translator) -> motor: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_rotor<T>& a, const basic_translator<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                        a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                        a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1]);
+}
+
+// join(rotor, motor) -> motor: 14 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_rotor<T>& a, const basic_motor<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1] + a.c[1] * b.c[0],
+                        a.c[0] * b.c[2] + a.c[2] * b.c[0], a.c[0] * b.c[3] + a.c[3] * b.c[0],
+                        a.c[0] * b.c[4], a.c[0] * b.c[5], a.c[0] * b.c[6],
+                        a.c[0] * b.c[7] + a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[4]);
+}
+
+// join(translator, normalized_point) -> mv: 10 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_translator<T>& a,
+                                      const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0];
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[0] * b.c[1];
+  r.c[4] = a.c[0] * b.c[2];
+  r.c[5] = a.c[0] * b.c[3];
+  r.c[18] = a.c[1];
+  r.c[20] = a.c[2];
+  r.c[21] = a.c[3];
+  r.c[23] = -a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[24] = -a.c[1] * b.c[2] + a.c[3] * b.c[0];
+  r.c[25] = -a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.bits = 0x3b4003eu;
+  return r;
+}
+
+// join(translator, dual_sphere) -> mv: 14 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_translator<T>& a, const basic_dual_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[0] * b.c[1];
+  r.c[3] = a.c[0] * b.c[2];
+  r.c[4] = a.c[0] * b.c[3];
+  r.c[5] = a.c[0] * b.c[4];
+  r.c[18] = a.c[1] * b.c[0];
+  r.c[20] = a.c[2] * b.c[0];
+  r.c[21] = a.c[3] * b.c[0];
+  r.c[23] = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.c[24] = -a.c[1] * b.c[3] + a.c[3] * b.c[1];
+  r.c[25] = -a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  r.bits = 0x3b4003eu;
+  return r;
+}
+
+// join(translator, dual_plane) -> mv: 10 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_translator<T>& a, const basic_dual_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[0] * b.c[1];
+  r.c[4] = a.c[0] * b.c[2];
+  r.c[5] = a.c[0] * b.c[3];
+  r.c[23] = -a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[24] = -a.c[1] * b.c[2] + a.c[3] * b.c[0];
+  r.c[25] = -a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.bits = 0x380003cu;
+  return r;
+}
+
+// join(translator, euclidean_vector) -> mv: 9 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_translator<T>& a,
+                                      const basic_euclidean_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[0] * b.c[1];
+  r.c[4] = a.c[0] * b.c[2];
+  r.c[23] = -a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[24] = -a.c[1] * b.c[2] + a.c[3] * b.c[0];
+  r.c[25] = -a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.bits = 0x380001cu;
+  return r;
+}
+
+// join(translator, flat_point) -> flat_point: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> join(const basic_translator<T>& a,
+                                              const basic_flat_point<T>& b) {
+  return basic_flat_point<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// join(translator, euclidean_bivector) -> motor: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_translator<T>& a,
+                                         const basic_euclidean_bivector<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], T(0), T(0), T(0),
+                        a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0]);
+}
+
+// join(translator, point_pair) -> mv: 19 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_translator<T>& a, const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[0] * b.c[1];
+  r.c[8] = a.c[0] * b.c[2];
+  r.c[9] = a.c[0] * b.c[3];
+  r.c[10] = a.c[0] * b.c[4];
+  r.c[11] = a.c[0] * b.c[5];
+  r.c[12] = a.c[0] * b.c[6];
+  r.c[13] = a.c[0] * b.c[7];
+  r.c[14] = a.c[0] * b.c[8];
+  r.c[15] = a.c[0] * b.c[9];
+  r.c[27] = -a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  r.c[28] = -a.c[1] * b.c[2] + a.c[3] * b.c[0];
+  r.c[29] = -a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[30] = a.c[1] * b.c[7] - a.c[2] * b.c[5] + a.c[3] * b.c[4];
+  r.bits = 0x7800ffc0u;
+  return r;
+}
+
+// join(translator, dual_line) -> motor: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_translator<T>& a,
+                                         const basic_dual_line<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                        a.c[0] * b.c[4], a.c[0] * b.c[5],
+                        a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0]);
+}
+
+// join(translator, line) -> line: 6 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> join(const basic_translator<T>& a, const basic_line<T>& b) {
+  return basic_line<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                       a.c[0] * b.c[4], a.c[0] * b.c[5]);
+}
+
+// join(translator, circle) -> mv: 13 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_translator<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[0] * b.c[1];
+  r.c[18] = a.c[0] * b.c[3];
+  r.c[19] = a.c[0] * b.c[2];
+  r.c[20] = a.c[0] * b.c[4];
+  r.c[21] = a.c[0] * b.c[5];
+  r.c[22] = a.c[0] * b.c[6];
+  r.c[23] = a.c[0] * b.c[7];
+  r.c[24] = a.c[0] * b.c[8];
+  r.c[25] = a.c[0] * b.c[9];
+  r.c[31] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// join(translator, sphere) -> sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> join(const basic_translator<T>& a, const basic_sphere<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                         a.c[0] * b.c[4]);
+}
+
+// join(translator, plane) -> plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_translator<T>& a, const basic_plane<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// join(translator, pseudoscalar) -> pseudoscalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_translator<T>& a,
+                                                const basic_pseudoscalar<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[0]);
+}
+
+// join(translator, rotor) -> motor: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_translator<T>& a, const basic_rotor<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                        a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                        a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1]);
+}
+
+// join(translator, translator) -> translator: 7 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> join(const basic_translator<T>& a,
+                                              const basic_translator<T>& b) {
+  return basic_translator<T>(a.c[0] * b.c[0], a.c[0] * b.c[1] + a.c[1] * b.c[0],
+                             a.c[0] * b.c[2] + a.c[2] * b.c[0], a.c[0] * b.c[3] + a.c[3] * b.c[0]);
+}
+
+// join(translator, motor) -> motor: 14 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_translator<T>& a, const basic_motor<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                        a.c[0] * b.c[4] + a.c[1] * b.c[0], a.c[0] * b.c[5] + a.c[2] * b.c[0],
+                        a.c[0] * b.c[6] + a.c[3] * b.c[0],
+                        a.c[0] * b.c[7] + a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1]);
+}
+
+// join(motor, normalized_point) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_motor<T>& a, const basic_normalized_point<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0];
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[0] * b.c[1];
+  r.c[4] = a.c[0] * b.c[2];
+  r.c[5] = a.c[0] * b.c[3];
+  r.c[16] = a.c[1];
+  r.c[17] = a.c[2];
+  r.c[18] = a.c[4];
+  r.c[19] = a.c[3];
+  r.c[20] = a.c[5];
+  r.c[21] = a.c[6];
+  r.c[22] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[23] = a.c[1] * b.c[3] - a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  r.c[24] = a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[6] * b.c[0];
+  r.c[25] = a.c[3] * b.c[3] - a.c[5] * b.c[2] + a.c[6] * b.c[1];
+  r.c[31] = a.c[7];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// join(motor, dual_sphere) -> mv: 24 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_motor<T>& a, const basic_dual_sphere<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[0] * b.c[1];
+  r.c[3] = a.c[0] * b.c[2];
+  r.c[4] = a.c[0] * b.c[3];
+  r.c[5] = a.c[0] * b.c[4];
+  r.c[16] = a.c[1] * b.c[0];
+  r.c[17] = a.c[2] * b.c[0];
+  r.c[18] = a.c[4] * b.c[0];
+  r.c[19] = a.c[3] * b.c[0];
+  r.c[20] = a.c[5] * b.c[0];
+  r.c[21] = a.c[6] * b.c[0];
+  r.c[22] = a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  r.c[23] = a.c[1] * b.c[4] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  r.c[24] = a.c[2] * b.c[4] - a.c[4] * b.c[3] + a.c[6] * b.c[1];
+  r.c[25] = a.c[3] * b.c[4] - a.c[5] * b.c[3] + a.c[6] * b.c[2];
+  r.c[31] = a.c[7] * b.c[0];
+  r.bits = 0x83ff003eu;
+  return r;
+}
+
+// join(motor, dual_plane) -> mv: 16 mul, 8 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_motor<T>& a, const basic_dual_plane<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[0] * b.c[1];
+  r.c[4] = a.c[0] * b.c[2];
+  r.c[5] = a.c[0] * b.c[3];
+  r.c[22] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[23] = a.c[1] * b.c[3] - a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  r.c[24] = a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[6] * b.c[0];
+  r.c[25] = a.c[3] * b.c[3] - a.c[5] * b.c[2] + a.c[6] * b.c[1];
+  r.bits = 0x3c0003cu;
+  return r;
+}
+
+// join(motor, euclidean_vector) -> mv: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_motor<T>& a, const basic_euclidean_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[2] = a.c[0] * b.c[0];
+  r.c[3] = a.c[0] * b.c[1];
+  r.c[4] = a.c[0] * b.c[2];
+  r.c[22] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[23] = -a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  r.c[24] = -a.c[4] * b.c[2] + a.c[6] * b.c[0];
+  r.c[25] = -a.c[5] * b.c[2] + a.c[6] * b.c[1];
+  r.bits = 0x3c0001cu;
+  return r;
+}
+
+// join(motor, flat_point) -> mv: 10 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_motor<T>& a, const basic_flat_point<T>& b) {
+  basic_mv<T> r;
+  r.c[9] = a.c[0] * b.c[3];
+  r.c[12] = a.c[0] * b.c[0];
+  r.c[14] = a.c[0] * b.c[1];
+  r.c[15] = a.c[0] * b.c[2];
+  r.c[27] = a.c[1] * b.c[3];
+  r.c[28] = a.c[2] * b.c[3];
+  r.c[29] = a.c[3] * b.c[3];
+  r.c[30] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.bits = 0x7800d200u;
+  return r;
+}
+
+// join(motor, euclidean_bivector) -> motor: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_motor<T>& a,
+                                         const basic_euclidean_bivector<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], T(0), T(0), T(0),
+                        a.c[4] * b.c[2] - a.c[5] * b.c[1] + a.c[6] * b.c[0]);
+}
+
+// join(motor, point_pair) -> mv: 28 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_motor<T>& a, const basic_point_pair<T>& b) {
+  basic_mv<T> r;
+  r.c[6] = a.c[0] * b.c[0];
+  r.c[7] = a.c[0] * b.c[1];
+  r.c[8] = a.c[0] * b.c[2];
+  r.c[9] = a.c[0] * b.c[3];
+  r.c[10] = a.c[0] * b.c[4];
+  r.c[11] = a.c[0] * b.c[5];
+  r.c[12] = a.c[0] * b.c[6];
+  r.c[13] = a.c[0] * b.c[7];
+  r.c[14] = a.c[0] * b.c[8];
+  r.c[15] = a.c[0] * b.c[9];
+  r.c[26] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.c[27] = a.c[1] * b.c[3] - a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  r.c[28] = a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[6] * b.c[0];
+  r.c[29] = a.c[3] * b.c[3] - a.c[5] * b.c[2] + a.c[6] * b.c[1];
+  r.c[30] = a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[6] + a.c[4] * b.c[7] -
+            a.c[5] * b.c[5] + a.c[6] * b.c[4];
+  r.bits = 0x7c00ffc0u;
+  return r;
+}
+
+// join(motor, dual_line) -> motor: 12 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_motor<T>& a, const basic_dual_line<T>& b) {
+  return basic_motor<T>(T(0), a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                        a.c[0] * b.c[4], a.c[0] * b.c[5],
+                        a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3] + a.c[4] * b.c[2] -
+                            a.c[5] * b.c[1] + a.c[6] * b.c[0]);
+}
+
+// join(motor, line) -> mv: 9 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_motor<T>& a, const basic_line<T>& b) {
+  basic_mv<T> r;
+  r.c[18] = a.c[0] * b.c[3];
+  r.c[20] = a.c[0] * b.c[4];
+  r.c[21] = a.c[0] * b.c[5];
+  r.c[23] = a.c[0] * b.c[0];
+  r.c[24] = a.c[0] * b.c[1];
+  r.c[25] = a.c[0] * b.c[2];
+  r.c[31] = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3];
+  r.bits = 0x83b40000u;
+  return r;
+}
+
+// join(motor, circle) -> mv: 16 mul, 5 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_motor<T>& a, const basic_circle<T>& b) {
+  basic_mv<T> r;
+  r.c[16] = a.c[0] * b.c[0];
+  r.c[17] = a.c[0] * b.c[1];
+  r.c[18] = a.c[0] * b.c[3];
+  r.c[19] = a.c[0] * b.c[2];
+  r.c[20] = a.c[0] * b.c[4];
+  r.c[21] = a.c[0] * b.c[5];
+  r.c[22] = a.c[0] * b.c[6];
+  r.c[23] = a.c[0] * b.c[7];
+  r.c[24] = a.c[0] * b.c[8];
+  r.c[25] = a.c[0] * b.c[9];
+  r.c[31] = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3] + a.c[4] * b.c[2] -
+            a.c[5] * b.c[1] + a.c[6] * b.c[0];
+  r.bits = 0x83ff0000u;
+  return r;
+}
+
+// join(motor, sphere) -> sphere: 5 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> join(const basic_motor<T>& a, const basic_sphere<T>& b) {
+  return basic_sphere<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3],
+                         a.c[0] * b.c[4]);
+}
+
+// join(motor, plane) -> plane: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> join(const basic_motor<T>& a, const basic_plane<T>& b) {
+  return basic_plane<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// join(motor, pseudoscalar) -> pseudoscalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_motor<T>& a,
+                                                const basic_pseudoscalar<T>& b) {
+  return basic_pseudoscalar<T>(a.c[0] * b.c[0]);
+}
+
+// join(motor, rotor) -> motor: 14 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_motor<T>& a, const basic_rotor<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1] + a.c[1] * b.c[0],
+                        a.c[0] * b.c[2] + a.c[2] * b.c[0], a.c[0] * b.c[3] + a.c[3] * b.c[0],
+                        a.c[4] * b.c[0], a.c[5] * b.c[0], a.c[6] * b.c[0],
+                        a.c[4] * b.c[3] - a.c[5] * b.c[2] + a.c[6] * b.c[1] + a.c[7] * b.c[0]);
+}
+
+// join(motor, translator) -> motor: 14 mul, 6 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_motor<T>& a, const basic_translator<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0],
+                        a.c[0] * b.c[1] + a.c[4] * b.c[0], a.c[0] * b.c[2] + a.c[5] * b.c[0],
+                        a.c[0] * b.c[3] + a.c[6] * b.c[0],
+                        a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1] + a.c[7] * b.c[0]);
+}
+
+// join(motor, motor) -> motor: 21 mul, 13 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_motor<T>& a, const basic_motor<T>& b) {
+  return basic_motor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1] + a.c[1] * b.c[0],
+                        a.c[0] * b.c[2] + a.c[2] * b.c[0], a.c[0] * b.c[3] + a.c[3] * b.c[0],
+                        a.c[0] * b.c[4] + a.c[4] * b.c[0], a.c[0] * b.c[5] + a.c[5] * b.c[0],
+                        a.c[0] * b.c[6] + a.c[6] * b.c[0],
+                        a.c[0] * b.c[7] + a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[4] +
+                            a.c[4] * b.c[3] - a.c[5] * b.c[2] + a.c[6] * b.c[1] + a.c[7] * b.c[0]);
+}
+
+// apply(normalized_point, normalized_point) -> dual_sphere: 44 mul, 37 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_normalized_point<T>& a,
+                                                const basic_normalized_point<T>& b) {
+  const T t0 = -a.c[3] - b.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t1 = -a.c[0] + b.c[0];
+  const T t2 = -a.c[1] + b.c[1];
+  const T t3 = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  const T t4 = -a.c[2] + b.c[2];
+  const T t5 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t6 = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T t7 = -a.c[3] + b.c[3];
+  const T t8 = a.c[0] * b.c[3] - a.c[3] * b.c[0];
+  const T t9 = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  const T t10 = a.c[2] * b.c[3] - a.c[3] * b.c[2];
+  const T inv = T(1) / (-T(2) * a.c[3] + a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_sphere<T>(
+      (t0 - t7 + a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t4) * inv,
+      (-t8 + a.c[0] * t0 + a.c[1] * t3 + a.c[2] * t5 + a.c[3] * t1) * inv,
+      (-t9 - a.c[0] * t3 + a.c[1] * t0 + a.c[2] * t6 + a.c[3] * t2) * inv,
+      (-t10 - a.c[0] * t5 - a.c[1] * t6 + a.c[2] * t0 + a.c[3] * t4) * inv,
+      (-a.c[0] * t8 - a.c[1] * t9 - a.c[2] * t10 + a.c[3] * t0 + a.c[3] * t7) * inv);
+}
+
+// apply(normalized_point, dual_sphere) -> dual_sphere: 49 mul, 37 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_normalized_point<T>& a,
+                                                const basic_dual_sphere<T>& b) {
+  const T t0 = -b.c[4] + a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] - a.c[3] * b.c[0];
+  const T t1 = b.c[1] - a.c[0] * b.c[0];
+  const T t2 = b.c[2] - a.c[1] * b.c[0];
+  const T t3 = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  const T t4 = b.c[3] - a.c[2] * b.c[0];
+  const T t5 = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  const T t6 = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  const T t7 = b.c[4] - a.c[3] * b.c[0];
+  const T t8 = a.c[0] * b.c[4] - a.c[3] * b.c[1];
+  const T t9 = a.c[1] * b.c[4] - a.c[3] * b.c[2];
+  const T t10 = a.c[2] * b.c[4] - a.c[3] * b.c[3];
+  const T inv = T(1) / (-T(2) * a.c[3] + a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_sphere<T>(
+      (t0 - t7 + a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t4) * inv,
+      (-t8 + a.c[0] * t0 + a.c[1] * t3 + a.c[2] * t5 + a.c[3] * t1) * inv,
+      (-t9 - a.c[0] * t3 + a.c[1] * t0 + a.c[2] * t6 + a.c[3] * t2) * inv,
+      (-t10 - a.c[0] * t5 - a.c[1] * t6 + a.c[2] * t0 + a.c[3] * t4) * inv,
+      (-a.c[0] * t8 - a.c[1] * t9 - a.c[2] * t10 + a.c[3] * t0 + a.c[3] * t7) * inv);
+}
+
+// apply(normalized_point, dual_plane) -> dual_sphere: 44 mul, 32 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_normalized_point<T>& a,
+                                                const basic_dual_plane<T>& b) {
+  const T t0 = -b.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t1 = b.c[0];
+  const T t2 = b.c[1];
+  const T t3 = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  const T t4 = b.c[2];
+  const T t5 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t6 = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T t7 = b.c[3];
+  const T t8 = a.c[0] * b.c[3] - a.c[3] * b.c[0];
+  const T t9 = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  const T t10 = a.c[2] * b.c[3] - a.c[3] * b.c[2];
+  const T inv = T(1) / (-T(2) * a.c[3] + a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_sphere<T>(
+      (t0 - t7 + a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t4) * inv,
+      (-t8 + a.c[0] * t0 + a.c[1] * t3 + a.c[2] * t5 + a.c[3] * t1) * inv,
+      (-t9 - a.c[0] * t3 + a.c[1] * t0 + a.c[2] * t6 + a.c[3] * t2) * inv,
+      (-t10 - a.c[0] * t5 - a.c[1] * t6 + a.c[2] * t0 + a.c[3] * t4) * inv,
+      (-a.c[0] * t8 - a.c[1] * t9 - a.c[2] * t10 + a.c[3] * t0 + a.c[3] * t7) * inv);
+}
+
+// apply(normalized_point, euclidean_vector) -> dual_sphere: 40 mul, 26 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_normalized_point<T>& a,
+                                                const basic_euclidean_vector<T>& b) {
+  const T t0 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t1 = b.c[0];
+  const T t2 = b.c[1];
+  const T t3 = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  const T t4 = b.c[2];
+  const T t5 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t6 = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T t7 = -a.c[3] * b.c[0];
+  const T t8 = -a.c[3] * b.c[1];
+  const T t9 = -a.c[3] * b.c[2];
+  const T inv = T(1) / (-T(2) * a.c[3] + a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_sphere<T>((t0 + a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t4) * inv,
+                              (-t7 + a.c[0] * t0 + a.c[1] * t3 + a.c[2] * t5 + a.c[3] * t1) * inv,
+                              (-t8 - a.c[0] * t3 + a.c[1] * t0 + a.c[2] * t6 + a.c[3] * t2) * inv,
+                              (-t9 - a.c[0] * t5 - a.c[1] * t6 + a.c[2] * t0 + a.c[3] * t4) * inv,
+                              (-a.c[0] * t7 - a.c[1] * t8 - a.c[2] * t9 + a.c[3] * t0) * inv);
+}
+
+// apply(normalized_point, flat_point) -> point_pair: 55 mul, 40 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_normalized_point<T>& a,
+                                               const basic_flat_point<T>& b) {
+  const T t0 = b.c[3];
+  const T t1 = b.c[0];
+  const T t2 = b.c[1];
+  const T t3 = b.c[2];
+  const T t4 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  const T t5 = b.c[0] - a.c[0] * b.c[3];
+  const T t6 = b.c[1] - a.c[1] * b.c[3];
+  const T t7 = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  const T t8 = b.c[2] - a.c[2] * b.c[3];
+  const T t9 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t10 = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T inv = T(1) / (-T(2) * a.c[3] + a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_point_pair<T>(
+      (-t1 - t5 + a.c[0] * t0) * inv, (-t2 - t6 + a.c[1] * t0) * inv,
+      (-t3 - t8 + a.c[2] * t0) * inv,
+      (-t4 - a.c[0] * t5 - a.c[1] * t6 - a.c[2] * t8 + a.c[3] * t0) * inv,
+      (-t7 - a.c[0] * t2 + a.c[1] * t1) * inv, (-t9 - a.c[0] * t3 + a.c[2] * t1) * inv,
+      (-a.c[0] * t4 - a.c[1] * t7 - a.c[2] * t9 + a.c[3] * t1 - a.c[3] * t5) * inv,
+      (-t10 - a.c[1] * t3 + a.c[2] * t2) * inv,
+      (a.c[0] * t7 - a.c[1] * t4 - a.c[2] * t10 + a.c[3] * t2 - a.c[3] * t6) * inv,
+      (a.c[0] * t9 + a.c[1] * t10 - a.c[2] * t4 + a.c[3] * t3 - a.c[3] * t8) * inv);
+}
+
+// apply(normalized_point, euclidean_bivector) -> point_pair: 53 mul, 32 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_normalized_point<T>& a,
+                                               const basic_euclidean_bivector<T>& b) {
+  const T t0 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t1 = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  const T t2 = b.c[0];
+  const T t3 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t4 = b.c[1];
+  const T t5 = b.c[2];
+  const T t6 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t7 = a.c[3] * b.c[0];
+  const T t8 = a.c[3] * b.c[1];
+  const T t9 = a.c[3] * b.c[2];
+  const T inv = T(1) / (-T(2) * a.c[3] + a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_point_pair<T>((-t0 + a.c[1] * t2 + a.c[2] * t4) * inv,
+                             (-t1 - a.c[0] * t2 + a.c[2] * t5) * inv,
+                             (-t3 - a.c[0] * t4 - a.c[1] * t5) * inv, (T(0)) * inv,
+                             (-t7 - a.c[0] * t1 + a.c[1] * t0 + a.c[2] * t6 - a.c[3] * t2) * inv,
+                             (-t8 - a.c[0] * t3 - a.c[1] * t6 + a.c[2] * t0 - a.c[3] * t4) * inv,
+                             (-a.c[1] * t7 - a.c[2] * t8 + a.c[3] * t0) * inv,
+                             (-t9 + a.c[0] * t6 - a.c[1] * t3 + a.c[2] * t1 - a.c[3] * t5) * inv,
+                             (a.c[0] * t7 - a.c[2] * t9 + a.c[3] * t1) * inv,
+                             (a.c[0] * t8 + a.c[1] * t9 + a.c[3] * t3) * inv);
+}
+
+// apply(normalized_point, point_pair) -> point_pair: 94 mul, 78 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_normalized_point<T>& a,
+                                               const basic_point_pair<T>& b) {
+  const T t0 = b.c[3] - a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = b.c[6] - a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[0];
+  const T t2 = b.c[8] + a.c[0] * b.c[4] - a.c[2] * b.c[7] - a.c[3] * b.c[1];
+  const T t3 = b.c[4] - a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  const T t4 = b.c[9] + a.c[0] * b.c[5] + a.c[1] * b.c[7] - a.c[3] * b.c[2];
+  const T t5 = b.c[5] - a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  const T t6 = b.c[7] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t7 = a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  const T t8 = a.c[0] * b.c[6] + a.c[1] * b.c[8] + a.c[2] * b.c[9] - a.c[3] * b.c[3];
+  const T t9 = b.c[6] - a.c[0] * b.c[3] + a.c[3] * b.c[0];
+  const T t10 = b.c[8] - a.c[1] * b.c[3] + a.c[3] * b.c[1];
+  const T t11 = a.c[0] * b.c[8] - a.c[1] * b.c[6] + a.c[3] * b.c[4];
+  const T t12 = b.c[9] - a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  const T t13 = a.c[0] * b.c[9] - a.c[2] * b.c[6] + a.c[3] * b.c[5];
+  const T t14 = a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[7];
+  const T inv = T(1) / (-T(2) * a.c[3] + a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_point_pair<T>(
+      (-t1 - t9 + a.c[0] * t0 + a.c[1] * t3 + a.c[2] * t5) * inv,
+      (-t10 - t2 - a.c[0] * t3 + a.c[1] * t0 + a.c[2] * t6) * inv,
+      (-t12 - t4 - a.c[0] * t5 - a.c[1] * t6 + a.c[2] * t0) * inv,
+      (-t8 - a.c[0] * t9 - a.c[1] * t10 - a.c[2] * t12 + a.c[3] * t0) * inv,
+      (-t11 - a.c[0] * t2 + a.c[1] * t1 + a.c[2] * t7 - a.c[3] * t3) * inv,
+      (-t13 - a.c[0] * t4 - a.c[1] * t7 + a.c[2] * t1 - a.c[3] * t5) * inv,
+      (-a.c[0] * t8 - a.c[1] * t11 - a.c[2] * t13 + a.c[3] * t1 - a.c[3] * t9) * inv,
+      (-t14 + a.c[0] * t7 - a.c[1] * t4 + a.c[2] * t2 - a.c[3] * t6) * inv,
+      (a.c[0] * t11 - a.c[1] * t8 - a.c[2] * t14 - a.c[3] * t10 + a.c[3] * t2) * inv,
+      (a.c[0] * t13 + a.c[1] * t14 - a.c[2] * t8 - a.c[3] * t12 + a.c[3] * t4) * inv);
+}
+
+// apply(normalized_point, dual_line) -> point_pair: 71 mul, 55 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_normalized_point<T>& a,
+                                               const basic_dual_line<T>& b) {
+  const T t0 = b.c[3] - a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t1 = b.c[4] + a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  const T t2 = b.c[0];
+  const T t3 = b.c[5] + a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t4 = b.c[1];
+  const T t5 = b.c[2];
+  const T t6 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t7 = a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5];
+  const T t8 = b.c[3];
+  const T t9 = b.c[4];
+  const T t10 = a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[0];
+  const T t11 = b.c[5];
+  const T t12 = a.c[0] * b.c[5] - a.c[2] * b.c[3] + a.c[3] * b.c[1];
+  const T t13 = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[2];
+  const T inv = T(1) / (-T(2) * a.c[3] + a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_point_pair<T>(
+      (-t0 - t8 + a.c[1] * t2 + a.c[2] * t4) * inv, (-t1 - t9 - a.c[0] * t2 + a.c[2] * t5) * inv,
+      (-t11 - t3 - a.c[0] * t4 - a.c[1] * t5) * inv,
+      (-t7 - a.c[0] * t8 - a.c[1] * t9 - a.c[2] * t11) * inv,
+      (-t10 - a.c[0] * t1 + a.c[1] * t0 + a.c[2] * t6 - a.c[3] * t2) * inv,
+      (-t12 - a.c[0] * t3 - a.c[1] * t6 + a.c[2] * t0 - a.c[3] * t4) * inv,
+      (-a.c[0] * t7 - a.c[1] * t10 - a.c[2] * t12 + a.c[3] * t0 - a.c[3] * t8) * inv,
+      (-t13 + a.c[0] * t6 - a.c[1] * t3 + a.c[2] * t1 - a.c[3] * t5) * inv,
+      (a.c[0] * t10 - a.c[1] * t7 - a.c[2] * t13 + a.c[3] * t1 - a.c[3] * t9) * inv,
+      (a.c[0] * t12 + a.c[1] * t13 - a.c[2] * t7 - a.c[3] * t11 + a.c[3] * t3) * inv);
+}
+
+// apply(normalized_point, line) -> circle: 71 mul, 55 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> apply(const basic_normalized_point<T>& a,
+                                           const basic_line<T>& b) {
+  const T t0 = -b.c[3];
+  const T t1 = -b.c[4];
+  const T t2 = -b.c[0];
+  const T t3 = -b.c[5];
+  const T t4 = -b.c[1];
+  const T t5 = -b.c[2];
+  const T t6 = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  const T t7 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[3];
+  const T t8 = a.c[0] * b.c[0] - a.c[2] * b.c[2] - a.c[3] * b.c[4];
+  const T t9 = b.c[0] - a.c[0] * b.c[4] + a.c[1] * b.c[3];
+  const T t10 = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[5];
+  const T t11 = b.c[1] - a.c[0] * b.c[5] + a.c[2] * b.c[3];
+  const T t12 = b.c[2] - a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  const T t13 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T inv = T(1) / (-T(2) * a.c[3] + a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_circle<T>(
+      (t2 - t9 - a.c[0] * t1 + a.c[1] * t0) * inv, (-t11 + t4 - a.c[0] * t3 + a.c[2] * t0) * inv,
+      (-t12 + t5 - a.c[1] * t3 + a.c[2] * t1) * inv,
+      (t7 - a.c[0] * t6 - a.c[1] * t9 - a.c[2] * t11 + a.c[3] * t0) * inv,
+      (t8 + a.c[0] * t9 - a.c[1] * t6 - a.c[2] * t12 + a.c[3] * t1) * inv,
+      (t10 + a.c[0] * t11 + a.c[1] * t12 - a.c[2] * t6 + a.c[3] * t3) * inv,
+      (-t13 + a.c[0] * t5 - a.c[1] * t4 + a.c[2] * t2) * inv,
+      (a.c[0] * t8 - a.c[1] * t7 - a.c[2] * t13 + a.c[3] * t2 + a.c[3] * t9) * inv,
+      (a.c[0] * t10 + a.c[1] * t13 - a.c[2] * t7 + a.c[3] * t11 + a.c[3] * t4) * inv,
+      (-a.c[0] * t13 + a.c[1] * t10 - a.c[2] * t8 + a.c[3] * t12 + a.c[3] * t5) * inv);
+}
+
+// apply(normalized_point, circle) -> circle: 94 mul, 78 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> apply(const basic_normalized_point<T>& a,
+                                           const basic_circle<T>& b) {
+  const T t0 = -b.c[3] + a.c[1] * b.c[0] + a.c[2] * b.c[1];
+  const T t1 = -b.c[4] - a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  const T t2 = -b.c[7] + a.c[2] * b.c[6] - a.c[3] * b.c[0];
+  const T t3 = -b.c[5] - a.c[0] * b.c[1] - a.c[1] * b.c[2];
+  const T t4 = -b.c[8] - a.c[1] * b.c[6] - a.c[3] * b.c[1];
+  const T t5 = -b.c[9] + a.c[0] * b.c[6] - a.c[3] * b.c[2];
+  const T t6 = b.c[6] - a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  const T t7 = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  const T t8 = -a.c[1] * b.c[7] - a.c[2] * b.c[8] - a.c[3] * b.c[3];
+  const T t9 = a.c[0] * b.c[7] - a.c[2] * b.c[9] - a.c[3] * b.c[4];
+  const T t10 = b.c[7] - a.c[0] * b.c[4] + a.c[1] * b.c[3] - a.c[3] * b.c[0];
+  const T t11 = a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[3] * b.c[5];
+  const T t12 = b.c[8] - a.c[0] * b.c[5] + a.c[2] * b.c[3] - a.c[3] * b.c[1];
+  const T t13 = b.c[9] - a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[3] * b.c[2];
+  const T t14 = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7] - a.c[3] * b.c[6];
+  const T inv = T(1) / (-T(2) * a.c[3] + a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_circle<T>(
+      (-t10 + t2 - a.c[0] * t1 + a.c[1] * t0 + a.c[2] * t6) * inv,
+      (-t12 + t4 - a.c[0] * t3 - a.c[1] * t6 + a.c[2] * t0) * inv,
+      (-t13 + t5 + a.c[0] * t6 - a.c[1] * t3 + a.c[2] * t1) * inv,
+      (t8 - a.c[0] * t7 - a.c[1] * t10 - a.c[2] * t12 + a.c[3] * t0) * inv,
+      (t9 + a.c[0] * t10 - a.c[1] * t7 - a.c[2] * t13 + a.c[3] * t1) * inv,
+      (t11 + a.c[0] * t12 + a.c[1] * t13 - a.c[2] * t7 + a.c[3] * t3) * inv,
+      (-t14 + a.c[0] * t5 - a.c[1] * t4 + a.c[2] * t2 + a.c[3] * t6) * inv,
+      (a.c[0] * t9 - a.c[1] * t8 - a.c[2] * t14 + a.c[3] * t10 + a.c[3] * t2) * inv,
+      (a.c[0] * t11 + a.c[1] * t14 - a.c[2] * t8 + a.c[3] * t12 + a.c[3] * t4) * inv,
+      (-a.c[0] * t14 + a.c[1] * t11 - a.c[2] * t9 + a.c[3] * t13 + a.c[3] * t5) * inv);
+}
+
+// apply(normalized_point, sphere) -> sphere: 49 mul, 37 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> apply(const basic_normalized_point<T>& a,
+                                           const basic_sphere<T>& b) {
+  const T t0 = b.c[1] - a.c[2] * b.c[0];
+  const T t1 = b.c[2] + a.c[1] * b.c[0];
+  const T t2 = b.c[3] - a.c[0] * b.c[0];
+  const T t3 = b.c[4] - a.c[3] * b.c[0];
+  const T t4 = a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t5 = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  const T t6 = a.c[2] * b.c[4] - a.c[3] * b.c[1];
+  const T t7 = -a.c[0] * b.c[2] - a.c[1] * b.c[3];
+  const T t8 = -a.c[1] * b.c[4] - a.c[3] * b.c[2];
+  const T t9 = a.c[0] * b.c[4] - a.c[3] * b.c[3];
+  const T t10 = b.c[4] - a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T inv = T(1) / (-T(2) * a.c[3] + a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_sphere<T>(
+      (-t10 - t3 + a.c[0] * t2 - a.c[1] * t1 + a.c[2] * t0) * inv,
+      (-t6 + a.c[0] * t5 - a.c[1] * t4 - a.c[2] * t10 + a.c[3] * t0) * inv,
+      (-t8 + a.c[0] * t7 + a.c[1] * t10 - a.c[2] * t4 + a.c[3] * t1) * inv,
+      (-t9 - a.c[0] * t10 + a.c[1] * t7 - a.c[2] * t5 + a.c[3] * t2) * inv,
+      (-a.c[0] * t9 + a.c[1] * t8 - a.c[2] * t6 - a.c[3] * t10 + a.c[3] * t3) * inv);
+}
+
+// apply(normalized_point, plane) -> sphere: 44 mul, 32 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> apply(const basic_normalized_point<T>& a,
+                                           const basic_plane<T>& b) {
+  const T t0 = b.c[1];
+  const T t1 = b.c[2];
+  const T t2 = b.c[3];
+  const T t3 = b.c[0];
+  const T t4 = a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t5 = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  const T t6 = a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t7 = -a.c[0] * b.c[2] - a.c[1] * b.c[3];
+  const T t8 = -a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  const T t9 = a.c[0] * b.c[0] - a.c[3] * b.c[3];
+  const T t10 = b.c[0] - a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T inv = T(1) / (-T(2) * a.c[3] + a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_sphere<T>(
+      (-t10 - t3 + a.c[0] * t2 - a.c[1] * t1 + a.c[2] * t0) * inv,
+      (-t6 + a.c[0] * t5 - a.c[1] * t4 - a.c[2] * t10 + a.c[3] * t0) * inv,
+      (-t8 + a.c[0] * t7 + a.c[1] * t10 - a.c[2] * t4 + a.c[3] * t1) * inv,
+      (-t9 - a.c[0] * t10 + a.c[1] * t7 - a.c[2] * t5 + a.c[3] * t2) * inv,
+      (-a.c[0] * t9 + a.c[1] * t8 - a.c[2] * t6 - a.c[3] * t10 + a.c[3] * t3) * inv);
+}
+
+// apply(normalized_point, pseudoscalar) -> pseudoscalar: 13 mul, 7 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> apply(const basic_normalized_point<T>& a,
+                                                 const basic_pseudoscalar<T>& b) {
+  const T t0 = -b.c[0];
+  const T t1 = -a.c[2] * b.c[0];
+  const T t2 = a.c[1] * b.c[0];
+  const T t3 = -a.c[0] * b.c[0];
+  const T t4 = -a.c[3] * b.c[0];
+  const T inv = T(1) / (-T(2) * a.c[3] + a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_pseudoscalar<T>((t4 - a.c[0] * t3 + a.c[1] * t2 - a.c[2] * t1 + a.c[3] * t0) * inv);
+}
+
+// apply(normalized_point, rotor) -> mv: 69 mul, 46 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_normalized_point<T>& a,
+                                       const basic_rotor<T>& b) {
+  const T t0 = b.c[0];
+  const T t1 = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t2 = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
+  const T t3 = b.c[1];
+  const T t4 = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0];
+  const T t5 = b.c[2];
+  const T t6 = b.c[3];
+  const T t7 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t8 = a.c[3] * b.c[0];
+  const T t9 = a.c[3] * b.c[1];
+  const T t10 = a.c[3] * b.c[2];
+  const T t11 = a.c[3] * b.c[3];
+  const T inv = T(1) / (-T(2) * a.c[3] + a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  basic_mv<T> r;
+  r.c[0] = (-t8 + a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t4 - a.c[3] * t0) * inv;
+  r.c[6] = (-t1 + a.c[0] * t0 + a.c[1] * t3 + a.c[2] * t5) * inv;
+  r.c[7] = (-t2 - a.c[0] * t3 + a.c[1] * t0 + a.c[2] * t6) * inv;
+  r.c[8] = (-t4 - a.c[0] * t5 - a.c[1] * t6 + a.c[2] * t0) * inv;
+  r.c[9] = (-t8 + a.c[3] * t0) * inv;
+  r.c[10] = (-t9 - a.c[0] * t2 + a.c[1] * t1 + a.c[2] * t7 - a.c[3] * t3) * inv;
+  r.c[11] = (-t10 - a.c[0] * t4 - a.c[1] * t7 + a.c[2] * t1 - a.c[3] * t5) * inv;
+  r.c[12] = (-a.c[0] * t8 - a.c[1] * t9 - a.c[2] * t10 + a.c[3] * t1) * inv;
+  r.c[13] = (-t11 + a.c[0] * t7 - a.c[1] * t4 + a.c[2] * t2 - a.c[3] * t6) * inv;
+  r.c[14] = (a.c[0] * t9 - a.c[1] * t8 - a.c[2] * t11 + a.c[3] * t2) * inv;
+  r.c[15] = (a.c[0] * t10 + a.c[1] * t11 - a.c[2] * t8 + a.c[3] * t4) * inv;
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// apply(normalized_point, translator) -> mv: 60 mul, 44 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_normalized_point<T>& a,
+                                       const basic_translator<T>& b) {
+  const T t0 = b.c[0];
+  const T t1 = b.c[1] + a.c[0] * b.c[0];
+  const T t2 = b.c[2] + a.c[1] * b.c[0];
+  const T t3 = b.c[3] + a.c[2] * b.c[0];
+  const T t4 = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] + a.c[3] * b.c[0];
+  const T t5 = b.c[1];
+  const T t6 = b.c[2];
+  const T t7 = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  const T t8 = b.c[3];
+  const T t9 = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  const T t10 = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  const T inv = T(1) / (-T(2) * a.c[3] + a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  basic_mv<T> r;
+  r.c[0] = (-t4 + a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t3 - a.c[3] * t0) * inv;
+  r.c[6] = (-t1 - t5 + a.c[0] * t0) * inv;
+  r.c[7] = (-t2 - t6 + a.c[1] * t0) * inv;
+  r.c[8] = (-t3 - t8 + a.c[2] * t0) * inv;
+  r.c[9] = (-t4 - a.c[0] * t5 - a.c[1] * t6 - a.c[2] * t8 + a.c[3] * t0) * inv;
+  r.c[10] = (-t7 - a.c[0] * t2 + a.c[1] * t1) * inv;
+  r.c[11] = (-t9 - a.c[0] * t3 + a.c[2] * t1) * inv;
+  r.c[12] = (-a.c[0] * t4 - a.c[1] * t7 - a.c[2] * t9 + a.c[3] * t1 - a.c[3] * t5) * inv;
+  r.c[13] = (-t10 - a.c[1] * t3 + a.c[2] * t2) * inv;
+  r.c[14] = (a.c[0] * t7 - a.c[1] * t4 - a.c[2] * t10 + a.c[3] * t2 - a.c[3] * t6) * inv;
+  r.c[15] = (a.c[0] * t9 + a.c[1] * t10 - a.c[2] * t4 + a.c[3] * t3 - a.c[3] * t8) * inv;
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// apply(normalized_point, motor) -> mv: 112 mul, 91 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_normalized_point<T>& a,
+                                       const basic_motor<T>& b) {
+  const T t0 = b.c[0];
+  const T t1 = b.c[4] + a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t2 = b.c[5] + a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
+  const T t3 = b.c[1];
+  const T t4 = b.c[6] + a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0];
+  const T t5 = b.c[2];
+  const T t6 = b.c[3];
+  const T t7 = b.c[7] + a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t8 = a.c[0] * b.c[4] + a.c[1] * b.c[5] + a.c[2] * b.c[6] + a.c[3] * b.c[0];
+  const T t9 = b.c[4];
+  const T t10 = b.c[5];
+  const T t11 = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[7] + a.c[3] * b.c[1];
+  const T t12 = b.c[6];
+  const T t13 = a.c[0] * b.c[6] - a.c[1] * b.c[7] - a.c[2] * b.c[4] + a.c[3] * b.c[2];
+  const T t14 = a.c[0] * b.c[7] + a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[3];
+  const T t15 = b.c[7];
+  const T inv = T(1) / (-T(2) * a.c[3] + a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  basic_mv<T> r;
+  r.c[0] = (-t8 + a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t4 - a.c[3] * t0) * inv;
+  r.c[6] = (-t1 - t9 + a.c[0] * t0 + a.c[1] * t3 + a.c[2] * t5) * inv;
+  r.c[7] = (-t10 - t2 - a.c[0] * t3 + a.c[1] * t0 + a.c[2] * t6) * inv;
+  r.c[8] = (-t12 - t4 - a.c[0] * t5 - a.c[1] * t6 + a.c[2] * t0) * inv;
+  r.c[9] = (-t8 - a.c[0] * t9 - a.c[1] * t10 - a.c[2] * t12 + a.c[3] * t0) * inv;
+  r.c[10] = (-t11 - a.c[0] * t2 + a.c[1] * t1 + a.c[2] * t7 - a.c[3] * t3) * inv;
+  r.c[11] = (-t13 - a.c[0] * t4 - a.c[1] * t7 + a.c[2] * t1 - a.c[3] * t5) * inv;
+  r.c[12] = (-a.c[0] * t8 - a.c[1] * t11 - a.c[2] * t13 + a.c[3] * t1 - a.c[3] * t9) * inv;
+  r.c[13] = (-t14 + a.c[0] * t7 - a.c[1] * t4 + a.c[2] * t2 - a.c[3] * t6) * inv;
+  r.c[14] = (a.c[0] * t11 - a.c[1] * t8 - a.c[2] * t14 - a.c[3] * t10 + a.c[3] * t2) * inv;
+  r.c[15] = (a.c[0] * t13 + a.c[1] * t14 - a.c[2] * t8 - a.c[3] * t12 + a.c[3] * t4) * inv;
+  r.c[26] = (-t15 - t7 + a.c[0] * t6 - a.c[1] * t5 + a.c[2] * t3) * inv;
+  r.c[27] = (-t11 + a.c[0] * t10 - a.c[1] * t9 - a.c[2] * t15 + a.c[3] * t3) * inv;
+  r.c[28] = (-t13 + a.c[0] * t12 + a.c[1] * t15 - a.c[2] * t9 + a.c[3] * t5) * inv;
+  r.c[29] = (-t14 - a.c[0] * t15 + a.c[1] * t12 - a.c[2] * t10 + a.c[3] * t6) * inv;
+  r.c[30] = (-a.c[0] * t14 + a.c[1] * t13 - a.c[2] * t11 - a.c[3] * t15 + a.c[3] * t7) * inv;
+  r.bits = 0x7c00ffc1u;
+  return r;
+}
+
+// apply(dual_sphere, normalized_point) -> dual_sphere: 55 mul, 37 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_dual_sphere<T>& a,
+                                                const basic_normalized_point<T>& b) {
+  const T t0 = -a.c[4] - a.c[0] * b.c[3] + a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  const T t1 = -a.c[1] + a.c[0] * b.c[0];
+  const T t2 = -a.c[2] + a.c[0] * b.c[1];
+  const T t3 = a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  const T t4 = -a.c[3] + a.c[0] * b.c[2];
+  const T t5 = a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  const T t6 = a.c[2] * b.c[2] - a.c[3] * b.c[1];
+  const T t7 = -a.c[4] + a.c[0] * b.c[3];
+  const T t8 = a.c[1] * b.c[3] - a.c[4] * b.c[0];
+  const T t9 = a.c[2] * b.c[3] - a.c[4] * b.c[1];
+  const T t10 = a.c[3] * b.c[3] - a.c[4] * b.c[2];
+  const T inv =
+      T(1) / (-T(2) * a.c[0] * a.c[4] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_dual_sphere<T>(
+      (a.c[0] * t0 - a.c[0] * t7 + a.c[1] * t1 + a.c[2] * t2 + a.c[3] * t4) * inv,
+      (-a.c[0] * t8 + a.c[1] * t0 + a.c[2] * t3 + a.c[3] * t5 + a.c[4] * t1) * inv,
+      (-a.c[0] * t9 - a.c[1] * t3 + a.c[2] * t0 + a.c[3] * t6 + a.c[4] * t2) * inv,
+      (-a.c[0] * t10 - a.c[1] * t5 - a.c[2] * t6 + a.c[3] * t0 + a.c[4] * t4) * inv,
+      (-a.c[1] * t8 - a.c[2] * t9 - a.c[3] * t10 + a.c[4] * t0 + a.c[4] * t7) * inv);
+}
+
+// apply(dual_sphere, dual_sphere) -> dual_sphere: 60 mul, 37 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_dual_sphere<T>& a,
+                                                const basic_dual_sphere<T>& b) {
+  const T t0 =
+      -a.c[0] * b.c[4] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] - a.c[4] * b.c[0];
+  const T t1 = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  const T t2 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t3 = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T t4 = a.c[0] * b.c[3] - a.c[3] * b.c[0];
+  const T t5 = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  const T t6 = a.c[2] * b.c[3] - a.c[3] * b.c[2];
+  const T t7 = a.c[0] * b.c[4] - a.c[4] * b.c[0];
+  const T t8 = a.c[1] * b.c[4] - a.c[4] * b.c[1];
+  const T t9 = a.c[2] * b.c[4] - a.c[4] * b.c[2];
+  const T t10 = a.c[3] * b.c[4] - a.c[4] * b.c[3];
+  const T inv =
+      T(1) / (-T(2) * a.c[0] * a.c[4] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_dual_sphere<T>(
+      (a.c[0] * t0 - a.c[0] * t7 + a.c[1] * t1 + a.c[2] * t2 + a.c[3] * t4) * inv,
+      (-a.c[0] * t8 + a.c[1] * t0 + a.c[2] * t3 + a.c[3] * t5 + a.c[4] * t1) * inv,
+      (-a.c[0] * t9 - a.c[1] * t3 + a.c[2] * t0 + a.c[3] * t6 + a.c[4] * t2) * inv,
+      (-a.c[0] * t10 - a.c[1] * t5 - a.c[2] * t6 + a.c[3] * t0 + a.c[4] * t4) * inv,
+      (-a.c[1] * t8 - a.c[2] * t9 - a.c[3] * t10 + a.c[4] * t0 + a.c[4] * t7) * inv);
+}
+
+// apply(dual_sphere, dual_plane) -> dual_sphere: 55 mul, 32 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_dual_sphere<T>& a,
+                                                const basic_dual_plane<T>& b) {
+  const T t0 = -a.c[0] * b.c[3] + a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  const T t1 = a.c[0] * b.c[0];
+  const T t2 = a.c[0] * b.c[1];
+  const T t3 = a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  const T t4 = a.c[0] * b.c[2];
+  const T t5 = a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  const T t6 = a.c[2] * b.c[2] - a.c[3] * b.c[1];
+  const T t7 = a.c[0] * b.c[3];
+  const T t8 = a.c[1] * b.c[3] - a.c[4] * b.c[0];
+  const T t9 = a.c[2] * b.c[3] - a.c[4] * b.c[1];
+  const T t10 = a.c[3] * b.c[3] - a.c[4] * b.c[2];
+  const T inv =
+      T(1) / (-T(2) * a.c[0] * a.c[4] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_dual_sphere<T>(
+      (a.c[0] * t0 - a.c[0] * t7 + a.c[1] * t1 + a.c[2] * t2 + a.c[3] * t4) * inv,
+      (-a.c[0] * t8 + a.c[1] * t0 + a.c[2] * t3 + a.c[3] * t5 + a.c[4] * t1) * inv,
+      (-a.c[0] * t9 - a.c[1] * t3 + a.c[2] * t0 + a.c[3] * t6 + a.c[4] * t2) * inv,
+      (-a.c[0] * t10 - a.c[1] * t5 - a.c[2] * t6 + a.c[3] * t0 + a.c[4] * t4) * inv,
+      (-a.c[1] * t8 - a.c[2] * t9 - a.c[3] * t10 + a.c[4] * t0 + a.c[4] * t7) * inv);
+}
+
+// apply(dual_sphere, euclidean_vector) -> dual_sphere: 48 mul, 26 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_dual_sphere<T>& a,
+                                                const basic_euclidean_vector<T>& b) {
+  const T t0 = a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  const T t1 = a.c[0] * b.c[0];
+  const T t2 = a.c[0] * b.c[1];
+  const T t3 = a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  const T t4 = a.c[0] * b.c[2];
+  const T t5 = a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  const T t6 = a.c[2] * b.c[2] - a.c[3] * b.c[1];
+  const T t7 = -a.c[4] * b.c[0];
+  const T t8 = -a.c[4] * b.c[1];
+  const T t9 = -a.c[4] * b.c[2];
+  const T inv =
+      T(1) / (-T(2) * a.c[0] * a.c[4] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_dual_sphere<T>(
+      (a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2 + a.c[3] * t4) * inv,
+      (-a.c[0] * t7 + a.c[1] * t0 + a.c[2] * t3 + a.c[3] * t5 + a.c[4] * t1) * inv,
+      (-a.c[0] * t8 - a.c[1] * t3 + a.c[2] * t0 + a.c[3] * t6 + a.c[4] * t2) * inv,
+      (-a.c[0] * t9 - a.c[1] * t5 - a.c[2] * t6 + a.c[3] * t0 + a.c[4] * t4) * inv,
+      (-a.c[1] * t7 - a.c[2] * t8 - a.c[3] * t9 + a.c[4] * t0) * inv);
+}
+
+// apply(dual_sphere, flat_point) -> point_pair: 73 mul, 40 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_dual_sphere<T>& a,
+                                               const basic_flat_point<T>& b) {
+  const T t0 = a.c[0] * b.c[3];
+  const T t1 = a.c[0] * b.c[0];
+  const T t2 = a.c[0] * b.c[1];
+  const T t3 = a.c[0] * b.c[2];
+  const T t4 = a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2] - a.c[4] * b.c[3];
+  const T t5 = a.c[0] * b.c[0] - a.c[1] * b.c[3];
+  const T t6 = a.c[0] * b.c[1] - a.c[2] * b.c[3];
+  const T t7 = a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  const T t8 = a.c[0] * b.c[2] - a.c[3] * b.c[3];
+  const T t9 = a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  const T t10 = a.c[2] * b.c[2] - a.c[3] * b.c[1];
+  const T inv =
+      T(1) / (-T(2) * a.c[0] * a.c[4] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_point_pair<T>(
+      (-a.c[0] * t1 - a.c[0] * t5 + a.c[1] * t0) * inv,
+      (-a.c[0] * t2 - a.c[0] * t6 + a.c[2] * t0) * inv,
+      (-a.c[0] * t3 - a.c[0] * t8 + a.c[3] * t0) * inv,
+      (-a.c[0] * t4 - a.c[1] * t5 - a.c[2] * t6 - a.c[3] * t8 + a.c[4] * t0) * inv,
+      (-a.c[0] * t7 - a.c[1] * t2 + a.c[2] * t1) * inv,
+      (-a.c[0] * t9 - a.c[1] * t3 + a.c[3] * t1) * inv,
+      (-a.c[1] * t4 - a.c[2] * t7 - a.c[3] * t9 + a.c[4] * t1 - a.c[4] * t5) * inv,
+      (-a.c[0] * t10 - a.c[2] * t3 + a.c[3] * t2) * inv,
+      (a.c[1] * t7 - a.c[2] * t4 - a.c[3] * t10 + a.c[4] * t2 - a.c[4] * t6) * inv,
+      (a.c[1] * t9 + a.c[2] * t10 - a.c[3] * t4 + a.c[4] * t3 - a.c[4] * t8) * inv);
+}
+
+// apply(dual_sphere, euclidean_bivector) -> point_pair: 63 mul, 32 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_dual_sphere<T>& a,
+                                               const basic_euclidean_bivector<T>& b) {
+  const T t0 = -a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t1 = a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  const T t2 = a.c[0] * b.c[0];
+  const T t3 = a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t4 = a.c[0] * b.c[1];
+  const T t5 = a.c[0] * b.c[2];
+  const T t6 = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T t7 = a.c[4] * b.c[0];
+  const T t8 = a.c[4] * b.c[1];
+  const T t9 = a.c[4] * b.c[2];
+  const T inv =
+      T(1) / (-T(2) * a.c[0] * a.c[4] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_point_pair<T>(
+      (-a.c[0] * t0 + a.c[2] * t2 + a.c[3] * t4) * inv,
+      (-a.c[0] * t1 - a.c[1] * t2 + a.c[3] * t5) * inv,
+      (-a.c[0] * t3 - a.c[1] * t4 - a.c[2] * t5) * inv, (T(0)) * inv,
+      (-a.c[0] * t7 - a.c[1] * t1 + a.c[2] * t0 + a.c[3] * t6 - a.c[4] * t2) * inv,
+      (-a.c[0] * t8 - a.c[1] * t3 - a.c[2] * t6 + a.c[3] * t0 - a.c[4] * t4) * inv,
+      (-a.c[2] * t7 - a.c[3] * t8 + a.c[4] * t0) * inv,
+      (-a.c[0] * t9 + a.c[1] * t6 - a.c[2] * t3 + a.c[3] * t1 - a.c[4] * t5) * inv,
+      (a.c[1] * t7 - a.c[3] * t9 + a.c[4] * t1) * inv,
+      (a.c[1] * t8 + a.c[2] * t9 + a.c[4] * t3) * inv);
+}
+
+// apply(dual_sphere, point_pair) -> point_pair: 115 mul, 78 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_dual_sphere<T>& a,
+                                               const basic_point_pair<T>& b) {
+  const T t0 = a.c[0] * b.c[3] - a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t1 = a.c[0] * b.c[6] - a.c[2] * b.c[4] - a.c[3] * b.c[5] - a.c[4] * b.c[0];
+  const T t2 = a.c[0] * b.c[8] + a.c[1] * b.c[4] - a.c[3] * b.c[7] - a.c[4] * b.c[1];
+  const T t3 = a.c[0] * b.c[4] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t4 = a.c[0] * b.c[9] + a.c[1] * b.c[5] + a.c[2] * b.c[7] - a.c[4] * b.c[2];
+  const T t5 = a.c[0] * b.c[5] - a.c[1] * b.c[2] + a.c[3] * b.c[0];
+  const T t6 = a.c[0] * b.c[7] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  const T t7 = a.c[1] * b.c[7] - a.c[2] * b.c[5] + a.c[3] * b.c[4];
+  const T t8 = a.c[1] * b.c[6] + a.c[2] * b.c[8] + a.c[3] * b.c[9] - a.c[4] * b.c[3];
+  const T t9 = a.c[0] * b.c[6] - a.c[1] * b.c[3] + a.c[4] * b.c[0];
+  const T t10 = a.c[0] * b.c[8] - a.c[2] * b.c[3] + a.c[4] * b.c[1];
+  const T t11 = a.c[1] * b.c[8] - a.c[2] * b.c[6] + a.c[4] * b.c[4];
+  const T t12 = a.c[0] * b.c[9] - a.c[3] * b.c[3] + a.c[4] * b.c[2];
+  const T t13 = a.c[1] * b.c[9] - a.c[3] * b.c[6] + a.c[4] * b.c[5];
+  const T t14 = a.c[2] * b.c[9] - a.c[3] * b.c[8] + a.c[4] * b.c[7];
+  const T inv =
+      T(1) / (-T(2) * a.c[0] * a.c[4] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_point_pair<T>(
+      (-a.c[0] * t1 - a.c[0] * t9 + a.c[1] * t0 + a.c[2] * t3 + a.c[3] * t5) * inv,
+      (-a.c[0] * t10 - a.c[0] * t2 - a.c[1] * t3 + a.c[2] * t0 + a.c[3] * t6) * inv,
+      (-a.c[0] * t12 - a.c[0] * t4 - a.c[1] * t5 - a.c[2] * t6 + a.c[3] * t0) * inv,
+      (-a.c[0] * t8 - a.c[1] * t9 - a.c[2] * t10 - a.c[3] * t12 + a.c[4] * t0) * inv,
+      (-a.c[0] * t11 - a.c[1] * t2 + a.c[2] * t1 + a.c[3] * t7 - a.c[4] * t3) * inv,
+      (-a.c[0] * t13 - a.c[1] * t4 - a.c[2] * t7 + a.c[3] * t1 - a.c[4] * t5) * inv,
+      (-a.c[1] * t8 - a.c[2] * t11 - a.c[3] * t13 + a.c[4] * t1 - a.c[4] * t9) * inv,
+      (-a.c[0] * t14 + a.c[1] * t7 - a.c[2] * t4 + a.c[3] * t2 - a.c[4] * t6) * inv,
+      (a.c[1] * t11 - a.c[2] * t8 - a.c[3] * t14 - a.c[4] * t10 + a.c[4] * t2) * inv,
+      (a.c[1] * t13 + a.c[2] * t14 - a.c[3] * t8 - a.c[4] * t12 + a.c[4] * t4) * inv);
+}
+
+// apply(dual_sphere, dual_line) -> point_pair: 91 mul, 55 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_dual_sphere<T>& a,
+                                               const basic_dual_line<T>& b) {
+  const T t0 = a.c[0] * b.c[3] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t1 = a.c[0] * b.c[4] + a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  const T t2 = a.c[0] * b.c[0];
+  const T t3 = a.c[0] * b.c[5] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t4 = a.c[0] * b.c[1];
+  const T t5 = a.c[0] * b.c[2];
+  const T t6 = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T t7 = a.c[1] * b.c[3] + a.c[2] * b.c[4] + a.c[3] * b.c[5];
+  const T t8 = a.c[0] * b.c[3];
+  const T t9 = a.c[0] * b.c[4];
+  const T t10 = a.c[1] * b.c[4] - a.c[2] * b.c[3] + a.c[4] * b.c[0];
+  const T t11 = a.c[0] * b.c[5];
+  const T t12 = a.c[1] * b.c[5] - a.c[3] * b.c[3] + a.c[4] * b.c[1];
+  const T t13 = a.c[2] * b.c[5] - a.c[3] * b.c[4] + a.c[4] * b.c[2];
+  const T inv =
+      T(1) / (-T(2) * a.c[0] * a.c[4] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_point_pair<T>(
+      (-a.c[0] * t0 - a.c[0] * t8 + a.c[2] * t2 + a.c[3] * t4) * inv,
+      (-a.c[0] * t1 - a.c[0] * t9 - a.c[1] * t2 + a.c[3] * t5) * inv,
+      (-a.c[0] * t11 - a.c[0] * t3 - a.c[1] * t4 - a.c[2] * t5) * inv,
+      (-a.c[0] * t7 - a.c[1] * t8 - a.c[2] * t9 - a.c[3] * t11) * inv,
+      (-a.c[0] * t10 - a.c[1] * t1 + a.c[2] * t0 + a.c[3] * t6 - a.c[4] * t2) * inv,
+      (-a.c[0] * t12 - a.c[1] * t3 - a.c[2] * t6 + a.c[3] * t0 - a.c[4] * t4) * inv,
+      (-a.c[1] * t7 - a.c[2] * t10 - a.c[3] * t12 + a.c[4] * t0 - a.c[4] * t8) * inv,
+      (-a.c[0] * t13 + a.c[1] * t6 - a.c[2] * t3 + a.c[3] * t1 - a.c[4] * t5) * inv,
+      (a.c[1] * t10 - a.c[2] * t7 - a.c[3] * t13 + a.c[4] * t1 - a.c[4] * t9) * inv,
+      (a.c[1] * t12 + a.c[2] * t13 - a.c[3] * t7 - a.c[4] * t11 + a.c[4] * t3) * inv);
+}
+
+// apply(dual_sphere, line) -> circle: 91 mul, 55 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> apply(const basic_dual_sphere<T>& a, const basic_line<T>& b) {
+  const T t0 = -a.c[0] * b.c[3];
+  const T t1 = -a.c[0] * b.c[4];
+  const T t2 = -a.c[0] * b.c[0];
+  const T t3 = -a.c[0] * b.c[5];
+  const T t4 = -a.c[0] * b.c[1];
+  const T t5 = -a.c[0] * b.c[2];
+  const T t6 = -a.c[1] * b.c[3] - a.c[2] * b.c[4] - a.c[3] * b.c[5];
+  const T t7 = -a.c[2] * b.c[0] - a.c[3] * b.c[1] - a.c[4] * b.c[3];
+  const T t8 = a.c[1] * b.c[0] - a.c[3] * b.c[2] - a.c[4] * b.c[4];
+  const T t9 = a.c[0] * b.c[0] - a.c[1] * b.c[4] + a.c[2] * b.c[3];
+  const T t10 = a.c[1] * b.c[1] + a.c[2] * b.c[2] - a.c[4] * b.c[5];
+  const T t11 = a.c[0] * b.c[1] - a.c[1] * b.c[5] + a.c[3] * b.c[3];
+  const T t12 = a.c[0] * b.c[2] - a.c[2] * b.c[5] + a.c[3] * b.c[4];
+  const T t13 = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T inv =
+      T(1) / (-T(2) * a.c[0] * a.c[4] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_circle<T>(
+      (a.c[0] * t2 - a.c[0] * t9 - a.c[1] * t1 + a.c[2] * t0) * inv,
+      (-a.c[0] * t11 + a.c[0] * t4 - a.c[1] * t3 + a.c[3] * t0) * inv,
+      (-a.c[0] * t12 + a.c[0] * t5 - a.c[2] * t3 + a.c[3] * t1) * inv,
+      (a.c[0] * t7 - a.c[1] * t6 - a.c[2] * t9 - a.c[3] * t11 + a.c[4] * t0) * inv,
+      (a.c[0] * t8 + a.c[1] * t9 - a.c[2] * t6 - a.c[3] * t12 + a.c[4] * t1) * inv,
+      (a.c[0] * t10 + a.c[1] * t11 + a.c[2] * t12 - a.c[3] * t6 + a.c[4] * t3) * inv,
+      (-a.c[0] * t13 + a.c[1] * t5 - a.c[2] * t4 + a.c[3] * t2) * inv,
+      (a.c[1] * t8 - a.c[2] * t7 - a.c[3] * t13 + a.c[4] * t2 + a.c[4] * t9) * inv,
+      (a.c[1] * t10 + a.c[2] * t13 - a.c[3] * t7 + a.c[4] * t11 + a.c[4] * t4) * inv,
+      (-a.c[1] * t13 + a.c[2] * t10 - a.c[3] * t8 + a.c[4] * t12 + a.c[4] * t5) * inv);
+}
+
+// apply(dual_sphere, circle) -> circle: 115 mul, 78 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> apply(const basic_dual_sphere<T>& a,
+                                           const basic_circle<T>& b) {
+  const T t0 = -a.c[0] * b.c[3] + a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  const T t1 = -a.c[0] * b.c[4] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  const T t2 = -a.c[0] * b.c[7] + a.c[3] * b.c[6] - a.c[4] * b.c[0];
+  const T t3 = -a.c[0] * b.c[5] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t4 = -a.c[0] * b.c[8] - a.c[2] * b.c[6] - a.c[4] * b.c[1];
+  const T t5 = -a.c[0] * b.c[9] + a.c[1] * b.c[6] - a.c[4] * b.c[2];
+  const T t6 = a.c[0] * b.c[6] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  const T t7 = -a.c[1] * b.c[3] - a.c[2] * b.c[4] - a.c[3] * b.c[5];
+  const T t8 = -a.c[2] * b.c[7] - a.c[3] * b.c[8] - a.c[4] * b.c[3];
+  const T t9 = a.c[1] * b.c[7] - a.c[3] * b.c[9] - a.c[4] * b.c[4];
+  const T t10 = a.c[0] * b.c[7] - a.c[1] * b.c[4] + a.c[2] * b.c[3] - a.c[4] * b.c[0];
+  const T t11 = a.c[1] * b.c[8] + a.c[2] * b.c[9] - a.c[4] * b.c[5];
+  const T t12 = a.c[0] * b.c[8] - a.c[1] * b.c[5] + a.c[3] * b.c[3] - a.c[4] * b.c[1];
+  const T t13 = a.c[0] * b.c[9] - a.c[2] * b.c[5] + a.c[3] * b.c[4] - a.c[4] * b.c[2];
+  const T t14 = a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[7] - a.c[4] * b.c[6];
+  const T inv =
+      T(1) / (-T(2) * a.c[0] * a.c[4] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_circle<T>(
+      (-a.c[0] * t10 + a.c[0] * t2 - a.c[1] * t1 + a.c[2] * t0 + a.c[3] * t6) * inv,
+      (-a.c[0] * t12 + a.c[0] * t4 - a.c[1] * t3 - a.c[2] * t6 + a.c[3] * t0) * inv,
+      (-a.c[0] * t13 + a.c[0] * t5 + a.c[1] * t6 - a.c[2] * t3 + a.c[3] * t1) * inv,
+      (a.c[0] * t8 - a.c[1] * t7 - a.c[2] * t10 - a.c[3] * t12 + a.c[4] * t0) * inv,
+      (a.c[0] * t9 + a.c[1] * t10 - a.c[2] * t7 - a.c[3] * t13 + a.c[4] * t1) * inv,
+      (a.c[0] * t11 + a.c[1] * t12 + a.c[2] * t13 - a.c[3] * t7 + a.c[4] * t3) * inv,
+      (-a.c[0] * t14 + a.c[1] * t5 - a.c[2] * t4 + a.c[3] * t2 + a.c[4] * t6) * inv,
+      (a.c[1] * t9 - a.c[2] * t8 - a.c[3] * t14 + a.c[4] * t10 + a.c[4] * t2) * inv,
+      (a.c[1] * t11 + a.c[2] * t14 - a.c[3] * t8 + a.c[4] * t12 + a.c[4] * t4) * inv,
+      (-a.c[1] * t14 + a.c[2] * t11 - a.c[3] * t9 + a.c[4] * t13 + a.c[4] * t5) * inv);
+}
+
+// apply(dual_sphere, sphere) -> sphere: 60 mul, 37 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> apply(const basic_dual_sphere<T>& a,
+                                           const basic_sphere<T>& b) {
+  const T t0 = a.c[0] * b.c[1] - a.c[3] * b.c[0];
+  const T t1 = a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  const T t2 = a.c[0] * b.c[3] - a.c[1] * b.c[0];
+  const T t3 = a.c[0] * b.c[4] - a.c[4] * b.c[0];
+  const T t4 = a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  const T t5 = -a.c[1] * b.c[1] + a.c[3] * b.c[3];
+  const T t6 = a.c[3] * b.c[4] - a.c[4] * b.c[1];
+  const T t7 = -a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  const T t8 = -a.c[2] * b.c[4] - a.c[4] * b.c[2];
+  const T t9 = a.c[1] * b.c[4] - a.c[4] * b.c[3];
+  const T t10 =
+      a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  const T inv =
+      T(1) / (-T(2) * a.c[0] * a.c[4] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_sphere<T>(
+      (-a.c[0] * t10 - a.c[0] * t3 + a.c[1] * t2 - a.c[2] * t1 + a.c[3] * t0) * inv,
+      (-a.c[0] * t6 + a.c[1] * t5 - a.c[2] * t4 - a.c[3] * t10 + a.c[4] * t0) * inv,
+      (-a.c[0] * t8 + a.c[1] * t7 + a.c[2] * t10 - a.c[3] * t4 + a.c[4] * t1) * inv,
+      (-a.c[0] * t9 - a.c[1] * t10 + a.c[2] * t7 - a.c[3] * t5 + a.c[4] * t2) * inv,
+      (-a.c[1] * t9 + a.c[2] * t8 - a.c[3] * t6 - a.c[4] * t10 + a.c[4] * t3) * inv);
+}
+
+// apply(dual_sphere, plane) -> sphere: 55 mul, 32 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> apply(const basic_dual_sphere<T>& a, const basic_plane<T>& b) {
+  const T t0 = a.c[0] * b.c[1];
+  const T t1 = a.c[0] * b.c[2];
+  const T t2 = a.c[0] * b.c[3];
+  const T t3 = a.c[0] * b.c[0];
+  const T t4 = a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  const T t5 = -a.c[1] * b.c[1] + a.c[3] * b.c[3];
+  const T t6 = a.c[3] * b.c[0] - a.c[4] * b.c[1];
+  const T t7 = -a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  const T t8 = -a.c[2] * b.c[0] - a.c[4] * b.c[2];
+  const T t9 = a.c[1] * b.c[0] - a.c[4] * b.c[3];
+  const T t10 = a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[3] * b.c[1];
+  const T inv =
+      T(1) / (-T(2) * a.c[0] * a.c[4] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_sphere<T>(
+      (-a.c[0] * t10 - a.c[0] * t3 + a.c[1] * t2 - a.c[2] * t1 + a.c[3] * t0) * inv,
+      (-a.c[0] * t6 + a.c[1] * t5 - a.c[2] * t4 - a.c[3] * t10 + a.c[4] * t0) * inv,
+      (-a.c[0] * t8 + a.c[1] * t7 + a.c[2] * t10 - a.c[3] * t4 + a.c[4] * t1) * inv,
+      (-a.c[0] * t9 - a.c[1] * t10 + a.c[2] * t7 - a.c[3] * t5 + a.c[4] * t2) * inv,
+      (-a.c[1] * t9 + a.c[2] * t8 - a.c[3] * t6 - a.c[4] * t10 + a.c[4] * t3) * inv);
+}
+
+// apply(dual_sphere, pseudoscalar) -> pseudoscalar: 16 mul, 7 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> apply(const basic_dual_sphere<T>& a,
+                                                 const basic_pseudoscalar<T>& b) {
+  const T t0 = -a.c[0] * b.c[0];
+  const T t1 = -a.c[3] * b.c[0];
+  const T t2 = a.c[2] * b.c[0];
+  const T t3 = -a.c[1] * b.c[0];
+  const T t4 = -a.c[4] * b.c[0];
+  const T inv =
+      T(1) / (-T(2) * a.c[0] * a.c[4] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_pseudoscalar<T>(
+      (a.c[0] * t4 - a.c[1] * t3 + a.c[2] * t2 - a.c[3] * t1 + a.c[4] * t0) * inv);
+}
+
+// apply(dual_sphere, rotor) -> mv: 82 mul, 46 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_dual_sphere<T>& a, const basic_rotor<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t2 = a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[3] * b.c[3];
+  const T t3 = a.c[0] * b.c[1];
+  const T t4 = a.c[1] * b.c[2] + a.c[2] * b.c[3] + a.c[3] * b.c[0];
+  const T t5 = a.c[0] * b.c[2];
+  const T t6 = a.c[0] * b.c[3];
+  const T t7 = a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  const T t8 = a.c[4] * b.c[0];
+  const T t9 = a.c[4] * b.c[1];
+  const T t10 = a.c[4] * b.c[2];
+  const T t11 = a.c[4] * b.c[3];
+  const T inv =
+      T(1) / (-T(2) * a.c[0] * a.c[4] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  basic_mv<T> r;
+  r.c[0] = (-a.c[0] * t8 + a.c[1] * t1 + a.c[2] * t2 + a.c[3] * t4 - a.c[4] * t0) * inv;
+  r.c[6] = (-a.c[0] * t1 + a.c[1] * t0 + a.c[2] * t3 + a.c[3] * t5) * inv;
+  r.c[7] = (-a.c[0] * t2 - a.c[1] * t3 + a.c[2] * t0 + a.c[3] * t6) * inv;
+  r.c[8] = (-a.c[0] * t4 - a.c[1] * t5 - a.c[2] * t6 + a.c[3] * t0) * inv;
+  r.c[9] = (-a.c[0] * t8 + a.c[4] * t0) * inv;
+  r.c[10] = (-a.c[0] * t9 - a.c[1] * t2 + a.c[2] * t1 + a.c[3] * t7 - a.c[4] * t3) * inv;
+  r.c[11] = (-a.c[0] * t10 - a.c[1] * t4 - a.c[2] * t7 + a.c[3] * t1 - a.c[4] * t5) * inv;
+  r.c[12] = (-a.c[1] * t8 - a.c[2] * t9 - a.c[3] * t10 + a.c[4] * t1) * inv;
+  r.c[13] = (-a.c[0] * t11 + a.c[1] * t7 - a.c[2] * t4 + a.c[3] * t2 - a.c[4] * t6) * inv;
+  r.c[14] = (a.c[1] * t9 - a.c[2] * t8 - a.c[3] * t11 + a.c[4] * t2) * inv;
+  r.c[15] = (a.c[1] * t10 + a.c[2] * t11 - a.c[3] * t8 + a.c[4] * t4) * inv;
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// apply(dual_sphere, translator) -> mv: 79 mul, 44 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_dual_sphere<T>& a,
+                                       const basic_translator<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  const T t2 = a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  const T t3 = a.c[0] * b.c[3] + a.c[3] * b.c[0];
+  const T t4 = a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] + a.c[4] * b.c[0];
+  const T t5 = a.c[0] * b.c[1];
+  const T t6 = a.c[0] * b.c[2];
+  const T t7 = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T t8 = a.c[0] * b.c[3];
+  const T t9 = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  const T t10 = a.c[2] * b.c[3] - a.c[3] * b.c[2];
+  const T inv =
+      T(1) / (-T(2) * a.c[0] * a.c[4] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  basic_mv<T> r;
+  r.c[0] = (-a.c[0] * t4 + a.c[1] * t1 + a.c[2] * t2 + a.c[3] * t3 - a.c[4] * t0) * inv;
+  r.c[6] = (-a.c[0] * t1 - a.c[0] * t5 + a.c[1] * t0) * inv;
+  r.c[7] = (-a.c[0] * t2 - a.c[0] * t6 + a.c[2] * t0) * inv;
+  r.c[8] = (-a.c[0] * t3 - a.c[0] * t8 + a.c[3] * t0) * inv;
+  r.c[9] = (-a.c[0] * t4 - a.c[1] * t5 - a.c[2] * t6 - a.c[3] * t8 + a.c[4] * t0) * inv;
+  r.c[10] = (-a.c[0] * t7 - a.c[1] * t2 + a.c[2] * t1) * inv;
+  r.c[11] = (-a.c[0] * t9 - a.c[1] * t3 + a.c[3] * t1) * inv;
+  r.c[12] = (-a.c[1] * t4 - a.c[2] * t7 - a.c[3] * t9 + a.c[4] * t1 - a.c[4] * t5) * inv;
+  r.c[13] = (-a.c[0] * t10 - a.c[2] * t3 + a.c[3] * t2) * inv;
+  r.c[14] = (a.c[1] * t7 - a.c[2] * t4 - a.c[3] * t10 + a.c[4] * t2 - a.c[4] * t6) * inv;
+  r.c[15] = (a.c[1] * t9 + a.c[2] * t10 - a.c[3] * t4 + a.c[4] * t3 - a.c[4] * t8) * inv;
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// apply(dual_sphere, motor) -> mv: 141 mul, 91 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_dual_sphere<T>& a, const basic_motor<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[0] * b.c[4] + a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t2 = a.c[0] * b.c[5] + a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[3] * b.c[3];
+  const T t3 = a.c[0] * b.c[1];
+  const T t4 = a.c[0] * b.c[6] + a.c[1] * b.c[2] + a.c[2] * b.c[3] + a.c[3] * b.c[0];
+  const T t5 = a.c[0] * b.c[2];
+  const T t6 = a.c[0] * b.c[3];
+  const T t7 = a.c[0] * b.c[7] + a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  const T t8 = a.c[1] * b.c[4] + a.c[2] * b.c[5] + a.c[3] * b.c[6] + a.c[4] * b.c[0];
+  const T t9 = a.c[0] * b.c[4];
+  const T t10 = a.c[0] * b.c[5];
+  const T t11 = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[7] + a.c[4] * b.c[1];
+  const T t12 = a.c[0] * b.c[6];
+  const T t13 = a.c[1] * b.c[6] - a.c[2] * b.c[7] - a.c[3] * b.c[4] + a.c[4] * b.c[2];
+  const T t14 = a.c[1] * b.c[7] + a.c[2] * b.c[6] - a.c[3] * b.c[5] + a.c[4] * b.c[3];
+  const T t15 = a.c[0] * b.c[7];
+  const T inv =
+      T(1) / (-T(2) * a.c[0] * a.c[4] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  basic_mv<T> r;
+  r.c[0] = (-a.c[0] * t8 + a.c[1] * t1 + a.c[2] * t2 + a.c[3] * t4 - a.c[4] * t0) * inv;
+  r.c[6] = (-a.c[0] * t1 - a.c[0] * t9 + a.c[1] * t0 + a.c[2] * t3 + a.c[3] * t5) * inv;
+  r.c[7] = (-a.c[0] * t10 - a.c[0] * t2 - a.c[1] * t3 + a.c[2] * t0 + a.c[3] * t6) * inv;
+  r.c[8] = (-a.c[0] * t12 - a.c[0] * t4 - a.c[1] * t5 - a.c[2] * t6 + a.c[3] * t0) * inv;
+  r.c[9] = (-a.c[0] * t8 - a.c[1] * t9 - a.c[2] * t10 - a.c[3] * t12 + a.c[4] * t0) * inv;
+  r.c[10] = (-a.c[0] * t11 - a.c[1] * t2 + a.c[2] * t1 + a.c[3] * t7 - a.c[4] * t3) * inv;
+  r.c[11] = (-a.c[0] * t13 - a.c[1] * t4 - a.c[2] * t7 + a.c[3] * t1 - a.c[4] * t5) * inv;
+  r.c[12] = (-a.c[1] * t8 - a.c[2] * t11 - a.c[3] * t13 + a.c[4] * t1 - a.c[4] * t9) * inv;
+  r.c[13] = (-a.c[0] * t14 + a.c[1] * t7 - a.c[2] * t4 + a.c[3] * t2 - a.c[4] * t6) * inv;
+  r.c[14] = (a.c[1] * t11 - a.c[2] * t8 - a.c[3] * t14 - a.c[4] * t10 + a.c[4] * t2) * inv;
+  r.c[15] = (a.c[1] * t13 + a.c[2] * t14 - a.c[3] * t8 - a.c[4] * t12 + a.c[4] * t4) * inv;
+  r.c[26] = (-a.c[0] * t15 - a.c[0] * t7 + a.c[1] * t6 - a.c[2] * t5 + a.c[3] * t3) * inv;
+  r.c[27] = (-a.c[0] * t11 + a.c[1] * t10 - a.c[2] * t9 - a.c[3] * t15 + a.c[4] * t3) * inv;
+  r.c[28] = (-a.c[0] * t13 + a.c[1] * t12 + a.c[2] * t15 - a.c[3] * t9 + a.c[4] * t5) * inv;
+  r.c[29] = (-a.c[0] * t14 - a.c[1] * t15 + a.c[2] * t12 - a.c[3] * t10 + a.c[4] * t6) * inv;
+  r.c[30] = (-a.c[1] * t14 + a.c[2] * t13 - a.c[3] * t11 - a.c[4] * t15 + a.c[4] * t7) * inv;
+  r.bits = 0x7c00ffc1u;
+  return r;
+}
+
+// apply(dual_plane, normalized_point) -> dual_sphere: 43 mul, 26 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_dual_plane<T>& a,
+                                                const basic_normalized_point<T>& b) {
+  const T t0 = -a.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t1 = -a.c[0];
+  const T t2 = -a.c[1];
+  const T t3 = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  const T t4 = -a.c[2];
+  const T t5 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t6 = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T t7 = -a.c[3];
+  const T t8 = a.c[0] * b.c[3] - a.c[3] * b.c[0];
+  const T t9 = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  const T t10 = a.c[2] * b.c[3] - a.c[3] * b.c[2];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_sphere<T>(
+      (a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t4) * inv,
+      (a.c[0] * t0 + a.c[1] * t3 + a.c[2] * t5 + a.c[3] * t1) * inv,
+      (-a.c[0] * t3 + a.c[1] * t0 + a.c[2] * t6 + a.c[3] * t2) * inv,
+      (-a.c[0] * t5 - a.c[1] * t6 + a.c[2] * t0 + a.c[3] * t4) * inv,
+      (-a.c[0] * t8 - a.c[1] * t9 - a.c[2] * t10 + a.c[3] * t0 + a.c[3] * t7) * inv);
+}
+
+// apply(dual_plane, dual_sphere) -> dual_sphere: 48 mul, 26 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_dual_plane<T>& a,
+                                                const basic_dual_sphere<T>& b) {
+  const T t0 = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] - a.c[3] * b.c[0];
+  const T t1 = -a.c[0] * b.c[0];
+  const T t2 = -a.c[1] * b.c[0];
+  const T t3 = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  const T t4 = -a.c[2] * b.c[0];
+  const T t5 = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  const T t6 = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  const T t7 = -a.c[3] * b.c[0];
+  const T t8 = a.c[0] * b.c[4] - a.c[3] * b.c[1];
+  const T t9 = a.c[1] * b.c[4] - a.c[3] * b.c[2];
+  const T t10 = a.c[2] * b.c[4] - a.c[3] * b.c[3];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_sphere<T>(
+      (a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t4) * inv,
+      (a.c[0] * t0 + a.c[1] * t3 + a.c[2] * t5 + a.c[3] * t1) * inv,
+      (-a.c[0] * t3 + a.c[1] * t0 + a.c[2] * t6 + a.c[3] * t2) * inv,
+      (-a.c[0] * t5 - a.c[1] * t6 + a.c[2] * t0 + a.c[3] * t4) * inv,
+      (-a.c[0] * t8 - a.c[1] * t9 - a.c[2] * t10 + a.c[3] * t0 + a.c[3] * t7) * inv);
+}
+
+// apply(dual_plane, dual_plane) -> dual_plane: 35 mul, 19 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> apply(const basic_dual_plane<T>& a,
+                                               const basic_dual_plane<T>& b) {
+  const T t0 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t1 = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  const T t2 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t3 = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T t4 = a.c[0] * b.c[3] - a.c[3] * b.c[0];
+  const T t5 = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  const T t6 = a.c[2] * b.c[3] - a.c[3] * b.c[2];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_plane<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2) * inv,
+                             (-a.c[0] * t1 + a.c[1] * t0 + a.c[2] * t3) * inv,
+                             (-a.c[0] * t2 - a.c[1] * t3 + a.c[2] * t0) * inv,
+                             (-a.c[0] * t4 - a.c[1] * t5 - a.c[2] * t6 + a.c[3] * t0) * inv);
+}
+
+// apply(dual_plane, euclidean_vector) -> dual_plane: 32 mul, 16 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> apply(const basic_dual_plane<T>& a,
+                                               const basic_euclidean_vector<T>& b) {
+  const T t0 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t1 = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  const T t2 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t3 = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T t4 = -a.c[3] * b.c[0];
+  const T t5 = -a.c[3] * b.c[1];
+  const T t6 = -a.c[3] * b.c[2];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_plane<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2) * inv,
+                             (-a.c[0] * t1 + a.c[1] * t0 + a.c[2] * t3) * inv,
+                             (-a.c[0] * t2 - a.c[1] * t3 + a.c[2] * t0) * inv,
+                             (-a.c[0] * t4 - a.c[1] * t5 - a.c[2] * t6 + a.c[3] * t0) * inv);
+}
+
+// apply(dual_plane, flat_point) -> flat_point: 35 mul, 19 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> apply(const basic_dual_plane<T>& a,
+                                               const basic_flat_point<T>& b) {
+  const T t0 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  const T t1 = -a.c[0] * b.c[3];
+  const T t2 = -a.c[1] * b.c[3];
+  const T t3 = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  const T t4 = -a.c[2] * b.c[3];
+  const T t5 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t6 = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_flat_point<T>((-a.c[0] * t0 - a.c[1] * t3 - a.c[2] * t5 - a.c[3] * t1) * inv,
+                             (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t6 - a.c[3] * t2) * inv,
+                             (a.c[0] * t5 + a.c[1] * t6 - a.c[2] * t0 - a.c[3] * t4) * inv,
+                             (-a.c[0] * t1 - a.c[1] * t2 - a.c[2] * t4) * inv);
+}
+
+// apply(dual_plane, euclidean_bivector) -> dual_line: 39 mul, 19 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> apply(const basic_dual_plane<T>& a,
+                                              const basic_euclidean_bivector<T>& b) {
+  const T t0 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t1 = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  const T t2 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t3 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t4 = a.c[3] * b.c[0];
+  const T t5 = a.c[3] * b.c[1];
+  const T t6 = a.c[3] * b.c[2];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_line<T>((-a.c[0] * t1 + a.c[1] * t0 + a.c[2] * t3) * inv,
+                            (-a.c[0] * t2 - a.c[1] * t3 + a.c[2] * t0) * inv,
+                            (a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1) * inv,
+                            (-a.c[1] * t4 - a.c[2] * t5 + a.c[3] * t0) * inv,
+                            (a.c[0] * t4 - a.c[2] * t6 + a.c[3] * t1) * inv,
+                            (a.c[0] * t5 + a.c[1] * t6 + a.c[3] * t2) * inv);
+}
+
+// apply(dual_plane, point_pair) -> point_pair: 93 mul, 57 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_dual_plane<T>& a,
+                                               const basic_point_pair<T>& b) {
+  const T t0 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[0];
+  const T t2 = a.c[0] * b.c[4] - a.c[2] * b.c[7] - a.c[3] * b.c[1];
+  const T t3 = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  const T t4 = a.c[0] * b.c[5] + a.c[1] * b.c[7] - a.c[3] * b.c[2];
+  const T t5 = -a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  const T t6 = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t7 = a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  const T t8 = a.c[0] * b.c[6] + a.c[1] * b.c[8] + a.c[2] * b.c[9] - a.c[3] * b.c[3];
+  const T t9 = -a.c[0] * b.c[3] + a.c[3] * b.c[0];
+  const T t10 = -a.c[1] * b.c[3] + a.c[3] * b.c[1];
+  const T t11 = a.c[0] * b.c[8] - a.c[1] * b.c[6] + a.c[3] * b.c[4];
+  const T t12 = -a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  const T t13 = a.c[0] * b.c[9] - a.c[2] * b.c[6] + a.c[3] * b.c[5];
+  const T t14 = a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[7];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_point_pair<T>(
+      (a.c[0] * t0 + a.c[1] * t3 + a.c[2] * t5) * inv,
+      (-a.c[0] * t3 + a.c[1] * t0 + a.c[2] * t6) * inv,
+      (-a.c[0] * t5 - a.c[1] * t6 + a.c[2] * t0) * inv,
+      (-a.c[0] * t9 - a.c[1] * t10 - a.c[2] * t12 + a.c[3] * t0) * inv,
+      (-a.c[0] * t2 + a.c[1] * t1 + a.c[2] * t7 - a.c[3] * t3) * inv,
+      (-a.c[0] * t4 - a.c[1] * t7 + a.c[2] * t1 - a.c[3] * t5) * inv,
+      (-a.c[0] * t8 - a.c[1] * t11 - a.c[2] * t13 + a.c[3] * t1 - a.c[3] * t9) * inv,
+      (a.c[0] * t7 - a.c[1] * t4 + a.c[2] * t2 - a.c[3] * t6) * inv,
+      (a.c[0] * t11 - a.c[1] * t8 - a.c[2] * t14 - a.c[3] * t10 + a.c[3] * t2) * inv,
+      (a.c[0] * t13 + a.c[1] * t14 - a.c[2] * t8 - a.c[3] * t12 + a.c[3] * t4) * inv);
+}
+
+// apply(dual_plane, dual_line) -> dual_line: 51 mul, 30 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> apply(const basic_dual_plane<T>& a,
+                                              const basic_dual_line<T>& b) {
+  const T t0 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t1 = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  const T t2 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t3 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t4 = a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5];
+  const T t5 = a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[0];
+  const T t6 = a.c[0] * b.c[5] - a.c[2] * b.c[3] + a.c[3] * b.c[1];
+  const T t7 = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[2];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_line<T>((-a.c[0] * t1 + a.c[1] * t0 + a.c[2] * t3) * inv,
+                            (-a.c[0] * t2 - a.c[1] * t3 + a.c[2] * t0) * inv,
+                            (a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1) * inv,
+                            (-a.c[0] * t4 - a.c[1] * t5 - a.c[2] * t6 + a.c[3] * t0) * inv,
+                            (a.c[0] * t5 - a.c[1] * t4 - a.c[2] * t7 + a.c[3] * t1) * inv,
+                            (a.c[0] * t6 + a.c[1] * t7 - a.c[2] * t4 + a.c[3] * t2) * inv);
+}
+
+// apply(dual_plane, line) -> line: 51 mul, 30 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> apply(const basic_dual_plane<T>& a, const basic_line<T>& b) {
+  const T t0 = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  const T t1 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[3];
+  const T t2 = a.c[0] * b.c[0] - a.c[2] * b.c[2] - a.c[3] * b.c[4];
+  const T t3 = -a.c[0] * b.c[4] + a.c[1] * b.c[3];
+  const T t4 = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[5];
+  const T t5 = -a.c[0] * b.c[5] + a.c[2] * b.c[3];
+  const T t6 = -a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  const T t7 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_line<T>((a.c[0] * t2 - a.c[1] * t1 - a.c[2] * t7 + a.c[3] * t3) * inv,
+                       (a.c[0] * t4 + a.c[1] * t7 - a.c[2] * t1 + a.c[3] * t5) * inv,
+                       (-a.c[0] * t7 + a.c[1] * t4 - a.c[2] * t2 + a.c[3] * t6) * inv,
+                       (-a.c[0] * t0 - a.c[1] * t3 - a.c[2] * t5) * inv,
+                       (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t6) * inv,
+                       (a.c[0] * t5 + a.c[1] * t6 - a.c[2] * t0) * inv);
+}
+
+// apply(dual_plane, circle) -> circle: 93 mul, 57 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> apply(const basic_dual_plane<T>& a, const basic_circle<T>& b) {
+  const T t0 = a.c[1] * b.c[0] + a.c[2] * b.c[1];
+  const T t1 = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  const T t2 = a.c[2] * b.c[6] - a.c[3] * b.c[0];
+  const T t3 = -a.c[0] * b.c[1] - a.c[1] * b.c[2];
+  const T t4 = -a.c[1] * b.c[6] - a.c[3] * b.c[1];
+  const T t5 = a.c[0] * b.c[6] - a.c[3] * b.c[2];
+  const T t6 = -a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  const T t7 = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  const T t8 = -a.c[1] * b.c[7] - a.c[2] * b.c[8] - a.c[3] * b.c[3];
+  const T t9 = a.c[0] * b.c[7] - a.c[2] * b.c[9] - a.c[3] * b.c[4];
+  const T t10 = -a.c[0] * b.c[4] + a.c[1] * b.c[3] - a.c[3] * b.c[0];
+  const T t11 = a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[3] * b.c[5];
+  const T t12 = -a.c[0] * b.c[5] + a.c[2] * b.c[3] - a.c[3] * b.c[1];
+  const T t13 = -a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[3] * b.c[2];
+  const T t14 = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7] - a.c[3] * b.c[6];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_circle<T>(
+      (-a.c[0] * t1 + a.c[1] * t0 + a.c[2] * t6) * inv,
+      (-a.c[0] * t3 - a.c[1] * t6 + a.c[2] * t0) * inv,
+      (a.c[0] * t6 - a.c[1] * t3 + a.c[2] * t1) * inv,
+      (-a.c[0] * t7 - a.c[1] * t10 - a.c[2] * t12 + a.c[3] * t0) * inv,
+      (a.c[0] * t10 - a.c[1] * t7 - a.c[2] * t13 + a.c[3] * t1) * inv,
+      (a.c[0] * t12 + a.c[1] * t13 - a.c[2] * t7 + a.c[3] * t3) * inv,
+      (a.c[0] * t5 - a.c[1] * t4 + a.c[2] * t2 + a.c[3] * t6) * inv,
+      (a.c[0] * t9 - a.c[1] * t8 - a.c[2] * t14 + a.c[3] * t10 + a.c[3] * t2) * inv,
+      (a.c[0] * t11 + a.c[1] * t14 - a.c[2] * t8 + a.c[3] * t12 + a.c[3] * t4) * inv,
+      (-a.c[0] * t14 + a.c[1] * t11 - a.c[2] * t9 + a.c[3] * t13 + a.c[3] * t5) * inv);
+}
+
+// apply(dual_plane, sphere) -> sphere: 48 mul, 26 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> apply(const basic_dual_plane<T>& a, const basic_sphere<T>& b) {
+  const T t0 = -a.c[2] * b.c[0];
+  const T t1 = a.c[1] * b.c[0];
+  const T t2 = -a.c[0] * b.c[0];
+  const T t3 = -a.c[3] * b.c[0];
+  const T t4 = a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t5 = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  const T t6 = a.c[2] * b.c[4] - a.c[3] * b.c[1];
+  const T t7 = -a.c[0] * b.c[2] - a.c[1] * b.c[3];
+  const T t8 = -a.c[1] * b.c[4] - a.c[3] * b.c[2];
+  const T t9 = a.c[0] * b.c[4] - a.c[3] * b.c[3];
+  const T t10 = -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_sphere<T>(
+      (a.c[0] * t2 - a.c[1] * t1 + a.c[2] * t0) * inv,
+      (a.c[0] * t5 - a.c[1] * t4 - a.c[2] * t10 + a.c[3] * t0) * inv,
+      (a.c[0] * t7 + a.c[1] * t10 - a.c[2] * t4 + a.c[3] * t1) * inv,
+      (-a.c[0] * t10 + a.c[1] * t7 - a.c[2] * t5 + a.c[3] * t2) * inv,
+      (-a.c[0] * t9 + a.c[1] * t8 - a.c[2] * t6 - a.c[3] * t10 + a.c[3] * t3) * inv);
+}
+
+// apply(dual_plane, plane) -> plane: 35 mul, 19 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> apply(const basic_dual_plane<T>& a, const basic_plane<T>& b) {
+  const T t0 = a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t1 = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  const T t2 = a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t3 = -a.c[0] * b.c[2] - a.c[1] * b.c[3];
+  const T t4 = -a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  const T t5 = a.c[0] * b.c[0] - a.c[3] * b.c[3];
+  const T t6 = -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_plane<T>((-a.c[0] * t5 + a.c[1] * t4 - a.c[2] * t2 - a.c[3] * t6) * inv,
+                        (a.c[0] * t1 - a.c[1] * t0 - a.c[2] * t6) * inv,
+                        (a.c[0] * t3 + a.c[1] * t6 - a.c[2] * t0) * inv,
+                        (-a.c[0] * t6 + a.c[1] * t3 - a.c[2] * t1) * inv);
+}
+
+// apply(dual_plane, pseudoscalar) -> pseudoscalar: 10 mul, 4 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> apply(const basic_dual_plane<T>& a,
+                                                 const basic_pseudoscalar<T>& b) {
+  const T t0 = -a.c[2] * b.c[0];
+  const T t1 = a.c[1] * b.c[0];
+  const T t2 = -a.c[0] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_pseudoscalar<T>((-a.c[0] * t2 + a.c[1] * t1 - a.c[2] * t0) * inv);
+}
+
+// apply(dual_plane, rotor) -> motor: 51 mul, 27 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> apply(const basic_dual_plane<T>& a, const basic_rotor<T>& b) {
+  const T t0 = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
+  const T t2 = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0];
+  const T t3 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t4 = a.c[3] * b.c[0];
+  const T t5 = a.c[3] * b.c[1];
+  const T t6 = a.c[3] * b.c[2];
+  const T t7 = a.c[3] * b.c[3];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_motor<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2) * inv,
+                        (-a.c[0] * t1 + a.c[1] * t0 + a.c[2] * t3) * inv,
+                        (-a.c[0] * t2 - a.c[1] * t3 + a.c[2] * t0) * inv,
+                        (a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1) * inv,
+                        (-a.c[0] * t4 - a.c[1] * t5 - a.c[2] * t6 + a.c[3] * t0) * inv,
+                        (a.c[0] * t5 - a.c[1] * t4 - a.c[2] * t7 + a.c[3] * t1) * inv,
+                        (a.c[0] * t6 + a.c[1] * t7 - a.c[2] * t4 + a.c[3] * t2) * inv,
+                        (T(0)) * inv);
+}
+
+// apply(dual_plane, translator) -> translator: 35 mul, 19 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> apply(const basic_dual_plane<T>& a,
+                                               const basic_translator<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[1] * b.c[0];
+  const T t2 = a.c[2] * b.c[0];
+  const T t3 = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] + a.c[3] * b.c[0];
+  const T t4 = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  const T t5 = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  const T t6 = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_translator<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2) * inv,
+                             (-a.c[0] * t3 - a.c[1] * t4 - a.c[2] * t5 + a.c[3] * t0) * inv,
+                             (a.c[0] * t4 - a.c[1] * t3 - a.c[2] * t6 + a.c[3] * t1) * inv,
+                             (a.c[0] * t5 + a.c[1] * t6 - a.c[2] * t3 + a.c[3] * t2) * inv);
+}
+
+// apply(dual_plane, motor) -> motor: 67 mul, 42 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> apply(const basic_dual_plane<T>& a, const basic_motor<T>& b) {
+  const T t0 = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
+  const T t2 = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0];
+  const T t3 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t4 = a.c[0] * b.c[4] + a.c[1] * b.c[5] + a.c[2] * b.c[6] + a.c[3] * b.c[0];
+  const T t5 = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[7] + a.c[3] * b.c[1];
+  const T t6 = a.c[0] * b.c[6] - a.c[1] * b.c[7] - a.c[2] * b.c[4] + a.c[3] * b.c[2];
+  const T t7 = a.c[0] * b.c[7] + a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[3];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_motor<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2) * inv,
+                        (-a.c[0] * t1 + a.c[1] * t0 + a.c[2] * t3) * inv,
+                        (-a.c[0] * t2 - a.c[1] * t3 + a.c[2] * t0) * inv,
+                        (a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1) * inv,
+                        (-a.c[0] * t4 - a.c[1] * t5 - a.c[2] * t6 + a.c[3] * t0) * inv,
+                        (a.c[0] * t5 - a.c[1] * t4 - a.c[2] * t7 + a.c[3] * t1) * inv,
+                        (a.c[0] * t6 + a.c[1] * t7 - a.c[2] * t4 + a.c[3] * t2) * inv,
+                        (-a.c[0] * t7 + a.c[1] * t6 - a.c[2] * t5 + a.c[3] * t3) * inv);
+}
+
+// apply(euclidean_vector, normalized_point) -> dual_sphere: 35 mul, 17 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_euclidean_vector<T>& a,
+                                                const basic_normalized_point<T>& b) {
+  const T t0 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t1 = -a.c[0];
+  const T t2 = -a.c[1];
+  const T t3 = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  const T t4 = -a.c[2];
+  const T t5 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t6 = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T t7 = a.c[0] * b.c[3];
+  const T t8 = a.c[1] * b.c[3];
+  const T t9 = a.c[2] * b.c[3];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_sphere<T>((a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t4) * inv,
+                              (a.c[0] * t0 + a.c[1] * t3 + a.c[2] * t5) * inv,
+                              (-a.c[0] * t3 + a.c[1] * t0 + a.c[2] * t6) * inv,
+                              (-a.c[0] * t5 - a.c[1] * t6 + a.c[2] * t0) * inv,
+                              (-a.c[0] * t7 - a.c[1] * t8 - a.c[2] * t9) * inv);
+}
+
+// apply(euclidean_vector, dual_sphere) -> dual_sphere: 38 mul, 17 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_euclidean_vector<T>& a,
+                                                const basic_dual_sphere<T>& b) {
+  const T t0 = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3];
+  const T t1 = -a.c[0] * b.c[0];
+  const T t2 = -a.c[1] * b.c[0];
+  const T t3 = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  const T t4 = -a.c[2] * b.c[0];
+  const T t5 = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  const T t6 = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  const T t7 = a.c[0] * b.c[4];
+  const T t8 = a.c[1] * b.c[4];
+  const T t9 = a.c[2] * b.c[4];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_sphere<T>((a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t4) * inv,
+                              (a.c[0] * t0 + a.c[1] * t3 + a.c[2] * t5) * inv,
+                              (-a.c[0] * t3 + a.c[1] * t0 + a.c[2] * t6) * inv,
+                              (-a.c[0] * t5 - a.c[1] * t6 + a.c[2] * t0) * inv,
+                              (-a.c[0] * t7 - a.c[1] * t8 - a.c[2] * t9) * inv);
+}
+
+// apply(euclidean_vector, dual_plane) -> dual_plane: 31 mul, 15 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> apply(const basic_euclidean_vector<T>& a,
+                                               const basic_dual_plane<T>& b) {
+  const T t0 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t1 = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  const T t2 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t3 = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T t4 = a.c[0] * b.c[3];
+  const T t5 = a.c[1] * b.c[3];
+  const T t6 = a.c[2] * b.c[3];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_plane<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2) * inv,
+                             (-a.c[0] * t1 + a.c[1] * t0 + a.c[2] * t3) * inv,
+                             (-a.c[0] * t2 - a.c[1] * t3 + a.c[2] * t0) * inv,
+                             (-a.c[0] * t4 - a.c[1] * t5 - a.c[2] * t6) * inv);
+}
+
+// apply(euclidean_vector, euclidean_vector) -> euclidean_vector: 24 mul, 13 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> apply(const basic_euclidean_vector<T>& a,
+                                                     const basic_euclidean_vector<T>& b) {
+  const T t0 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t1 = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  const T t2 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t3 = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_euclidean_vector<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2) * inv,
+                                   (-a.c[0] * t1 + a.c[1] * t0 + a.c[2] * t3) * inv,
+                                   (-a.c[0] * t2 - a.c[1] * t3 + a.c[2] * t0) * inv);
+}
+
+// apply(euclidean_vector, flat_point) -> flat_point: 31 mul, 15 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> apply(const basic_euclidean_vector<T>& a,
+                                               const basic_flat_point<T>& b) {
+  const T t0 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t1 = -a.c[0] * b.c[3];
+  const T t2 = -a.c[1] * b.c[3];
+  const T t3 = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  const T t4 = -a.c[2] * b.c[3];
+  const T t5 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t6 = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_flat_point<T>((-a.c[0] * t0 - a.c[1] * t3 - a.c[2] * t5) * inv,
+                             (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t6) * inv,
+                             (a.c[0] * t5 + a.c[1] * t6 - a.c[2] * t0) * inv,
+                             (-a.c[0] * t1 - a.c[1] * t2 - a.c[2] * t4) * inv);
+}
+
+// apply(euclidean_vector, euclidean_bivector) -> euclidean_bivector: 24 mul, 13 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> apply(const basic_euclidean_vector<T>& a,
+                                                       const basic_euclidean_bivector<T>& b) {
+  const T t0 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t1 = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  const T t2 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t3 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_euclidean_bivector<T>((-a.c[0] * t1 + a.c[1] * t0 + a.c[2] * t3) * inv,
+                                     (-a.c[0] * t2 - a.c[1] * t3 + a.c[2] * t0) * inv,
+                                     (a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1) * inv);
+}
+
+// apply(euclidean_vector, point_pair) -> point_pair: 73 mul, 37 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_euclidean_vector<T>& a,
+                                               const basic_point_pair<T>& b) {
+  const T t0 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = -a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  const T t2 = a.c[0] * b.c[4] - a.c[2] * b.c[7];
+  const T t3 = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  const T t4 = a.c[0] * b.c[5] + a.c[1] * b.c[7];
+  const T t5 = -a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  const T t6 = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t7 = a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  const T t8 = a.c[0] * b.c[6] + a.c[1] * b.c[8] + a.c[2] * b.c[9];
+  const T t9 = -a.c[0] * b.c[3];
+  const T t10 = -a.c[1] * b.c[3];
+  const T t11 = a.c[0] * b.c[8] - a.c[1] * b.c[6];
+  const T t12 = -a.c[2] * b.c[3];
+  const T t13 = a.c[0] * b.c[9] - a.c[2] * b.c[6];
+  const T t14 = a.c[1] * b.c[9] - a.c[2] * b.c[8];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_point_pair<T>((a.c[0] * t0 + a.c[1] * t3 + a.c[2] * t5) * inv,
+                             (-a.c[0] * t3 + a.c[1] * t0 + a.c[2] * t6) * inv,
+                             (-a.c[0] * t5 - a.c[1] * t6 + a.c[2] * t0) * inv,
+                             (-a.c[0] * t9 - a.c[1] * t10 - a.c[2] * t12) * inv,
+                             (-a.c[0] * t2 + a.c[1] * t1 + a.c[2] * t7) * inv,
+                             (-a.c[0] * t4 - a.c[1] * t7 + a.c[2] * t1) * inv,
+                             (-a.c[0] * t8 - a.c[1] * t11 - a.c[2] * t13) * inv,
+                             (a.c[0] * t7 - a.c[1] * t4 + a.c[2] * t2) * inv,
+                             (a.c[0] * t11 - a.c[1] * t8 - a.c[2] * t14) * inv,
+                             (a.c[0] * t13 + a.c[1] * t14 - a.c[2] * t8) * inv);
+}
+
+// apply(euclidean_vector, dual_line) -> dual_line: 45 mul, 24 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> apply(const basic_euclidean_vector<T>& a,
+                                              const basic_dual_line<T>& b) {
+  const T t0 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t1 = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  const T t2 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t3 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t4 = a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5];
+  const T t5 = a.c[0] * b.c[4] - a.c[1] * b.c[3];
+  const T t6 = a.c[0] * b.c[5] - a.c[2] * b.c[3];
+  const T t7 = a.c[1] * b.c[5] - a.c[2] * b.c[4];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_line<T>((-a.c[0] * t1 + a.c[1] * t0 + a.c[2] * t3) * inv,
+                            (-a.c[0] * t2 - a.c[1] * t3 + a.c[2] * t0) * inv,
+                            (a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1) * inv,
+                            (-a.c[0] * t4 - a.c[1] * t5 - a.c[2] * t6) * inv,
+                            (a.c[0] * t5 - a.c[1] * t4 - a.c[2] * t7) * inv,
+                            (a.c[0] * t6 + a.c[1] * t7 - a.c[2] * t4) * inv);
+}
+
+// apply(euclidean_vector, line) -> line: 45 mul, 24 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> apply(const basic_euclidean_vector<T>& a,
+                                         const basic_line<T>& b) {
+  const T t0 = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  const T t1 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t2 = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  const T t3 = -a.c[0] * b.c[4] + a.c[1] * b.c[3];
+  const T t4 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t5 = -a.c[0] * b.c[5] + a.c[2] * b.c[3];
+  const T t6 = -a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  const T t7 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_line<T>((a.c[0] * t2 - a.c[1] * t1 - a.c[2] * t7) * inv,
+                       (a.c[0] * t4 + a.c[1] * t7 - a.c[2] * t1) * inv,
+                       (-a.c[0] * t7 + a.c[1] * t4 - a.c[2] * t2) * inv,
+                       (-a.c[0] * t0 - a.c[1] * t3 - a.c[2] * t5) * inv,
+                       (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t6) * inv,
+                       (a.c[0] * t5 + a.c[1] * t6 - a.c[2] * t0) * inv);
+}
+
+// apply(euclidean_vector, circle) -> circle: 73 mul, 37 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> apply(const basic_euclidean_vector<T>& a,
+                                           const basic_circle<T>& b) {
+  const T t0 = a.c[1] * b.c[0] + a.c[2] * b.c[1];
+  const T t1 = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  const T t2 = a.c[2] * b.c[6];
+  const T t3 = -a.c[0] * b.c[1] - a.c[1] * b.c[2];
+  const T t4 = -a.c[1] * b.c[6];
+  const T t5 = a.c[0] * b.c[6];
+  const T t6 = -a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  const T t7 = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  const T t8 = -a.c[1] * b.c[7] - a.c[2] * b.c[8];
+  const T t9 = a.c[0] * b.c[7] - a.c[2] * b.c[9];
+  const T t10 = -a.c[0] * b.c[4] + a.c[1] * b.c[3];
+  const T t11 = a.c[0] * b.c[8] + a.c[1] * b.c[9];
+  const T t12 = -a.c[0] * b.c[5] + a.c[2] * b.c[3];
+  const T t13 = -a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  const T t14 = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_circle<T>((-a.c[0] * t1 + a.c[1] * t0 + a.c[2] * t6) * inv,
+                         (-a.c[0] * t3 - a.c[1] * t6 + a.c[2] * t0) * inv,
+                         (a.c[0] * t6 - a.c[1] * t3 + a.c[2] * t1) * inv,
+                         (-a.c[0] * t7 - a.c[1] * t10 - a.c[2] * t12) * inv,
+                         (a.c[0] * t10 - a.c[1] * t7 - a.c[2] * t13) * inv,
+                         (a.c[0] * t12 + a.c[1] * t13 - a.c[2] * t7) * inv,
+                         (a.c[0] * t5 - a.c[1] * t4 + a.c[2] * t2) * inv,
+                         (a.c[0] * t9 - a.c[1] * t8 - a.c[2] * t14) * inv,
+                         (a.c[0] * t11 + a.c[1] * t14 - a.c[2] * t8) * inv,
+                         (-a.c[0] * t14 + a.c[1] * t11 - a.c[2] * t9) * inv);
+}
+
+// apply(euclidean_vector, sphere) -> sphere: 38 mul, 17 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> apply(const basic_euclidean_vector<T>& a,
+                                           const basic_sphere<T>& b) {
+  const T t0 = -a.c[2] * b.c[0];
+  const T t1 = a.c[1] * b.c[0];
+  const T t2 = -a.c[0] * b.c[0];
+  const T t3 = a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t4 = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  const T t5 = a.c[2] * b.c[4];
+  const T t6 = -a.c[0] * b.c[2] - a.c[1] * b.c[3];
+  const T t7 = -a.c[1] * b.c[4];
+  const T t8 = a.c[0] * b.c[4];
+  const T t9 = -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_sphere<T>((a.c[0] * t2 - a.c[1] * t1 + a.c[2] * t0) * inv,
+                         (a.c[0] * t4 - a.c[1] * t3 - a.c[2] * t9) * inv,
+                         (a.c[0] * t6 + a.c[1] * t9 - a.c[2] * t3) * inv,
+                         (-a.c[0] * t9 + a.c[1] * t6 - a.c[2] * t4) * inv,
+                         (-a.c[0] * t8 + a.c[1] * t7 - a.c[2] * t5) * inv);
+}
+
+// apply(euclidean_vector, plane) -> plane: 31 mul, 15 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> apply(const basic_euclidean_vector<T>& a,
+                                          const basic_plane<T>& b) {
+  const T t0 = a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t1 = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  const T t2 = a.c[2] * b.c[0];
+  const T t3 = -a.c[0] * b.c[2] - a.c[1] * b.c[3];
+  const T t4 = -a.c[1] * b.c[0];
+  const T t5 = a.c[0] * b.c[0];
+  const T t6 = -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_plane<T>((-a.c[0] * t5 + a.c[1] * t4 - a.c[2] * t2) * inv,
+                        (a.c[0] * t1 - a.c[1] * t0 - a.c[2] * t6) * inv,
+                        (a.c[0] * t3 + a.c[1] * t6 - a.c[2] * t0) * inv,
+                        (-a.c[0] * t6 + a.c[1] * t3 - a.c[2] * t1) * inv);
+}
+
+// apply(euclidean_vector, pseudoscalar) -> pseudoscalar: 10 mul, 4 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> apply(const basic_euclidean_vector<T>& a,
+                                                 const basic_pseudoscalar<T>& b) {
+  const T t0 = -a.c[2] * b.c[0];
+  const T t1 = a.c[1] * b.c[0];
+  const T t2 = -a.c[0] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_pseudoscalar<T>((-a.c[0] * t2 + a.c[1] * t1 - a.c[2] * t0) * inv);
+}
+
+// apply(euclidean_vector, rotor) -> rotor: 31 mul, 18 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> apply(const basic_euclidean_vector<T>& a,
+                                          const basic_rotor<T>& b) {
+  const T t0 = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
+  const T t2 = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0];
+  const T t3 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_rotor<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2) * inv,
+                        (-a.c[0] * t1 + a.c[1] * t0 + a.c[2] * t3) * inv,
+                        (-a.c[0] * t2 - a.c[1] * t3 + a.c[2] * t0) * inv,
+                        (a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1) * inv);
+}
+
+// apply(euclidean_vector, translator) -> translator: 31 mul, 15 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> apply(const basic_euclidean_vector<T>& a,
+                                               const basic_translator<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[1] * b.c[0];
+  const T t2 = a.c[2] * b.c[0];
+  const T t3 = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3];
+  const T t4 = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  const T t5 = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  const T t6 = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_translator<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2) * inv,
+                             (-a.c[0] * t3 - a.c[1] * t4 - a.c[2] * t5) * inv,
+                             (a.c[0] * t4 - a.c[1] * t3 - a.c[2] * t6) * inv,
+                             (a.c[0] * t5 + a.c[1] * t6 - a.c[2] * t3) * inv);
+}
+
+// apply(euclidean_vector, motor) -> motor: 59 mul, 34 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> apply(const basic_euclidean_vector<T>& a,
+                                          const basic_motor<T>& b) {
+  const T t0 = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
+  const T t2 = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0];
+  const T t3 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t4 = a.c[0] * b.c[4] + a.c[1] * b.c[5] + a.c[2] * b.c[6];
+  const T t5 = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[7];
+  const T t6 = a.c[0] * b.c[6] - a.c[1] * b.c[7] - a.c[2] * b.c[4];
+  const T t7 = a.c[0] * b.c[7] + a.c[1] * b.c[6] - a.c[2] * b.c[5];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_motor<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2) * inv,
+                        (-a.c[0] * t1 + a.c[1] * t0 + a.c[2] * t3) * inv,
+                        (-a.c[0] * t2 - a.c[1] * t3 + a.c[2] * t0) * inv,
+                        (a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1) * inv,
+                        (-a.c[0] * t4 - a.c[1] * t5 - a.c[2] * t6) * inv,
+                        (a.c[0] * t5 - a.c[1] * t4 - a.c[2] * t7) * inv,
+                        (a.c[0] * t6 + a.c[1] * t7 - a.c[2] * t4) * inv,
+                        (-a.c[0] * t7 + a.c[1] * t6 - a.c[2] * t5) * inv);
+}
+
+// apply(flat_point, normalized_point) -> dual_sphere: 27 mul, 15 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_flat_point<T>& a,
+                                                const basic_normalized_point<T>& b) {
+  const T t0 = -a.c[3];
+  const T t1 = -a.c[0];
+  const T t2 = -a.c[1];
+  const T t3 = -a.c[2];
+  const T t4 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[3];
+  const T t5 = a.c[0] - a.c[3] * b.c[0];
+  const T t6 = a.c[1] - a.c[3] * b.c[1];
+  const T t8 = a.c[2] - a.c[3] * b.c[2];
+  const T inv = T(1) / (-a.c[3] * a.c[3]);
+  return basic_dual_sphere<T>((-a.c[3] * t0) * inv, (-a.c[0] * t0 + a.c[3] * t5) * inv,
+                              (-a.c[1] * t0 + a.c[3] * t6) * inv,
+                              (-a.c[2] * t0 + a.c[3] * t8) * inv,
+                              (-a.c[0] * t1 + a.c[0] * t5 - a.c[1] * t2 + a.c[1] * t6 -
+                               a.c[2] * t3 + a.c[2] * t8 + a.c[3] * t4) *
+                                  inv);
+}
+
+// apply(flat_point, dual_sphere) -> dual_sphere: 34 mul, 15 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_flat_point<T>& a,
+                                                const basic_dual_sphere<T>& b) {
+  const T t0 = -a.c[3] * b.c[0];
+  const T t1 = -a.c[0] * b.c[0];
+  const T t2 = -a.c[1] * b.c[0];
+  const T t3 = -a.c[2] * b.c[0];
+  const T t4 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3] + a.c[3] * b.c[4];
+  const T t5 = a.c[0] * b.c[0] - a.c[3] * b.c[1];
+  const T t6 = a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  const T t8 = a.c[2] * b.c[0] - a.c[3] * b.c[3];
+  const T inv = T(1) / (-a.c[3] * a.c[3]);
+  return basic_dual_sphere<T>((-a.c[3] * t0) * inv, (-a.c[0] * t0 + a.c[3] * t5) * inv,
+                              (-a.c[1] * t0 + a.c[3] * t6) * inv,
+                              (-a.c[2] * t0 + a.c[3] * t8) * inv,
+                              (-a.c[0] * t1 + a.c[0] * t5 - a.c[1] * t2 + a.c[1] * t6 -
+                               a.c[2] * t3 + a.c[2] * t8 + a.c[3] * t4) *
+                                  inv);
+}
+
+// apply(flat_point, dual_plane) -> dual_plane: 19 mul, 6 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> apply(const basic_flat_point<T>& a,
+                                               const basic_dual_plane<T>& b) {
+  const T t0 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[3];
+  const T t1 = -a.c[3] * b.c[0];
+  const T t2 = -a.c[3] * b.c[1];
+  const T t4 = -a.c[3] * b.c[2];
+  const T inv = T(1) / (-a.c[3] * a.c[3]);
+  return basic_dual_plane<T>((a.c[3] * t1) * inv, (a.c[3] * t2) * inv, (a.c[3] * t4) * inv,
+                             (a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t4 + a.c[3] * t0) * inv);
+}
+
+// apply(flat_point, euclidean_vector) -> dual_plane: 18 mul, 5 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> apply(const basic_flat_point<T>& a,
+                                               const basic_euclidean_vector<T>& b) {
+  const T t0 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = -a.c[3] * b.c[0];
+  const T t2 = -a.c[3] * b.c[1];
+  const T t4 = -a.c[3] * b.c[2];
+  const T inv = T(1) / (-a.c[3] * a.c[3]);
+  return basic_dual_plane<T>((a.c[3] * t1) * inv, (a.c[3] * t2) * inv, (a.c[3] * t4) * inv,
+                             (a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t4 + a.c[3] * t0) * inv);
+}
+
+// apply(flat_point, flat_point) -> flat_point: 19 mul, 6 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> apply(const basic_flat_point<T>& a,
+                                               const basic_flat_point<T>& b) {
+  const T t0 = a.c[3] * b.c[3];
+  const T t1 = -a.c[0] * b.c[3] + a.c[3] * b.c[0];
+  const T t2 = -a.c[1] * b.c[3] + a.c[3] * b.c[1];
+  const T t3 = -a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  const T inv = T(1) / (-a.c[3] * a.c[3]);
+  return basic_flat_point<T>((-a.c[0] * t0 + a.c[3] * t1) * inv, (-a.c[1] * t0 + a.c[3] * t2) * inv,
+                             (-a.c[2] * t0 + a.c[3] * t3) * inv, (-a.c[3] * t0) * inv);
+}
+
+// apply(flat_point, euclidean_bivector) -> dual_line: 28 mul, 9 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> apply(const basic_flat_point<T>& a,
+                                              const basic_euclidean_bivector<T>& b) {
+  const T t0 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t1 = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  const T t2 = a.c[3] * b.c[0];
+  const T t3 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t4 = a.c[3] * b.c[1];
+  const T t5 = a.c[3] * b.c[2];
+  const T inv = T(1) / (-a.c[3] * a.c[3]);
+  return basic_dual_line<T>((-a.c[3] * t2) * inv, (-a.c[3] * t4) * inv, (-a.c[3] * t5) * inv,
+                            (-a.c[1] * t2 - a.c[2] * t4 + a.c[3] * t0) * inv,
+                            (a.c[0] * t2 - a.c[2] * t5 + a.c[3] * t1) * inv,
+                            (a.c[0] * t4 + a.c[1] * t5 + a.c[3] * t3) * inv);
+}
+
+// apply(flat_point, point_pair) -> point_pair: 85 mul, 50 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_flat_point<T>& a,
+                                               const basic_point_pair<T>& b) {
+  const T t0 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[3];
+  const T t1 = -a.c[3] * b.c[0];
+  const T t2 = -a.c[3] * b.c[1];
+  const T t3 = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  const T t4 = -a.c[3] * b.c[2];
+  const T t5 = -a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  const T t6 = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t7 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t8 = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5] + a.c[3] * b.c[6];
+  const T t9 = a.c[0] * b.c[4] - a.c[1] * b.c[3] - a.c[2] * b.c[7] + a.c[3] * b.c[8];
+  const T t10 = -a.c[0] * b.c[1] + a.c[1] * b.c[0] + a.c[3] * b.c[4];
+  const T t11 = a.c[0] * b.c[5] + a.c[1] * b.c[7] - a.c[2] * b.c[3] + a.c[3] * b.c[9];
+  const T t12 = -a.c[0] * b.c[2] + a.c[2] * b.c[0] + a.c[3] * b.c[5];
+  const T t13 = -a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[3] * b.c[7];
+  const T inv = T(1) / (-a.c[3] * a.c[3]);
+  return basic_point_pair<T>((-a.c[3] * t1) * inv, (-a.c[3] * t2) * inv, (-a.c[3] * t4) * inv,
+                             (-a.c[0] * t1 - a.c[1] * t2 - a.c[2] * t4 - a.c[3] * t0) * inv,
+                             (-a.c[0] * t2 + a.c[1] * t1 - a.c[3] * t10) * inv,
+                             (-a.c[0] * t4 + a.c[2] * t1 - a.c[3] * t12) * inv,
+                             (-a.c[0] * t0 - a.c[0] * t7 - a.c[1] * t10 - a.c[1] * t3 -
+                              a.c[2] * t12 - a.c[2] * t5 + a.c[3] * t8) *
+                                 inv,
+                             (-a.c[1] * t4 + a.c[2] * t2 - a.c[3] * t13) * inv,
+                             (a.c[0] * t10 + a.c[0] * t3 - a.c[1] * t0 - a.c[1] * t7 -
+                              a.c[2] * t13 - a.c[2] * t6 + a.c[3] * t9) *
+                                 inv,
+                             (a.c[0] * t12 + a.c[0] * t5 + a.c[1] * t13 + a.c[1] * t6 -
+                              a.c[2] * t0 - a.c[2] * t7 + a.c[3] * t11) *
+                                 inv);
+}
+
+// apply(flat_point, dual_line) -> dual_line: 31 mul, 12 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> apply(const basic_flat_point<T>& a,
+                                              const basic_dual_line<T>& b) {
+  const T t0 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] + a.c[3] * b.c[3];
+  const T t1 = a.c[0] * b.c[0] - a.c[2] * b.c[2] + a.c[3] * b.c[4];
+  const T t2 = a.c[3] * b.c[0];
+  const T t3 = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[3] * b.c[5];
+  const T t4 = a.c[3] * b.c[1];
+  const T t5 = a.c[3] * b.c[2];
+  const T inv = T(1) / (-a.c[3] * a.c[3]);
+  return basic_dual_line<T>((-a.c[3] * t2) * inv, (-a.c[3] * t4) * inv, (-a.c[3] * t5) * inv,
+                            (-a.c[1] * t2 - a.c[2] * t4 + a.c[3] * t0) * inv,
+                            (a.c[0] * t2 - a.c[2] * t5 + a.c[3] * t1) * inv,
+                            (a.c[0] * t4 + a.c[1] * t5 + a.c[3] * t3) * inv);
+}
+
+// apply(flat_point, line) -> line: 31 mul, 12 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> apply(const basic_flat_point<T>& a, const basic_line<T>& b) {
+  const T t0 = -a.c[3] * b.c[3];
+  const T t1 = -a.c[3] * b.c[4];
+  const T t2 = -a.c[3] * b.c[5];
+  const T t4 = -a.c[0] * b.c[4] + a.c[1] * b.c[3] + a.c[3] * b.c[0];
+  const T t5 = -a.c[0] * b.c[5] + a.c[2] * b.c[3] + a.c[3] * b.c[1];
+  const T t6 = -a.c[1] * b.c[5] + a.c[2] * b.c[4] + a.c[3] * b.c[2];
+  const T inv = T(1) / (-a.c[3] * a.c[3]);
+  return basic_line<T>((a.c[0] * t1 - a.c[1] * t0 + a.c[3] * t4) * inv,
+                       (a.c[0] * t2 - a.c[2] * t0 + a.c[3] * t5) * inv,
+                       (a.c[1] * t2 - a.c[2] * t1 + a.c[3] * t6) * inv, (a.c[3] * t0) * inv,
+                       (a.c[3] * t1) * inv, (a.c[3] * t2) * inv);
+}
+
+// apply(flat_point, circle) -> circle: 85 mul, 50 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> apply(const basic_flat_point<T>& a, const basic_circle<T>& b) {
+  const T t0 = a.c[1] * b.c[0] + a.c[2] * b.c[1] - a.c[3] * b.c[3];
+  const T t1 = -a.c[0] * b.c[0] + a.c[2] * b.c[2] - a.c[3] * b.c[4];
+  const T t2 = -a.c[3] * b.c[0];
+  const T t3 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[3] * b.c[5];
+  const T t4 = -a.c[3] * b.c[1];
+  const T t5 = -a.c[3] * b.c[2];
+  const T t6 = -a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  const T t8 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t9 = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  const T t10 = -a.c[0] * b.c[4] + a.c[1] * b.c[3] - a.c[2] * b.c[6] + a.c[3] * b.c[7];
+  const T t11 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t12 = -a.c[0] * b.c[5] + a.c[1] * b.c[6] + a.c[2] * b.c[3] + a.c[3] * b.c[8];
+  const T t13 = -a.c[0] * b.c[6] - a.c[1] * b.c[5] + a.c[2] * b.c[4] + a.c[3] * b.c[9];
+  const T t14 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[3] * b.c[6];
+  const T inv = T(1) / (-a.c[3] * a.c[3]);
+  return basic_circle<T>((-a.c[3] * t2) * inv, (-a.c[3] * t4) * inv, (-a.c[3] * t5) * inv,
+                         (-a.c[1] * t2 - a.c[2] * t4 + a.c[3] * t0) * inv,
+                         (a.c[0] * t2 - a.c[2] * t5 + a.c[3] * t1) * inv,
+                         (a.c[0] * t4 + a.c[1] * t5 + a.c[3] * t3) * inv,
+                         (-a.c[0] * t5 + a.c[1] * t4 - a.c[2] * t2 + a.c[3] * t14) * inv,
+                         (a.c[0] * t1 - a.c[0] * t9 - a.c[1] * t0 + a.c[1] * t8 + a.c[2] * t14 -
+                          a.c[2] * t6 + a.c[3] * t10) *
+                             inv,
+                         (-a.c[0] * t11 + a.c[0] * t3 - a.c[1] * t14 + a.c[1] * t6 - a.c[2] * t0 +
+                          a.c[2] * t8 + a.c[3] * t12) *
+                             inv,
+                         (a.c[0] * t14 - a.c[0] * t6 - a.c[1] * t11 + a.c[1] * t3 - a.c[2] * t1 +
+                          a.c[2] * t9 + a.c[3] * t13) *
+                             inv);
+}
+
+// apply(flat_point, sphere) -> sphere: 34 mul, 15 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> apply(const basic_flat_point<T>& a, const basic_sphere<T>& b) {
+  const T t0 = -a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  const T t1 = a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  const T t2 = -a.c[0] * b.c[0] + a.c[3] * b.c[3];
+  const T t3 = -a.c[3] * b.c[0];
+  const T t6 = -a.c[2] * b.c[0];
+  const T t8 = a.c[1] * b.c[0];
+  const T t9 = -a.c[0] * b.c[0];
+  const T t10 = -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[4];
+  const T inv = T(1) / (-a.c[3] * a.c[3]);
+  return basic_sphere<T>((-a.c[3] * t3) * inv, (-a.c[2] * t3 - a.c[3] * t0) * inv,
+                         (a.c[1] * t3 - a.c[3] * t1) * inv, (-a.c[0] * t3 - a.c[3] * t2) * inv,
+                         (-a.c[0] * t2 - a.c[0] * t9 + a.c[1] * t1 + a.c[1] * t8 - a.c[2] * t0 -
+                          a.c[2] * t6 + a.c[3] * t10) *
+                             inv);
+}
+
+// apply(flat_point, plane) -> plane: 19 mul, 6 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> apply(const basic_flat_point<T>& a, const basic_plane<T>& b) {
+  const T t0 = a.c[3] * b.c[1];
+  const T t1 = a.c[3] * b.c[2];
+  const T t2 = a.c[3] * b.c[3];
+  const T t6 = -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T inv = T(1) / (-a.c[3] * a.c[3]);
+  return basic_plane<T>((-a.c[0] * t2 + a.c[1] * t1 - a.c[2] * t0 + a.c[3] * t6) * inv,
+                        (-a.c[3] * t0) * inv, (-a.c[3] * t1) * inv, (-a.c[3] * t2) * inv);
+}
+
+// apply(flat_point, pseudoscalar) -> pseudoscalar: 4 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> apply(const basic_flat_point<T>& a,
+                                                 const basic_pseudoscalar<T>& b) {
+  const T t0 = -a.c[3] * b.c[0];
+  const T inv = T(1) / (-a.c[3] * a.c[3]);
+  return basic_pseudoscalar<T>((a.c[3] * t0) * inv);
+}
+
+// apply(flat_point, rotor) -> motor: 38 mul, 15 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> apply(const basic_flat_point<T>& a, const basic_rotor<T>& b) {
+  const T t0 = a.c[3] * b.c[0];
+  const T t1 = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t2 = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
+  const T t3 = a.c[3] * b.c[1];
+  const T t4 = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0];
+  const T t5 = a.c[3] * b.c[2];
+  const T t6 = a.c[3] * b.c[3];
+  const T inv = T(1) / (-a.c[3] * a.c[3]);
+  return basic_motor<T>(
+      (-a.c[3] * t0) * inv, (-a.c[3] * t3) * inv, (-a.c[3] * t5) * inv, (-a.c[3] * t6) * inv,
+      (-a.c[0] * t0 - a.c[1] * t3 - a.c[2] * t5 + a.c[3] * t1) * inv,
+      (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t6 + a.c[3] * t2) * inv,
+      (a.c[0] * t5 + a.c[1] * t6 - a.c[2] * t0 + a.c[3] * t4) * inv, (T(0)) * inv);
+}
+
+// apply(flat_point, translator) -> translator: 19 mul, 6 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> apply(const basic_flat_point<T>& a,
+                                               const basic_translator<T>& b) {
+  const T t0 = a.c[3] * b.c[0];
+  const T t1 = a.c[0] * b.c[0] + a.c[3] * b.c[1];
+  const T t2 = a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  const T t3 = a.c[2] * b.c[0] + a.c[3] * b.c[3];
+  const T inv = T(1) / (-a.c[3] * a.c[3]);
+  return basic_translator<T>((-a.c[3] * t0) * inv, (-a.c[0] * t0 + a.c[3] * t1) * inv,
+                             (-a.c[1] * t0 + a.c[3] * t2) * inv,
+                             (-a.c[2] * t0 + a.c[3] * t3) * inv);
+}
+
+// apply(flat_point, motor) -> motor: 49 mul, 24 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> apply(const basic_flat_point<T>& a, const basic_motor<T>& b) {
+  const T t0 = a.c[3] * b.c[0];
+  const T t1 = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[4];
+  const T t2 = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3] + a.c[3] * b.c[5];
+  const T t3 = a.c[3] * b.c[1];
+  const T t4 = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0] + a.c[3] * b.c[6];
+  const T t5 = a.c[3] * b.c[2];
+  const T t6 = a.c[3] * b.c[3];
+  const T t7 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[3] * b.c[7];
+  const T inv = T(1) / (-a.c[3] * a.c[3]);
+  return basic_motor<T>((-a.c[3] * t0) * inv, (-a.c[3] * t3) * inv, (-a.c[3] * t5) * inv,
+                        (-a.c[3] * t6) * inv,
+                        (-a.c[0] * t0 - a.c[1] * t3 - a.c[2] * t5 + a.c[3] * t1) * inv,
+                        (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t6 + a.c[3] * t2) * inv,
+                        (a.c[0] * t5 + a.c[1] * t6 - a.c[2] * t0 + a.c[3] * t4) * inv,
+                        (-a.c[0] * t6 + a.c[1] * t5 - a.c[2] * t3 + a.c[3] * t7) * inv);
+}
+
+// apply(euclidean_bivector, normalized_point) -> normalized_point: 31 mul, 15 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_normalized_point<T> apply(const basic_euclidean_bivector<T>& a,
+                                                     const basic_normalized_point<T>& b) {
+  const T t0 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t1 = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  const T t3 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t6 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t7 = a.c[0] * b.c[3];
+  const T t8 = a.c[1] * b.c[3];
+  const T t9 = a.c[2] * b.c[3];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_normalized_point<T>((a.c[0] * t1 + a.c[1] * t3 + a.c[2] * t6) * inv,
+                                   (-a.c[0] * t0 - a.c[1] * t6 + a.c[2] * t3) * inv,
+                                   (a.c[0] * t6 - a.c[1] * t0 - a.c[2] * t1) * inv,
+                                   (a.c[0] * t7 + a.c[1] * t8 + a.c[2] * t9) * inv);
+}
+
+// apply(euclidean_bivector, dual_sphere) -> dual_sphere: 38 mul, 17 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_euclidean_bivector<T>& a,
+                                                const basic_dual_sphere<T>& b) {
+  const T t0 = a.c[0] * b.c[2] + a.c[1] * b.c[3];
+  const T t1 = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  const T t2 = a.c[0] * b.c[0];
+  const T t3 = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t4 = a.c[1] * b.c[0];
+  const T t5 = a.c[2] * b.c[0];
+  const T t6 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t7 = a.c[0] * b.c[4];
+  const T t8 = a.c[1] * b.c[4];
+  const T t9 = a.c[2] * b.c[4];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_sphere<T>((a.c[0] * t2 + a.c[1] * t4 + a.c[2] * t5) * inv,
+                              (a.c[0] * t1 + a.c[1] * t3 + a.c[2] * t6) * inv,
+                              (-a.c[0] * t0 - a.c[1] * t6 + a.c[2] * t3) * inv,
+                              (a.c[0] * t6 - a.c[1] * t0 - a.c[2] * t1) * inv,
+                              (a.c[0] * t7 + a.c[1] * t8 + a.c[2] * t9) * inv);
+}
+
+// apply(euclidean_bivector, dual_plane) -> dual_plane: 31 mul, 15 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> apply(const basic_euclidean_bivector<T>& a,
+                                               const basic_dual_plane<T>& b) {
+  const T t0 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t1 = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  const T t2 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t3 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t4 = a.c[0] * b.c[3];
+  const T t5 = a.c[1] * b.c[3];
+  const T t6 = a.c[2] * b.c[3];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_plane<T>((a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t3) * inv,
+                             (-a.c[0] * t0 - a.c[1] * t3 + a.c[2] * t2) * inv,
+                             (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t1) * inv,
+                             (a.c[0] * t4 + a.c[1] * t5 + a.c[2] * t6) * inv);
+}
+
+// apply(euclidean_bivector, euclidean_vector) -> euclidean_vector: 24 mul, 13 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> apply(const basic_euclidean_bivector<T>& a,
+                                                     const basic_euclidean_vector<T>& b) {
+  const T t0 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t1 = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  const T t2 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t3 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_euclidean_vector<T>((a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t3) * inv,
+                                   (-a.c[0] * t0 - a.c[1] * t3 + a.c[2] * t2) * inv,
+                                   (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t1) * inv);
+}
+
+// apply(euclidean_bivector, flat_point) -> flat_point: 31 mul, 15 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> apply(const basic_euclidean_bivector<T>& a,
+                                               const basic_flat_point<T>& b) {
+  const T t0 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t1 = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  const T t2 = a.c[0] * b.c[3];
+  const T t3 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t4 = a.c[1] * b.c[3];
+  const T t5 = a.c[2] * b.c[3];
+  const T t6 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_flat_point<T>((a.c[0] * t1 + a.c[1] * t3 + a.c[2] * t6) * inv,
+                             (-a.c[0] * t0 - a.c[1] * t6 + a.c[2] * t3) * inv,
+                             (a.c[0] * t6 - a.c[1] * t0 - a.c[2] * t1) * inv,
+                             (a.c[0] * t2 + a.c[1] * t4 + a.c[2] * t5) * inv);
+}
+
+// apply(euclidean_bivector, euclidean_bivector) -> euclidean_bivector: 24 mul, 13 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> apply(const basic_euclidean_bivector<T>& a,
+                                                       const basic_euclidean_bivector<T>& b) {
+  const T t0 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t2 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t3 = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_euclidean_bivector<T>((-a.c[0] * t0 - a.c[1] * t3 + a.c[2] * t2) * inv,
+                                     (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t1) * inv,
+                                     (-a.c[0] * t2 + a.c[1] * t1 - a.c[2] * t0) * inv);
+}
+
+// apply(euclidean_bivector, point_pair) -> point_pair: 73 mul, 37 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_euclidean_bivector<T>& a,
+                                               const basic_point_pair<T>& b) {
+  const T t0 = -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[7];
+  const T t1 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t2 = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  const T t3 = -a.c[1] * b.c[7] + a.c[2] * b.c[5];
+  const T t4 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t5 = a.c[0] * b.c[7] - a.c[2] * b.c[4];
+  const T t6 = -a.c[0] * b.c[5] + a.c[1] * b.c[4];
+  const T t7 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t8 = a.c[0] * b.c[8] + a.c[1] * b.c[9];
+  const T t9 = -a.c[0] * b.c[6] + a.c[2] * b.c[9];
+  const T t10 = a.c[0] * b.c[3];
+  const T t11 = -a.c[1] * b.c[6] - a.c[2] * b.c[8];
+  const T t12 = a.c[1] * b.c[3];
+  const T t13 = a.c[2] * b.c[3];
+  const T t14 = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[6];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_point_pair<T>((a.c[0] * t2 + a.c[1] * t4 + a.c[2] * t7) * inv,
+                             (-a.c[0] * t1 - a.c[1] * t7 + a.c[2] * t4) * inv,
+                             (a.c[0] * t7 - a.c[1] * t1 - a.c[2] * t2) * inv,
+                             (a.c[0] * t10 + a.c[1] * t12 + a.c[2] * t13) * inv,
+                             (-a.c[0] * t0 - a.c[1] * t6 + a.c[2] * t5) * inv,
+                             (a.c[0] * t6 - a.c[1] * t0 - a.c[2] * t3) * inv,
+                             (a.c[0] * t9 + a.c[1] * t11 + a.c[2] * t14) * inv,
+                             (-a.c[0] * t5 + a.c[1] * t3 - a.c[2] * t0) * inv,
+                             (-a.c[0] * t8 - a.c[1] * t14 + a.c[2] * t11) * inv,
+                             (a.c[0] * t14 - a.c[1] * t8 - a.c[2] * t9) * inv);
+}
+
+// apply(euclidean_bivector, dual_line) -> dual_line: 45 mul, 24 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> apply(const basic_euclidean_bivector<T>& a,
+                                              const basic_dual_line<T>& b) {
+  const T t0 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t2 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t3 = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  const T t4 = a.c[0] * b.c[4] + a.c[1] * b.c[5];
+  const T t5 = -a.c[0] * b.c[3] + a.c[2] * b.c[5];
+  const T t6 = -a.c[1] * b.c[3] - a.c[2] * b.c[4];
+  const T t7 = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_line<T>((-a.c[0] * t0 - a.c[1] * t3 + a.c[2] * t2) * inv,
+                            (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t1) * inv,
+                            (-a.c[0] * t2 + a.c[1] * t1 - a.c[2] * t0) * inv,
+                            (a.c[0] * t5 + a.c[1] * t6 + a.c[2] * t7) * inv,
+                            (-a.c[0] * t4 - a.c[1] * t7 + a.c[2] * t6) * inv,
+                            (a.c[0] * t7 - a.c[1] * t4 - a.c[2] * t5) * inv);
+}
+
+// apply(euclidean_bivector, line) -> line: 45 mul, 24 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> apply(const basic_euclidean_bivector<T>& a,
+                                         const basic_line<T>& b) {
+  const T t0 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = a.c[0] * b.c[4] + a.c[1] * b.c[5];
+  const T t2 = -a.c[0] * b.c[3] + a.c[2] * b.c[5];
+  const T t3 = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t4 = -a.c[1] * b.c[3] - a.c[2] * b.c[4];
+  const T t5 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t6 = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  const T t7 = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_line<T>((-a.c[0] * t0 - a.c[1] * t6 + a.c[2] * t5) * inv,
+                       (a.c[0] * t6 - a.c[1] * t0 - a.c[2] * t3) * inv,
+                       (-a.c[0] * t5 + a.c[1] * t3 - a.c[2] * t0) * inv,
+                       (a.c[0] * t2 + a.c[1] * t4 + a.c[2] * t7) * inv,
+                       (-a.c[0] * t1 - a.c[1] * t7 + a.c[2] * t4) * inv,
+                       (a.c[0] * t7 - a.c[1] * t1 - a.c[2] * t2) * inv);
+}
+
+// apply(euclidean_bivector, circle) -> circle: 73 mul, 37 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> apply(const basic_euclidean_bivector<T>& a,
+                                           const basic_circle<T>& b) {
+  const T t0 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = -a.c[2] * b.c[6];
+  const T t2 = a.c[1] * b.c[6];
+  const T t3 = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t4 = -a.c[0] * b.c[6];
+  const T t5 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t6 = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  const T t7 = -a.c[0] * b.c[7] - a.c[1] * b.c[8] - a.c[2] * b.c[9];
+  const T t8 = a.c[0] * b.c[4] + a.c[1] * b.c[5];
+  const T t9 = -a.c[0] * b.c[3] + a.c[2] * b.c[5];
+  const T t10 = -a.c[1] * b.c[9] + a.c[2] * b.c[8];
+  const T t11 = -a.c[1] * b.c[3] - a.c[2] * b.c[4];
+  const T t12 = a.c[0] * b.c[9] - a.c[2] * b.c[7];
+  const T t13 = -a.c[0] * b.c[8] + a.c[1] * b.c[7];
+  const T t14 = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_circle<T>((-a.c[0] * t0 - a.c[1] * t6 + a.c[2] * t5) * inv,
+                         (a.c[0] * t6 - a.c[1] * t0 - a.c[2] * t3) * inv,
+                         (-a.c[0] * t5 + a.c[1] * t3 - a.c[2] * t0) * inv,
+                         (a.c[0] * t9 + a.c[1] * t11 + a.c[2] * t14) * inv,
+                         (-a.c[0] * t8 - a.c[1] * t14 + a.c[2] * t11) * inv,
+                         (a.c[0] * t14 - a.c[1] * t8 - a.c[2] * t9) * inv,
+                         (-a.c[0] * t4 + a.c[1] * t2 - a.c[2] * t1) * inv,
+                         (-a.c[0] * t7 - a.c[1] * t13 + a.c[2] * t12) * inv,
+                         (a.c[0] * t13 - a.c[1] * t7 - a.c[2] * t10) * inv,
+                         (-a.c[0] * t12 + a.c[1] * t10 - a.c[2] * t7) * inv);
+}
+
+// apply(euclidean_bivector, sphere) -> sphere: 38 mul, 17 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> apply(const basic_euclidean_bivector<T>& a,
+                                           const basic_sphere<T>& b) {
+  const T t0 = -a.c[2] * b.c[0];
+  const T t1 = a.c[1] * b.c[0];
+  const T t2 = -a.c[0] * b.c[0];
+  const T t3 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  const T t4 = -a.c[2] * b.c[4];
+  const T t5 = a.c[1] * b.c[4];
+  const T t6 = -a.c[1] * b.c[3] + a.c[2] * b.c[2];
+  const T t7 = -a.c[0] * b.c[4];
+  const T t8 = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  const T t9 = -a.c[0] * b.c[2] + a.c[1] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_sphere<T>((-a.c[0] * t2 + a.c[1] * t1 - a.c[2] * t0) * inv,
+                         (-a.c[0] * t3 - a.c[1] * t9 + a.c[2] * t8) * inv,
+                         (a.c[0] * t9 - a.c[1] * t3 - a.c[2] * t6) * inv,
+                         (-a.c[0] * t8 + a.c[1] * t6 - a.c[2] * t3) * inv,
+                         (-a.c[0] * t7 + a.c[1] * t5 - a.c[2] * t4) * inv);
+}
+
+// apply(euclidean_bivector, plane) -> plane: 31 mul, 15 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> apply(const basic_euclidean_bivector<T>& a,
+                                          const basic_plane<T>& b) {
+  const T t0 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  const T t1 = -a.c[2] * b.c[0];
+  const T t2 = a.c[1] * b.c[0];
+  const T t3 = -a.c[1] * b.c[3] + a.c[2] * b.c[2];
+  const T t4 = -a.c[0] * b.c[0];
+  const T t5 = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  const T t6 = -a.c[0] * b.c[2] + a.c[1] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_plane<T>((-a.c[0] * t4 + a.c[1] * t2 - a.c[2] * t1) * inv,
+                        (-a.c[0] * t0 - a.c[1] * t6 + a.c[2] * t5) * inv,
+                        (a.c[0] * t6 - a.c[1] * t0 - a.c[2] * t3) * inv,
+                        (-a.c[0] * t5 + a.c[1] * t3 - a.c[2] * t0) * inv);
+}
+
+// apply(euclidean_bivector, pseudoscalar) -> pseudoscalar: 10 mul, 4 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> apply(const basic_euclidean_bivector<T>& a,
+                                                 const basic_pseudoscalar<T>& b) {
+  const T t0 = -a.c[2] * b.c[0];
+  const T t1 = a.c[1] * b.c[0];
+  const T t2 = -a.c[0] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_pseudoscalar<T>((-a.c[0] * t2 + a.c[1] * t1 - a.c[2] * t0) * inv);
+}
+
+// apply(euclidean_bivector, rotor) -> rotor: 31 mul, 18 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> apply(const basic_euclidean_bivector<T>& a,
+                                          const basic_rotor<T>& b) {
+  const T t0 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  const T t1 = a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2];
+  const T t2 = a.c[0] * b.c[3] + a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t3 = -a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_rotor<T>((a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t3) * inv,
+                        (-a.c[0] * t0 - a.c[1] * t3 + a.c[2] * t2) * inv,
+                        (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t1) * inv,
+                        (-a.c[0] * t2 + a.c[1] * t1 - a.c[2] * t0) * inv);
+}
+
+// apply(euclidean_bivector, translator) -> translator: 31 mul, 15 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> apply(const basic_euclidean_bivector<T>& a,
+                                               const basic_translator<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[1] * b.c[0];
+  const T t2 = a.c[2] * b.c[0];
+  const T t3 = a.c[0] * b.c[2] + a.c[1] * b.c[3];
+  const T t4 = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  const T t5 = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t6 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_translator<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2) * inv,
+                             (a.c[0] * t4 + a.c[1] * t5 + a.c[2] * t6) * inv,
+                             (-a.c[0] * t3 - a.c[1] * t6 + a.c[2] * t5) * inv,
+                             (a.c[0] * t6 - a.c[1] * t3 - a.c[2] * t4) * inv);
+}
+
+// apply(euclidean_bivector, motor) -> motor: 59 mul, 34 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> apply(const basic_euclidean_bivector<T>& a,
+                                          const basic_motor<T>& b) {
+  const T t0 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  const T t1 = a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2];
+  const T t2 = a.c[0] * b.c[3] + a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t3 = -a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t4 = a.c[0] * b.c[5] + a.c[1] * b.c[6] - a.c[2] * b.c[7];
+  const T t5 = -a.c[0] * b.c[4] + a.c[1] * b.c[7] + a.c[2] * b.c[6];
+  const T t6 = -a.c[0] * b.c[7] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  const T t7 = a.c[0] * b.c[6] - a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_motor<T>((a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t3) * inv,
+                        (-a.c[0] * t0 - a.c[1] * t3 + a.c[2] * t2) * inv,
+                        (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t1) * inv,
+                        (-a.c[0] * t2 + a.c[1] * t1 - a.c[2] * t0) * inv,
+                        (a.c[0] * t5 + a.c[1] * t6 + a.c[2] * t7) * inv,
+                        (-a.c[0] * t4 - a.c[1] * t7 + a.c[2] * t6) * inv,
+                        (a.c[0] * t7 - a.c[1] * t4 - a.c[2] * t5) * inv,
+                        (-a.c[0] * t6 + a.c[1] * t5 - a.c[2] * t4) * inv);
+}
+
+// apply(point_pair, normalized_point) -> dual_sphere: 105 mul, 86 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_point_pair<T>& a,
+                                                const basic_normalized_point<T>& b) {
+  const T t0 = -a.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t1 = -a.c[6] + a.c[0] * b.c[3] + a.c[4] * b.c[1] + a.c[5] * b.c[2];
+  const T t2 = -a.c[8] + a.c[1] * b.c[3] - a.c[4] * b.c[0] + a.c[7] * b.c[2];
+  const T t3 = a.c[4] + a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  const T t4 = -a.c[9] + a.c[2] * b.c[3] - a.c[5] * b.c[0] - a.c[7] * b.c[1];
+  const T t5 = a.c[5] + a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t6 = a.c[7] + a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T t7 = a.c[4] * b.c[2] - a.c[5] * b.c[1] + a.c[7] * b.c[0];
+  const T t8 = a.c[3] * b.c[3] - a.c[6] * b.c[0] - a.c[8] * b.c[1] - a.c[9] * b.c[2];
+  const T t9 = a.c[6] + a.c[0] * b.c[3] - a.c[3] * b.c[0];
+  const T t10 = a.c[8] + a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  const T t11 = a.c[4] * b.c[3] - a.c[6] * b.c[1] + a.c[8] * b.c[0];
+  const T t12 = a.c[9] + a.c[2] * b.c[3] - a.c[3] * b.c[2];
+  const T t13 = a.c[5] * b.c[3] - a.c[6] * b.c[2] + a.c[9] * b.c[0];
+  const T t14 = a.c[7] * b.c[3] - a.c[8] * b.c[2] + a.c[9] * b.c[1];
+  const T inv = T(1) / (T(2) * a.c[0] * a.c[6] + T(2) * a.c[1] * a.c[8] + T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[7] * a.c[7]);
+  return basic_dual_sphere<T>(
+      (a.c[0] * t1 + a.c[0] * t9 + a.c[1] * t10 + a.c[1] * t2 + a.c[2] * t12 + a.c[2] * t4 -
+       a.c[3] * t0 + a.c[4] * t3 + a.c[5] * t5 + a.c[7] * t6) *
+          inv,
+      (a.c[0] * t8 + a.c[1] * t11 + a.c[2] * t13 + a.c[3] * t9 + a.c[4] * t2 + a.c[5] * t4 -
+       a.c[6] * t0 + a.c[7] * t7 - a.c[8] * t3 - a.c[9] * t5) *
+          inv,
+      (-a.c[0] * t11 + a.c[1] * t8 + a.c[2] * t14 + a.c[3] * t10 - a.c[4] * t1 - a.c[5] * t7 +
+       a.c[6] * t3 + a.c[7] * t4 - a.c[8] * t0 - a.c[9] * t6) *
+          inv,
+      (-a.c[0] * t13 - a.c[1] * t14 + a.c[2] * t8 + a.c[3] * t12 + a.c[4] * t7 - a.c[5] * t1 +
+       a.c[6] * t5 - a.c[7] * t2 + a.c[8] * t6 - a.c[9] * t0) *
+          inv,
+      (a.c[3] * t8 + a.c[4] * t11 + a.c[5] * t13 - a.c[6] * t1 + a.c[6] * t9 + a.c[7] * t14 +
+       a.c[8] * t10 - a.c[8] * t2 + a.c[9] * t12 - a.c[9] * t4) *
+          inv);
+}
+
+// apply(point_pair, dual_sphere) -> dual_sphere: 115 mul, 86 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_point_pair<T>& a,
+                                                const basic_dual_sphere<T>& b) {
+  const T t0 = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] - a.c[3] * b.c[0];
+  const T t1 = a.c[0] * b.c[4] + a.c[4] * b.c[2] + a.c[5] * b.c[3] - a.c[6] * b.c[0];
+  const T t2 = a.c[1] * b.c[4] - a.c[4] * b.c[1] + a.c[7] * b.c[3] - a.c[8] * b.c[0];
+  const T t3 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[4] * b.c[0];
+  const T t4 = a.c[2] * b.c[4] - a.c[5] * b.c[1] - a.c[7] * b.c[2] - a.c[9] * b.c[0];
+  const T t5 = a.c[0] * b.c[3] - a.c[2] * b.c[1] + a.c[5] * b.c[0];
+  const T t6 = a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[7] * b.c[0];
+  const T t7 = a.c[4] * b.c[3] - a.c[5] * b.c[2] + a.c[7] * b.c[1];
+  const T t8 = a.c[3] * b.c[4] - a.c[6] * b.c[1] - a.c[8] * b.c[2] - a.c[9] * b.c[3];
+  const T t9 = a.c[0] * b.c[4] - a.c[3] * b.c[1] + a.c[6] * b.c[0];
+  const T t10 = a.c[1] * b.c[4] - a.c[3] * b.c[2] + a.c[8] * b.c[0];
+  const T t11 = a.c[4] * b.c[4] - a.c[6] * b.c[2] + a.c[8] * b.c[1];
+  const T t12 = a.c[2] * b.c[4] - a.c[3] * b.c[3] + a.c[9] * b.c[0];
+  const T t13 = a.c[5] * b.c[4] - a.c[6] * b.c[3] + a.c[9] * b.c[1];
+  const T t14 = a.c[7] * b.c[4] - a.c[8] * b.c[3] + a.c[9] * b.c[2];
+  const T inv = T(1) / (T(2) * a.c[0] * a.c[6] + T(2) * a.c[1] * a.c[8] + T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[7] * a.c[7]);
+  return basic_dual_sphere<T>(
+      (a.c[0] * t1 + a.c[0] * t9 + a.c[1] * t10 + a.c[1] * t2 + a.c[2] * t12 + a.c[2] * t4 -
+       a.c[3] * t0 + a.c[4] * t3 + a.c[5] * t5 + a.c[7] * t6) *
+          inv,
+      (a.c[0] * t8 + a.c[1] * t11 + a.c[2] * t13 + a.c[3] * t9 + a.c[4] * t2 + a.c[5] * t4 -
+       a.c[6] * t0 + a.c[7] * t7 - a.c[8] * t3 - a.c[9] * t5) *
+          inv,
+      (-a.c[0] * t11 + a.c[1] * t8 + a.c[2] * t14 + a.c[3] * t10 - a.c[4] * t1 - a.c[5] * t7 +
+       a.c[6] * t3 + a.c[7] * t4 - a.c[8] * t0 - a.c[9] * t6) *
+          inv,
+      (-a.c[0] * t13 - a.c[1] * t14 + a.c[2] * t8 + a.c[3] * t12 + a.c[4] * t7 - a.c[5] * t1 +
+       a.c[6] * t5 - a.c[7] * t2 + a.c[8] * t6 - a.c[9] * t0) *
+          inv,
+      (a.c[3] * t8 + a.c[4] * t11 + a.c[5] * t13 - a.c[6] * t1 + a.c[6] * t9 + a.c[7] * t14 +
+       a.c[8] * t10 - a.c[8] * t2 + a.c[9] * t12 - a.c[9] * t4) *
+          inv);
+}
+
+// apply(point_pair, dual_plane) -> dual_sphere: 105 mul, 76 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_point_pair<T>& a,
+                                                const basic_dual_plane<T>& b) {
+  const T t0 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t1 = a.c[0] * b.c[3] + a.c[4] * b.c[1] + a.c[5] * b.c[2];
+  const T t2 = a.c[1] * b.c[3] - a.c[4] * b.c[0] + a.c[7] * b.c[2];
+  const T t3 = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  const T t4 = a.c[2] * b.c[3] - a.c[5] * b.c[0] - a.c[7] * b.c[1];
+  const T t5 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t6 = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T t7 = a.c[4] * b.c[2] - a.c[5] * b.c[1] + a.c[7] * b.c[0];
+  const T t8 = a.c[3] * b.c[3] - a.c[6] * b.c[0] - a.c[8] * b.c[1] - a.c[9] * b.c[2];
+  const T t9 = a.c[0] * b.c[3] - a.c[3] * b.c[0];
+  const T t10 = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  const T t11 = a.c[4] * b.c[3] - a.c[6] * b.c[1] + a.c[8] * b.c[0];
+  const T t12 = a.c[2] * b.c[3] - a.c[3] * b.c[2];
+  const T t13 = a.c[5] * b.c[3] - a.c[6] * b.c[2] + a.c[9] * b.c[0];
+  const T t14 = a.c[7] * b.c[3] - a.c[8] * b.c[2] + a.c[9] * b.c[1];
+  const T inv = T(1) / (T(2) * a.c[0] * a.c[6] + T(2) * a.c[1] * a.c[8] + T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[7] * a.c[7]);
+  return basic_dual_sphere<T>(
+      (a.c[0] * t1 + a.c[0] * t9 + a.c[1] * t10 + a.c[1] * t2 + a.c[2] * t12 + a.c[2] * t4 -
+       a.c[3] * t0 + a.c[4] * t3 + a.c[5] * t5 + a.c[7] * t6) *
+          inv,
+      (a.c[0] * t8 + a.c[1] * t11 + a.c[2] * t13 + a.c[3] * t9 + a.c[4] * t2 + a.c[5] * t4 -
+       a.c[6] * t0 + a.c[7] * t7 - a.c[8] * t3 - a.c[9] * t5) *
+          inv,
+      (-a.c[0] * t11 + a.c[1] * t8 + a.c[2] * t14 + a.c[3] * t10 - a.c[4] * t1 - a.c[5] * t7 +
+       a.c[6] * t3 + a.c[7] * t4 - a.c[8] * t0 - a.c[9] * t6) *
+          inv,
+      (-a.c[0] * t13 - a.c[1] * t14 + a.c[2] * t8 + a.c[3] * t12 + a.c[4] * t7 - a.c[5] * t1 +
+       a.c[6] * t5 - a.c[7] * t2 + a.c[8] * t6 - a.c[9] * t0) *
+          inv,
+      (a.c[3] * t8 + a.c[4] * t11 + a.c[5] * t13 - a.c[6] * t1 + a.c[6] * t9 + a.c[7] * t14 +
+       a.c[8] * t10 - a.c[8] * t2 + a.c[9] * t12 - a.c[9] * t4) *
+          inv);
+}
+
+// apply(point_pair, euclidean_vector) -> dual_sphere: 95 mul, 66 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_point_pair<T>& a,
+                                                const basic_euclidean_vector<T>& b) {
+  const T t0 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t1 = a.c[4] * b.c[1] + a.c[5] * b.c[2];
+  const T t2 = -a.c[4] * b.c[0] + a.c[7] * b.c[2];
+  const T t3 = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  const T t4 = -a.c[5] * b.c[0] - a.c[7] * b.c[1];
+  const T t5 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t6 = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T t7 = a.c[4] * b.c[2] - a.c[5] * b.c[1] + a.c[7] * b.c[0];
+  const T t8 = -a.c[6] * b.c[0] - a.c[8] * b.c[1] - a.c[9] * b.c[2];
+  const T t9 = -a.c[3] * b.c[0];
+  const T t10 = -a.c[3] * b.c[1];
+  const T t11 = -a.c[6] * b.c[1] + a.c[8] * b.c[0];
+  const T t12 = -a.c[3] * b.c[2];
+  const T t13 = -a.c[6] * b.c[2] + a.c[9] * b.c[0];
+  const T t14 = -a.c[8] * b.c[2] + a.c[9] * b.c[1];
+  const T inv = T(1) / (T(2) * a.c[0] * a.c[6] + T(2) * a.c[1] * a.c[8] + T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[7] * a.c[7]);
+  return basic_dual_sphere<T>(
+      (a.c[0] * t1 + a.c[0] * t9 + a.c[1] * t10 + a.c[1] * t2 + a.c[2] * t12 + a.c[2] * t4 -
+       a.c[3] * t0 + a.c[4] * t3 + a.c[5] * t5 + a.c[7] * t6) *
+          inv,
+      (a.c[0] * t8 + a.c[1] * t11 + a.c[2] * t13 + a.c[3] * t9 + a.c[4] * t2 + a.c[5] * t4 -
+       a.c[6] * t0 + a.c[7] * t7 - a.c[8] * t3 - a.c[9] * t5) *
+          inv,
+      (-a.c[0] * t11 + a.c[1] * t8 + a.c[2] * t14 + a.c[3] * t10 - a.c[4] * t1 - a.c[5] * t7 +
+       a.c[6] * t3 + a.c[7] * t4 - a.c[8] * t0 - a.c[9] * t6) *
+          inv,
+      (-a.c[0] * t13 - a.c[1] * t14 + a.c[2] * t8 + a.c[3] * t12 + a.c[4] * t7 - a.c[5] * t1 +
+       a.c[6] * t5 - a.c[7] * t2 + a.c[8] * t6 - a.c[9] * t0) *
+          inv,
+      (a.c[3] * t8 + a.c[4] * t11 + a.c[5] * t13 - a.c[6] * t1 + a.c[6] * t9 + a.c[7] * t14 +
+       a.c[8] * t10 - a.c[8] * t2 + a.c[9] * t12 - a.c[9] * t4) *
+          inv);
+}
+
+// apply(point_pair, flat_point) -> point_pair: 154 mul, 115 add, 1 div
+template <class T>
+basic_point_pair<T> apply(const basic_point_pair<T>& a, const basic_flat_point<T>& b) {
+  const T t0 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[3];
+  const T t1 = a.c[0] * b.c[3];
+  const T t2 = a.c[1] * b.c[3];
+  const T t3 = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  const T t4 = a.c[2] * b.c[3];
+  const T t5 = -a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  const T t6 = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t7 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t8 = a.c[3] * b.c[0] + a.c[4] * b.c[1] + a.c[5] * b.c[2] - a.c[6] * b.c[3];
+  const T t9 = a.c[3] * b.c[1] - a.c[4] * b.c[0] + a.c[7] * b.c[2] - a.c[8] * b.c[3];
+  const T t10 = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[4] * b.c[3];
+  const T t11 = a.c[3] * b.c[2] - a.c[5] * b.c[0] - a.c[7] * b.c[1] - a.c[9] * b.c[3];
+  const T t12 = a.c[0] * b.c[2] - a.c[2] * b.c[0] + a.c[5] * b.c[3];
+  const T t13 = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[7] * b.c[3];
+  const T t14 = a.c[4] * b.c[2] - a.c[5] * b.c[1] + a.c[7] * b.c[0];
+  const T inv = T(1) / (T(2) * a.c[0] * a.c[6] + T(2) * a.c[1] * a.c[8] + T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[7] * a.c[7]);
+  return basic_point_pair<T>(
+      (-a.c[0] * t0 + a.c[0] * t7 + a.c[1] * t10 - a.c[1] * t3 + a.c[2] * t12 - a.c[2] * t5 -
+       a.c[3] * t1 + a.c[4] * t2 + a.c[5] * t4) *
+          inv,
+      (-a.c[0] * t10 + a.c[0] * t3 - a.c[1] * t0 + a.c[1] * t7 + a.c[2] * t13 - a.c[2] * t6 -
+       a.c[3] * t2 - a.c[4] * t1 + a.c[7] * t4) *
+          inv,
+      (-a.c[0] * t12 + a.c[0] * t5 - a.c[1] * t13 + a.c[1] * t6 - a.c[2] * t0 + a.c[2] * t7 -
+       a.c[3] * t4 - a.c[5] * t1 - a.c[7] * t2) *
+          inv,
+      (a.c[0] * t8 + a.c[1] * t9 + a.c[2] * t11 - a.c[3] * t0 + a.c[4] * t10 + a.c[5] * t12 -
+       a.c[6] * t1 + a.c[7] * t13 - a.c[8] * t2 - a.c[9] * t4) *
+          inv,
+      (-a.c[0] * t9 + a.c[1] * t8 + a.c[2] * t14 - a.c[3] * t10 - a.c[4] * t0 - a.c[5] * t6 -
+       a.c[6] * t2 + a.c[7] * t5 + a.c[8] * t1) *
+          inv,
+      (-a.c[0] * t11 - a.c[1] * t14 + a.c[2] * t8 - a.c[3] * t12 + a.c[4] * t6 - a.c[5] * t0 -
+       a.c[6] * t4 - a.c[7] * t3 + a.c[9] * t1) *
+          inv,
+      (a.c[3] * t8 + a.c[4] * t9 + a.c[5] * t11 - a.c[6] * t0 - a.c[6] * t7 + a.c[7] * t14 -
+       a.c[8] * t10 - a.c[8] * t3 - a.c[9] * t12 - a.c[9] * t5) *
+          inv,
+      (a.c[0] * t14 - a.c[1] * t11 + a.c[2] * t9 - a.c[3] * t13 - a.c[4] * t5 + a.c[5] * t3 -
+       a.c[7] * t0 - a.c[8] * t4 + a.c[9] * t2) *
+          inv,
+      (a.c[3] * t9 - a.c[4] * t8 - a.c[5] * t14 + a.c[6] * t10 + a.c[6] * t3 + a.c[7] * t11 -
+       a.c[8] * t0 - a.c[8] * t7 - a.c[9] * t13 - a.c[9] * t6) *
+          inv,
+      (a.c[3] * t11 + a.c[4] * t14 - a.c[5] * t8 + a.c[6] * t12 + a.c[6] * t5 - a.c[7] * t9 +
+       a.c[8] * t13 + a.c[8] * t6 - a.c[9] * t0 - a.c[9] * t7) *
+          inv);
+}
+
+// apply(point_pair, euclidean_bivector) -> point_pair: 144 mul, 105 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_point_pair<T>& a,
+                                               const basic_euclidean_bivector<T>& b) {
+  const T t0 = -a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[7] * b.c[2];
+  const T t1 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t2 = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  const T t3 = -a.c[5] * b.c[2] + a.c[7] * b.c[1];
+  const T t4 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t5 = a.c[4] * b.c[2] - a.c[7] * b.c[0];
+  const T t6 = -a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  const T t7 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t8 = -a.c[8] * b.c[0] - a.c[9] * b.c[1];
+  const T t9 = a.c[6] * b.c[0] - a.c[9] * b.c[2];
+  const T t10 = a.c[3] * b.c[0];
+  const T t11 = a.c[6] * b.c[1] + a.c[8] * b.c[2];
+  const T t12 = a.c[3] * b.c[1];
+  const T t13 = a.c[3] * b.c[2];
+  const T t14 = a.c[6] * b.c[2] - a.c[8] * b.c[1] + a.c[9] * b.c[0];
+  const T inv = T(1) / (T(2) * a.c[0] * a.c[6] + T(2) * a.c[1] * a.c[8] + T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[7] * a.c[7]);
+  return basic_point_pair<T>(
+      (-a.c[0] * t0 + a.c[1] * t10 - a.c[1] * t3 + a.c[2] * t12 - a.c[2] * t5 - a.c[3] * t1 +
+       a.c[4] * t2 + a.c[5] * t4 + a.c[7] * t7) *
+          inv,
+      (-a.c[0] * t10 + a.c[0] * t3 - a.c[1] * t0 + a.c[2] * t13 - a.c[2] * t6 - a.c[3] * t2 -
+       a.c[4] * t1 - a.c[5] * t7 + a.c[7] * t4) *
+          inv,
+      (-a.c[0] * t12 + a.c[0] * t5 - a.c[1] * t13 + a.c[1] * t6 - a.c[2] * t0 - a.c[3] * t4 +
+       a.c[4] * t7 - a.c[5] * t1 - a.c[7] * t2) *
+          inv,
+      (a.c[0] * t8 + a.c[1] * t9 + a.c[2] * t11 - a.c[3] * t0 + a.c[4] * t10 + a.c[5] * t12 -
+       a.c[6] * t1 + a.c[7] * t13 - a.c[8] * t2 - a.c[9] * t4) *
+          inv,
+      (-a.c[0] * t9 + a.c[1] * t8 + a.c[2] * t14 - a.c[3] * t10 - a.c[4] * t0 - a.c[5] * t6 -
+       a.c[6] * t2 + a.c[7] * t5 + a.c[8] * t1 + a.c[9] * t7) *
+          inv,
+      (-a.c[0] * t11 - a.c[1] * t14 + a.c[2] * t8 - a.c[3] * t12 + a.c[4] * t6 - a.c[5] * t0 -
+       a.c[6] * t4 - a.c[7] * t3 - a.c[8] * t7 + a.c[9] * t1) *
+          inv,
+      (a.c[3] * t8 + a.c[4] * t9 + a.c[5] * t11 - a.c[6] * t0 + a.c[7] * t14 - a.c[8] * t10 -
+       a.c[8] * t3 - a.c[9] * t12 - a.c[9] * t5) *
+          inv,
+      (a.c[0] * t14 - a.c[1] * t11 + a.c[2] * t9 - a.c[3] * t13 - a.c[4] * t5 + a.c[5] * t3 +
+       a.c[6] * t7 - a.c[7] * t0 - a.c[8] * t4 + a.c[9] * t2) *
+          inv,
+      (a.c[3] * t9 - a.c[4] * t8 - a.c[5] * t14 + a.c[6] * t10 + a.c[6] * t3 + a.c[7] * t11 -
+       a.c[8] * t0 - a.c[9] * t13 - a.c[9] * t6) *
+          inv,
+      (a.c[3] * t11 + a.c[4] * t14 - a.c[5] * t8 + a.c[6] * t12 + a.c[6] * t5 - a.c[7] * t9 +
+       a.c[8] * t13 + a.c[8] * t6 - a.c[9] * t0) *
+          inv);
+}
+
+// apply(point_pair, point_pair) -> point_pair: 220 mul, 180 add, 1 div
+template <class T>
+basic_point_pair<T> apply(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
+  const T t0 = -a.c[0] * b.c[6] - a.c[1] * b.c[8] - a.c[2] * b.c[9] + a.c[3] * b.c[3] -
+               a.c[4] * b.c[4] - a.c[5] * b.c[5] - a.c[6] * b.c[0] - a.c[7] * b.c[7] -
+               a.c[8] * b.c[1] - a.c[9] * b.c[2];
+  const T t1 = a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[0] +
+               a.c[4] * b.c[1] + a.c[5] * b.c[2];
+  const T t2 = a.c[0] * b.c[4] + a.c[1] * b.c[3] - a.c[2] * b.c[7] - a.c[3] * b.c[1] -
+               a.c[4] * b.c[0] + a.c[7] * b.c[2];
+  const T t3 = -a.c[0] * b.c[8] + a.c[1] * b.c[6] - a.c[5] * b.c[7] - a.c[6] * b.c[1] +
+               a.c[7] * b.c[5] + a.c[8] * b.c[0];
+  const T t4 = a.c[0] * b.c[5] + a.c[1] * b.c[7] + a.c[2] * b.c[3] - a.c[3] * b.c[2] -
+               a.c[5] * b.c[0] - a.c[7] * b.c[1];
+  const T t5 = -a.c[0] * b.c[9] + a.c[2] * b.c[6] + a.c[4] * b.c[7] - a.c[6] * b.c[2] -
+               a.c[7] * b.c[4] + a.c[9] * b.c[0];
+  const T t6 = -a.c[1] * b.c[9] + a.c[2] * b.c[8] - a.c[4] * b.c[5] + a.c[5] * b.c[4] -
+               a.c[8] * b.c[2] + a.c[9] * b.c[1];
+  const T t7 = a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4] + a.c[4] * b.c[2] -
+               a.c[5] * b.c[1] + a.c[7] * b.c[0];
+  const T t8 = a.c[0] * b.c[6] + a.c[1] * b.c[8] + a.c[2] * b.c[9] - a.c[6] * b.c[0] -
+               a.c[8] * b.c[1] - a.c[9] * b.c[2];
+  const T t9 = a.c[3] * b.c[6] + a.c[4] * b.c[8] + a.c[5] * b.c[9] - a.c[6] * b.c[3] -
+               a.c[8] * b.c[4] - a.c[9] * b.c[5];
+  const T t10 = a.c[3] * b.c[8] - a.c[4] * b.c[6] + a.c[6] * b.c[4] + a.c[7] * b.c[9] -
+                a.c[8] * b.c[3] - a.c[9] * b.c[7];
+  const T t11 = a.c[0] * b.c[8] - a.c[1] * b.c[6] + a.c[3] * b.c[4] + a.c[4] * b.c[3] -
+                a.c[6] * b.c[1] + a.c[8] * b.c[0];
+  const T t12 = a.c[3] * b.c[9] - a.c[5] * b.c[6] + a.c[6] * b.c[5] - a.c[7] * b.c[8] +
+                a.c[8] * b.c[7] - a.c[9] * b.c[3];
+  const T t13 = a.c[0] * b.c[9] - a.c[2] * b.c[6] + a.c[3] * b.c[5] + a.c[5] * b.c[3] -
+                a.c[6] * b.c[2] + a.c[9] * b.c[0];
+  const T t14 = a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[7] + a.c[7] * b.c[3] -
+                a.c[8] * b.c[2] + a.c[9] * b.c[1];
+  const T t15 = a.c[4] * b.c[9] - a.c[5] * b.c[8] + a.c[6] * b.c[7] + a.c[7] * b.c[6] -
+                a.c[8] * b.c[5] + a.c[9] * b.c[4];
+  const T inv = T(1) / (T(2) * a.c[0] * a.c[6] + T(2) * a.c[1] * a.c[8] + T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[7] * a.c[7]);
+  return basic_point_pair<T>(
+      (-a.c[0] * t0 + a.c[0] * t8 + a.c[1] * t11 - a.c[1] * t3 + a.c[2] * t13 - a.c[2] * t5 -
+       a.c[3] * t1 + a.c[4] * t2 + a.c[5] * t4 + a.c[7] * t7) *
+          inv,
+      (-a.c[0] * t11 + a.c[0] * t3 - a.c[1] * t0 + a.c[1] * t8 + a.c[2] * t14 - a.c[2] * t6 -
+       a.c[3] * t2 - a.c[4] * t1 - a.c[5] * t7 + a.c[7] * t4) *
+          inv,
+      (-a.c[0] * t13 + a.c[0] * t5 - a.c[1] * t14 + a.c[1] * t6 - a.c[2] * t0 + a.c[2] * t8 -
+       a.c[3] * t4 + a.c[4] * t7 - a.c[5] * t1 - a.c[7] * t2) *
+          inv,
+      (a.c[0] * t9 + a.c[1] * t10 + a.c[2] * t12 - a.c[3] * t0 + a.c[4] * t11 + a.c[5] * t13 -
+       a.c[6] * t1 + a.c[7] * t14 - a.c[8] * t2 - a.c[9] * t4) *
+          inv,
+      (-a.c[0] * t10 + a.c[1] * t9 + a.c[2] * t15 - a.c[3] * t11 - a.c[4] * t0 - a.c[5] * t6 -
+       a.c[6] * t2 + a.c[7] * t5 + a.c[8] * t1 + a.c[9] * t7) *
+          inv,
+      (-a.c[0] * t12 - a.c[1] * t15 + a.c[2] * t9 - a.c[3] * t13 + a.c[4] * t6 - a.c[5] * t0 -
+       a.c[6] * t4 - a.c[7] * t3 - a.c[8] * t7 + a.c[9] * t1) *
+          inv,
+      (a.c[3] * t9 + a.c[4] * t10 + a.c[5] * t12 - a.c[6] * t0 - a.c[6] * t8 + a.c[7] * t15 -
+       a.c[8] * t11 - a.c[8] * t3 - a.c[9] * t13 - a.c[9] * t5) *
+          inv,
+      (a.c[0] * t15 - a.c[1] * t12 + a.c[2] * t10 - a.c[3] * t14 - a.c[4] * t5 + a.c[5] * t3 +
+       a.c[6] * t7 - a.c[7] * t0 - a.c[8] * t4 + a.c[9] * t2) *
+          inv,
+      (a.c[3] * t10 - a.c[4] * t9 - a.c[5] * t15 + a.c[6] * t11 + a.c[6] * t3 + a.c[7] * t12 -
+       a.c[8] * t0 - a.c[8] * t8 - a.c[9] * t14 - a.c[9] * t6) *
+          inv,
+      (a.c[3] * t12 + a.c[4] * t15 - a.c[5] * t9 + a.c[6] * t13 + a.c[6] * t5 - a.c[7] * t10 +
+       a.c[8] * t14 + a.c[8] * t6 - a.c[9] * t0 - a.c[9] * t8) *
+          inv);
+}
+
+// apply(point_pair, dual_line) -> point_pair: 180 mul, 140 add, 1 div
+template <class T>
+basic_point_pair<T> apply(const basic_point_pair<T>& a, const basic_dual_line<T>& b) {
+  const T t0 = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[4] * b.c[0] -
+               a.c[5] * b.c[1] - a.c[7] * b.c[2];
+  const T t1 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t2 = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  const T t3 = -a.c[0] * b.c[4] + a.c[1] * b.c[3] - a.c[5] * b.c[2] + a.c[7] * b.c[1];
+  const T t4 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t5 = -a.c[0] * b.c[5] + a.c[2] * b.c[3] + a.c[4] * b.c[2] - a.c[7] * b.c[0];
+  const T t6 = -a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  const T t7 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t8 = a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5];
+  const T t9 =
+      a.c[3] * b.c[3] + a.c[4] * b.c[4] + a.c[5] * b.c[5] - a.c[8] * b.c[0] - a.c[9] * b.c[1];
+  const T t10 =
+      a.c[3] * b.c[4] - a.c[4] * b.c[3] + a.c[6] * b.c[0] + a.c[7] * b.c[5] - a.c[9] * b.c[2];
+  const T t11 = a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[0];
+  const T t12 =
+      a.c[3] * b.c[5] - a.c[5] * b.c[3] + a.c[6] * b.c[1] - a.c[7] * b.c[4] + a.c[8] * b.c[2];
+  const T t13 = a.c[0] * b.c[5] - a.c[2] * b.c[3] + a.c[3] * b.c[1];
+  const T t14 = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[2];
+  const T t15 = a.c[4] * b.c[5] - a.c[5] * b.c[4] + a.c[6] * b.c[2] + a.c[7] * b.c[3] -
+                a.c[8] * b.c[1] + a.c[9] * b.c[0];
+  const T inv = T(1) / (T(2) * a.c[0] * a.c[6] + T(2) * a.c[1] * a.c[8] + T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[7] * a.c[7]);
+  return basic_point_pair<T>(
+      (-a.c[0] * t0 + a.c[0] * t8 + a.c[1] * t11 - a.c[1] * t3 + a.c[2] * t13 - a.c[2] * t5 -
+       a.c[3] * t1 + a.c[4] * t2 + a.c[5] * t4 + a.c[7] * t7) *
+          inv,
+      (-a.c[0] * t11 + a.c[0] * t3 - a.c[1] * t0 + a.c[1] * t8 + a.c[2] * t14 - a.c[2] * t6 -
+       a.c[3] * t2 - a.c[4] * t1 - a.c[5] * t7 + a.c[7] * t4) *
+          inv,
+      (-a.c[0] * t13 + a.c[0] * t5 - a.c[1] * t14 + a.c[1] * t6 - a.c[2] * t0 + a.c[2] * t8 -
+       a.c[3] * t4 + a.c[4] * t7 - a.c[5] * t1 - a.c[7] * t2) *
+          inv,
+      (a.c[0] * t9 + a.c[1] * t10 + a.c[2] * t12 - a.c[3] * t0 + a.c[4] * t11 + a.c[5] * t13 -
+       a.c[6] * t1 + a.c[7] * t14 - a.c[8] * t2 - a.c[9] * t4) *
+          inv,
+      (-a.c[0] * t10 + a.c[1] * t9 + a.c[2] * t15 - a.c[3] * t11 - a.c[4] * t0 - a.c[5] * t6 -
+       a.c[6] * t2 + a.c[7] * t5 + a.c[8] * t1 + a.c[9] * t7) *
+          inv,
+      (-a.c[0] * t12 - a.c[1] * t15 + a.c[2] * t9 - a.c[3] * t13 + a.c[4] * t6 - a.c[5] * t0 -
+       a.c[6] * t4 - a.c[7] * t3 - a.c[8] * t7 + a.c[9] * t1) *
+          inv,
+      (a.c[3] * t9 + a.c[4] * t10 + a.c[5] * t12 - a.c[6] * t0 - a.c[6] * t8 + a.c[7] * t15 -
+       a.c[8] * t11 - a.c[8] * t3 - a.c[9] * t13 - a.c[9] * t5) *
+          inv,
+      (a.c[0] * t15 - a.c[1] * t12 + a.c[2] * t10 - a.c[3] * t14 - a.c[4] * t5 + a.c[5] * t3 +
+       a.c[6] * t7 - a.c[7] * t0 - a.c[8] * t4 + a.c[9] * t2) *
+          inv,
+      (a.c[3] * t10 - a.c[4] * t9 - a.c[5] * t15 + a.c[6] * t11 + a.c[6] * t3 + a.c[7] * t12 -
+       a.c[8] * t0 - a.c[8] * t8 - a.c[9] * t14 - a.c[9] * t6) *
+          inv,
+      (a.c[3] * t12 + a.c[4] * t15 - a.c[5] * t9 + a.c[6] * t13 + a.c[6] * t5 - a.c[7] * t10 +
+       a.c[8] * t14 + a.c[8] * t6 - a.c[9] * t0 - a.c[9] * t8) *
+          inv);
+}
+
+// apply(point_pair, line) -> circle: 180 mul, 140 add, 1 div
+template <class T>
+basic_circle<T> apply(const basic_point_pair<T>& a, const basic_line<T>& b) {
+  const T t0 = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  const T t1 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[3];
+  const T t2 = a.c[0] * b.c[0] - a.c[2] * b.c[2] - a.c[3] * b.c[4];
+  const T t3 = -a.c[0] * b.c[4] + a.c[1] * b.c[3];
+  const T t4 = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[5];
+  const T t5 = -a.c[0] * b.c[5] + a.c[2] * b.c[3];
+  const T t6 = -a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  const T t7 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t8 = -a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[6] * b.c[3] - a.c[7] * b.c[2] -
+               a.c[8] * b.c[4] - a.c[9] * b.c[5];
+  const T t9 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] + a.c[4] * b.c[4] + a.c[5] * b.c[5];
+  const T t10 = a.c[0] * b.c[0] - a.c[2] * b.c[2] - a.c[4] * b.c[3] + a.c[7] * b.c[5];
+  const T t11 =
+      a.c[3] * b.c[0] - a.c[5] * b.c[2] - a.c[6] * b.c[4] + a.c[7] * b.c[1] + a.c[8] * b.c[3];
+  const T t12 = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[5] * b.c[3] - a.c[7] * b.c[4];
+  const T t13 =
+      a.c[3] * b.c[1] + a.c[4] * b.c[2] - a.c[6] * b.c[5] - a.c[7] * b.c[0] + a.c[9] * b.c[3];
+  const T t14 =
+      a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0] - a.c[8] * b.c[5] + a.c[9] * b.c[4];
+  const T t15 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] + a.c[4] * b.c[5] -
+                a.c[5] * b.c[4] + a.c[7] * b.c[3];
+  const T inv = T(1) / (T(2) * a.c[0] * a.c[6] + T(2) * a.c[1] * a.c[8] + T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[7] * a.c[7]);
+  return basic_circle<T>((-a.c[0] * t10 - a.c[0] * t2 + a.c[1] * t1 + a.c[1] * t9 + a.c[2] * t15 +
+                          a.c[2] * t7 - a.c[3] * t3 - a.c[4] * t0 - a.c[5] * t6 + a.c[7] * t5) *
+                             inv,
+                         (-a.c[0] * t12 - a.c[0] * t4 - a.c[1] * t15 - a.c[1] * t7 + a.c[2] * t1 +
+                          a.c[2] * t9 - a.c[3] * t5 + a.c[4] * t6 - a.c[5] * t0 - a.c[7] * t3) *
+                             inv,
+                         (a.c[0] * t15 + a.c[0] * t7 - a.c[1] * t12 - a.c[1] * t4 + a.c[2] * t10 +
+                          a.c[2] * t2 - a.c[3] * t6 - a.c[4] * t5 + a.c[5] * t3 - a.c[7] * t0) *
+                             inv,
+                         (-a.c[0] * t8 - a.c[1] * t11 - a.c[2] * t13 + a.c[3] * t1 + a.c[4] * t10 +
+                          a.c[5] * t12 - a.c[6] * t0 + a.c[7] * t15 - a.c[8] * t3 - a.c[9] * t5) *
+                             inv,
+                         (a.c[0] * t11 - a.c[1] * t8 - a.c[2] * t14 + a.c[3] * t2 - a.c[4] * t9 -
+                          a.c[5] * t15 + a.c[6] * t3 + a.c[7] * t12 - a.c[8] * t0 - a.c[9] * t6) *
+                             inv,
+                         (a.c[0] * t13 + a.c[1] * t14 - a.c[2] * t8 + a.c[3] * t4 + a.c[4] * t15 -
+                          a.c[5] * t9 + a.c[6] * t5 - a.c[7] * t10 + a.c[8] * t6 - a.c[9] * t0) *
+                             inv,
+                         (a.c[0] * t14 - a.c[1] * t13 + a.c[2] * t11 + a.c[3] * t15 - a.c[4] * t4 +
+                          a.c[5] * t2 - a.c[6] * t6 - a.c[7] * t1 + a.c[8] * t5 - a.c[9] * t3) *
+                             inv,
+                         (a.c[3] * t11 - a.c[4] * t8 - a.c[5] * t14 - a.c[6] * t10 + a.c[6] * t2 +
+                          a.c[7] * t13 - a.c[8] * t1 + a.c[8] * t9 + a.c[9] * t15 - a.c[9] * t7) *
+                             inv,
+                         (a.c[3] * t13 + a.c[4] * t14 - a.c[5] * t8 - a.c[6] * t12 + a.c[6] * t4 -
+                          a.c[7] * t11 - a.c[8] * t15 + a.c[8] * t7 - a.c[9] * t1 + a.c[9] * t9) *
+                             inv,
+                         (a.c[3] * t14 - a.c[4] * t13 + a.c[5] * t11 + a.c[6] * t15 - a.c[6] * t7 -
+                          a.c[7] * t8 - a.c[8] * t12 + a.c[8] * t4 + a.c[9] * t10 - a.c[9] * t2) *
+                             inv);
+}
+
+// apply(point_pair, circle) -> circle: 220 mul, 180 add, 1 div
+template <class T>
+basic_circle<T> apply(const basic_point_pair<T>& a, const basic_circle<T>& b) {
+  const T t0 = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[4] * b.c[0] -
+               a.c[5] * b.c[1] - a.c[7] * b.c[2];
+  const T t1 = -a.c[1] * b.c[7] - a.c[2] * b.c[8] - a.c[3] * b.c[3] - a.c[7] * b.c[6] +
+               a.c[8] * b.c[0] + a.c[9] * b.c[1];
+  const T t2 = a.c[0] * b.c[7] - a.c[2] * b.c[9] - a.c[3] * b.c[4] + a.c[5] * b.c[6] -
+               a.c[6] * b.c[0] + a.c[9] * b.c[2];
+  const T t3 = -a.c[0] * b.c[4] + a.c[1] * b.c[3] + a.c[2] * b.c[6] - a.c[3] * b.c[0] -
+               a.c[5] * b.c[2] + a.c[7] * b.c[1];
+  const T t4 = a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[3] * b.c[5] - a.c[4] * b.c[6] -
+               a.c[6] * b.c[1] - a.c[8] * b.c[2];
+  const T t5 = -a.c[0] * b.c[5] - a.c[1] * b.c[6] + a.c[2] * b.c[3] - a.c[3] * b.c[1] +
+               a.c[4] * b.c[2] - a.c[7] * b.c[0];
+  const T t6 = a.c[0] * b.c[6] - a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[3] * b.c[2] -
+               a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  const T t7 = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7] - a.c[6] * b.c[2] +
+               a.c[8] * b.c[1] - a.c[9] * b.c[0];
+  const T t8 = -a.c[4] * b.c[7] - a.c[5] * b.c[8] - a.c[6] * b.c[3] - a.c[7] * b.c[9] -
+               a.c[8] * b.c[4] - a.c[9] * b.c[5];
+  const T t9 = -a.c[1] * b.c[7] - a.c[2] * b.c[8] + a.c[4] * b.c[4] + a.c[5] * b.c[5] -
+               a.c[8] * b.c[0] - a.c[9] * b.c[1];
+  const T t10 = a.c[0] * b.c[7] - a.c[2] * b.c[9] - a.c[4] * b.c[3] + a.c[6] * b.c[0] +
+                a.c[7] * b.c[5] - a.c[9] * b.c[2];
+  const T t11 = a.c[3] * b.c[7] - a.c[5] * b.c[9] - a.c[6] * b.c[4] + a.c[7] * b.c[8] +
+                a.c[8] * b.c[3] - a.c[9] * b.c[6];
+  const T t12 = a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[5] * b.c[3] + a.c[6] * b.c[1] -
+                a.c[7] * b.c[4] + a.c[8] * b.c[2];
+  const T t13 = a.c[3] * b.c[8] + a.c[4] * b.c[9] - a.c[6] * b.c[5] - a.c[7] * b.c[7] +
+                a.c[8] * b.c[6] + a.c[9] * b.c[3];
+  const T t14 = a.c[3] * b.c[9] - a.c[4] * b.c[8] + a.c[5] * b.c[7] - a.c[6] * b.c[6] -
+                a.c[8] * b.c[5] + a.c[9] * b.c[4];
+  const T t15 = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7] - a.c[3] * b.c[6] +
+                a.c[4] * b.c[5] - a.c[5] * b.c[4] + a.c[6] * b.c[2] + a.c[7] * b.c[3] -
+                a.c[8] * b.c[1] + a.c[9] * b.c[0];
+  const T inv = T(1) / (T(2) * a.c[0] * a.c[6] + T(2) * a.c[1] * a.c[8] + T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[7] * a.c[7]);
+  return basic_circle<T>((-a.c[0] * t10 - a.c[0] * t2 + a.c[1] * t1 + a.c[1] * t9 + a.c[2] * t15 +
+                          a.c[2] * t7 - a.c[3] * t3 - a.c[4] * t0 - a.c[5] * t6 + a.c[7] * t5) *
+                             inv,
+                         (-a.c[0] * t12 - a.c[0] * t4 - a.c[1] * t15 - a.c[1] * t7 + a.c[2] * t1 +
+                          a.c[2] * t9 - a.c[3] * t5 + a.c[4] * t6 - a.c[5] * t0 - a.c[7] * t3) *
+                             inv,
+                         (a.c[0] * t15 + a.c[0] * t7 - a.c[1] * t12 - a.c[1] * t4 + a.c[2] * t10 +
+                          a.c[2] * t2 - a.c[3] * t6 - a.c[4] * t5 + a.c[5] * t3 - a.c[7] * t0) *
+                             inv,
+                         (-a.c[0] * t8 - a.c[1] * t11 - a.c[2] * t13 + a.c[3] * t1 + a.c[4] * t10 +
+                          a.c[5] * t12 - a.c[6] * t0 + a.c[7] * t15 - a.c[8] * t3 - a.c[9] * t5) *
+                             inv,
+                         (a.c[0] * t11 - a.c[1] * t8 - a.c[2] * t14 + a.c[3] * t2 - a.c[4] * t9 -
+                          a.c[5] * t15 + a.c[6] * t3 + a.c[7] * t12 - a.c[8] * t0 - a.c[9] * t6) *
+                             inv,
+                         (a.c[0] * t13 + a.c[1] * t14 - a.c[2] * t8 + a.c[3] * t4 + a.c[4] * t15 -
+                          a.c[5] * t9 + a.c[6] * t5 - a.c[7] * t10 + a.c[8] * t6 - a.c[9] * t0) *
+                             inv,
+                         (a.c[0] * t14 - a.c[1] * t13 + a.c[2] * t11 + a.c[3] * t15 - a.c[4] * t4 +
+                          a.c[5] * t2 - a.c[6] * t6 - a.c[7] * t1 + a.c[8] * t5 - a.c[9] * t3) *
+                             inv,
+                         (a.c[3] * t11 - a.c[4] * t8 - a.c[5] * t14 - a.c[6] * t10 + a.c[6] * t2 +
+                          a.c[7] * t13 - a.c[8] * t1 + a.c[8] * t9 + a.c[9] * t15 - a.c[9] * t7) *
+                             inv,
+                         (a.c[3] * t13 + a.c[4] * t14 - a.c[5] * t8 - a.c[6] * t12 + a.c[6] * t4 -
+                          a.c[7] * t11 - a.c[8] * t15 + a.c[8] * t7 - a.c[9] * t1 + a.c[9] * t9) *
+                             inv,
+                         (a.c[3] * t14 - a.c[4] * t13 + a.c[5] * t11 + a.c[6] * t15 - a.c[6] * t7 -
+                          a.c[7] * t8 - a.c[8] * t12 + a.c[8] * t4 + a.c[9] * t10 - a.c[9] * t2) *
+                             inv);
+}
+
+// apply(point_pair, sphere) -> sphere: 115 mul, 86 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> apply(const basic_point_pair<T>& a, const basic_sphere<T>& b) {
+  const T t0 = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[7] * b.c[0];
+  const T t1 = a.c[0] * b.c[1] - a.c[2] * b.c[3] + a.c[5] * b.c[0];
+  const T t2 = -a.c[2] * b.c[4] + a.c[3] * b.c[1] - a.c[9] * b.c[0];
+  const T t3 = a.c[0] * b.c[2] + a.c[1] * b.c[3] - a.c[4] * b.c[0];
+  const T t4 = a.c[1] * b.c[4] + a.c[3] * b.c[2] + a.c[8] * b.c[0];
+  const T t5 = -a.c[0] * b.c[4] + a.c[3] * b.c[3] - a.c[6] * b.c[0];
+  const T t6 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  const T t7 = -a.c[4] * b.c[1] - a.c[5] * b.c[2] - a.c[7] * b.c[3];
+  const T t8 = -a.c[7] * b.c[4] + a.c[8] * b.c[1] + a.c[9] * b.c[2];
+  const T t9 = a.c[5] * b.c[4] - a.c[6] * b.c[1] + a.c[9] * b.c[3];
+  const T t10 = a.c[2] * b.c[4] - a.c[5] * b.c[3] + a.c[7] * b.c[2] - a.c[9] * b.c[0];
+  const T t11 = -a.c[4] * b.c[4] - a.c[6] * b.c[2] - a.c[8] * b.c[3];
+  const T t12 = -a.c[1] * b.c[4] + a.c[4] * b.c[3] - a.c[7] * b.c[1] + a.c[8] * b.c[0];
+  const T t13 = a.c[0] * b.c[4] - a.c[4] * b.c[2] + a.c[5] * b.c[1] - a.c[6] * b.c[0];
+  const T t14 = a.c[3] * b.c[4] - a.c[6] * b.c[3] + a.c[8] * b.c[2] - a.c[9] * b.c[1];
+  const T inv = T(1) / (T(2) * a.c[0] * a.c[6] + T(2) * a.c[1] * a.c[8] + T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[7] * a.c[7]);
+  return basic_sphere<T>((a.c[0] * t13 - a.c[0] * t5 - a.c[1] * t12 + a.c[1] * t4 + a.c[2] * t10 -
+                          a.c[2] * t2 - a.c[3] * t6 - a.c[4] * t3 + a.c[5] * t1 - a.c[7] * t0) *
+                             inv,
+                         (-a.c[0] * t9 + a.c[1] * t8 + a.c[2] * t14 - a.c[3] * t2 - a.c[4] * t7 -
+                          a.c[5] * t13 + a.c[6] * t1 + a.c[7] * t12 - a.c[8] * t0 - a.c[9] * t6) *
+                             inv,
+                         (-a.c[0] * t11 - a.c[1] * t14 + a.c[2] * t8 - a.c[3] * t4 + a.c[4] * t13 -
+                          a.c[5] * t7 + a.c[6] * t3 - a.c[7] * t10 + a.c[8] * t6 - a.c[9] * t0) *
+                             inv,
+                         (a.c[0] * t14 - a.c[1] * t11 + a.c[2] * t9 - a.c[3] * t5 - a.c[4] * t12 +
+                          a.c[5] * t10 - a.c[6] * t6 - a.c[7] * t7 + a.c[8] * t3 - a.c[9] * t1) *
+                             inv,
+                         (a.c[3] * t14 - a.c[4] * t11 + a.c[5] * t9 - a.c[6] * t13 - a.c[6] * t5 -
+                          a.c[7] * t8 + a.c[8] * t12 + a.c[8] * t4 - a.c[9] * t10 - a.c[9] * t2) *
+                             inv);
+}
+
+// apply(point_pair, plane) -> sphere: 105 mul, 76 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> apply(const basic_point_pair<T>& a, const basic_plane<T>& b) {
+  const T t0 = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = a.c[0] * b.c[1] - a.c[2] * b.c[3];
+  const T t2 = -a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  const T t3 = a.c[0] * b.c[2] + a.c[1] * b.c[3];
+  const T t4 = a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  const T t5 = -a.c[0] * b.c[0] + a.c[3] * b.c[3];
+  const T t6 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t7 = -a.c[4] * b.c[1] - a.c[5] * b.c[2] - a.c[7] * b.c[3];
+  const T t8 = -a.c[7] * b.c[0] + a.c[8] * b.c[1] + a.c[9] * b.c[2];
+  const T t9 = a.c[5] * b.c[0] - a.c[6] * b.c[1] + a.c[9] * b.c[3];
+  const T t10 = a.c[2] * b.c[0] - a.c[5] * b.c[3] + a.c[7] * b.c[2];
+  const T t11 = -a.c[4] * b.c[0] - a.c[6] * b.c[2] - a.c[8] * b.c[3];
+  const T t12 = -a.c[1] * b.c[0] + a.c[4] * b.c[3] - a.c[7] * b.c[1];
+  const T t13 = a.c[0] * b.c[0] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  const T t14 = a.c[3] * b.c[0] - a.c[6] * b.c[3] + a.c[8] * b.c[2] - a.c[9] * b.c[1];
+  const T inv = T(1) / (T(2) * a.c[0] * a.c[6] + T(2) * a.c[1] * a.c[8] + T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[7] * a.c[7]);
+  return basic_sphere<T>((a.c[0] * t13 - a.c[0] * t5 - a.c[1] * t12 + a.c[1] * t4 + a.c[2] * t10 -
+                          a.c[2] * t2 - a.c[3] * t6 - a.c[4] * t3 + a.c[5] * t1 - a.c[7] * t0) *
+                             inv,
+                         (-a.c[0] * t9 + a.c[1] * t8 + a.c[2] * t14 - a.c[3] * t2 - a.c[4] * t7 -
+                          a.c[5] * t13 + a.c[6] * t1 + a.c[7] * t12 - a.c[8] * t0 - a.c[9] * t6) *
+                             inv,
+                         (-a.c[0] * t11 - a.c[1] * t14 + a.c[2] * t8 - a.c[3] * t4 + a.c[4] * t13 -
+                          a.c[5] * t7 + a.c[6] * t3 - a.c[7] * t10 + a.c[8] * t6 - a.c[9] * t0) *
+                             inv,
+                         (a.c[0] * t14 - a.c[1] * t11 + a.c[2] * t9 - a.c[3] * t5 - a.c[4] * t12 +
+                          a.c[5] * t10 - a.c[6] * t6 - a.c[7] * t7 + a.c[8] * t3 - a.c[9] * t1) *
+                             inv,
+                         (a.c[3] * t14 - a.c[4] * t11 + a.c[5] * t9 - a.c[6] * t13 - a.c[6] * t5 -
+                          a.c[7] * t8 + a.c[8] * t12 + a.c[8] * t4 - a.c[9] * t10 - a.c[9] * t2) *
+                             inv);
+}
+
+// apply(point_pair, pseudoscalar) -> pseudoscalar: 31 mul, 15 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> apply(const basic_point_pair<T>& a,
+                                                 const basic_pseudoscalar<T>& b) {
+  const T t0 = -a.c[2] * b.c[0];
+  const T t1 = a.c[1] * b.c[0];
+  const T t2 = -a.c[0] * b.c[0];
+  const T t3 = -a.c[3] * b.c[0];
+  const T t4 = -a.c[7] * b.c[0];
+  const T t5 = a.c[5] * b.c[0];
+  const T t6 = -a.c[9] * b.c[0];
+  const T t7 = -a.c[4] * b.c[0];
+  const T t8 = a.c[8] * b.c[0];
+  const T t9 = -a.c[6] * b.c[0];
+  const T inv = T(1) / (T(2) * a.c[0] * a.c[6] + T(2) * a.c[1] * a.c[8] + T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[7] * a.c[7]);
+  return basic_pseudoscalar<T>((-a.c[0] * t9 + a.c[1] * t8 - a.c[2] * t6 + a.c[3] * t3 -
+                                a.c[4] * t7 + a.c[5] * t5 - a.c[6] * t2 - a.c[7] * t4 +
+                                a.c[8] * t1 - a.c[9] * t0) *
+                               inv);
+}
+
+// apply(point_pair, rotor) -> mv: 171 mul, 129 add, 1 div
+template <class T>
+basic_mv<T> apply(const basic_point_pair<T>& a, const basic_rotor<T>& b) {
+  const T t0 = -a.c[4] * b.c[1] - a.c[5] * b.c[2] - a.c[7] * b.c[3];
+  const T t1 = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t2 = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
+  const T t3 = a.c[4] * b.c[0] - a.c[5] * b.c[3] + a.c[7] * b.c[2];
+  const T t4 = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0];
+  const T t5 = a.c[4] * b.c[3] + a.c[5] * b.c[0] - a.c[7] * b.c[1];
+  const T t6 = -a.c[4] * b.c[2] + a.c[5] * b.c[1] + a.c[7] * b.c[0];
+  const T t7 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t8 = a.c[3] * b.c[0];
+  const T t9 = a.c[6] * b.c[0] - a.c[8] * b.c[1] - a.c[9] * b.c[2];
+  const T t10 = a.c[6] * b.c[1] + a.c[8] * b.c[0] - a.c[9] * b.c[3];
+  const T t11 = a.c[3] * b.c[1];
+  const T t12 = a.c[6] * b.c[2] + a.c[8] * b.c[3] + a.c[9] * b.c[0];
+  const T t13 = a.c[3] * b.c[2];
+  const T t14 = a.c[3] * b.c[3];
+  const T t15 = a.c[6] * b.c[3] - a.c[8] * b.c[2] + a.c[9] * b.c[1];
+  const T inv = T(1) / (T(2) * a.c[0] * a.c[6] + T(2) * a.c[1] * a.c[8] + T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[7] * a.c[7]);
+  basic_mv<T> r;
+  r.c[0] = (a.c[0] * t9 + a.c[1] * t10 + a.c[2] * t12 - a.c[3] * t8 + a.c[4] * t3 + a.c[5] * t5 +
+            a.c[6] * t1 + a.c[7] * t6 + a.c[8] * t2 + a.c[9] * t4) *
+           inv;
+  r.c[6] = (-a.c[0] * t0 + a.c[0] * t8 + a.c[1] * t11 - a.c[1] * t3 + a.c[2] * t13 - a.c[2] * t5 -
+            a.c[3] * t1 + a.c[4] * t2 + a.c[5] * t4 + a.c[7] * t7) *
+           inv;
+  r.c[7] = (-a.c[0] * t11 + a.c[0] * t3 - a.c[1] * t0 + a.c[1] * t8 + a.c[2] * t14 - a.c[2] * t6 -
+            a.c[3] * t2 - a.c[4] * t1 - a.c[5] * t7 + a.c[7] * t4) *
+           inv;
+  r.c[8] = (-a.c[0] * t13 + a.c[0] * t5 - a.c[1] * t14 + a.c[1] * t6 - a.c[2] * t0 + a.c[2] * t8 -
+            a.c[3] * t4 + a.c[4] * t7 - a.c[5] * t1 - a.c[7] * t2) *
+           inv;
+  r.c[9] = (a.c[0] * t9 + a.c[1] * t10 + a.c[2] * t12 - a.c[3] * t0 + a.c[4] * t11 + a.c[5] * t13 -
+            a.c[6] * t1 + a.c[7] * t14 - a.c[8] * t2 - a.c[9] * t4) *
+           inv;
+  r.c[10] = (-a.c[0] * t10 + a.c[1] * t9 + a.c[2] * t15 - a.c[3] * t11 - a.c[4] * t0 - a.c[5] * t6 -
+             a.c[6] * t2 + a.c[7] * t5 + a.c[8] * t1 + a.c[9] * t7) *
+            inv;
+  r.c[11] = (-a.c[0] * t12 - a.c[1] * t15 + a.c[2] * t9 - a.c[3] * t13 + a.c[4] * t6 - a.c[5] * t0 -
+             a.c[6] * t4 - a.c[7] * t3 - a.c[8] * t7 + a.c[9] * t1) *
+            inv;
+  r.c[12] = (a.c[3] * t9 + a.c[4] * t10 + a.c[5] * t12 - a.c[6] * t0 - a.c[6] * t8 + a.c[7] * t15 -
+             a.c[8] * t11 - a.c[8] * t3 - a.c[9] * t13 - a.c[9] * t5) *
+            inv;
+  r.c[13] = (a.c[0] * t15 - a.c[1] * t12 + a.c[2] * t10 - a.c[3] * t14 - a.c[4] * t5 + a.c[5] * t3 +
+             a.c[6] * t7 - a.c[7] * t0 - a.c[8] * t4 + a.c[9] * t2) *
+            inv;
+  r.c[14] = (a.c[3] * t10 - a.c[4] * t9 - a.c[5] * t15 + a.c[6] * t11 + a.c[6] * t3 + a.c[7] * t12 -
+             a.c[8] * t0 - a.c[8] * t8 - a.c[9] * t14 - a.c[9] * t6) *
+            inv;
+  r.c[15] = (a.c[3] * t12 + a.c[4] * t15 - a.c[5] * t9 + a.c[6] * t13 + a.c[6] * t5 - a.c[7] * t10 +
+             a.c[8] * t14 + a.c[8] * t6 - a.c[9] * t0 - a.c[9] * t8) *
+            inv;
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// apply(point_pair, translator) -> mv: 165 mul, 124 add, 1 div
+template <class T>
+basic_mv<T> apply(const basic_point_pair<T>& a, const basic_translator<T>& b) {
+  const T t0 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  const T t1 = a.c[0] * b.c[0];
+  const T t2 = a.c[1] * b.c[0];
+  const T t3 = -a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[4] * b.c[0];
+  const T t4 = a.c[2] * b.c[0];
+  const T t5 = -a.c[0] * b.c[3] + a.c[2] * b.c[1] + a.c[5] * b.c[0];
+  const T t6 = -a.c[1] * b.c[3] + a.c[2] * b.c[2] + a.c[7] * b.c[0];
+  const T t7 = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] + a.c[3] * b.c[0];
+  const T t8 = a.c[3] * b.c[1] + a.c[4] * b.c[2] + a.c[5] * b.c[3] + a.c[6] * b.c[0];
+  const T t9 = a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[7] * b.c[3] + a.c[8] * b.c[0];
+  const T t10 = a.c[0] * b.c[2] - a.c[1] * b.c[1];
+  const T t11 = a.c[3] * b.c[3] - a.c[5] * b.c[1] - a.c[7] * b.c[2] + a.c[9] * b.c[0];
+  const T t12 = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  const T t13 = a.c[1] * b.c[3] - a.c[2] * b.c[2];
+  const T t14 = a.c[4] * b.c[3] - a.c[5] * b.c[2] + a.c[7] * b.c[1];
+  const T inv = T(1) / (T(2) * a.c[0] * a.c[6] + T(2) * a.c[1] * a.c[8] + T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[7] * a.c[7]);
+  basic_mv<T> r;
+  r.c[0] = (a.c[0] * t8 + a.c[1] * t9 + a.c[2] * t11 - a.c[3] * t7 + a.c[4] * t3 + a.c[5] * t5 +
+            a.c[6] * t1 + a.c[7] * t6 + a.c[8] * t2 + a.c[9] * t4) *
+           inv;
+  r.c[6] = (-a.c[0] * t0 + a.c[0] * t7 + a.c[1] * t10 - a.c[1] * t3 + a.c[2] * t12 - a.c[2] * t5 -
+            a.c[3] * t1 + a.c[4] * t2 + a.c[5] * t4) *
+           inv;
+  r.c[7] = (-a.c[0] * t10 + a.c[0] * t3 - a.c[1] * t0 + a.c[1] * t7 + a.c[2] * t13 - a.c[2] * t6 -
+            a.c[3] * t2 - a.c[4] * t1 + a.c[7] * t4) *
+           inv;
+  r.c[8] = (-a.c[0] * t12 + a.c[0] * t5 - a.c[1] * t13 + a.c[1] * t6 - a.c[2] * t0 + a.c[2] * t7 -
+            a.c[3] * t4 - a.c[5] * t1 - a.c[7] * t2) *
+           inv;
+  r.c[9] = (a.c[0] * t8 + a.c[1] * t9 + a.c[2] * t11 - a.c[3] * t0 + a.c[4] * t10 + a.c[5] * t12 -
+            a.c[6] * t1 + a.c[7] * t13 - a.c[8] * t2 - a.c[9] * t4) *
+           inv;
+  r.c[10] = (-a.c[0] * t9 + a.c[1] * t8 + a.c[2] * t14 - a.c[3] * t10 - a.c[4] * t0 - a.c[5] * t6 -
+             a.c[6] * t2 + a.c[7] * t5 + a.c[8] * t1) *
+            inv;
+  r.c[11] = (-a.c[0] * t11 - a.c[1] * t14 + a.c[2] * t8 - a.c[3] * t12 + a.c[4] * t6 - a.c[5] * t0 -
+             a.c[6] * t4 - a.c[7] * t3 + a.c[9] * t1) *
+            inv;
+  r.c[12] = (a.c[3] * t8 + a.c[4] * t9 + a.c[5] * t11 - a.c[6] * t0 - a.c[6] * t7 + a.c[7] * t14 -
+             a.c[8] * t10 - a.c[8] * t3 - a.c[9] * t12 - a.c[9] * t5) *
+            inv;
+  r.c[13] = (a.c[0] * t14 - a.c[1] * t11 + a.c[2] * t9 - a.c[3] * t13 - a.c[4] * t5 + a.c[5] * t3 -
+             a.c[7] * t0 - a.c[8] * t4 + a.c[9] * t2) *
+            inv;
+  r.c[14] = (a.c[3] * t9 - a.c[4] * t8 - a.c[5] * t14 + a.c[6] * t10 + a.c[6] * t3 + a.c[7] * t11 -
+             a.c[8] * t0 - a.c[8] * t7 - a.c[9] * t13 - a.c[9] * t6) *
+            inv;
+  r.c[15] = (a.c[3] * t11 + a.c[4] * t14 - a.c[5] * t8 + a.c[6] * t12 + a.c[6] * t5 - a.c[7] * t9 +
+             a.c[8] * t13 + a.c[8] * t6 - a.c[9] * t0 - a.c[9] * t7) *
+            inv;
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// apply(point_pair, motor) -> mv: 266 mul, 214 add, 1 div
+template <class T>
+basic_mv<T> apply(const basic_point_pair<T>& a, const basic_motor<T>& b) {
+  const T t0 = -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[6] - a.c[4] * b.c[1] -
+               a.c[5] * b.c[2] - a.c[7] * b.c[3];
+  const T t1 = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t2 = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
+  const T t3 = -a.c[0] * b.c[5] + a.c[1] * b.c[4] - a.c[2] * b.c[7] + a.c[4] * b.c[0] -
+               a.c[5] * b.c[3] + a.c[7] * b.c[2];
+  const T t4 = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0];
+  const T t5 = -a.c[0] * b.c[6] + a.c[1] * b.c[7] + a.c[2] * b.c[4] + a.c[4] * b.c[3] +
+               a.c[5] * b.c[0] - a.c[7] * b.c[1];
+  const T t6 = -a.c[0] * b.c[7] - a.c[1] * b.c[6] + a.c[2] * b.c[5] - a.c[4] * b.c[2] +
+               a.c[5] * b.c[1] + a.c[7] * b.c[0];
+  const T t7 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t8 = a.c[0] * b.c[4] + a.c[1] * b.c[5] + a.c[2] * b.c[6] + a.c[3] * b.c[0];
+  const T t9 = a.c[3] * b.c[4] + a.c[4] * b.c[5] + a.c[5] * b.c[6] + a.c[6] * b.c[0] -
+               a.c[7] * b.c[7] - a.c[8] * b.c[1] - a.c[9] * b.c[2];
+  const T t10 = a.c[3] * b.c[5] - a.c[4] * b.c[4] + a.c[5] * b.c[7] + a.c[6] * b.c[1] +
+                a.c[7] * b.c[6] + a.c[8] * b.c[0] - a.c[9] * b.c[3];
+  const T t11 = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[7] + a.c[3] * b.c[1];
+  const T t12 = a.c[3] * b.c[6] - a.c[4] * b.c[7] - a.c[5] * b.c[4] + a.c[6] * b.c[2] -
+                a.c[7] * b.c[5] + a.c[8] * b.c[3] + a.c[9] * b.c[0];
+  const T t13 = a.c[0] * b.c[6] - a.c[1] * b.c[7] - a.c[2] * b.c[4] + a.c[3] * b.c[2];
+  const T t14 = a.c[0] * b.c[7] + a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[3];
+  const T t15 = a.c[3] * b.c[7] + a.c[4] * b.c[6] - a.c[5] * b.c[5] + a.c[6] * b.c[3] +
+                a.c[7] * b.c[4] - a.c[8] * b.c[2] + a.c[9] * b.c[1];
+  const T inv = T(1) / (T(2) * a.c[0] * a.c[6] + T(2) * a.c[1] * a.c[8] + T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[7] * a.c[7]);
+  basic_mv<T> r;
+  r.c[0] = (a.c[0] * t9 + a.c[1] * t10 + a.c[2] * t12 - a.c[3] * t8 + a.c[4] * t3 + a.c[5] * t5 +
+            a.c[6] * t1 + a.c[7] * t6 + a.c[8] * t2 + a.c[9] * t4) *
+           inv;
+  r.c[6] = (-a.c[0] * t0 + a.c[0] * t8 + a.c[1] * t11 - a.c[1] * t3 + a.c[2] * t13 - a.c[2] * t5 -
+            a.c[3] * t1 + a.c[4] * t2 + a.c[5] * t4 + a.c[7] * t7) *
+           inv;
+  r.c[7] = (-a.c[0] * t11 + a.c[0] * t3 - a.c[1] * t0 + a.c[1] * t8 + a.c[2] * t14 - a.c[2] * t6 -
+            a.c[3] * t2 - a.c[4] * t1 - a.c[5] * t7 + a.c[7] * t4) *
+           inv;
+  r.c[8] = (-a.c[0] * t13 + a.c[0] * t5 - a.c[1] * t14 + a.c[1] * t6 - a.c[2] * t0 + a.c[2] * t8 -
+            a.c[3] * t4 + a.c[4] * t7 - a.c[5] * t1 - a.c[7] * t2) *
+           inv;
+  r.c[9] = (a.c[0] * t9 + a.c[1] * t10 + a.c[2] * t12 - a.c[3] * t0 + a.c[4] * t11 + a.c[5] * t13 -
+            a.c[6] * t1 + a.c[7] * t14 - a.c[8] * t2 - a.c[9] * t4) *
+           inv;
+  r.c[10] = (-a.c[0] * t10 + a.c[1] * t9 + a.c[2] * t15 - a.c[3] * t11 - a.c[4] * t0 - a.c[5] * t6 -
+             a.c[6] * t2 + a.c[7] * t5 + a.c[8] * t1 + a.c[9] * t7) *
+            inv;
+  r.c[11] = (-a.c[0] * t12 - a.c[1] * t15 + a.c[2] * t9 - a.c[3] * t13 + a.c[4] * t6 - a.c[5] * t0 -
+             a.c[6] * t4 - a.c[7] * t3 - a.c[8] * t7 + a.c[9] * t1) *
+            inv;
+  r.c[12] = (a.c[3] * t9 + a.c[4] * t10 + a.c[5] * t12 - a.c[6] * t0 - a.c[6] * t8 + a.c[7] * t15 -
+             a.c[8] * t11 - a.c[8] * t3 - a.c[9] * t13 - a.c[9] * t5) *
+            inv;
+  r.c[13] = (a.c[0] * t15 - a.c[1] * t12 + a.c[2] * t10 - a.c[3] * t14 - a.c[4] * t5 + a.c[5] * t3 +
+             a.c[6] * t7 - a.c[7] * t0 - a.c[8] * t4 + a.c[9] * t2) *
+            inv;
+  r.c[14] = (a.c[3] * t10 - a.c[4] * t9 - a.c[5] * t15 + a.c[6] * t11 + a.c[6] * t3 + a.c[7] * t12 -
+             a.c[8] * t0 - a.c[8] * t8 - a.c[9] * t14 - a.c[9] * t6) *
+            inv;
+  r.c[15] = (a.c[3] * t12 + a.c[4] * t15 - a.c[5] * t9 + a.c[6] * t13 + a.c[6] * t5 - a.c[7] * t10 +
+             a.c[8] * t14 + a.c[8] * t6 - a.c[9] * t0 - a.c[9] * t8) *
+            inv;
+  r.c[26] = (a.c[0] * t14 - a.c[0] * t6 - a.c[1] * t13 + a.c[1] * t5 + a.c[2] * t11 - a.c[2] * t3 -
+             a.c[3] * t7 - a.c[4] * t4 + a.c[5] * t2 - a.c[7] * t1) *
+            inv;
+  r.c[27] = (-a.c[0] * t10 + a.c[1] * t9 + a.c[2] * t15 - a.c[3] * t3 - a.c[4] * t8 - a.c[5] * t14 +
+             a.c[6] * t2 + a.c[7] * t13 - a.c[8] * t1 - a.c[9] * t7) *
+            inv;
+  r.c[28] = (-a.c[0] * t12 - a.c[1] * t15 + a.c[2] * t9 - a.c[3] * t5 + a.c[4] * t14 - a.c[5] * t8 +
+             a.c[6] * t4 - a.c[7] * t11 + a.c[8] * t7 - a.c[9] * t1) *
+            inv;
+  r.c[29] = (a.c[0] * t15 - a.c[1] * t12 + a.c[2] * t10 - a.c[3] * t6 - a.c[4] * t13 +
+             a.c[5] * t11 - a.c[6] * t7 - a.c[7] * t8 + a.c[8] * t4 - a.c[9] * t2) *
+            inv;
+  r.c[30] = (a.c[3] * t15 - a.c[4] * t12 + a.c[5] * t10 - a.c[6] * t14 - a.c[6] * t6 - a.c[7] * t9 +
+             a.c[8] * t13 + a.c[8] * t5 - a.c[9] * t11 - a.c[9] * t3) *
+            inv;
+  r.bits = 0x7c00ffc1u;
+  return r;
+}
+
+// apply(dual_line, normalized_point) -> normalized_point: 49 mul, 36 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_normalized_point<T> apply(const basic_dual_line<T>& a,
+                                                     const basic_normalized_point<T>& b) {
+  const T t0 = -a.c[3] + a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t1 = -a.c[4] - a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  const T t2 = a.c[0];
+  const T t3 = -a.c[5] - a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t4 = a.c[1];
+  const T t5 = a.c[2];
+  const T t6 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t8 = a.c[3];
+  const T t9 = a.c[4];
+  const T t10 = a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  const T t11 = a.c[5];
+  const T t12 = a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  const T t13 = a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_normalized_point<T>(
+      (a.c[0] * t1 + a.c[1] * t3 + a.c[2] * t6 - a.c[4] * t2 - a.c[5] * t4) * inv,
+      (-a.c[0] * t0 - a.c[1] * t6 + a.c[2] * t3 + a.c[3] * t2 - a.c[5] * t5) * inv,
+      (a.c[0] * t6 - a.c[1] * t0 - a.c[2] * t1 + a.c[3] * t4 + a.c[4] * t5) * inv,
+      (a.c[0] * t10 + a.c[1] * t12 + a.c[2] * t13 - a.c[3] * t0 + a.c[3] * t8 - a.c[4] * t1 +
+       a.c[4] * t9 + a.c[5] * t11 - a.c[5] * t3) *
+          inv);
+}
+
+// apply(dual_line, dual_sphere) -> dual_sphere: 62 mul, 38 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_dual_line<T>& a,
+                                                const basic_dual_sphere<T>& b) {
+  const T t0 = a.c[0] * b.c[2] + a.c[1] * b.c[3] - a.c[3] * b.c[0];
+  const T t1 = -a.c[0] * b.c[1] + a.c[2] * b.c[3] - a.c[4] * b.c[0];
+  const T t2 = a.c[0] * b.c[0];
+  const T t3 = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[5] * b.c[0];
+  const T t4 = a.c[1] * b.c[0];
+  const T t5 = a.c[2] * b.c[0];
+  const T t6 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t8 = a.c[3] * b.c[0];
+  const T t9 = a.c[4] * b.c[0];
+  const T t10 = a.c[0] * b.c[4] - a.c[3] * b.c[2] + a.c[4] * b.c[1];
+  const T t11 = a.c[5] * b.c[0];
+  const T t12 = a.c[1] * b.c[4] - a.c[3] * b.c[3] + a.c[5] * b.c[1];
+  const T t13 = a.c[2] * b.c[4] - a.c[4] * b.c[3] + a.c[5] * b.c[2];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_sphere<T>(
+      (a.c[0] * t2 + a.c[1] * t4 + a.c[2] * t5) * inv,
+      (a.c[0] * t1 + a.c[1] * t3 + a.c[2] * t6 - a.c[4] * t2 - a.c[5] * t4) * inv,
+      (-a.c[0] * t0 - a.c[1] * t6 + a.c[2] * t3 + a.c[3] * t2 - a.c[5] * t5) * inv,
+      (a.c[0] * t6 - a.c[1] * t0 - a.c[2] * t1 + a.c[3] * t4 + a.c[4] * t5) * inv,
+      (a.c[0] * t10 + a.c[1] * t12 + a.c[2] * t13 - a.c[3] * t0 + a.c[3] * t8 - a.c[4] * t1 +
+       a.c[4] * t9 + a.c[5] * t11 - a.c[5] * t3) *
+          inv);
+}
+
+// apply(dual_line, dual_plane) -> dual_plane: 40 mul, 24 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> apply(const basic_dual_line<T>& a,
+                                               const basic_dual_plane<T>& b) {
+  const T t0 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t1 = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  const T t2 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t3 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t5 = a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  const T t6 = a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  const T t7 = a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_plane<T>(
+      (a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t3) * inv,
+      (-a.c[0] * t0 - a.c[1] * t3 + a.c[2] * t2) * inv,
+      (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t1) * inv,
+      (a.c[0] * t5 + a.c[1] * t6 + a.c[2] * t7 - a.c[3] * t0 - a.c[4] * t1 - a.c[5] * t2) * inv);
+}
+
+// apply(dual_line, euclidean_vector) -> dual_plane: 37 mul, 21 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> apply(const basic_dual_line<T>& a,
+                                               const basic_euclidean_vector<T>& b) {
+  const T t0 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t1 = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  const T t2 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t3 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t5 = -a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  const T t6 = -a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  const T t7 = -a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_plane<T>(
+      (a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t3) * inv,
+      (-a.c[0] * t0 - a.c[1] * t3 + a.c[2] * t2) * inv,
+      (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t1) * inv,
+      (a.c[0] * t5 + a.c[1] * t6 + a.c[2] * t7 - a.c[3] * t0 - a.c[4] * t1 - a.c[5] * t2) * inv);
+}
+
+// apply(dual_line, flat_point) -> flat_point: 40 mul, 24 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> apply(const basic_dual_line<T>& a,
+                                               const basic_flat_point<T>& b) {
+  const T t0 = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[3];
+  const T t1 = -a.c[0] * b.c[0] + a.c[2] * b.c[2] - a.c[4] * b.c[3];
+  const T t2 = a.c[0] * b.c[3];
+  const T t3 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[5] * b.c[3];
+  const T t4 = a.c[1] * b.c[3];
+  const T t5 = a.c[2] * b.c[3];
+  const T t6 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_flat_point<T>(
+      (a.c[0] * t1 + a.c[1] * t3 + a.c[2] * t6 - a.c[4] * t2 - a.c[5] * t4) * inv,
+      (-a.c[0] * t0 - a.c[1] * t6 + a.c[2] * t3 + a.c[3] * t2 - a.c[5] * t5) * inv,
+      (a.c[0] * t6 - a.c[1] * t0 - a.c[2] * t1 + a.c[3] * t4 + a.c[4] * t5) * inv,
+      (a.c[0] * t2 + a.c[1] * t4 + a.c[2] * t5) * inv);
+}
+
+// apply(dual_line, euclidean_bivector) -> dual_line: 54 mul, 33 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> apply(const basic_dual_line<T>& a,
+                                              const basic_euclidean_bivector<T>& b) {
+  const T t0 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t2 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t3 = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  const T t4 = -a.c[4] * b.c[0] - a.c[5] * b.c[1];
+  const T t5 = a.c[3] * b.c[0] - a.c[5] * b.c[2];
+  const T t6 = a.c[3] * b.c[1] + a.c[4] * b.c[2];
+  const T t7 = a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_line<T>(
+      (-a.c[0] * t0 - a.c[1] * t3 + a.c[2] * t2) * inv,
+      (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t1) * inv,
+      (-a.c[0] * t2 + a.c[1] * t1 - a.c[2] * t0) * inv,
+      (a.c[0] * t5 + a.c[1] * t6 + a.c[2] * t7 - a.c[3] * t0 - a.c[4] * t1 - a.c[5] * t2) * inv,
+      (-a.c[0] * t4 - a.c[1] * t7 + a.c[2] * t6 + a.c[3] * t1 - a.c[4] * t0 - a.c[5] * t3) * inv,
+      (a.c[0] * t7 - a.c[1] * t4 - a.c[2] * t5 + a.c[3] * t2 + a.c[4] * t3 - a.c[5] * t0) * inv);
+}
+
+// apply(dual_line, point_pair) -> point_pair: 133 mul, 96 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_dual_line<T>& a,
+                                               const basic_point_pair<T>& b) {
+  const T t0 = -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[7] - a.c[3] * b.c[0] -
+               a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  const T t1 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t2 = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  const T t3 = -a.c[1] * b.c[7] + a.c[2] * b.c[5] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  const T t4 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t5 = a.c[0] * b.c[7] - a.c[2] * b.c[4] - a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  const T t6 = -a.c[0] * b.c[5] + a.c[1] * b.c[4] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  const T t7 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t8 = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  const T t9 =
+      a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[3] * b.c[3] - a.c[4] * b.c[4] - a.c[5] * b.c[5];
+  const T t10 =
+      -a.c[0] * b.c[6] + a.c[2] * b.c[9] + a.c[3] * b.c[4] - a.c[4] * b.c[3] - a.c[5] * b.c[7];
+  const T t11 = a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  const T t12 =
+      -a.c[1] * b.c[6] - a.c[2] * b.c[8] + a.c[3] * b.c[5] + a.c[4] * b.c[7] - a.c[5] * b.c[3];
+  const T t13 = a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  const T t14 = a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  const T t15 = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[6] + a.c[3] * b.c[7] -
+                a.c[4] * b.c[5] + a.c[5] * b.c[4];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_point_pair<T>(
+      (a.c[0] * t2 + a.c[1] * t4 + a.c[2] * t7) * inv,
+      (-a.c[0] * t1 - a.c[1] * t7 + a.c[2] * t4) * inv,
+      (a.c[0] * t7 - a.c[1] * t1 - a.c[2] * t2) * inv,
+      (a.c[0] * t11 + a.c[1] * t13 + a.c[2] * t14 - a.c[3] * t1 - a.c[4] * t2 - a.c[5] * t4) * inv,
+      (-a.c[0] * t0 - a.c[1] * t6 + a.c[2] * t5 - a.c[3] * t2 + a.c[4] * t1 + a.c[5] * t7) * inv,
+      (a.c[0] * t6 - a.c[1] * t0 - a.c[2] * t3 - a.c[3] * t4 - a.c[4] * t7 + a.c[5] * t1) * inv,
+      (a.c[0] * t10 + a.c[1] * t12 + a.c[2] * t15 - a.c[3] * t0 - a.c[3] * t8 - a.c[4] * t11 -
+       a.c[4] * t3 - a.c[5] * t13 - a.c[5] * t5) *
+          inv,
+      (-a.c[0] * t5 + a.c[1] * t3 - a.c[2] * t0 + a.c[3] * t7 - a.c[4] * t4 + a.c[5] * t2) * inv,
+      (-a.c[0] * t9 - a.c[1] * t15 + a.c[2] * t12 + a.c[3] * t11 + a.c[3] * t3 - a.c[4] * t0 -
+       a.c[4] * t8 - a.c[5] * t14 - a.c[5] * t6) *
+          inv,
+      (a.c[0] * t15 - a.c[1] * t9 - a.c[2] * t10 + a.c[3] * t13 + a.c[3] * t5 + a.c[4] * t14 +
+       a.c[4] * t6 - a.c[5] * t0 - a.c[5] * t8) *
+          inv);
+}
+
+// apply(dual_line, dual_line) -> dual_line: 63 mul, 42 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> apply(const basic_dual_line<T>& a,
+                                              const basic_dual_line<T>& b) {
+  const T t0 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t2 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t3 = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  const T t4 = a.c[0] * b.c[4] + a.c[1] * b.c[5] - a.c[4] * b.c[0] - a.c[5] * b.c[1];
+  const T t5 = -a.c[0] * b.c[3] + a.c[2] * b.c[5] + a.c[3] * b.c[0] - a.c[5] * b.c[2];
+  const T t6 = -a.c[1] * b.c[3] - a.c[2] * b.c[4] + a.c[3] * b.c[1] + a.c[4] * b.c[2];
+  const T t7 = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3] + a.c[3] * b.c[2] -
+               a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_dual_line<T>(
+      (-a.c[0] * t0 - a.c[1] * t3 + a.c[2] * t2) * inv,
+      (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t1) * inv,
+      (-a.c[0] * t2 + a.c[1] * t1 - a.c[2] * t0) * inv,
+      (a.c[0] * t5 + a.c[1] * t6 + a.c[2] * t7 - a.c[3] * t0 - a.c[4] * t1 - a.c[5] * t2) * inv,
+      (-a.c[0] * t4 - a.c[1] * t7 + a.c[2] * t6 + a.c[3] * t1 - a.c[4] * t0 - a.c[5] * t3) * inv,
+      (a.c[0] * t7 - a.c[1] * t4 - a.c[2] * t5 + a.c[3] * t2 + a.c[4] * t3 - a.c[5] * t0) * inv);
+}
+
+// apply(dual_line, line) -> line: 63 mul, 42 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> apply(const basic_dual_line<T>& a, const basic_line<T>& b) {
+  const T t0 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3] -
+               a.c[4] * b.c[4] - a.c[5] * b.c[5];
+  const T t1 = a.c[0] * b.c[4] + a.c[1] * b.c[5];
+  const T t2 = -a.c[0] * b.c[3] + a.c[2] * b.c[5];
+  const T t3 = -a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[4] + a.c[4] * b.c[3];
+  const T t4 = -a.c[1] * b.c[3] - a.c[2] * b.c[4];
+  const T t5 = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[5] + a.c[5] * b.c[3];
+  const T t6 = -a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[4] * b.c[5] + a.c[5] * b.c[4];
+  const T t7 = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_line<T>(
+      (-a.c[0] * t0 - a.c[1] * t6 + a.c[2] * t5 - a.c[3] * t2 + a.c[4] * t1 + a.c[5] * t7) * inv,
+      (a.c[0] * t6 - a.c[1] * t0 - a.c[2] * t3 - a.c[3] * t4 - a.c[4] * t7 + a.c[5] * t1) * inv,
+      (-a.c[0] * t5 + a.c[1] * t3 - a.c[2] * t0 + a.c[3] * t7 - a.c[4] * t4 + a.c[5] * t2) * inv,
+      (a.c[0] * t2 + a.c[1] * t4 + a.c[2] * t7) * inv,
+      (-a.c[0] * t1 - a.c[1] * t7 + a.c[2] * t4) * inv,
+      (a.c[0] * t7 - a.c[1] * t1 - a.c[2] * t2) * inv);
+}
+
+// apply(dual_line, circle) -> circle: 133 mul, 96 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> apply(const basic_dual_line<T>& a, const basic_circle<T>& b) {
+  const T t0 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = -a.c[2] * b.c[6] + a.c[4] * b.c[0] + a.c[5] * b.c[1];
+  const T t2 = a.c[1] * b.c[6] - a.c[3] * b.c[0] + a.c[5] * b.c[2];
+  const T t3 = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t4 = -a.c[0] * b.c[6] - a.c[3] * b.c[1] - a.c[4] * b.c[2];
+  const T t5 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t6 = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  const T t7 = -a.c[3] * b.c[2] + a.c[4] * b.c[1] - a.c[5] * b.c[0];
+  const T t8 = -a.c[0] * b.c[7] - a.c[1] * b.c[8] - a.c[2] * b.c[9] - a.c[3] * b.c[3] -
+               a.c[4] * b.c[4] - a.c[5] * b.c[5];
+  const T t9 = a.c[0] * b.c[4] + a.c[1] * b.c[5] - a.c[4] * b.c[0] - a.c[5] * b.c[1];
+  const T t10 = -a.c[0] * b.c[3] + a.c[2] * b.c[5] + a.c[3] * b.c[0] - a.c[5] * b.c[2];
+  const T t11 =
+      -a.c[1] * b.c[9] + a.c[2] * b.c[8] - a.c[3] * b.c[4] + a.c[4] * b.c[3] - a.c[5] * b.c[6];
+  const T t12 = -a.c[1] * b.c[3] - a.c[2] * b.c[4] + a.c[3] * b.c[1] + a.c[4] * b.c[2];
+  const T t13 =
+      a.c[0] * b.c[9] - a.c[2] * b.c[7] - a.c[3] * b.c[5] + a.c[4] * b.c[6] + a.c[5] * b.c[3];
+  const T t14 =
+      -a.c[0] * b.c[8] + a.c[1] * b.c[7] - a.c[3] * b.c[6] - a.c[4] * b.c[5] + a.c[5] * b.c[4];
+  const T t15 = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3] + a.c[3] * b.c[2] -
+                a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_circle<T>(
+      (-a.c[0] * t0 - a.c[1] * t6 + a.c[2] * t5) * inv,
+      (a.c[0] * t6 - a.c[1] * t0 - a.c[2] * t3) * inv,
+      (-a.c[0] * t5 + a.c[1] * t3 - a.c[2] * t0) * inv,
+      (a.c[0] * t10 + a.c[1] * t12 + a.c[2] * t15 - a.c[3] * t0 - a.c[4] * t3 - a.c[5] * t5) * inv,
+      (-a.c[0] * t9 - a.c[1] * t15 + a.c[2] * t12 + a.c[3] * t3 - a.c[4] * t0 - a.c[5] * t6) * inv,
+      (a.c[0] * t15 - a.c[1] * t9 - a.c[2] * t10 + a.c[3] * t5 + a.c[4] * t6 - a.c[5] * t0) * inv,
+      (-a.c[0] * t4 + a.c[1] * t2 - a.c[2] * t1 - a.c[3] * t6 + a.c[4] * t5 - a.c[5] * t3) * inv,
+      (-a.c[0] * t8 - a.c[1] * t14 + a.c[2] * t13 - a.c[3] * t10 + a.c[3] * t2 - a.c[4] * t1 +
+       a.c[4] * t9 + a.c[5] * t15 - a.c[5] * t7) *
+          inv,
+      (a.c[0] * t14 - a.c[1] * t8 - a.c[2] * t11 - a.c[3] * t12 + a.c[3] * t4 - a.c[4] * t15 +
+       a.c[4] * t7 - a.c[5] * t1 + a.c[5] * t9) *
+          inv,
+      (-a.c[0] * t13 + a.c[1] * t11 - a.c[2] * t8 + a.c[3] * t15 - a.c[3] * t7 - a.c[4] * t12 +
+       a.c[4] * t4 + a.c[5] * t10 - a.c[5] * t2) *
+          inv);
+}
+
+// apply(dual_line, sphere) -> sphere: 62 mul, 38 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> apply(const basic_dual_line<T>& a, const basic_sphere<T>& b) {
+  const T t0 = -a.c[2] * b.c[0];
+  const T t1 = a.c[1] * b.c[0];
+  const T t2 = -a.c[5] * b.c[0];
+  const T t3 = -a.c[0] * b.c[0];
+  const T t4 = a.c[4] * b.c[0];
+  const T t5 = -a.c[3] * b.c[0];
+  const T t6 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  const T t7 = -a.c[2] * b.c[4] + a.c[4] * b.c[1] + a.c[5] * b.c[2];
+  const T t8 = a.c[1] * b.c[4] - a.c[3] * b.c[1] + a.c[5] * b.c[3];
+  const T t9 = -a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[5] * b.c[0];
+  const T t10 = -a.c[0] * b.c[4] - a.c[3] * b.c[2] - a.c[4] * b.c[3];
+  const T t11 = a.c[0] * b.c[3] - a.c[2] * b.c[1] + a.c[4] * b.c[0];
+  const T t12 = -a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[3] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_sphere<T>(
+      (-a.c[0] * t3 + a.c[1] * t1 - a.c[2] * t0) * inv,
+      (-a.c[0] * t6 - a.c[1] * t12 + a.c[2] * t11 + a.c[3] * t1 - a.c[4] * t0) * inv,
+      (a.c[0] * t12 - a.c[1] * t6 - a.c[2] * t9 + a.c[3] * t3 - a.c[5] * t0) * inv,
+      (-a.c[0] * t11 + a.c[1] * t9 - a.c[2] * t6 + a.c[4] * t3 - a.c[5] * t1) * inv,
+      (-a.c[0] * t10 + a.c[1] * t8 - a.c[2] * t7 - a.c[3] * t12 - a.c[3] * t5 + a.c[4] * t11 +
+       a.c[4] * t4 - a.c[5] * t2 - a.c[5] * t9) *
+          inv);
+}
+
+// apply(dual_line, plane) -> plane: 40 mul, 24 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> apply(const basic_dual_line<T>& a, const basic_plane<T>& b) {
+  const T t0 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  const T t1 = -a.c[2] * b.c[0] + a.c[4] * b.c[1] + a.c[5] * b.c[2];
+  const T t2 = a.c[1] * b.c[0] - a.c[3] * b.c[1] + a.c[5] * b.c[3];
+  const T t3 = -a.c[1] * b.c[3] + a.c[2] * b.c[2];
+  const T t4 = -a.c[0] * b.c[0] - a.c[3] * b.c[2] - a.c[4] * b.c[3];
+  const T t5 = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  const T t6 = -a.c[0] * b.c[2] + a.c[1] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_plane<T>(
+      (-a.c[0] * t4 + a.c[1] * t2 - a.c[2] * t1 - a.c[3] * t6 + a.c[4] * t5 - a.c[5] * t3) * inv,
+      (-a.c[0] * t0 - a.c[1] * t6 + a.c[2] * t5) * inv,
+      (a.c[0] * t6 - a.c[1] * t0 - a.c[2] * t3) * inv,
+      (-a.c[0] * t5 + a.c[1] * t3 - a.c[2] * t0) * inv);
+}
+
+// apply(dual_line, pseudoscalar) -> pseudoscalar: 10 mul, 4 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> apply(const basic_dual_line<T>& a,
+                                                 const basic_pseudoscalar<T>& b) {
+  const T t0 = -a.c[2] * b.c[0];
+  const T t1 = a.c[1] * b.c[0];
+  const T t3 = -a.c[0] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_pseudoscalar<T>((-a.c[0] * t3 + a.c[1] * t1 - a.c[2] * t0) * inv);
+}
+
+// apply(dual_line, rotor) -> motor: 65 mul, 41 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> apply(const basic_dual_line<T>& a, const basic_rotor<T>& b) {
+  const T t0 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  const T t1 = a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2];
+  const T t2 = a.c[0] * b.c[3] + a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t3 = -a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t4 = a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  const T t5 = a.c[3] * b.c[1] + a.c[4] * b.c[0] - a.c[5] * b.c[3];
+  const T t6 = a.c[3] * b.c[2] + a.c[4] * b.c[3] + a.c[5] * b.c[0];
+  const T t7 = a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_motor<T>(
+      (a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t3) * inv,
+      (-a.c[0] * t0 - a.c[1] * t3 + a.c[2] * t2) * inv,
+      (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t1) * inv,
+      (-a.c[0] * t2 + a.c[1] * t1 - a.c[2] * t0) * inv,
+      (a.c[0] * t5 + a.c[1] * t6 + a.c[2] * t7 - a.c[3] * t0 - a.c[4] * t1 - a.c[5] * t2) * inv,
+      (-a.c[0] * t4 - a.c[1] * t7 + a.c[2] * t6 + a.c[3] * t1 - a.c[4] * t0 - a.c[5] * t3) * inv,
+      (a.c[0] * t7 - a.c[1] * t4 - a.c[2] * t5 + a.c[3] * t2 + a.c[4] * t3 - a.c[5] * t0) * inv,
+      (T(0)) * inv);
+}
+
+// apply(dual_line, translator) -> translator: 40 mul, 24 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> apply(const basic_dual_line<T>& a,
+                                               const basic_translator<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[1] * b.c[0];
+  const T t2 = a.c[2] * b.c[0];
+  const T t3 = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[3] * b.c[0];
+  const T t4 = -a.c[0] * b.c[1] + a.c[2] * b.c[3] + a.c[4] * b.c[0];
+  const T t5 = -a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[5] * b.c[0];
+  const T t6 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_translator<T>(
+      (a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2) * inv,
+      (a.c[0] * t4 + a.c[1] * t5 + a.c[2] * t6 - a.c[4] * t0 - a.c[5] * t1) * inv,
+      (-a.c[0] * t3 - a.c[1] * t6 + a.c[2] * t5 + a.c[3] * t0 - a.c[5] * t2) * inv,
+      (a.c[0] * t6 - a.c[1] * t3 - a.c[2] * t4 + a.c[3] * t1 + a.c[4] * t2) * inv);
+}
+
+// apply(dual_line, motor) -> motor: 83 mul, 58 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> apply(const basic_dual_line<T>& a, const basic_motor<T>& b) {
+  const T t0 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  const T t1 = a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2];
+  const T t2 = a.c[0] * b.c[3] + a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t3 = -a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t4 = a.c[0] * b.c[5] + a.c[1] * b.c[6] - a.c[2] * b.c[7] + a.c[3] * b.c[0] -
+               a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  const T t5 = -a.c[0] * b.c[4] + a.c[1] * b.c[7] + a.c[2] * b.c[6] + a.c[3] * b.c[1] +
+               a.c[4] * b.c[0] - a.c[5] * b.c[3];
+  const T t6 = -a.c[0] * b.c[7] - a.c[1] * b.c[4] - a.c[2] * b.c[5] + a.c[3] * b.c[2] +
+               a.c[4] * b.c[3] + a.c[5] * b.c[0];
+  const T t7 = a.c[0] * b.c[6] - a.c[1] * b.c[5] + a.c[2] * b.c[4] + a.c[3] * b.c[3] -
+               a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_motor<T>(
+      (a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t3) * inv,
+      (-a.c[0] * t0 - a.c[1] * t3 + a.c[2] * t2) * inv,
+      (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t1) * inv,
+      (-a.c[0] * t2 + a.c[1] * t1 - a.c[2] * t0) * inv,
+      (a.c[0] * t5 + a.c[1] * t6 + a.c[2] * t7 - a.c[3] * t0 - a.c[4] * t1 - a.c[5] * t2) * inv,
+      (-a.c[0] * t4 - a.c[1] * t7 + a.c[2] * t6 + a.c[3] * t1 - a.c[4] * t0 - a.c[5] * t3) * inv,
+      (a.c[0] * t7 - a.c[1] * t4 - a.c[2] * t5 + a.c[3] * t2 + a.c[4] * t3 - a.c[5] * t0) * inv,
+      (-a.c[0] * t6 + a.c[1] * t5 - a.c[2] * t4 - a.c[3] * t3 + a.c[4] * t2 - a.c[5] * t1) * inv);
+}
+
+// apply(line, normalized_point) -> normalized_point: 49 mul, 36 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_normalized_point<T> apply(const basic_line<T>& a,
+                                                     const basic_normalized_point<T>& b) {
+  const T t0 = -a.c[3];
+  const T t1 = -a.c[4];
+  const T t2 = -a.c[0];
+  const T t3 = -a.c[5];
+  const T t4 = -a.c[1];
+  const T t5 = -a.c[2];
+  const T t6 = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  const T t7 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[3] * b.c[3];
+  const T t8 = a.c[0] * b.c[0] - a.c[2] * b.c[2] - a.c[4] * b.c[3];
+  const T t9 = -a.c[0] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  const T t10 = a.c[1] * b.c[0] + a.c[2] * b.c[1] - a.c[5] * b.c[3];
+  const T t11 = -a.c[1] - a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  const T t12 = -a.c[2] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  const T inv = T(1) / (-a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5]);
+  return basic_normalized_point<T>(
+      (a.c[0] * t1 + a.c[1] * t3 + a.c[3] * t6 + a.c[4] * t9 + a.c[5] * t11) * inv,
+      (-a.c[0] * t0 + a.c[2] * t3 - a.c[3] * t9 + a.c[4] * t6 + a.c[5] * t12) * inv,
+      (-a.c[1] * t0 - a.c[2] * t1 - a.c[3] * t11 - a.c[4] * t12 + a.c[5] * t6) * inv,
+      (a.c[0] * t2 + a.c[0] * t9 + a.c[1] * t11 + a.c[1] * t4 + a.c[2] * t12 + a.c[2] * t5 +
+       a.c[3] * t7 + a.c[4] * t8 + a.c[5] * t10) *
+          inv);
+}
+
+// apply(line, dual_sphere) -> dual_sphere: 62 mul, 38 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_line<T>& a,
+                                                const basic_dual_sphere<T>& b) {
+  const T t0 = -a.c[3] * b.c[0];
+  const T t1 = -a.c[4] * b.c[0];
+  const T t2 = -a.c[0] * b.c[0];
+  const T t3 = -a.c[5] * b.c[0];
+  const T t4 = -a.c[1] * b.c[0];
+  const T t5 = -a.c[2] * b.c[0];
+  const T t6 = -a.c[3] * b.c[1] - a.c[4] * b.c[2] - a.c[5] * b.c[3];
+  const T t7 = -a.c[0] * b.c[2] - a.c[1] * b.c[3] - a.c[3] * b.c[4];
+  const T t8 = a.c[0] * b.c[1] - a.c[2] * b.c[3] - a.c[4] * b.c[4];
+  const T t9 = -a.c[0] * b.c[0] - a.c[3] * b.c[2] + a.c[4] * b.c[1];
+  const T t10 = a.c[1] * b.c[1] + a.c[2] * b.c[2] - a.c[5] * b.c[4];
+  const T t11 = -a.c[1] * b.c[0] - a.c[3] * b.c[3] + a.c[5] * b.c[1];
+  const T t12 = -a.c[2] * b.c[0] - a.c[4] * b.c[3] + a.c[5] * b.c[2];
+  const T inv = T(1) / (-a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5]);
+  return basic_dual_sphere<T>(
+      (a.c[3] * t0 + a.c[4] * t1 + a.c[5] * t3) * inv,
+      (a.c[0] * t1 + a.c[1] * t3 + a.c[3] * t6 + a.c[4] * t9 + a.c[5] * t11) * inv,
+      (-a.c[0] * t0 + a.c[2] * t3 - a.c[3] * t9 + a.c[4] * t6 + a.c[5] * t12) * inv,
+      (-a.c[1] * t0 - a.c[2] * t1 - a.c[3] * t11 - a.c[4] * t12 + a.c[5] * t6) * inv,
+      (a.c[0] * t2 + a.c[0] * t9 + a.c[1] * t11 + a.c[1] * t4 + a.c[2] * t12 + a.c[2] * t5 +
+       a.c[3] * t7 + a.c[4] * t8 + a.c[5] * t10) *
+          inv);
+}
+
+// apply(line, dual_plane) -> dual_plane: 40 mul, 24 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> apply(const basic_line<T>& a,
+                                               const basic_dual_plane<T>& b) {
+  const T t0 = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  const T t1 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[3] * b.c[3];
+  const T t2 = a.c[0] * b.c[0] - a.c[2] * b.c[2] - a.c[4] * b.c[3];
+  const T t3 = -a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  const T t4 = a.c[1] * b.c[0] + a.c[2] * b.c[1] - a.c[5] * b.c[3];
+  const T t5 = -a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  const T t6 = -a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  const T inv = T(1) / (-a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5]);
+  return basic_dual_plane<T>(
+      (a.c[3] * t0 + a.c[4] * t3 + a.c[5] * t5) * inv,
+      (-a.c[3] * t3 + a.c[4] * t0 + a.c[5] * t6) * inv,
+      (-a.c[3] * t5 - a.c[4] * t6 + a.c[5] * t0) * inv,
+      (a.c[0] * t3 + a.c[1] * t5 + a.c[2] * t6 + a.c[3] * t1 + a.c[4] * t2 + a.c[5] * t4) * inv);
+}
+
+// apply(line, euclidean_vector) -> dual_plane: 37 mul, 21 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> apply(const basic_line<T>& a,
+                                               const basic_euclidean_vector<T>& b) {
+  const T t0 = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  const T t1 = -a.c[0] * b.c[1] - a.c[1] * b.c[2];
+  const T t2 = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  const T t3 = -a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  const T t4 = a.c[1] * b.c[0] + a.c[2] * b.c[1];
+  const T t5 = -a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  const T t6 = -a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  const T inv = T(1) / (-a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5]);
+  return basic_dual_plane<T>(
+      (a.c[3] * t0 + a.c[4] * t3 + a.c[5] * t5) * inv,
+      (-a.c[3] * t3 + a.c[4] * t0 + a.c[5] * t6) * inv,
+      (-a.c[3] * t5 - a.c[4] * t6 + a.c[5] * t0) * inv,
+      (a.c[0] * t3 + a.c[1] * t5 + a.c[2] * t6 + a.c[3] * t1 + a.c[4] * t2 + a.c[5] * t4) * inv);
+}
+
+// apply(line, flat_point) -> flat_point: 40 mul, 24 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> apply(const basic_line<T>& a,
+                                               const basic_flat_point<T>& b) {
+  const T t0 = -a.c[3] * b.c[3];
+  const T t1 = -a.c[4] * b.c[3];
+  const T t2 = -a.c[5] * b.c[3];
+  const T t3 = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  const T t4 = -a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  const T t5 = -a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  const T t6 = -a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  const T inv = T(1) / (-a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5]);
+  return basic_flat_point<T>(
+      (a.c[0] * t1 + a.c[1] * t2 + a.c[3] * t3 + a.c[4] * t4 + a.c[5] * t5) * inv,
+      (-a.c[0] * t0 + a.c[2] * t2 - a.c[3] * t4 + a.c[4] * t3 + a.c[5] * t6) * inv,
+      (-a.c[1] * t0 - a.c[2] * t1 - a.c[3] * t5 - a.c[4] * t6 + a.c[5] * t3) * inv,
+      (a.c[3] * t0 + a.c[4] * t1 + a.c[5] * t2) * inv);
+}
+
+// apply(line, euclidean_bivector) -> dual_line: 54 mul, 33 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> apply(const basic_line<T>& a,
+                                              const basic_euclidean_bivector<T>& b) {
+  const T t0 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = -a.c[4] * b.c[0] - a.c[5] * b.c[1];
+  const T t2 = a.c[3] * b.c[0] - a.c[5] * b.c[2];
+  const T t3 = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t4 = a.c[3] * b.c[1] + a.c[4] * b.c[2];
+  const T t5 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t6 = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  const T t7 = a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  const T inv = T(1) / (-a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5]);
+  return basic_dual_line<T>(
+      (a.c[3] * t2 - a.c[4] * t1 - a.c[5] * t7) * inv,
+      (a.c[3] * t4 + a.c[4] * t7 - a.c[5] * t1) * inv,
+      (-a.c[3] * t7 + a.c[4] * t4 - a.c[5] * t2) * inv,
+      (-a.c[0] * t2 - a.c[1] * t4 - a.c[2] * t7 + a.c[3] * t0 + a.c[4] * t3 + a.c[5] * t5) * inv,
+      (a.c[0] * t1 + a.c[1] * t7 - a.c[2] * t4 - a.c[3] * t3 + a.c[4] * t0 + a.c[5] * t6) * inv,
+      (-a.c[0] * t7 + a.c[1] * t1 + a.c[2] * t2 - a.c[3] * t5 - a.c[4] * t6 + a.c[5] * t0) * inv);
+}
+
+// apply(line, point_pair) -> point_pair: 133 mul, 96 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_line<T>& a,
+                                               const basic_point_pair<T>& b) {
+  const T t0 = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  const T t1 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[3] * b.c[3];
+  const T t2 = a.c[0] * b.c[0] - a.c[2] * b.c[2] - a.c[4] * b.c[3];
+  const T t3 = -a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  const T t4 = a.c[1] * b.c[0] + a.c[2] * b.c[1] - a.c[5] * b.c[3];
+  const T t5 = -a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  const T t6 = -a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  const T t7 = -a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  const T t8 = -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[7] - a.c[3] * b.c[6] -
+               a.c[4] * b.c[8] - a.c[5] * b.c[9];
+  const T t9 = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[4] * b.c[4] - a.c[5] * b.c[5];
+  const T t10 = -a.c[0] * b.c[0] + a.c[2] * b.c[2] + a.c[3] * b.c[4] - a.c[5] * b.c[7];
+  const T t11 =
+      -a.c[0] * b.c[3] - a.c[1] * b.c[7] + a.c[2] * b.c[5] - a.c[3] * b.c[8] + a.c[4] * b.c[6];
+  const T t12 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] + a.c[3] * b.c[5] + a.c[4] * b.c[7];
+  const T t13 =
+      a.c[0] * b.c[7] - a.c[1] * b.c[3] - a.c[2] * b.c[4] - a.c[3] * b.c[9] + a.c[5] * b.c[6];
+  const T t14 =
+      -a.c[0] * b.c[5] + a.c[1] * b.c[4] - a.c[2] * b.c[3] - a.c[4] * b.c[9] + a.c[5] * b.c[8];
+  const T t15 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] + a.c[3] * b.c[7] -
+                a.c[4] * b.c[5] + a.c[5] * b.c[4];
+  const T inv = T(1) / (-a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5]);
+  return basic_point_pair<T>(
+      (a.c[3] * t0 + a.c[4] * t3 + a.c[5] * t5) * inv,
+      (-a.c[3] * t3 + a.c[4] * t0 + a.c[5] * t6) * inv,
+      (-a.c[3] * t5 - a.c[4] * t6 + a.c[5] * t0) * inv,
+      (a.c[0] * t3 + a.c[1] * t5 + a.c[2] * t6 + a.c[3] * t1 + a.c[4] * t2 + a.c[5] * t4) * inv,
+      (a.c[0] * t0 + a.c[1] * t6 - a.c[2] * t5 + a.c[3] * t10 - a.c[4] * t9 - a.c[5] * t15) * inv,
+      (-a.c[0] * t6 + a.c[1] * t0 + a.c[2] * t3 + a.c[3] * t12 + a.c[4] * t15 - a.c[5] * t9) * inv,
+      (-a.c[0] * t10 + a.c[0] * t2 - a.c[1] * t12 + a.c[1] * t4 - a.c[2] * t15 + a.c[2] * t7 +
+       a.c[3] * t8 + a.c[4] * t11 + a.c[5] * t13) *
+          inv,
+      (a.c[0] * t5 - a.c[1] * t3 + a.c[2] * t0 - a.c[3] * t15 + a.c[4] * t12 - a.c[5] * t10) * inv,
+      (-a.c[0] * t1 + a.c[0] * t9 + a.c[1] * t15 - a.c[1] * t7 - a.c[2] * t12 + a.c[2] * t4 -
+       a.c[3] * t11 + a.c[4] * t8 + a.c[5] * t14) *
+          inv,
+      (-a.c[0] * t15 + a.c[0] * t7 - a.c[1] * t1 + a.c[1] * t9 + a.c[2] * t10 - a.c[2] * t2 -
+       a.c[3] * t13 - a.c[4] * t14 + a.c[5] * t8) *
+          inv);
+}
+
+// apply(line, dual_line) -> dual_line: 63 mul, 42 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> apply(const basic_line<T>& a, const basic_dual_line<T>& b) {
+  const T t0 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3] -
+               a.c[4] * b.c[4] - a.c[5] * b.c[5];
+  const T t1 = -a.c[4] * b.c[0] - a.c[5] * b.c[1];
+  const T t2 = a.c[3] * b.c[0] - a.c[5] * b.c[2];
+  const T t3 = -a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[4] + a.c[4] * b.c[3];
+  const T t4 = a.c[3] * b.c[1] + a.c[4] * b.c[2];
+  const T t5 = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[5] + a.c[5] * b.c[3];
+  const T t6 = -a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[4] * b.c[5] + a.c[5] * b.c[4];
+  const T t7 = a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  const T inv = T(1) / (-a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5]);
+  return basic_dual_line<T>(
+      (a.c[3] * t2 - a.c[4] * t1 - a.c[5] * t7) * inv,
+      (a.c[3] * t4 + a.c[4] * t7 - a.c[5] * t1) * inv,
+      (-a.c[3] * t7 + a.c[4] * t4 - a.c[5] * t2) * inv,
+      (-a.c[0] * t2 - a.c[1] * t4 - a.c[2] * t7 + a.c[3] * t0 + a.c[4] * t3 + a.c[5] * t5) * inv,
+      (a.c[0] * t1 + a.c[1] * t7 - a.c[2] * t4 - a.c[3] * t3 + a.c[4] * t0 + a.c[5] * t6) * inv,
+      (-a.c[0] * t7 + a.c[1] * t1 + a.c[2] * t2 - a.c[3] * t5 - a.c[4] * t6 + a.c[5] * t0) * inv);
+}
+
+// apply(line, line) -> line: 63 mul, 42 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> apply(const basic_line<T>& a, const basic_line<T>& b) {
+  const T t0 = a.c[3] * b.c[3] + a.c[4] * b.c[4] + a.c[5] * b.c[5];
+  const T t1 = a.c[3] * b.c[4] - a.c[4] * b.c[3];
+  const T t2 = a.c[3] * b.c[5] - a.c[5] * b.c[3];
+  const T t3 = a.c[4] * b.c[5] - a.c[5] * b.c[4];
+  const T t4 = -a.c[0] * b.c[4] - a.c[1] * b.c[5] + a.c[4] * b.c[0] + a.c[5] * b.c[1];
+  const T t5 = a.c[0] * b.c[3] - a.c[2] * b.c[5] - a.c[3] * b.c[0] + a.c[5] * b.c[2];
+  const T t6 = a.c[1] * b.c[3] + a.c[2] * b.c[4] - a.c[3] * b.c[1] - a.c[4] * b.c[2];
+  const T t7 = -a.c[0] * b.c[5] + a.c[1] * b.c[4] - a.c[2] * b.c[3] - a.c[3] * b.c[2] +
+               a.c[4] * b.c[1] - a.c[5] * b.c[0];
+  const T inv = T(1) / (-a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5]);
+  return basic_line<T>(
+      (-a.c[0] * t0 - a.c[1] * t3 + a.c[2] * t2 - a.c[3] * t5 + a.c[4] * t4 + a.c[5] * t7) * inv,
+      (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t1 - a.c[3] * t6 - a.c[4] * t7 + a.c[5] * t4) * inv,
+      (-a.c[0] * t2 + a.c[1] * t1 - a.c[2] * t0 + a.c[3] * t7 - a.c[4] * t6 + a.c[5] * t5) * inv,
+      (-a.c[3] * t0 - a.c[4] * t1 - a.c[5] * t2) * inv,
+      (a.c[3] * t1 - a.c[4] * t0 - a.c[5] * t3) * inv,
+      (a.c[3] * t2 + a.c[4] * t3 - a.c[5] * t0) * inv);
+}
+
+// apply(line, circle) -> circle: 133 mul, 96 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> apply(const basic_line<T>& a, const basic_circle<T>& b) {
+  const T t0 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] +
+               a.c[4] * b.c[4] + a.c[5] * b.c[5];
+  const T t1 = a.c[4] * b.c[0] + a.c[5] * b.c[1];
+  const T t2 = -a.c[3] * b.c[0] + a.c[5] * b.c[2];
+  const T t3 = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[4] - a.c[4] * b.c[3];
+  const T t4 = -a.c[3] * b.c[1] - a.c[4] * b.c[2];
+  const T t5 = -a.c[0] * b.c[2] + a.c[2] * b.c[0] + a.c[3] * b.c[5] - a.c[5] * b.c[3];
+  const T t6 = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[4] * b.c[5] - a.c[5] * b.c[4];
+  const T t7 = -a.c[3] * b.c[2] + a.c[4] * b.c[1] - a.c[5] * b.c[0];
+  const T t8 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t9 =
+      -a.c[0] * b.c[4] - a.c[1] * b.c[5] + a.c[2] * b.c[6] + a.c[4] * b.c[7] + a.c[5] * b.c[8];
+  const T t10 =
+      a.c[0] * b.c[3] - a.c[1] * b.c[6] - a.c[2] * b.c[5] - a.c[3] * b.c[7] + a.c[5] * b.c[9];
+  const T t11 = a.c[1] * b.c[2] - a.c[2] * b.c[1] - a.c[5] * b.c[6];
+  const T t12 =
+      a.c[0] * b.c[6] + a.c[1] * b.c[3] + a.c[2] * b.c[4] - a.c[3] * b.c[8] - a.c[4] * b.c[9];
+  const T t13 = -a.c[0] * b.c[2] + a.c[2] * b.c[0] + a.c[4] * b.c[6];
+  const T t14 = a.c[0] * b.c[1] - a.c[1] * b.c[0] - a.c[3] * b.c[6];
+  const T t15 = -a.c[0] * b.c[5] + a.c[1] * b.c[4] - a.c[2] * b.c[3] - a.c[3] * b.c[9] +
+                a.c[4] * b.c[8] - a.c[5] * b.c[7];
+  const T inv = T(1) / (-a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5]);
+  return basic_circle<T>(
+      (-a.c[3] * t2 + a.c[4] * t1 + a.c[5] * t7) * inv,
+      (-a.c[3] * t4 - a.c[4] * t7 + a.c[5] * t1) * inv,
+      (a.c[3] * t7 - a.c[4] * t4 + a.c[5] * t2) * inv,
+      (a.c[0] * t2 + a.c[1] * t4 + a.c[2] * t7 - a.c[3] * t0 - a.c[4] * t3 - a.c[5] * t5) * inv,
+      (-a.c[0] * t1 - a.c[1] * t7 + a.c[2] * t4 + a.c[3] * t3 - a.c[4] * t0 - a.c[5] * t6) * inv,
+      (a.c[0] * t7 - a.c[1] * t1 - a.c[2] * t2 + a.c[3] * t5 + a.c[4] * t6 - a.c[5] * t0) * inv,
+      (-a.c[0] * t4 + a.c[1] * t2 - a.c[2] * t1 + a.c[3] * t14 - a.c[4] * t13 + a.c[5] * t11) * inv,
+      (-a.c[0] * t0 - a.c[0] * t8 - a.c[1] * t14 - a.c[1] * t6 + a.c[2] * t13 + a.c[2] * t5 -
+       a.c[3] * t10 + a.c[4] * t9 + a.c[5] * t15) *
+          inv,
+      (a.c[0] * t14 + a.c[0] * t6 - a.c[1] * t0 - a.c[1] * t8 - a.c[2] * t11 - a.c[2] * t3 -
+       a.c[3] * t12 - a.c[4] * t15 + a.c[5] * t9) *
+          inv,
+      (-a.c[0] * t13 - a.c[0] * t5 + a.c[1] * t11 + a.c[1] * t3 - a.c[2] * t0 - a.c[2] * t8 +
+       a.c[3] * t15 - a.c[4] * t12 + a.c[5] * t10) *
+          inv);
+}
+
+// apply(line, sphere) -> sphere: 62 mul, 38 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> apply(const basic_line<T>& a, const basic_sphere<T>& b) {
+  const T t0 = a.c[2] * b.c[0] + a.c[4] * b.c[1] + a.c[5] * b.c[2];
+  const T t1 = -a.c[1] * b.c[0] - a.c[3] * b.c[1] + a.c[5] * b.c[3];
+  const T t2 = -a.c[5] * b.c[0];
+  const T t3 = a.c[0] * b.c[0] - a.c[3] * b.c[2] - a.c[4] * b.c[3];
+  const T t4 = a.c[4] * b.c[0];
+  const T t5 = -a.c[3] * b.c[0];
+  const T t6 = -a.c[3] * b.c[3] + a.c[4] * b.c[2] - a.c[5] * b.c[1];
+  const T t8 = -a.c[2] * b.c[0];
+  const T t9 = a.c[1] * b.c[0];
+  const T t10 = a.c[1] * b.c[3] - a.c[2] * b.c[2] - a.c[5] * b.c[4];
+  const T t11 = -a.c[0] * b.c[0];
+  const T t12 = -a.c[0] * b.c[3] + a.c[2] * b.c[1] + a.c[4] * b.c[4];
+  const T t13 = a.c[0] * b.c[2] - a.c[1] * b.c[1] - a.c[3] * b.c[4];
+  const T inv = T(1) / (-a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5]);
+  return basic_sphere<T>(
+      (a.c[3] * t5 - a.c[4] * t4 + a.c[5] * t2) * inv,
+      (-a.c[1] * t5 + a.c[2] * t4 - a.c[3] * t1 + a.c[4] * t0 + a.c[5] * t6) * inv,
+      (a.c[0] * t5 - a.c[2] * t2 - a.c[3] * t3 - a.c[4] * t6 + a.c[5] * t0) * inv,
+      (-a.c[0] * t4 + a.c[1] * t2 + a.c[3] * t6 - a.c[4] * t3 + a.c[5] * t1) * inv,
+      (a.c[0] * t11 - a.c[0] * t3 + a.c[1] * t1 - a.c[1] * t9 - a.c[2] * t0 + a.c[2] * t8 +
+       a.c[3] * t13 - a.c[4] * t12 + a.c[5] * t10) *
+          inv);
+}
+
+// apply(line, plane) -> plane: 40 mul, 24 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> apply(const basic_line<T>& a, const basic_plane<T>& b) {
+  const T t0 = a.c[4] * b.c[1] + a.c[5] * b.c[2];
+  const T t1 = -a.c[3] * b.c[1] + a.c[5] * b.c[3];
+  const T t2 = -a.c[3] * b.c[2] - a.c[4] * b.c[3];
+  const T t3 = -a.c[3] * b.c[3] + a.c[4] * b.c[2] - a.c[5] * b.c[1];
+  const T t5 = a.c[1] * b.c[3] - a.c[2] * b.c[2] - a.c[5] * b.c[0];
+  const T t6 = -a.c[0] * b.c[3] + a.c[2] * b.c[1] + a.c[4] * b.c[0];
+  const T t7 = a.c[0] * b.c[2] - a.c[1] * b.c[1] - a.c[3] * b.c[0];
+  const T inv = T(1) / (-a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5]);
+  return basic_plane<T>(
+      (-a.c[0] * t2 + a.c[1] * t1 - a.c[2] * t0 + a.c[3] * t7 - a.c[4] * t6 + a.c[5] * t5) * inv,
+      (-a.c[3] * t1 + a.c[4] * t0 + a.c[5] * t3) * inv,
+      (-a.c[3] * t2 - a.c[4] * t3 + a.c[5] * t0) * inv,
+      (a.c[3] * t3 - a.c[4] * t2 + a.c[5] * t1) * inv);
+}
+
+// apply(line, pseudoscalar) -> pseudoscalar: 10 mul, 4 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> apply(const basic_line<T>& a,
+                                                 const basic_pseudoscalar<T>& b) {
+  const T t0 = a.c[5] * b.c[0];
+  const T t1 = -a.c[4] * b.c[0];
+  const T t2 = a.c[3] * b.c[0];
+  const T inv = T(1) / (-a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5]);
+  return basic_pseudoscalar<T>((-a.c[3] * t2 + a.c[4] * t1 - a.c[5] * t0) * inv);
+}
+
+// apply(line, rotor) -> motor: 65 mul, 41 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> apply(const basic_line<T>& a, const basic_rotor<T>& b) {
+  const T t0 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  const T t1 = a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  const T t2 = a.c[3] * b.c[1] + a.c[4] * b.c[0] - a.c[5] * b.c[3];
+  const T t3 = a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2];
+  const T t4 = a.c[3] * b.c[2] + a.c[4] * b.c[3] + a.c[5] * b.c[0];
+  const T t5 = a.c[0] * b.c[3] + a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t6 = -a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t7 = a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  const T inv = T(1) / (-a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5]);
+  return basic_motor<T>(
+      (-a.c[3] * t1 - a.c[4] * t2 - a.c[5] * t4) * inv,
+      (a.c[3] * t2 - a.c[4] * t1 - a.c[5] * t7) * inv,
+      (a.c[3] * t4 + a.c[4] * t7 - a.c[5] * t1) * inv,
+      (-a.c[3] * t7 + a.c[4] * t4 - a.c[5] * t2) * inv,
+      (-a.c[0] * t2 - a.c[1] * t4 - a.c[2] * t7 + a.c[3] * t0 + a.c[4] * t3 + a.c[5] * t5) * inv,
+      (a.c[0] * t1 + a.c[1] * t7 - a.c[2] * t4 - a.c[3] * t3 + a.c[4] * t0 + a.c[5] * t6) * inv,
+      (-a.c[0] * t7 + a.c[1] * t1 + a.c[2] * t2 - a.c[3] * t5 - a.c[4] * t6 + a.c[5] * t0) * inv,
+      (T(0)) * inv);
+}
+
+// apply(line, translator) -> translator: 40 mul, 24 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> apply(const basic_line<T>& a,
+                                               const basic_translator<T>& b) {
+  const T t0 = -a.c[3] * b.c[1] - a.c[4] * b.c[2] - a.c[5] * b.c[3];
+  const T t1 = a.c[3] * b.c[0];
+  const T t2 = a.c[4] * b.c[0];
+  const T t3 = a.c[0] * b.c[0] - a.c[3] * b.c[2] + a.c[4] * b.c[1];
+  const T t4 = a.c[5] * b.c[0];
+  const T t5 = a.c[1] * b.c[0] - a.c[3] * b.c[3] + a.c[5] * b.c[1];
+  const T t6 = a.c[2] * b.c[0] - a.c[4] * b.c[3] + a.c[5] * b.c[2];
+  const T inv = T(1) / (-a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5]);
+  return basic_translator<T>(
+      (-a.c[3] * t1 - a.c[4] * t2 - a.c[5] * t4) * inv,
+      (-a.c[0] * t2 - a.c[1] * t4 + a.c[3] * t0 + a.c[4] * t3 + a.c[5] * t5) * inv,
+      (a.c[0] * t1 - a.c[2] * t4 - a.c[3] * t3 + a.c[4] * t0 + a.c[5] * t6) * inv,
+      (a.c[1] * t1 + a.c[2] * t2 - a.c[3] * t5 - a.c[4] * t6 + a.c[5] * t0) * inv);
+}
+
+// apply(line, motor) -> motor: 83 mul, 58 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> apply(const basic_line<T>& a, const basic_motor<T>& b) {
+  const T t0 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3] - a.c[3] * b.c[4] -
+               a.c[4] * b.c[5] - a.c[5] * b.c[6];
+  const T t1 = a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  const T t2 = a.c[3] * b.c[1] + a.c[4] * b.c[0] - a.c[5] * b.c[3];
+  const T t3 = a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[3] * b.c[5] +
+               a.c[4] * b.c[4] - a.c[5] * b.c[7];
+  const T t4 = a.c[3] * b.c[2] + a.c[4] * b.c[3] + a.c[5] * b.c[0];
+  const T t5 = a.c[0] * b.c[3] + a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[6] +
+               a.c[4] * b.c[7] + a.c[5] * b.c[4];
+  const T t6 = -a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[3] * b.c[7] -
+               a.c[4] * b.c[6] + a.c[5] * b.c[5];
+  const T t7 = a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  const T inv = T(1) / (-a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5]);
+  return basic_motor<T>(
+      (-a.c[3] * t1 - a.c[4] * t2 - a.c[5] * t4) * inv,
+      (a.c[3] * t2 - a.c[4] * t1 - a.c[5] * t7) * inv,
+      (a.c[3] * t4 + a.c[4] * t7 - a.c[5] * t1) * inv,
+      (-a.c[3] * t7 + a.c[4] * t4 - a.c[5] * t2) * inv,
+      (-a.c[0] * t2 - a.c[1] * t4 - a.c[2] * t7 + a.c[3] * t0 + a.c[4] * t3 + a.c[5] * t5) * inv,
+      (a.c[0] * t1 + a.c[1] * t7 - a.c[2] * t4 - a.c[3] * t3 + a.c[4] * t0 + a.c[5] * t6) * inv,
+      (-a.c[0] * t7 + a.c[1] * t1 + a.c[2] * t2 - a.c[3] * t5 - a.c[4] * t6 + a.c[5] * t0) * inv,
+      (a.c[0] * t4 - a.c[1] * t2 + a.c[2] * t1 + a.c[3] * t6 - a.c[4] * t5 + a.c[5] * t3) * inv);
+}
+
+// apply(circle, normalized_point) -> dual_sphere: 105 mul, 86 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_circle<T>& a,
+                                                const basic_normalized_point<T>& b) {
+  const T t0 = -a.c[3] + a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t1 = -a.c[4] - a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  const T t2 = -a.c[7] - a.c[0] * b.c[3] + a.c[6] * b.c[2];
+  const T t3 = -a.c[5] - a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t4 = -a.c[8] - a.c[1] * b.c[3] - a.c[6] * b.c[1];
+  const T t5 = -a.c[9] - a.c[2] * b.c[3] + a.c[6] * b.c[0];
+  const T t6 = -a.c[6] + a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t7 = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  const T t8 = -a.c[3] * b.c[3] - a.c[7] * b.c[1] - a.c[8] * b.c[2];
+  const T t9 = -a.c[4] * b.c[3] + a.c[7] * b.c[0] - a.c[9] * b.c[2];
+  const T t10 = -a.c[7] + a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  const T t11 = -a.c[5] * b.c[3] + a.c[8] * b.c[0] + a.c[9] * b.c[1];
+  const T t12 = -a.c[8] + a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  const T t13 = -a.c[9] + a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  const T t14 = a.c[6] * b.c[3] - a.c[7] * b.c[2] + a.c[8] * b.c[1] - a.c[9] * b.c[0];
+  const T inv = T(1) / (-T(2) * a.c[0] * a.c[7] - T(2) * a.c[1] * a.c[8] - T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  return basic_dual_sphere<T>(
+      (-a.c[0] * t10 + a.c[0] * t2 - a.c[1] * t12 + a.c[1] * t4 - a.c[2] * t13 + a.c[2] * t5 +
+       a.c[3] * t0 + a.c[4] * t1 + a.c[5] * t3 + a.c[6] * t6) *
+          inv,
+      (-a.c[0] * t9 - a.c[1] * t11 - a.c[2] * t14 + a.c[3] * t7 + a.c[4] * t10 + a.c[5] * t12 +
+       a.c[6] * t5 + a.c[7] * t1 + a.c[8] * t3 + a.c[9] * t6) *
+          inv,
+      (a.c[0] * t8 + a.c[1] * t14 - a.c[2] * t11 - a.c[3] * t10 + a.c[4] * t7 + a.c[5] * t13 -
+       a.c[6] * t4 - a.c[7] * t0 - a.c[8] * t6 + a.c[9] * t3) *
+          inv,
+      (-a.c[0] * t14 + a.c[1] * t8 + a.c[2] * t9 - a.c[3] * t12 - a.c[4] * t13 + a.c[5] * t7 +
+       a.c[6] * t2 + a.c[7] * t6 - a.c[8] * t0 - a.c[9] * t1) *
+          inv,
+      (a.c[3] * t8 + a.c[4] * t9 + a.c[5] * t11 - a.c[6] * t14 + a.c[7] * t10 + a.c[7] * t2 +
+       a.c[8] * t12 + a.c[8] * t4 + a.c[9] * t13 + a.c[9] * t5) *
+          inv);
+}
+
+// apply(circle, dual_sphere) -> dual_sphere: 115 mul, 86 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_circle<T>& a,
+                                                const basic_dual_sphere<T>& b) {
+  const T t0 = a.c[0] * b.c[2] + a.c[1] * b.c[3] - a.c[3] * b.c[0];
+  const T t1 = -a.c[0] * b.c[1] + a.c[2] * b.c[3] - a.c[4] * b.c[0];
+  const T t2 = -a.c[0] * b.c[4] + a.c[6] * b.c[3] - a.c[7] * b.c[0];
+  const T t3 = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[5] * b.c[0];
+  const T t4 = -a.c[1] * b.c[4] - a.c[6] * b.c[2] - a.c[8] * b.c[0];
+  const T t5 = -a.c[2] * b.c[4] + a.c[6] * b.c[1] - a.c[9] * b.c[0];
+  const T t6 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[6] * b.c[0];
+  const T t7 = -a.c[3] * b.c[1] - a.c[4] * b.c[2] - a.c[5] * b.c[3];
+  const T t8 = -a.c[3] * b.c[4] - a.c[7] * b.c[2] - a.c[8] * b.c[3];
+  const T t9 = -a.c[4] * b.c[4] + a.c[7] * b.c[1] - a.c[9] * b.c[3];
+  const T t10 = a.c[0] * b.c[4] - a.c[3] * b.c[2] + a.c[4] * b.c[1] - a.c[7] * b.c[0];
+  const T t11 = -a.c[5] * b.c[4] + a.c[8] * b.c[1] + a.c[9] * b.c[2];
+  const T t12 = a.c[1] * b.c[4] - a.c[3] * b.c[3] + a.c[5] * b.c[1] - a.c[8] * b.c[0];
+  const T t13 = a.c[2] * b.c[4] - a.c[4] * b.c[3] + a.c[5] * b.c[2] - a.c[9] * b.c[0];
+  const T t14 = a.c[6] * b.c[4] - a.c[7] * b.c[3] + a.c[8] * b.c[2] - a.c[9] * b.c[1];
+  const T inv = T(1) / (-T(2) * a.c[0] * a.c[7] - T(2) * a.c[1] * a.c[8] - T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  return basic_dual_sphere<T>(
+      (-a.c[0] * t10 + a.c[0] * t2 - a.c[1] * t12 + a.c[1] * t4 - a.c[2] * t13 + a.c[2] * t5 +
+       a.c[3] * t0 + a.c[4] * t1 + a.c[5] * t3 + a.c[6] * t6) *
+          inv,
+      (-a.c[0] * t9 - a.c[1] * t11 - a.c[2] * t14 + a.c[3] * t7 + a.c[4] * t10 + a.c[5] * t12 +
+       a.c[6] * t5 + a.c[7] * t1 + a.c[8] * t3 + a.c[9] * t6) *
+          inv,
+      (a.c[0] * t8 + a.c[1] * t14 - a.c[2] * t11 - a.c[3] * t10 + a.c[4] * t7 + a.c[5] * t13 -
+       a.c[6] * t4 - a.c[7] * t0 - a.c[8] * t6 + a.c[9] * t3) *
+          inv,
+      (-a.c[0] * t14 + a.c[1] * t8 + a.c[2] * t9 - a.c[3] * t12 - a.c[4] * t13 + a.c[5] * t7 +
+       a.c[6] * t2 + a.c[7] * t6 - a.c[8] * t0 - a.c[9] * t1) *
+          inv,
+      (a.c[3] * t8 + a.c[4] * t9 + a.c[5] * t11 - a.c[6] * t14 + a.c[7] * t10 + a.c[7] * t2 +
+       a.c[8] * t12 + a.c[8] * t4 + a.c[9] * t13 + a.c[9] * t5) *
+          inv);
+}
+
+// apply(circle, dual_plane) -> dual_sphere: 105 mul, 76 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_circle<T>& a,
+                                                const basic_dual_plane<T>& b) {
+  const T t0 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t1 = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  const T t2 = -a.c[0] * b.c[3] + a.c[6] * b.c[2];
+  const T t3 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t4 = -a.c[1] * b.c[3] - a.c[6] * b.c[1];
+  const T t5 = -a.c[2] * b.c[3] + a.c[6] * b.c[0];
+  const T t6 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t7 = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  const T t8 = -a.c[3] * b.c[3] - a.c[7] * b.c[1] - a.c[8] * b.c[2];
+  const T t9 = -a.c[4] * b.c[3] + a.c[7] * b.c[0] - a.c[9] * b.c[2];
+  const T t10 = a.c[0] * b.c[3] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  const T t11 = -a.c[5] * b.c[3] + a.c[8] * b.c[0] + a.c[9] * b.c[1];
+  const T t12 = a.c[1] * b.c[3] - a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  const T t13 = a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  const T t14 = a.c[6] * b.c[3] - a.c[7] * b.c[2] + a.c[8] * b.c[1] - a.c[9] * b.c[0];
+  const T inv = T(1) / (-T(2) * a.c[0] * a.c[7] - T(2) * a.c[1] * a.c[8] - T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  return basic_dual_sphere<T>(
+      (-a.c[0] * t10 + a.c[0] * t2 - a.c[1] * t12 + a.c[1] * t4 - a.c[2] * t13 + a.c[2] * t5 +
+       a.c[3] * t0 + a.c[4] * t1 + a.c[5] * t3 + a.c[6] * t6) *
+          inv,
+      (-a.c[0] * t9 - a.c[1] * t11 - a.c[2] * t14 + a.c[3] * t7 + a.c[4] * t10 + a.c[5] * t12 +
+       a.c[6] * t5 + a.c[7] * t1 + a.c[8] * t3 + a.c[9] * t6) *
+          inv,
+      (a.c[0] * t8 + a.c[1] * t14 - a.c[2] * t11 - a.c[3] * t10 + a.c[4] * t7 + a.c[5] * t13 -
+       a.c[6] * t4 - a.c[7] * t0 - a.c[8] * t6 + a.c[9] * t3) *
+          inv,
+      (-a.c[0] * t14 + a.c[1] * t8 + a.c[2] * t9 - a.c[3] * t12 - a.c[4] * t13 + a.c[5] * t7 +
+       a.c[6] * t2 + a.c[7] * t6 - a.c[8] * t0 - a.c[9] * t1) *
+          inv,
+      (a.c[3] * t8 + a.c[4] * t9 + a.c[5] * t11 - a.c[6] * t14 + a.c[7] * t10 + a.c[7] * t2 +
+       a.c[8] * t12 + a.c[8] * t4 + a.c[9] * t13 + a.c[9] * t5) *
+          inv);
+}
+
+// apply(circle, euclidean_vector) -> dual_sphere: 95 mul, 66 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_circle<T>& a,
+                                                const basic_euclidean_vector<T>& b) {
+  const T t0 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t1 = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  const T t2 = a.c[6] * b.c[2];
+  const T t3 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t4 = -a.c[6] * b.c[1];
+  const T t5 = a.c[6] * b.c[0];
+  const T t6 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t7 = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  const T t8 = -a.c[7] * b.c[1] - a.c[8] * b.c[2];
+  const T t9 = a.c[7] * b.c[0] - a.c[9] * b.c[2];
+  const T t10 = -a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  const T t11 = a.c[8] * b.c[0] + a.c[9] * b.c[1];
+  const T t12 = -a.c[3] * b.c[2] + a.c[5] * b.c[0];
+  const T t13 = -a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  const T t14 = -a.c[7] * b.c[2] + a.c[8] * b.c[1] - a.c[9] * b.c[0];
+  const T inv = T(1) / (-T(2) * a.c[0] * a.c[7] - T(2) * a.c[1] * a.c[8] - T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  return basic_dual_sphere<T>(
+      (-a.c[0] * t10 + a.c[0] * t2 - a.c[1] * t12 + a.c[1] * t4 - a.c[2] * t13 + a.c[2] * t5 +
+       a.c[3] * t0 + a.c[4] * t1 + a.c[5] * t3 + a.c[6] * t6) *
+          inv,
+      (-a.c[0] * t9 - a.c[1] * t11 - a.c[2] * t14 + a.c[3] * t7 + a.c[4] * t10 + a.c[5] * t12 +
+       a.c[6] * t5 + a.c[7] * t1 + a.c[8] * t3 + a.c[9] * t6) *
+          inv,
+      (a.c[0] * t8 + a.c[1] * t14 - a.c[2] * t11 - a.c[3] * t10 + a.c[4] * t7 + a.c[5] * t13 -
+       a.c[6] * t4 - a.c[7] * t0 - a.c[8] * t6 + a.c[9] * t3) *
+          inv,
+      (-a.c[0] * t14 + a.c[1] * t8 + a.c[2] * t9 - a.c[3] * t12 - a.c[4] * t13 + a.c[5] * t7 +
+       a.c[6] * t2 + a.c[7] * t6 - a.c[8] * t0 - a.c[9] * t1) *
+          inv,
+      (a.c[3] * t8 + a.c[4] * t9 + a.c[5] * t11 - a.c[6] * t14 + a.c[7] * t10 + a.c[7] * t2 +
+       a.c[8] * t12 + a.c[8] * t4 + a.c[9] * t13 + a.c[9] * t5) *
+          inv);
+}
+
+// apply(circle, flat_point) -> point_pair: 154 mul, 115 add, 1 div
+template <class T>
+basic_point_pair<T> apply(const basic_circle<T>& a, const basic_flat_point<T>& b) {
+  const T t0 = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[3];
+  const T t1 = -a.c[0] * b.c[0] + a.c[2] * b.c[2] - a.c[4] * b.c[3];
+  const T t2 = a.c[0] * b.c[3];
+  const T t3 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[5] * b.c[3];
+  const T t4 = a.c[1] * b.c[3];
+  const T t5 = a.c[2] * b.c[3];
+  const T t6 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t7 = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  const T t8 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t9 = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  const T t10 = -a.c[3] * b.c[1] + a.c[4] * b.c[0] + a.c[6] * b.c[2] - a.c[7] * b.c[3];
+  const T t11 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t12 = -a.c[3] * b.c[2] + a.c[5] * b.c[0] - a.c[6] * b.c[1] - a.c[8] * b.c[3];
+  const T t13 = -a.c[4] * b.c[2] + a.c[5] * b.c[1] + a.c[6] * b.c[0] - a.c[9] * b.c[3];
+  const T t14 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[6] * b.c[3];
+  const T inv = T(1) / (-T(2) * a.c[0] * a.c[7] - T(2) * a.c[1] * a.c[8] - T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  return basic_point_pair<T>(
+      (-a.c[0] * t1 - a.c[0] * t9 - a.c[1] * t11 - a.c[1] * t3 - a.c[2] * t14 - a.c[2] * t6 +
+       a.c[4] * t2 + a.c[5] * t4 + a.c[6] * t5) *
+          inv,
+      (a.c[0] * t0 + a.c[0] * t8 + a.c[1] * t14 + a.c[1] * t6 - a.c[2] * t11 - a.c[2] * t3 -
+       a.c[3] * t2 + a.c[5] * t5 - a.c[6] * t4) *
+          inv,
+      (-a.c[0] * t14 - a.c[0] * t6 + a.c[1] * t0 + a.c[1] * t8 + a.c[2] * t1 + a.c[2] * t9 -
+       a.c[3] * t4 - a.c[4] * t5 + a.c[6] * t2) *
+          inv,
+      (-a.c[0] * t10 - a.c[1] * t12 - a.c[2] * t13 + a.c[3] * t0 + a.c[4] * t1 + a.c[5] * t3 -
+       a.c[6] * t14 + a.c[7] * t2 + a.c[8] * t4 + a.c[9] * t5) *
+          inv,
+      (a.c[0] * t7 + a.c[1] * t13 - a.c[2] * t12 + a.c[3] * t9 - a.c[4] * t8 - a.c[5] * t14 -
+       a.c[6] * t3 + a.c[8] * t5 - a.c[9] * t4) *
+          inv,
+      (-a.c[0] * t13 + a.c[1] * t7 + a.c[2] * t10 + a.c[3] * t11 + a.c[4] * t14 - a.c[5] * t8 +
+       a.c[6] * t1 - a.c[7] * t5 + a.c[9] * t2) *
+          inv,
+      (a.c[3] * t7 + a.c[4] * t10 + a.c[5] * t12 - a.c[6] * t13 + a.c[7] * t1 - a.c[7] * t9 -
+       a.c[8] * t11 + a.c[8] * t3 - a.c[9] * t14 + a.c[9] * t6) *
+          inv,
+      (a.c[0] * t12 - a.c[1] * t10 + a.c[2] * t7 - a.c[3] * t14 + a.c[4] * t11 - a.c[5] * t9 -
+       a.c[6] * t0 + a.c[7] * t4 - a.c[8] * t2) *
+          inv,
+      (-a.c[3] * t10 + a.c[4] * t7 + a.c[5] * t13 + a.c[6] * t12 - a.c[7] * t0 + a.c[7] * t8 +
+       a.c[8] * t14 - a.c[8] * t6 - a.c[9] * t11 + a.c[9] * t3) *
+          inv,
+      (-a.c[3] * t12 - a.c[4] * t13 + a.c[5] * t7 - a.c[6] * t10 - a.c[7] * t14 + a.c[7] * t6 -
+       a.c[8] * t0 + a.c[8] * t8 - a.c[9] * t1 + a.c[9] * t9) *
+          inv);
+}
+
+// apply(circle, euclidean_bivector) -> point_pair: 144 mul, 105 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_circle<T>& a,
+                                               const basic_euclidean_bivector<T>& b) {
+  const T t0 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = -a.c[6] * b.c[2];
+  const T t2 = a.c[6] * b.c[1];
+  const T t3 = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t4 = -a.c[6] * b.c[0];
+  const T t5 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t6 = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  const T t7 = -a.c[7] * b.c[0] - a.c[8] * b.c[1] - a.c[9] * b.c[2];
+  const T t8 = -a.c[4] * b.c[0] - a.c[5] * b.c[1];
+  const T t9 = a.c[3] * b.c[0] - a.c[5] * b.c[2];
+  const T t10 = -a.c[8] * b.c[2] + a.c[9] * b.c[1];
+  const T t11 = a.c[3] * b.c[1] + a.c[4] * b.c[2];
+  const T t12 = a.c[7] * b.c[2] - a.c[9] * b.c[0];
+  const T t13 = -a.c[7] * b.c[1] + a.c[8] * b.c[0];
+  const T t14 = a.c[3] * b.c[2] - a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  const T inv = T(1) / (-T(2) * a.c[0] * a.c[7] - T(2) * a.c[1] * a.c[8] - T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  return basic_point_pair<T>(
+      (-a.c[0] * t2 - a.c[0] * t9 - a.c[1] * t11 - a.c[1] * t4 - a.c[2] * t14 + a.c[3] * t0 +
+       a.c[4] * t3 + a.c[5] * t5 + a.c[6] * t6) *
+          inv,
+      (a.c[0] * t1 + a.c[0] * t8 + a.c[1] * t14 - a.c[2] * t11 - a.c[2] * t4 - a.c[3] * t3 +
+       a.c[4] * t0 + a.c[5] * t6 - a.c[6] * t5) *
+          inv,
+      (-a.c[0] * t14 + a.c[1] * t1 + a.c[1] * t8 + a.c[2] * t2 + a.c[2] * t9 - a.c[3] * t5 -
+       a.c[4] * t6 + a.c[5] * t0 + a.c[6] * t3) *
+          inv,
+      (-a.c[0] * t10 - a.c[1] * t12 - a.c[2] * t13 + a.c[3] * t1 + a.c[4] * t2 + a.c[5] * t4 -
+       a.c[6] * t14 + a.c[7] * t3 + a.c[8] * t5 + a.c[9] * t6) *
+          inv,
+      (a.c[0] * t7 + a.c[1] * t13 - a.c[2] * t12 + a.c[3] * t9 - a.c[4] * t8 - a.c[5] * t14 -
+       a.c[6] * t4 + a.c[7] * t0 + a.c[8] * t6 - a.c[9] * t5) *
+          inv,
+      (-a.c[0] * t13 + a.c[1] * t7 + a.c[2] * t10 + a.c[3] * t11 + a.c[4] * t14 - a.c[5] * t8 +
+       a.c[6] * t2 - a.c[7] * t6 + a.c[8] * t0 + a.c[9] * t3) *
+          inv,
+      (a.c[3] * t7 + a.c[4] * t10 + a.c[5] * t12 - a.c[6] * t13 + a.c[7] * t2 - a.c[7] * t9 -
+       a.c[8] * t11 + a.c[8] * t4 - a.c[9] * t14) *
+          inv,
+      (a.c[0] * t12 - a.c[1] * t10 + a.c[2] * t7 - a.c[3] * t14 + a.c[4] * t11 - a.c[5] * t9 -
+       a.c[6] * t1 + a.c[7] * t5 - a.c[8] * t3 + a.c[9] * t0) *
+          inv,
+      (-a.c[3] * t10 + a.c[4] * t7 + a.c[5] * t13 + a.c[6] * t12 - a.c[7] * t1 + a.c[7] * t8 +
+       a.c[8] * t14 - a.c[9] * t11 + a.c[9] * t4) *
+          inv,
+      (-a.c[3] * t12 - a.c[4] * t13 + a.c[5] * t7 - a.c[6] * t10 - a.c[7] * t14 - a.c[8] * t1 +
+       a.c[8] * t8 - a.c[9] * t2 + a.c[9] * t9) *
+          inv);
+}
+
+// apply(circle, point_pair) -> point_pair: 220 mul, 180 add, 1 div
+template <class T>
+basic_point_pair<T> apply(const basic_circle<T>& a, const basic_point_pair<T>& b) {
+  const T t0 = -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[7] - a.c[3] * b.c[0] -
+               a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  const T t1 = a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[3] * b.c[3] - a.c[6] * b.c[7] -
+               a.c[7] * b.c[1] - a.c[8] * b.c[2];
+  const T t2 = -a.c[0] * b.c[6] + a.c[2] * b.c[9] - a.c[4] * b.c[3] + a.c[6] * b.c[5] +
+               a.c[7] * b.c[0] - a.c[9] * b.c[2];
+  const T t3 = a.c[0] * b.c[3] - a.c[1] * b.c[7] + a.c[2] * b.c[5] - a.c[3] * b.c[1] +
+               a.c[4] * b.c[0] - a.c[6] * b.c[2];
+  const T t4 = -a.c[1] * b.c[6] - a.c[2] * b.c[8] - a.c[5] * b.c[3] - a.c[6] * b.c[4] +
+               a.c[8] * b.c[0] + a.c[9] * b.c[1];
+  const T t5 = a.c[0] * b.c[7] + a.c[1] * b.c[3] - a.c[2] * b.c[4] - a.c[3] * b.c[2] +
+               a.c[5] * b.c[0] + a.c[6] * b.c[1];
+  const T t6 = -a.c[0] * b.c[5] + a.c[1] * b.c[4] + a.c[2] * b.c[3] - a.c[4] * b.c[2] +
+               a.c[5] * b.c[1] - a.c[6] * b.c[0];
+  const T t7 = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[6] - a.c[7] * b.c[2] +
+               a.c[8] * b.c[1] - a.c[9] * b.c[0];
+  const T t8 = -a.c[3] * b.c[6] - a.c[4] * b.c[8] - a.c[5] * b.c[9] - a.c[7] * b.c[4] -
+               a.c[8] * b.c[5] - a.c[9] * b.c[7];
+  const T t9 = a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[4] * b.c[4] - a.c[5] * b.c[5] +
+               a.c[7] * b.c[1] + a.c[8] * b.c[2];
+  const T t10 = -a.c[0] * b.c[6] + a.c[2] * b.c[9] + a.c[3] * b.c[4] - a.c[5] * b.c[7] -
+                a.c[7] * b.c[0] + a.c[9] * b.c[2];
+  const T t11 = -a.c[3] * b.c[8] + a.c[4] * b.c[6] + a.c[6] * b.c[9] - a.c[7] * b.c[3] -
+                a.c[8] * b.c[7] + a.c[9] * b.c[5];
+  const T t12 = -a.c[1] * b.c[6] - a.c[2] * b.c[8] + a.c[3] * b.c[5] + a.c[4] * b.c[7] -
+                a.c[8] * b.c[0] - a.c[9] * b.c[1];
+  const T t13 = -a.c[3] * b.c[9] + a.c[5] * b.c[6] - a.c[6] * b.c[8] + a.c[7] * b.c[7] -
+                a.c[8] * b.c[3] - a.c[9] * b.c[4];
+  const T t14 = -a.c[4] * b.c[9] + a.c[5] * b.c[8] + a.c[6] * b.c[6] - a.c[7] * b.c[5] +
+                a.c[8] * b.c[4] - a.c[9] * b.c[3];
+  const T t15 = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[6] + a.c[3] * b.c[7] -
+                a.c[4] * b.c[5] + a.c[5] * b.c[4] - a.c[6] * b.c[3] + a.c[7] * b.c[2] -
+                a.c[8] * b.c[1] + a.c[9] * b.c[0];
+  const T inv = T(1) / (-T(2) * a.c[0] * a.c[7] - T(2) * a.c[1] * a.c[8] - T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  return basic_point_pair<T>(
+      (-a.c[0] * t10 - a.c[0] * t2 - a.c[1] * t12 - a.c[1] * t4 - a.c[2] * t15 - a.c[2] * t7 +
+       a.c[3] * t0 + a.c[4] * t3 + a.c[5] * t5 + a.c[6] * t6) *
+          inv,
+      (a.c[0] * t1 + a.c[0] * t9 + a.c[1] * t15 + a.c[1] * t7 - a.c[2] * t12 - a.c[2] * t4 -
+       a.c[3] * t3 + a.c[4] * t0 + a.c[5] * t6 - a.c[6] * t5) *
+          inv,
+      (-a.c[0] * t15 - a.c[0] * t7 + a.c[1] * t1 + a.c[1] * t9 + a.c[2] * t10 + a.c[2] * t2 -
+       a.c[3] * t5 - a.c[4] * t6 + a.c[5] * t0 + a.c[6] * t3) *
+          inv,
+      (-a.c[0] * t11 - a.c[1] * t13 - a.c[2] * t14 + a.c[3] * t1 + a.c[4] * t2 + a.c[5] * t4 -
+       a.c[6] * t15 + a.c[7] * t3 + a.c[8] * t5 + a.c[9] * t6) *
+          inv,
+      (a.c[0] * t8 + a.c[1] * t14 - a.c[2] * t13 + a.c[3] * t10 - a.c[4] * t9 - a.c[5] * t15 -
+       a.c[6] * t4 + a.c[7] * t0 + a.c[8] * t6 - a.c[9] * t5) *
+          inv,
+      (-a.c[0] * t14 + a.c[1] * t8 + a.c[2] * t11 + a.c[3] * t12 + a.c[4] * t15 - a.c[5] * t9 +
+       a.c[6] * t2 - a.c[7] * t6 + a.c[8] * t0 + a.c[9] * t3) *
+          inv,
+      (a.c[3] * t8 + a.c[4] * t11 + a.c[5] * t13 - a.c[6] * t14 - a.c[7] * t10 + a.c[7] * t2 -
+       a.c[8] * t12 + a.c[8] * t4 - a.c[9] * t15 + a.c[9] * t7) *
+          inv,
+      (a.c[0] * t13 - a.c[1] * t11 + a.c[2] * t8 - a.c[3] * t15 + a.c[4] * t12 - a.c[5] * t10 -
+       a.c[6] * t1 + a.c[7] * t5 - a.c[8] * t3 + a.c[9] * t0) *
+          inv,
+      (-a.c[3] * t11 + a.c[4] * t8 + a.c[5] * t14 + a.c[6] * t13 - a.c[7] * t1 + a.c[7] * t9 +
+       a.c[8] * t15 - a.c[8] * t7 - a.c[9] * t12 + a.c[9] * t4) *
+          inv,
+      (-a.c[3] * t13 - a.c[4] * t14 + a.c[5] * t8 - a.c[6] * t11 - a.c[7] * t15 + a.c[7] * t7 -
+       a.c[8] * t1 + a.c[8] * t9 + a.c[9] * t10 - a.c[9] * t2) *
+          inv);
+}
+
+// apply(circle, dual_line) -> point_pair: 180 mul, 140 add, 1 div
+template <class T>
+basic_point_pair<T> apply(const basic_circle<T>& a, const basic_dual_line<T>& b) {
+  const T t0 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = a.c[0] * b.c[4] + a.c[1] * b.c[5] - a.c[6] * b.c[2];
+  const T t2 = -a.c[0] * b.c[3] + a.c[2] * b.c[5] + a.c[6] * b.c[1];
+  const T t3 = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t4 = -a.c[1] * b.c[3] - a.c[2] * b.c[4] - a.c[6] * b.c[0];
+  const T t5 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t6 = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  const T t7 = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3];
+  const T t8 = -a.c[3] * b.c[3] - a.c[4] * b.c[4] - a.c[5] * b.c[5] - a.c[7] * b.c[0] -
+               a.c[8] * b.c[1] - a.c[9] * b.c[2];
+  const T t9 = a.c[0] * b.c[4] + a.c[1] * b.c[5] - a.c[4] * b.c[0] - a.c[5] * b.c[1];
+  const T t10 = -a.c[0] * b.c[3] + a.c[2] * b.c[5] + a.c[3] * b.c[0] - a.c[5] * b.c[2];
+  const T t11 =
+      -a.c[3] * b.c[4] + a.c[4] * b.c[3] + a.c[6] * b.c[5] - a.c[8] * b.c[2] + a.c[9] * b.c[1];
+  const T t12 = -a.c[1] * b.c[3] - a.c[2] * b.c[4] + a.c[3] * b.c[1] + a.c[4] * b.c[2];
+  const T t13 =
+      -a.c[3] * b.c[5] + a.c[5] * b.c[3] - a.c[6] * b.c[4] + a.c[7] * b.c[2] - a.c[9] * b.c[0];
+  const T t14 =
+      -a.c[4] * b.c[5] + a.c[5] * b.c[4] + a.c[6] * b.c[3] - a.c[7] * b.c[1] + a.c[8] * b.c[0];
+  const T t15 = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[3] + a.c[3] * b.c[2] -
+                a.c[4] * b.c[1] + a.c[5] * b.c[0];
+  const T inv = T(1) / (-T(2) * a.c[0] * a.c[7] - T(2) * a.c[1] * a.c[8] - T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  return basic_point_pair<T>(
+      (-a.c[0] * t10 - a.c[0] * t2 - a.c[1] * t12 - a.c[1] * t4 - a.c[2] * t15 - a.c[2] * t7 +
+       a.c[3] * t0 + a.c[4] * t3 + a.c[5] * t5 + a.c[6] * t6) *
+          inv,
+      (a.c[0] * t1 + a.c[0] * t9 + a.c[1] * t15 + a.c[1] * t7 - a.c[2] * t12 - a.c[2] * t4 -
+       a.c[3] * t3 + a.c[4] * t0 + a.c[5] * t6 - a.c[6] * t5) *
+          inv,
+      (-a.c[0] * t15 - a.c[0] * t7 + a.c[1] * t1 + a.c[1] * t9 + a.c[2] * t10 + a.c[2] * t2 -
+       a.c[3] * t5 - a.c[4] * t6 + a.c[5] * t0 + a.c[6] * t3) *
+          inv,
+      (-a.c[0] * t11 - a.c[1] * t13 - a.c[2] * t14 + a.c[3] * t1 + a.c[4] * t2 + a.c[5] * t4 -
+       a.c[6] * t15 + a.c[7] * t3 + a.c[8] * t5 + a.c[9] * t6) *
+          inv,
+      (a.c[0] * t8 + a.c[1] * t14 - a.c[2] * t13 + a.c[3] * t10 - a.c[4] * t9 - a.c[5] * t15 -
+       a.c[6] * t4 + a.c[7] * t0 + a.c[8] * t6 - a.c[9] * t5) *
+          inv,
+      (-a.c[0] * t14 + a.c[1] * t8 + a.c[2] * t11 + a.c[3] * t12 + a.c[4] * t15 - a.c[5] * t9 +
+       a.c[6] * t2 - a.c[7] * t6 + a.c[8] * t0 + a.c[9] * t3) *
+          inv,
+      (a.c[3] * t8 + a.c[4] * t11 + a.c[5] * t13 - a.c[6] * t14 - a.c[7] * t10 + a.c[7] * t2 -
+       a.c[8] * t12 + a.c[8] * t4 - a.c[9] * t15 + a.c[9] * t7) *
+          inv,
+      (a.c[0] * t13 - a.c[1] * t11 + a.c[2] * t8 - a.c[3] * t15 + a.c[4] * t12 - a.c[5] * t10 -
+       a.c[6] * t1 + a.c[7] * t5 - a.c[8] * t3 + a.c[9] * t0) *
+          inv,
+      (-a.c[3] * t11 + a.c[4] * t8 + a.c[5] * t14 + a.c[6] * t13 - a.c[7] * t1 + a.c[7] * t9 +
+       a.c[8] * t15 - a.c[8] * t7 - a.c[9] * t12 + a.c[9] * t4) *
+          inv,
+      (-a.c[3] * t13 - a.c[4] * t14 + a.c[5] * t8 - a.c[6] * t11 - a.c[7] * t15 + a.c[7] * t7 -
+       a.c[8] * t1 + a.c[8] * t9 + a.c[9] * t10 - a.c[9] * t2) *
+          inv);
+}
+
+// apply(circle, line) -> circle: 180 mul, 140 add, 1 div
+template <class T>
+basic_circle<T> apply(const basic_circle<T>& a, const basic_line<T>& b) {
+  const T t0 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] +
+               a.c[4] * b.c[4] + a.c[5] * b.c[5];
+  const T t1 = -a.c[0] * b.c[4] - a.c[1] * b.c[5];
+  const T t2 = a.c[0] * b.c[3] - a.c[2] * b.c[5];
+  const T t3 = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[4] - a.c[4] * b.c[3];
+  const T t4 = a.c[1] * b.c[3] + a.c[2] * b.c[4];
+  const T t5 = -a.c[0] * b.c[2] + a.c[2] * b.c[0] + a.c[3] * b.c[5] - a.c[5] * b.c[3];
+  const T t6 = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[4] * b.c[5] - a.c[5] * b.c[4];
+  const T t7 = -a.c[0] * b.c[5] + a.c[1] * b.c[4] - a.c[2] * b.c[3];
+  const T t8 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t9 =
+      a.c[4] * b.c[0] + a.c[5] * b.c[1] - a.c[6] * b.c[2] - a.c[7] * b.c[4] - a.c[8] * b.c[5];
+  const T t10 =
+      -a.c[3] * b.c[0] + a.c[5] * b.c[2] + a.c[6] * b.c[1] + a.c[7] * b.c[3] - a.c[9] * b.c[5];
+  const T t11 = -a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[6] * b.c[5];
+  const T t12 =
+      -a.c[3] * b.c[1] - a.c[4] * b.c[2] - a.c[6] * b.c[0] + a.c[8] * b.c[3] + a.c[9] * b.c[4];
+  const T t13 = a.c[0] * b.c[2] - a.c[2] * b.c[0] + a.c[6] * b.c[4];
+  const T t14 = -a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[6] * b.c[3];
+  const T t15 = -a.c[3] * b.c[2] + a.c[4] * b.c[1] - a.c[5] * b.c[0] - a.c[7] * b.c[5] +
+                a.c[8] * b.c[4] - a.c[9] * b.c[3];
+  const T inv = T(1) / (-T(2) * a.c[0] * a.c[7] - T(2) * a.c[1] * a.c[8] - T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  return basic_circle<T>((-a.c[0] * t0 + a.c[0] * t8 + a.c[1] * t14 - a.c[1] * t6 - a.c[2] * t13 +
+                          a.c[2] * t5 - a.c[3] * t2 + a.c[4] * t1 + a.c[5] * t7 - a.c[6] * t4) *
+                             inv,
+                         (-a.c[0] * t14 + a.c[0] * t6 - a.c[1] * t0 + a.c[1] * t8 + a.c[2] * t11 -
+                          a.c[2] * t3 - a.c[3] * t4 - a.c[4] * t7 + a.c[5] * t1 + a.c[6] * t2) *
+                             inv,
+                         (a.c[0] * t13 - a.c[0] * t5 - a.c[1] * t11 + a.c[1] * t3 - a.c[2] * t0 +
+                          a.c[2] * t8 + a.c[3] * t7 - a.c[4] * t4 + a.c[5] * t2 - a.c[6] * t1) *
+                             inv,
+                         (a.c[0] * t10 + a.c[1] * t12 + a.c[2] * t15 - a.c[3] * t0 - a.c[4] * t3 -
+                          a.c[5] * t5 - a.c[6] * t14 + a.c[7] * t2 + a.c[8] * t4 + a.c[9] * t7) *
+                             inv,
+                         (-a.c[0] * t9 - a.c[1] * t15 + a.c[2] * t12 + a.c[3] * t3 - a.c[4] * t0 -
+                          a.c[5] * t6 + a.c[6] * t13 - a.c[7] * t1 - a.c[8] * t7 + a.c[9] * t4) *
+                             inv,
+                         (a.c[0] * t15 - a.c[1] * t9 - a.c[2] * t10 + a.c[3] * t5 + a.c[4] * t6 -
+                          a.c[5] * t0 - a.c[6] * t11 + a.c[7] * t7 - a.c[8] * t1 - a.c[9] * t2) *
+                             inv,
+                         (a.c[0] * t12 - a.c[1] * t10 + a.c[2] * t9 + a.c[3] * t14 - a.c[4] * t13 +
+                          a.c[5] * t11 - a.c[6] * t0 - a.c[7] * t4 + a.c[8] * t2 - a.c[9] * t1) *
+                             inv,
+                         (-a.c[3] * t10 + a.c[4] * t9 + a.c[5] * t15 + a.c[6] * t12 - a.c[7] * t0 -
+                          a.c[7] * t8 - a.c[8] * t14 - a.c[8] * t6 + a.c[9] * t13 + a.c[9] * t5) *
+                             inv,
+                         (-a.c[3] * t12 - a.c[4] * t15 + a.c[5] * t9 - a.c[6] * t10 + a.c[7] * t14 +
+                          a.c[7] * t6 - a.c[8] * t0 - a.c[8] * t8 - a.c[9] * t11 - a.c[9] * t3) *
+                             inv,
+                         (a.c[3] * t15 - a.c[4] * t12 + a.c[5] * t10 + a.c[6] * t9 - a.c[7] * t13 -
+                          a.c[7] * t5 + a.c[8] * t11 + a.c[8] * t3 - a.c[9] * t0 - a.c[9] * t8) *
+                             inv);
+}
+
+// apply(circle, circle) -> circle: 220 mul, 180 add, 1 div
+template <class T>
+basic_circle<T> apply(const basic_circle<T>& a, const basic_circle<T>& b) {
+  const T t0 = a.c[0] * b.c[7] + a.c[1] * b.c[8] + a.c[2] * b.c[9] + a.c[3] * b.c[3] +
+               a.c[4] * b.c[4] + a.c[5] * b.c[5] - a.c[6] * b.c[6] + a.c[7] * b.c[0] +
+               a.c[8] * b.c[1] + a.c[9] * b.c[2];
+  const T t1 = -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[6] + a.c[4] * b.c[0] +
+               a.c[5] * b.c[1] + a.c[6] * b.c[2];
+  const T t2 = a.c[0] * b.c[3] + a.c[1] * b.c[6] - a.c[2] * b.c[5] - a.c[3] * b.c[0] +
+               a.c[5] * b.c[2] - a.c[6] * b.c[1];
+  const T t3 = a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[4] - a.c[4] * b.c[3] +
+               a.c[8] * b.c[2] - a.c[9] * b.c[1];
+  const T t4 = -a.c[0] * b.c[6] + a.c[1] * b.c[3] + a.c[2] * b.c[4] - a.c[3] * b.c[1] -
+               a.c[4] * b.c[2] + a.c[6] * b.c[0];
+  const T t5 = -a.c[0] * b.c[9] + a.c[2] * b.c[7] + a.c[3] * b.c[5] - a.c[5] * b.c[3] -
+               a.c[7] * b.c[2] + a.c[9] * b.c[0];
+  const T t6 = a.c[0] * b.c[8] - a.c[1] * b.c[7] + a.c[4] * b.c[5] - a.c[5] * b.c[4] +
+               a.c[7] * b.c[1] - a.c[8] * b.c[0];
+  const T t7 = -a.c[0] * b.c[5] + a.c[1] * b.c[4] - a.c[2] * b.c[3] - a.c[3] * b.c[2] +
+               a.c[4] * b.c[1] - a.c[5] * b.c[0];
+  const T t8 = -a.c[0] * b.c[7] - a.c[1] * b.c[8] - a.c[2] * b.c[9] + a.c[7] * b.c[0] +
+               a.c[8] * b.c[1] + a.c[9] * b.c[2];
+  const T t9 = a.c[4] * b.c[7] + a.c[5] * b.c[8] - a.c[6] * b.c[9] - a.c[7] * b.c[4] -
+               a.c[8] * b.c[5] + a.c[9] * b.c[6];
+  const T t10 = -a.c[3] * b.c[7] + a.c[5] * b.c[9] + a.c[6] * b.c[8] + a.c[7] * b.c[3] -
+                a.c[8] * b.c[6] - a.c[9] * b.c[5];
+  const T t11 = -a.c[1] * b.c[9] + a.c[2] * b.c[8] - a.c[5] * b.c[6] - a.c[6] * b.c[5] +
+                a.c[8] * b.c[2] - a.c[9] * b.c[1];
+  const T t12 = -a.c[3] * b.c[8] - a.c[4] * b.c[9] - a.c[6] * b.c[7] + a.c[7] * b.c[6] +
+                a.c[8] * b.c[3] + a.c[9] * b.c[4];
+  const T t13 = a.c[0] * b.c[9] - a.c[2] * b.c[7] + a.c[4] * b.c[6] + a.c[6] * b.c[4] -
+                a.c[7] * b.c[2] + a.c[9] * b.c[0];
+  const T t14 = -a.c[0] * b.c[8] + a.c[1] * b.c[7] - a.c[3] * b.c[6] - a.c[6] * b.c[3] +
+                a.c[7] * b.c[1] - a.c[8] * b.c[0];
+  const T t15 = -a.c[3] * b.c[9] + a.c[4] * b.c[8] - a.c[5] * b.c[7] - a.c[7] * b.c[5] +
+                a.c[8] * b.c[4] - a.c[9] * b.c[3];
+  const T inv = T(1) / (-T(2) * a.c[0] * a.c[7] - T(2) * a.c[1] * a.c[8] - T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  return basic_circle<T>((-a.c[0] * t0 + a.c[0] * t8 + a.c[1] * t14 - a.c[1] * t6 - a.c[2] * t13 +
+                          a.c[2] * t5 - a.c[3] * t2 + a.c[4] * t1 + a.c[5] * t7 - a.c[6] * t4) *
+                             inv,
+                         (-a.c[0] * t14 + a.c[0] * t6 - a.c[1] * t0 + a.c[1] * t8 + a.c[2] * t11 -
+                          a.c[2] * t3 - a.c[3] * t4 - a.c[4] * t7 + a.c[5] * t1 + a.c[6] * t2) *
+                             inv,
+                         (a.c[0] * t13 - a.c[0] * t5 - a.c[1] * t11 + a.c[1] * t3 - a.c[2] * t0 +
+                          a.c[2] * t8 + a.c[3] * t7 - a.c[4] * t4 + a.c[5] * t2 - a.c[6] * t1) *
+                             inv,
+                         (a.c[0] * t10 + a.c[1] * t12 + a.c[2] * t15 - a.c[3] * t0 - a.c[4] * t3 -
+                          a.c[5] * t5 - a.c[6] * t14 + a.c[7] * t2 + a.c[8] * t4 + a.c[9] * t7) *
+                             inv,
+                         (-a.c[0] * t9 - a.c[1] * t15 + a.c[2] * t12 + a.c[3] * t3 - a.c[4] * t0 -
+                          a.c[5] * t6 + a.c[6] * t13 - a.c[7] * t1 - a.c[8] * t7 + a.c[9] * t4) *
+                             inv,
+                         (a.c[0] * t15 - a.c[1] * t9 - a.c[2] * t10 + a.c[3] * t5 + a.c[4] * t6 -
+                          a.c[5] * t0 - a.c[6] * t11 + a.c[7] * t7 - a.c[8] * t1 - a.c[9] * t2) *
+                             inv,
+                         (a.c[0] * t12 - a.c[1] * t10 + a.c[2] * t9 + a.c[3] * t14 - a.c[4] * t13 +
+                          a.c[5] * t11 - a.c[6] * t0 - a.c[7] * t4 + a.c[8] * t2 - a.c[9] * t1) *
+                             inv,
+                         (-a.c[3] * t10 + a.c[4] * t9 + a.c[5] * t15 + a.c[6] * t12 - a.c[7] * t0 -
+                          a.c[7] * t8 - a.c[8] * t14 - a.c[8] * t6 + a.c[9] * t13 + a.c[9] * t5) *
+                             inv,
+                         (-a.c[3] * t12 - a.c[4] * t15 + a.c[5] * t9 - a.c[6] * t10 + a.c[7] * t14 +
+                          a.c[7] * t6 - a.c[8] * t0 - a.c[8] * t8 - a.c[9] * t11 - a.c[9] * t3) *
+                             inv,
+                         (a.c[3] * t15 - a.c[4] * t12 + a.c[5] * t10 + a.c[6] * t9 - a.c[7] * t13 -
+                          a.c[7] * t5 + a.c[8] * t11 + a.c[8] * t3 - a.c[9] * t0 - a.c[9] * t8) *
+                             inv);
+}
+
+// apply(circle, sphere) -> sphere: 115 mul, 86 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> apply(const basic_circle<T>& a, const basic_sphere<T>& b) {
+  const T t0 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3] + a.c[6] * b.c[0];
+  const T t1 = -a.c[2] * b.c[4] + a.c[4] * b.c[1] + a.c[5] * b.c[2] + a.c[9] * b.c[0];
+  const T t2 = a.c[1] * b.c[4] - a.c[3] * b.c[1] + a.c[5] * b.c[3] - a.c[8] * b.c[0];
+  const T t3 = -a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[5] * b.c[0];
+  const T t4 = -a.c[0] * b.c[4] - a.c[3] * b.c[2] - a.c[4] * b.c[3] + a.c[7] * b.c[0];
+  const T t5 = a.c[0] * b.c[3] - a.c[2] * b.c[1] + a.c[4] * b.c[0];
+  const T t6 = -a.c[0] * b.c[2] + a.c[1] * b.c[1] - a.c[3] * b.c[0];
+  const T t7 = -a.c[3] * b.c[3] + a.c[4] * b.c[2] - a.c[5] * b.c[1];
+  const T t8 = -a.c[6] * b.c[4] + a.c[7] * b.c[1] + a.c[8] * b.c[2] + a.c[9] * b.c[3];
+  const T t9 = -a.c[2] * b.c[4] + a.c[6] * b.c[3] - a.c[9] * b.c[0];
+  const T t10 = a.c[1] * b.c[4] - a.c[6] * b.c[2] + a.c[8] * b.c[0];
+  const T t11 = -a.c[5] * b.c[4] + a.c[8] * b.c[3] - a.c[9] * b.c[2];
+  const T t12 = -a.c[0] * b.c[4] + a.c[6] * b.c[1] - a.c[7] * b.c[0];
+  const T t13 = a.c[4] * b.c[4] - a.c[7] * b.c[3] + a.c[9] * b.c[1];
+  const T t14 = -a.c[3] * b.c[4] + a.c[7] * b.c[2] - a.c[8] * b.c[1];
+  const T inv = T(1) / (-T(2) * a.c[0] * a.c[7] - T(2) * a.c[1] * a.c[8] - T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  return basic_sphere<T>((a.c[0] * t12 + a.c[0] * t4 - a.c[1] * t10 - a.c[1] * t2 + a.c[2] * t1 +
+                          a.c[2] * t9 + a.c[3] * t6 - a.c[4] * t5 + a.c[5] * t3 - a.c[6] * t0) *
+                             inv,
+                         (a.c[0] * t8 + a.c[1] * t14 - a.c[2] * t13 - a.c[3] * t2 + a.c[4] * t1 +
+                          a.c[5] * t7 + a.c[6] * t12 - a.c[7] * t0 - a.c[8] * t6 + a.c[9] * t5) *
+                             inv,
+                         (-a.c[0] * t14 + a.c[1] * t8 + a.c[2] * t11 - a.c[3] * t4 - a.c[4] * t7 +
+                          a.c[5] * t1 - a.c[6] * t10 + a.c[7] * t6 - a.c[8] * t0 - a.c[9] * t3) *
+                             inv,
+                         (a.c[0] * t13 - a.c[1] * t11 + a.c[2] * t8 + a.c[3] * t7 - a.c[4] * t4 +
+                          a.c[5] * t2 + a.c[6] * t9 - a.c[7] * t5 + a.c[8] * t3 - a.c[9] * t0) *
+                             inv,
+                         (a.c[3] * t14 - a.c[4] * t13 + a.c[5] * t11 + a.c[6] * t8 + a.c[7] * t12 -
+                          a.c[7] * t4 - a.c[8] * t10 + a.c[8] * t2 - a.c[9] * t1 + a.c[9] * t9) *
+                             inv);
+}
+
+// apply(circle, plane) -> sphere: 105 mul, 76 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> apply(const basic_circle<T>& a, const basic_plane<T>& b) {
+  const T t0 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  const T t1 = -a.c[2] * b.c[0] + a.c[4] * b.c[1] + a.c[5] * b.c[2];
+  const T t2 = a.c[1] * b.c[0] - a.c[3] * b.c[1] + a.c[5] * b.c[3];
+  const T t3 = -a.c[1] * b.c[3] + a.c[2] * b.c[2];
+  const T t4 = -a.c[0] * b.c[0] - a.c[3] * b.c[2] - a.c[4] * b.c[3];
+  const T t5 = a.c[0] * b.c[3] - a.c[2] * b.c[1];
+  const T t6 = -a.c[0] * b.c[2] + a.c[1] * b.c[1];
+  const T t7 = -a.c[3] * b.c[3] + a.c[4] * b.c[2] - a.c[5] * b.c[1];
+  const T t8 = -a.c[6] * b.c[0] + a.c[7] * b.c[1] + a.c[8] * b.c[2] + a.c[9] * b.c[3];
+  const T t9 = -a.c[2] * b.c[0] + a.c[6] * b.c[3];
+  const T t10 = a.c[1] * b.c[0] - a.c[6] * b.c[2];
+  const T t11 = -a.c[5] * b.c[0] + a.c[8] * b.c[3] - a.c[9] * b.c[2];
+  const T t12 = -a.c[0] * b.c[0] + a.c[6] * b.c[1];
+  const T t13 = a.c[4] * b.c[0] - a.c[7] * b.c[3] + a.c[9] * b.c[1];
+  const T t14 = -a.c[3] * b.c[0] + a.c[7] * b.c[2] - a.c[8] * b.c[1];
+  const T inv = T(1) / (-T(2) * a.c[0] * a.c[7] - T(2) * a.c[1] * a.c[8] - T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  return basic_sphere<T>((a.c[0] * t12 + a.c[0] * t4 - a.c[1] * t10 - a.c[1] * t2 + a.c[2] * t1 +
+                          a.c[2] * t9 + a.c[3] * t6 - a.c[4] * t5 + a.c[5] * t3 - a.c[6] * t0) *
+                             inv,
+                         (a.c[0] * t8 + a.c[1] * t14 - a.c[2] * t13 - a.c[3] * t2 + a.c[4] * t1 +
+                          a.c[5] * t7 + a.c[6] * t12 - a.c[7] * t0 - a.c[8] * t6 + a.c[9] * t5) *
+                             inv,
+                         (-a.c[0] * t14 + a.c[1] * t8 + a.c[2] * t11 - a.c[3] * t4 - a.c[4] * t7 +
+                          a.c[5] * t1 - a.c[6] * t10 + a.c[7] * t6 - a.c[8] * t0 - a.c[9] * t3) *
+                             inv,
+                         (a.c[0] * t13 - a.c[1] * t11 + a.c[2] * t8 + a.c[3] * t7 - a.c[4] * t4 +
+                          a.c[5] * t2 + a.c[6] * t9 - a.c[7] * t5 + a.c[8] * t3 - a.c[9] * t0) *
+                             inv,
+                         (a.c[3] * t14 - a.c[4] * t13 + a.c[5] * t11 + a.c[6] * t8 + a.c[7] * t12 -
+                          a.c[7] * t4 - a.c[8] * t10 + a.c[8] * t2 - a.c[9] * t1 + a.c[9] * t9) *
+                             inv);
+}
+
+// apply(circle, pseudoscalar) -> pseudoscalar: 31 mul, 15 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> apply(const basic_circle<T>& a,
+                                                 const basic_pseudoscalar<T>& b) {
+  const T t0 = a.c[2] * b.c[0];
+  const T t1 = -a.c[1] * b.c[0];
+  const T t2 = a.c[5] * b.c[0];
+  const T t3 = a.c[0] * b.c[0];
+  const T t4 = -a.c[4] * b.c[0];
+  const T t5 = a.c[3] * b.c[0];
+  const T t6 = a.c[6] * b.c[0];
+  const T t7 = a.c[9] * b.c[0];
+  const T t8 = -a.c[8] * b.c[0];
+  const T t9 = a.c[7] * b.c[0];
+  const T inv = T(1) / (-T(2) * a.c[0] * a.c[7] - T(2) * a.c[1] * a.c[8] - T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  return basic_pseudoscalar<T>((-a.c[0] * t9 + a.c[1] * t8 - a.c[2] * t7 - a.c[3] * t5 +
+                                a.c[4] * t4 - a.c[5] * t2 + a.c[6] * t6 - a.c[7] * t3 +
+                                a.c[8] * t1 - a.c[9] * t0) *
+                               inv);
+}
+
+// apply(circle, rotor) -> mv: 171 mul, 129 add, 1 div
+template <class T>
+basic_mv<T> apply(const basic_circle<T>& a, const basic_rotor<T>& b) {
+  const T t0 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  const T t1 = -a.c[6] * b.c[3];
+  const T t2 = a.c[6] * b.c[2];
+  const T t3 = a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2];
+  const T t4 = -a.c[6] * b.c[1];
+  const T t5 = a.c[0] * b.c[3] + a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t6 = -a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t7 = a.c[6] * b.c[0];
+  const T t8 = -a.c[7] * b.c[1] - a.c[8] * b.c[2] - a.c[9] * b.c[3];
+  const T t9 = a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  const T t10 = a.c[3] * b.c[1] + a.c[4] * b.c[0] - a.c[5] * b.c[3];
+  const T t11 = a.c[7] * b.c[0] - a.c[8] * b.c[3] + a.c[9] * b.c[2];
+  const T t12 = a.c[3] * b.c[2] + a.c[4] * b.c[3] + a.c[5] * b.c[0];
+  const T t13 = a.c[7] * b.c[3] + a.c[8] * b.c[0] - a.c[9] * b.c[1];
+  const T t14 = -a.c[7] * b.c[2] + a.c[8] * b.c[1] + a.c[9] * b.c[0];
+  const T t15 = a.c[3] * b.c[3] - a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  const T inv = T(1) / (-T(2) * a.c[0] * a.c[7] - T(2) * a.c[1] * a.c[8] - T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  basic_mv<T> r;
+  r.c[0] = (-a.c[0] * t11 - a.c[1] * t13 - a.c[2] * t14 - a.c[3] * t9 - a.c[4] * t10 -
+            a.c[5] * t12 + a.c[6] * t7 - a.c[7] * t3 - a.c[8] * t5 - a.c[9] * t6) *
+           inv;
+  r.c[6] = (-a.c[0] * t10 - a.c[0] * t2 - a.c[1] * t12 - a.c[1] * t4 - a.c[2] * t15 - a.c[2] * t7 +
+            a.c[3] * t0 + a.c[4] * t3 + a.c[5] * t5 + a.c[6] * t6) *
+           inv;
+  r.c[7] = (a.c[0] * t1 + a.c[0] * t9 + a.c[1] * t15 + a.c[1] * t7 - a.c[2] * t12 - a.c[2] * t4 -
+            a.c[3] * t3 + a.c[4] * t0 + a.c[5] * t6 - a.c[6] * t5) *
+           inv;
+  r.c[8] = (-a.c[0] * t15 - a.c[0] * t7 + a.c[1] * t1 + a.c[1] * t9 + a.c[2] * t10 + a.c[2] * t2 -
+            a.c[3] * t5 - a.c[4] * t6 + a.c[5] * t0 + a.c[6] * t3) *
+           inv;
+  r.c[9] = (-a.c[0] * t11 - a.c[1] * t13 - a.c[2] * t14 + a.c[3] * t1 + a.c[4] * t2 + a.c[5] * t4 -
+            a.c[6] * t15 + a.c[7] * t3 + a.c[8] * t5 + a.c[9] * t6) *
+           inv;
+  r.c[10] = (a.c[0] * t8 + a.c[1] * t14 - a.c[2] * t13 + a.c[3] * t10 - a.c[4] * t9 - a.c[5] * t15 -
+             a.c[6] * t4 + a.c[7] * t0 + a.c[8] * t6 - a.c[9] * t5) *
+            inv;
+  r.c[11] = (-a.c[0] * t14 + a.c[1] * t8 + a.c[2] * t11 + a.c[3] * t12 + a.c[4] * t15 -
+             a.c[5] * t9 + a.c[6] * t2 - a.c[7] * t6 + a.c[8] * t0 + a.c[9] * t3) *
+            inv;
+  r.c[12] = (a.c[3] * t8 + a.c[4] * t11 + a.c[5] * t13 - a.c[6] * t14 - a.c[7] * t10 + a.c[7] * t2 -
+             a.c[8] * t12 + a.c[8] * t4 - a.c[9] * t15 + a.c[9] * t7) *
+            inv;
+  r.c[13] = (a.c[0] * t13 - a.c[1] * t11 + a.c[2] * t8 - a.c[3] * t15 + a.c[4] * t12 -
+             a.c[5] * t10 - a.c[6] * t1 + a.c[7] * t5 - a.c[8] * t3 + a.c[9] * t0) *
+            inv;
+  r.c[14] = (-a.c[3] * t11 + a.c[4] * t8 + a.c[5] * t14 + a.c[6] * t13 - a.c[7] * t1 + a.c[7] * t9 +
+             a.c[8] * t15 - a.c[8] * t7 - a.c[9] * t12 + a.c[9] * t4) *
+            inv;
+  r.c[15] = (-a.c[3] * t13 - a.c[4] * t14 + a.c[5] * t8 - a.c[6] * t11 - a.c[7] * t15 +
+             a.c[7] * t7 - a.c[8] * t1 + a.c[8] * t9 + a.c[9] * t10 - a.c[9] * t2) *
+            inv;
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// apply(circle, translator) -> mv: 165 mul, 124 add, 1 div
+template <class T>
+basic_mv<T> apply(const basic_circle<T>& a, const basic_translator<T>& b) {
+  const T t0 = a.c[0] * b.c[2] + a.c[1] * b.c[3];
+  const T t1 = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  const T t2 = a.c[0] * b.c[0];
+  const T t3 = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t4 = a.c[1] * b.c[0];
+  const T t5 = a.c[2] * b.c[0];
+  const T t6 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[6] * b.c[0];
+  const T t7 = -a.c[3] * b.c[1] - a.c[4] * b.c[2] - a.c[5] * b.c[3];
+  const T t8 = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[3] * b.c[0];
+  const T t9 = -a.c[0] * b.c[1] + a.c[2] * b.c[3] + a.c[4] * b.c[0];
+  const T t10 = -a.c[3] * b.c[2] + a.c[4] * b.c[1] + a.c[6] * b.c[3] + a.c[7] * b.c[0];
+  const T t11 = -a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[5] * b.c[0];
+  const T t12 = -a.c[3] * b.c[3] + a.c[5] * b.c[1] - a.c[6] * b.c[2] + a.c[8] * b.c[0];
+  const T t13 = -a.c[4] * b.c[3] + a.c[5] * b.c[2] + a.c[6] * b.c[1] + a.c[9] * b.c[0];
+  const T t14 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T inv = T(1) / (-T(2) * a.c[0] * a.c[7] - T(2) * a.c[1] * a.c[8] - T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  basic_mv<T> r;
+  r.c[0] = (-a.c[0] * t10 - a.c[1] * t12 - a.c[2] * t13 - a.c[3] * t8 - a.c[4] * t9 - a.c[5] * t11 +
+            a.c[6] * t6 - a.c[7] * t2 - a.c[8] * t4 - a.c[9] * t5) *
+           inv;
+  r.c[6] = (-a.c[0] * t1 - a.c[0] * t9 - a.c[1] * t11 - a.c[1] * t3 - a.c[2] * t14 - a.c[2] * t6 +
+            a.c[4] * t2 + a.c[5] * t4 + a.c[6] * t5) *
+           inv;
+  r.c[7] = (a.c[0] * t0 + a.c[0] * t8 + a.c[1] * t14 + a.c[1] * t6 - a.c[2] * t11 - a.c[2] * t3 -
+            a.c[3] * t2 + a.c[5] * t5 - a.c[6] * t4) *
+           inv;
+  r.c[8] = (-a.c[0] * t14 - a.c[0] * t6 + a.c[1] * t0 + a.c[1] * t8 + a.c[2] * t1 + a.c[2] * t9 -
+            a.c[3] * t4 - a.c[4] * t5 + a.c[6] * t2) *
+           inv;
+  r.c[9] = (-a.c[0] * t10 - a.c[1] * t12 - a.c[2] * t13 + a.c[3] * t0 + a.c[4] * t1 + a.c[5] * t3 -
+            a.c[6] * t14 + a.c[7] * t2 + a.c[8] * t4 + a.c[9] * t5) *
+           inv;
+  r.c[10] = (a.c[0] * t7 + a.c[1] * t13 - a.c[2] * t12 + a.c[3] * t9 - a.c[4] * t8 - a.c[5] * t14 -
+             a.c[6] * t3 + a.c[8] * t5 - a.c[9] * t4) *
+            inv;
+  r.c[11] = (-a.c[0] * t13 + a.c[1] * t7 + a.c[2] * t10 + a.c[3] * t11 + a.c[4] * t14 -
+             a.c[5] * t8 + a.c[6] * t1 - a.c[7] * t5 + a.c[9] * t2) *
+            inv;
+  r.c[12] = (a.c[3] * t7 + a.c[4] * t10 + a.c[5] * t12 - a.c[6] * t13 + a.c[7] * t1 - a.c[7] * t9 -
+             a.c[8] * t11 + a.c[8] * t3 - a.c[9] * t14 + a.c[9] * t6) *
+            inv;
+  r.c[13] = (a.c[0] * t12 - a.c[1] * t10 + a.c[2] * t7 - a.c[3] * t14 + a.c[4] * t11 - a.c[5] * t9 -
+             a.c[6] * t0 + a.c[7] * t4 - a.c[8] * t2) *
+            inv;
+  r.c[14] = (-a.c[3] * t10 + a.c[4] * t7 + a.c[5] * t13 + a.c[6] * t12 - a.c[7] * t0 + a.c[7] * t8 +
+             a.c[8] * t14 - a.c[8] * t6 - a.c[9] * t11 + a.c[9] * t3) *
+            inv;
+  r.c[15] = (-a.c[3] * t12 - a.c[4] * t13 + a.c[5] * t7 - a.c[6] * t10 - a.c[7] * t14 +
+             a.c[7] * t6 - a.c[8] * t0 + a.c[8] * t8 - a.c[9] * t1 + a.c[9] * t9) *
+            inv;
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// apply(circle, motor) -> mv: 266 mul, 214 add, 1 div
+template <class T>
+basic_mv<T> apply(const basic_circle<T>& a, const basic_motor<T>& b) {
+  const T t0 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  const T t1 = a.c[0] * b.c[5] + a.c[1] * b.c[6] - a.c[2] * b.c[7] - a.c[6] * b.c[3];
+  const T t2 = -a.c[0] * b.c[4] + a.c[1] * b.c[7] + a.c[2] * b.c[6] + a.c[6] * b.c[2];
+  const T t3 = a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2];
+  const T t4 = -a.c[0] * b.c[7] - a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[6] * b.c[1];
+  const T t5 = a.c[0] * b.c[3] + a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t6 = -a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t7 = a.c[0] * b.c[6] - a.c[1] * b.c[5] + a.c[2] * b.c[4] + a.c[6] * b.c[0];
+  const T t8 = -a.c[3] * b.c[4] - a.c[4] * b.c[5] - a.c[5] * b.c[6] - a.c[6] * b.c[7] -
+               a.c[7] * b.c[1] - a.c[8] * b.c[2] - a.c[9] * b.c[3];
+  const T t9 = a.c[0] * b.c[5] + a.c[1] * b.c[6] - a.c[2] * b.c[7] + a.c[3] * b.c[0] -
+               a.c[4] * b.c[1] - a.c[5] * b.c[2];
+  const T t10 = -a.c[0] * b.c[4] + a.c[1] * b.c[7] + a.c[2] * b.c[6] + a.c[3] * b.c[1] +
+                a.c[4] * b.c[0] - a.c[5] * b.c[3];
+  const T t11 = -a.c[3] * b.c[5] + a.c[4] * b.c[4] - a.c[5] * b.c[7] + a.c[6] * b.c[6] +
+                a.c[7] * b.c[0] - a.c[8] * b.c[3] + a.c[9] * b.c[2];
+  const T t12 = -a.c[0] * b.c[7] - a.c[1] * b.c[4] - a.c[2] * b.c[5] + a.c[3] * b.c[2] +
+                a.c[4] * b.c[3] + a.c[5] * b.c[0];
+  const T t13 = -a.c[3] * b.c[6] + a.c[4] * b.c[7] + a.c[5] * b.c[4] - a.c[6] * b.c[5] +
+                a.c[7] * b.c[3] + a.c[8] * b.c[0] - a.c[9] * b.c[1];
+  const T t14 = -a.c[3] * b.c[7] - a.c[4] * b.c[6] + a.c[5] * b.c[5] + a.c[6] * b.c[4] -
+                a.c[7] * b.c[2] + a.c[8] * b.c[1] + a.c[9] * b.c[0];
+  const T t15 = a.c[0] * b.c[6] - a.c[1] * b.c[5] + a.c[2] * b.c[4] + a.c[3] * b.c[3] -
+                a.c[4] * b.c[2] + a.c[5] * b.c[1];
+  const T inv = T(1) / (-T(2) * a.c[0] * a.c[7] - T(2) * a.c[1] * a.c[8] - T(2) * a.c[2] * a.c[9] -
+                        a.c[3] * a.c[3] - a.c[4] * a.c[4] - a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  basic_mv<T> r;
+  r.c[0] = (-a.c[0] * t11 - a.c[1] * t13 - a.c[2] * t14 - a.c[3] * t9 - a.c[4] * t10 -
+            a.c[5] * t12 + a.c[6] * t7 - a.c[7] * t3 - a.c[8] * t5 - a.c[9] * t6) *
+           inv;
+  r.c[6] = (-a.c[0] * t10 - a.c[0] * t2 - a.c[1] * t12 - a.c[1] * t4 - a.c[2] * t15 - a.c[2] * t7 +
+            a.c[3] * t0 + a.c[4] * t3 + a.c[5] * t5 + a.c[6] * t6) *
+           inv;
+  r.c[7] = (a.c[0] * t1 + a.c[0] * t9 + a.c[1] * t15 + a.c[1] * t7 - a.c[2] * t12 - a.c[2] * t4 -
+            a.c[3] * t3 + a.c[4] * t0 + a.c[5] * t6 - a.c[6] * t5) *
+           inv;
+  r.c[8] = (-a.c[0] * t15 - a.c[0] * t7 + a.c[1] * t1 + a.c[1] * t9 + a.c[2] * t10 + a.c[2] * t2 -
+            a.c[3] * t5 - a.c[4] * t6 + a.c[5] * t0 + a.c[6] * t3) *
+           inv;
+  r.c[9] = (-a.c[0] * t11 - a.c[1] * t13 - a.c[2] * t14 + a.c[3] * t1 + a.c[4] * t2 + a.c[5] * t4 -
+            a.c[6] * t15 + a.c[7] * t3 + a.c[8] * t5 + a.c[9] * t6) *
+           inv;
+  r.c[10] = (a.c[0] * t8 + a.c[1] * t14 - a.c[2] * t13 + a.c[3] * t10 - a.c[4] * t9 - a.c[5] * t15 -
+             a.c[6] * t4 + a.c[7] * t0 + a.c[8] * t6 - a.c[9] * t5) *
+            inv;
+  r.c[11] = (-a.c[0] * t14 + a.c[1] * t8 + a.c[2] * t11 + a.c[3] * t12 + a.c[4] * t15 -
+             a.c[5] * t9 + a.c[6] * t2 - a.c[7] * t6 + a.c[8] * t0 + a.c[9] * t3) *
+            inv;
+  r.c[12] = (a.c[3] * t8 + a.c[4] * t11 + a.c[5] * t13 - a.c[6] * t14 - a.c[7] * t10 + a.c[7] * t2 -
+             a.c[8] * t12 + a.c[8] * t4 - a.c[9] * t15 + a.c[9] * t7) *
+            inv;
+  r.c[13] = (a.c[0] * t13 - a.c[1] * t11 + a.c[2] * t8 - a.c[3] * t15 + a.c[4] * t12 -
+             a.c[5] * t10 - a.c[6] * t1 + a.c[7] * t5 - a.c[8] * t3 + a.c[9] * t0) *
+            inv;
+  r.c[14] = (-a.c[3] * t11 + a.c[4] * t8 + a.c[5] * t14 + a.c[6] * t13 - a.c[7] * t1 + a.c[7] * t9 +
+             a.c[8] * t15 - a.c[8] * t7 - a.c[9] * t12 + a.c[9] * t4) *
+            inv;
+  r.c[15] = (-a.c[3] * t13 - a.c[4] * t14 + a.c[5] * t8 - a.c[6] * t11 - a.c[7] * t15 +
+             a.c[7] * t7 - a.c[8] * t1 + a.c[8] * t9 + a.c[9] * t10 - a.c[9] * t2) *
+            inv;
+  r.c[26] = (a.c[0] * t12 + a.c[0] * t4 - a.c[1] * t10 - a.c[1] * t2 + a.c[2] * t1 + a.c[2] * t9 +
+             a.c[3] * t6 - a.c[4] * t5 + a.c[5] * t3 - a.c[6] * t0) *
+            inv;
+  r.c[27] = (a.c[0] * t8 + a.c[1] * t14 - a.c[2] * t13 - a.c[3] * t2 + a.c[4] * t1 + a.c[5] * t7 +
+             a.c[6] * t12 - a.c[7] * t0 - a.c[8] * t6 + a.c[9] * t5) *
+            inv;
+  r.c[28] = (-a.c[0] * t14 + a.c[1] * t8 + a.c[2] * t11 - a.c[3] * t4 - a.c[4] * t7 + a.c[5] * t1 -
+             a.c[6] * t10 + a.c[7] * t6 - a.c[8] * t0 - a.c[9] * t3) *
+            inv;
+  r.c[29] = (a.c[0] * t13 - a.c[1] * t11 + a.c[2] * t8 + a.c[3] * t7 - a.c[4] * t4 + a.c[5] * t2 +
+             a.c[6] * t9 - a.c[7] * t5 + a.c[8] * t3 - a.c[9] * t0) *
+            inv;
+  r.c[30] = (a.c[3] * t14 - a.c[4] * t13 + a.c[5] * t11 + a.c[6] * t8 + a.c[7] * t12 - a.c[7] * t4 -
+             a.c[8] * t10 + a.c[8] * t2 - a.c[9] * t1 + a.c[9] * t9) *
+            inv;
+  r.bits = 0x7c00ffc1u;
+  return r;
+}
+
+// apply(sphere, normalized_point) -> dual_sphere: 55 mul, 37 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_sphere<T>& a,
+                                                const basic_normalized_point<T>& b) {
+  const T t0 = -a.c[1] + a.c[0] * b.c[2];
+  const T t1 = -a.c[2] - a.c[0] * b.c[1];
+  const T t2 = -a.c[3] + a.c[0] * b.c[0];
+  const T t3 = -a.c[4] + a.c[0] * b.c[3];
+  const T t4 = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t5 = a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  const T t6 = a.c[1] * b.c[3] - a.c[4] * b.c[2];
+  const T t7 = a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  const T t8 = a.c[2] * b.c[3] + a.c[4] * b.c[1];
+  const T t9 = a.c[3] * b.c[3] - a.c[4] * b.c[0];
+  const T t10 = a.c[4] + a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  const T inv =
+      T(1) / (T(2) * a.c[0] * a.c[4] - a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_dual_sphere<T>(
+      (a.c[0] * t10 + a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t1 - a.c[3] * t2) * inv,
+      (a.c[0] * t9 + a.c[1] * t5 + a.c[2] * t7 + a.c[3] * t10 - a.c[4] * t2) * inv,
+      (-a.c[0] * t8 - a.c[1] * t4 - a.c[2] * t10 + a.c[3] * t7 + a.c[4] * t1) * inv,
+      (a.c[0] * t6 + a.c[1] * t10 - a.c[2] * t4 - a.c[3] * t5 - a.c[4] * t0) * inv,
+      (a.c[1] * t6 + a.c[2] * t8 + a.c[3] * t9 + a.c[4] * t10 - a.c[4] * t3) * inv);
+}
+
+// apply(sphere, dual_sphere) -> dual_sphere: 60 mul, 37 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_sphere<T>& a,
+                                                const basic_dual_sphere<T>& b) {
+  const T t0 = a.c[0] * b.c[3] - a.c[1] * b.c[0];
+  const T t1 = -a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t2 = a.c[0] * b.c[1] - a.c[3] * b.c[0];
+  const T t3 = a.c[0] * b.c[4] - a.c[4] * b.c[0];
+  const T t4 = -a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  const T t5 = a.c[1] * b.c[1] - a.c[3] * b.c[3];
+  const T t6 = a.c[1] * b.c[4] - a.c[4] * b.c[3];
+  const T t7 = a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  const T t8 = a.c[2] * b.c[4] + a.c[4] * b.c[2];
+  const T t9 = a.c[3] * b.c[4] - a.c[4] * b.c[1];
+  const T t10 =
+      a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  const T inv =
+      T(1) / (T(2) * a.c[0] * a.c[4] - a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_dual_sphere<T>(
+      (a.c[0] * t10 + a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t1 - a.c[3] * t2) * inv,
+      (a.c[0] * t9 + a.c[1] * t5 + a.c[2] * t7 + a.c[3] * t10 - a.c[4] * t2) * inv,
+      (-a.c[0] * t8 - a.c[1] * t4 - a.c[2] * t10 + a.c[3] * t7 + a.c[4] * t1) * inv,
+      (a.c[0] * t6 + a.c[1] * t10 - a.c[2] * t4 - a.c[3] * t5 - a.c[4] * t0) * inv,
+      (a.c[1] * t6 + a.c[2] * t8 + a.c[3] * t9 + a.c[4] * t10 - a.c[4] * t3) * inv);
+}
+
+// apply(sphere, dual_plane) -> dual_sphere: 55 mul, 32 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_sphere<T>& a,
+                                                const basic_dual_plane<T>& b) {
+  const T t0 = a.c[0] * b.c[2];
+  const T t1 = -a.c[0] * b.c[1];
+  const T t2 = a.c[0] * b.c[0];
+  const T t3 = a.c[0] * b.c[3];
+  const T t4 = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t5 = a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  const T t6 = a.c[1] * b.c[3] - a.c[4] * b.c[2];
+  const T t7 = a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  const T t8 = a.c[2] * b.c[3] + a.c[4] * b.c[1];
+  const T t9 = a.c[3] * b.c[3] - a.c[4] * b.c[0];
+  const T t10 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  const T inv =
+      T(1) / (T(2) * a.c[0] * a.c[4] - a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_dual_sphere<T>(
+      (a.c[0] * t10 + a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t1 - a.c[3] * t2) * inv,
+      (a.c[0] * t9 + a.c[1] * t5 + a.c[2] * t7 + a.c[3] * t10 - a.c[4] * t2) * inv,
+      (-a.c[0] * t8 - a.c[1] * t4 - a.c[2] * t10 + a.c[3] * t7 + a.c[4] * t1) * inv,
+      (a.c[0] * t6 + a.c[1] * t10 - a.c[2] * t4 - a.c[3] * t5 - a.c[4] * t0) * inv,
+      (a.c[1] * t6 + a.c[2] * t8 + a.c[3] * t9 + a.c[4] * t10 - a.c[4] * t3) * inv);
+}
+
+// apply(sphere, euclidean_vector) -> dual_sphere: 48 mul, 26 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_sphere<T>& a,
+                                                const basic_euclidean_vector<T>& b) {
+  const T t0 = a.c[0] * b.c[2];
+  const T t1 = -a.c[0] * b.c[1];
+  const T t2 = a.c[0] * b.c[0];
+  const T t3 = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t4 = a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  const T t5 = -a.c[4] * b.c[2];
+  const T t6 = a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  const T t7 = a.c[4] * b.c[1];
+  const T t8 = -a.c[4] * b.c[0];
+  const T t9 = -a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  const T inv =
+      T(1) / (T(2) * a.c[0] * a.c[4] - a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_dual_sphere<T>(
+      (a.c[0] * t9 - a.c[1] * t0 - a.c[2] * t1 - a.c[3] * t2) * inv,
+      (a.c[0] * t8 + a.c[1] * t4 + a.c[2] * t6 + a.c[3] * t9 - a.c[4] * t2) * inv,
+      (-a.c[0] * t7 - a.c[1] * t3 - a.c[2] * t9 + a.c[3] * t6 + a.c[4] * t1) * inv,
+      (a.c[0] * t5 + a.c[1] * t9 - a.c[2] * t3 - a.c[3] * t4 - a.c[4] * t0) * inv,
+      (a.c[1] * t5 + a.c[2] * t7 + a.c[3] * t8 + a.c[4] * t9) * inv);
+}
+
+// apply(sphere, flat_point) -> point_pair: 73 mul, 40 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_sphere<T>& a,
+                                               const basic_flat_point<T>& b) {
+  const T t0 = -a.c[0] * b.c[2] + a.c[1] * b.c[3];
+  const T t1 = a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  const T t2 = -a.c[0] * b.c[0] + a.c[3] * b.c[3];
+  const T t3 = a.c[0] * b.c[3];
+  const T t4 = a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t5 = -a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  const T t6 = a.c[0] * b.c[2];
+  const T t7 = -a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t8 = -a.c[0] * b.c[1];
+  const T t9 = a.c[0] * b.c[0];
+  const T t10 = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0] - a.c[4] * b.c[3];
+  const T inv =
+      T(1) / (T(2) * a.c[0] * a.c[4] - a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_point_pair<T>(
+      (-a.c[0] * t2 + a.c[0] * t9 - a.c[3] * t3) * inv,
+      (a.c[0] * t1 - a.c[0] * t8 + a.c[2] * t3) * inv,
+      (-a.c[0] * t0 + a.c[0] * t6 - a.c[1] * t3) * inv,
+      (a.c[0] * t10 - a.c[1] * t0 - a.c[2] * t1 - a.c[3] * t2 - a.c[4] * t3) * inv,
+      (-a.c[0] * t7 + a.c[2] * t9 - a.c[3] * t8) * inv,
+      (a.c[0] * t5 - a.c[1] * t9 + a.c[3] * t6) * inv,
+      (a.c[1] * t5 + a.c[2] * t7 + a.c[3] * t10 - a.c[4] * t2 - a.c[4] * t9) * inv,
+      (-a.c[0] * t4 + a.c[1] * t8 - a.c[2] * t6) * inv,
+      (-a.c[1] * t4 - a.c[2] * t10 + a.c[3] * t7 + a.c[4] * t1 + a.c[4] * t8) * inv,
+      (a.c[1] * t10 - a.c[2] * t4 - a.c[3] * t5 - a.c[4] * t0 - a.c[4] * t6) * inv);
+}
+
+// apply(sphere, euclidean_bivector) -> point_pair: 63 mul, 32 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_sphere<T>& a,
+                                               const basic_euclidean_bivector<T>& b) {
+  const T t0 = -a.c[0] * b.c[2];
+  const T t1 = a.c[0] * b.c[1];
+  const T t2 = -a.c[0] * b.c[0];
+  const T t3 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t4 = -a.c[4] * b.c[2];
+  const T t5 = a.c[4] * b.c[1];
+  const T t6 = -a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  const T t7 = -a.c[4] * b.c[0];
+  const T t8 = a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  const T t9 = -a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T inv =
+      T(1) / (T(2) * a.c[0] * a.c[4] - a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_point_pair<T>(
+      (a.c[0] * t9 - a.c[1] * t1 - a.c[2] * t2) * inv,
+      (-a.c[0] * t8 + a.c[1] * t0 - a.c[3] * t2) * inv,
+      (a.c[0] * t6 + a.c[2] * t0 + a.c[3] * t1) * inv, (T(0)) * inv,
+      (-a.c[0] * t7 + a.c[1] * t3 + a.c[2] * t9 - a.c[3] * t8 - a.c[4] * t2) * inv,
+      (a.c[0] * t5 - a.c[1] * t9 + a.c[2] * t3 + a.c[3] * t6 + a.c[4] * t1) * inv,
+      (a.c[1] * t5 + a.c[2] * t7 - a.c[4] * t9) * inv,
+      (-a.c[0] * t4 + a.c[1] * t8 - a.c[2] * t6 + a.c[3] * t3 - a.c[4] * t0) * inv,
+      (-a.c[1] * t4 + a.c[3] * t7 + a.c[4] * t8) * inv,
+      (-a.c[2] * t4 - a.c[3] * t5 - a.c[4] * t6) * inv);
+}
+
+// apply(sphere, point_pair) -> point_pair: 115 mul, 78 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_sphere<T>& a,
+                                               const basic_point_pair<T>& b) {
+  const T t0 = -a.c[0] * b.c[7] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = a.c[0] * b.c[5] + a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  const T t2 = -a.c[0] * b.c[9] + a.c[1] * b.c[3] - a.c[4] * b.c[2];
+  const T t3 = -a.c[0] * b.c[4] + a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  const T t4 = a.c[0] * b.c[8] + a.c[2] * b.c[3] + a.c[4] * b.c[1];
+  const T t5 = -a.c[0] * b.c[6] + a.c[3] * b.c[3] - a.c[4] * b.c[0];
+  const T t6 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  const T t7 = -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[7];
+  const T t8 = a.c[1] * b.c[8] + a.c[2] * b.c[9] - a.c[4] * b.c[7];
+  const T t9 = -a.c[1] * b.c[6] + a.c[3] * b.c[9] + a.c[4] * b.c[5];
+  const T t10 = a.c[0] * b.c[9] - a.c[2] * b.c[7] + a.c[3] * b.c[5] - a.c[4] * b.c[2];
+  const T t11 = -a.c[2] * b.c[6] - a.c[3] * b.c[8] - a.c[4] * b.c[4];
+  const T t12 = -a.c[0] * b.c[8] + a.c[1] * b.c[7] - a.c[3] * b.c[4] + a.c[4] * b.c[1];
+  const T t13 = a.c[0] * b.c[6] - a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[4] * b.c[0];
+  const T t14 = a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[6] - a.c[4] * b.c[3];
+  const T inv =
+      T(1) / (T(2) * a.c[0] * a.c[4] - a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_point_pair<T>(
+      (a.c[0] * t13 - a.c[0] * t5 - a.c[1] * t1 - a.c[2] * t3 - a.c[3] * t6) * inv,
+      (-a.c[0] * t12 + a.c[0] * t4 + a.c[1] * t0 + a.c[2] * t6 - a.c[3] * t3) * inv,
+      (a.c[0] * t10 - a.c[0] * t2 - a.c[1] * t6 + a.c[2] * t0 + a.c[3] * t1) * inv,
+      (a.c[0] * t14 - a.c[1] * t2 - a.c[2] * t4 - a.c[3] * t5 - a.c[4] * t6) * inv,
+      (-a.c[0] * t11 + a.c[1] * t7 + a.c[2] * t13 - a.c[3] * t12 - a.c[4] * t3) * inv,
+      (a.c[0] * t9 - a.c[1] * t13 + a.c[2] * t7 + a.c[3] * t10 + a.c[4] * t1) * inv,
+      (a.c[1] * t9 + a.c[2] * t11 + a.c[3] * t14 - a.c[4] * t13 - a.c[4] * t5) * inv,
+      (-a.c[0] * t8 + a.c[1] * t12 - a.c[2] * t10 + a.c[3] * t7 - a.c[4] * t0) * inv,
+      (-a.c[1] * t8 - a.c[2] * t14 + a.c[3] * t11 + a.c[4] * t12 + a.c[4] * t4) * inv,
+      (a.c[1] * t14 - a.c[2] * t8 - a.c[3] * t9 - a.c[4] * t10 - a.c[4] * t2) * inv);
+}
+
+// apply(sphere, dual_line) -> point_pair: 91 mul, 55 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_sphere<T>& a,
+                                               const basic_dual_line<T>& b) {
+  const T t0 = -a.c[0] * b.c[2];
+  const T t1 = a.c[0] * b.c[1];
+  const T t2 = -a.c[0] * b.c[5];
+  const T t3 = -a.c[0] * b.c[0];
+  const T t4 = a.c[0] * b.c[4];
+  const T t5 = -a.c[0] * b.c[3];
+  const T t6 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t7 = a.c[1] * b.c[4] + a.c[2] * b.c[5] - a.c[4] * b.c[2];
+  const T t8 = -a.c[1] * b.c[3] + a.c[3] * b.c[5] + a.c[4] * b.c[1];
+  const T t9 = a.c[0] * b.c[5] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  const T t10 = -a.c[2] * b.c[3] - a.c[3] * b.c[4] - a.c[4] * b.c[0];
+  const T t11 = -a.c[0] * b.c[4] + a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  const T t12 = a.c[0] * b.c[3] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t13 = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3];
+  const T inv =
+      T(1) / (T(2) * a.c[0] * a.c[4] - a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_point_pair<T>(
+      (a.c[0] * t12 - a.c[0] * t5 - a.c[1] * t1 - a.c[2] * t3) * inv,
+      (-a.c[0] * t11 + a.c[0] * t4 + a.c[1] * t0 - a.c[3] * t3) * inv,
+      (-a.c[0] * t2 + a.c[0] * t9 + a.c[2] * t0 + a.c[3] * t1) * inv,
+      (a.c[0] * t13 - a.c[1] * t2 - a.c[2] * t4 - a.c[3] * t5) * inv,
+      (-a.c[0] * t10 + a.c[1] * t6 + a.c[2] * t12 - a.c[3] * t11 - a.c[4] * t3) * inv,
+      (a.c[0] * t8 - a.c[1] * t12 + a.c[2] * t6 + a.c[3] * t9 + a.c[4] * t1) * inv,
+      (a.c[1] * t8 + a.c[2] * t10 + a.c[3] * t13 - a.c[4] * t12 - a.c[4] * t5) * inv,
+      (-a.c[0] * t7 + a.c[1] * t11 - a.c[2] * t9 + a.c[3] * t6 - a.c[4] * t0) * inv,
+      (-a.c[1] * t7 - a.c[2] * t13 + a.c[3] * t10 + a.c[4] * t11 + a.c[4] * t4) * inv,
+      (a.c[1] * t13 - a.c[2] * t7 - a.c[3] * t8 - a.c[4] * t2 - a.c[4] * t9) * inv);
+}
+
+// apply(sphere, line) -> circle: 91 mul, 55 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> apply(const basic_sphere<T>& a, const basic_line<T>& b) {
+  const T t0 = -a.c[0] * b.c[2] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  const T t1 = a.c[0] * b.c[1] + a.c[1] * b.c[3] - a.c[3] * b.c[5];
+  const T t2 = -a.c[0] * b.c[5];
+  const T t3 = -a.c[0] * b.c[0] + a.c[2] * b.c[3] + a.c[3] * b.c[4];
+  const T t4 = a.c[0] * b.c[4];
+  const T t5 = -a.c[0] * b.c[3];
+  const T t6 = -a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[3] * b.c[3];
+  const T t7 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t8 = -a.c[0] * b.c[2];
+  const T t9 = a.c[0] * b.c[1];
+  const T t10 = -a.c[2] * b.c[2] + a.c[3] * b.c[1] - a.c[4] * b.c[5];
+  const T t11 = -a.c[0] * b.c[0];
+  const T t12 = a.c[1] * b.c[2] - a.c[3] * b.c[0] + a.c[4] * b.c[4];
+  const T t13 = -a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[4] * b.c[3];
+  const T inv =
+      T(1) / (T(2) * a.c[0] * a.c[4] - a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_circle<T>(
+      (-a.c[0] * t11 - a.c[0] * t3 + a.c[2] * t5 - a.c[3] * t4) * inv,
+      (a.c[0] * t1 + a.c[0] * t9 - a.c[1] * t5 + a.c[3] * t2) * inv,
+      (-a.c[0] * t0 - a.c[0] * t8 + a.c[1] * t4 - a.c[2] * t2) * inv,
+      (-a.c[0] * t13 + a.c[1] * t1 + a.c[2] * t3 + a.c[3] * t6 - a.c[4] * t5) * inv,
+      (a.c[0] * t12 - a.c[1] * t0 - a.c[2] * t6 + a.c[3] * t3 + a.c[4] * t4) * inv,
+      (-a.c[0] * t10 + a.c[1] * t6 - a.c[2] * t0 - a.c[3] * t1 - a.c[4] * t2) * inv,
+      (-a.c[0] * t7 - a.c[1] * t11 + a.c[2] * t9 - a.c[3] * t8) * inv,
+      (-a.c[1] * t7 - a.c[2] * t13 + a.c[3] * t12 - a.c[4] * t11 + a.c[4] * t3) * inv,
+      (a.c[1] * t13 - a.c[2] * t7 - a.c[3] * t10 - a.c[4] * t1 + a.c[4] * t9) * inv,
+      (-a.c[1] * t12 + a.c[2] * t10 - a.c[3] * t7 + a.c[4] * t0 - a.c[4] * t8) * inv);
+}
+
+// apply(sphere, circle) -> circle: 115 mul, 78 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> apply(const basic_sphere<T>& a, const basic_circle<T>& b) {
+  const T t0 = -a.c[0] * b.c[6] + a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  const T t1 = -a.c[0] * b.c[9] - a.c[1] * b.c[4] - a.c[2] * b.c[5] + a.c[4] * b.c[2];
+  const T t2 = a.c[0] * b.c[8] + a.c[1] * b.c[3] - a.c[3] * b.c[5] - a.c[4] * b.c[1];
+  const T t3 = -a.c[0] * b.c[5] + a.c[2] * b.c[2] - a.c[3] * b.c[1];
+  const T t4 = -a.c[0] * b.c[7] + a.c[2] * b.c[3] + a.c[3] * b.c[4] + a.c[4] * b.c[0];
+  const T t5 = a.c[0] * b.c[4] - a.c[1] * b.c[2] + a.c[3] * b.c[0];
+  const T t6 = -a.c[0] * b.c[3] + a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  const T t7 = -a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[3] * b.c[3];
+  const T t8 = -a.c[1] * b.c[7] - a.c[2] * b.c[8] - a.c[3] * b.c[9] + a.c[4] * b.c[6];
+  const T t9 = -a.c[0] * b.c[9] + a.c[3] * b.c[6] - a.c[4] * b.c[2];
+  const T t10 = a.c[0] * b.c[8] - a.c[2] * b.c[6] + a.c[4] * b.c[1];
+  const T t11 = -a.c[2] * b.c[9] + a.c[3] * b.c[8] - a.c[4] * b.c[5];
+  const T t12 = -a.c[0] * b.c[7] + a.c[1] * b.c[6] - a.c[4] * b.c[0];
+  const T t13 = a.c[1] * b.c[9] - a.c[3] * b.c[7] + a.c[4] * b.c[4];
+  const T t14 = -a.c[1] * b.c[8] + a.c[2] * b.c[7] - a.c[4] * b.c[3];
+  const T inv =
+      T(1) / (T(2) * a.c[0] * a.c[4] - a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_circle<T>(
+      (-a.c[0] * t12 - a.c[0] * t4 + a.c[1] * t0 + a.c[2] * t6 - a.c[3] * t5) * inv,
+      (a.c[0] * t10 + a.c[0] * t2 - a.c[1] * t6 + a.c[2] * t0 + a.c[3] * t3) * inv,
+      (-a.c[0] * t1 - a.c[0] * t9 + a.c[1] * t5 - a.c[2] * t3 + a.c[3] * t0) * inv,
+      (-a.c[0] * t14 + a.c[1] * t2 + a.c[2] * t4 + a.c[3] * t7 - a.c[4] * t6) * inv,
+      (a.c[0] * t13 - a.c[1] * t1 - a.c[2] * t7 + a.c[3] * t4 + a.c[4] * t5) * inv,
+      (-a.c[0] * t11 + a.c[1] * t7 - a.c[2] * t1 - a.c[3] * t2 - a.c[4] * t3) * inv,
+      (-a.c[0] * t8 - a.c[1] * t12 + a.c[2] * t10 - a.c[3] * t9 + a.c[4] * t0) * inv,
+      (-a.c[1] * t8 - a.c[2] * t14 + a.c[3] * t13 - a.c[4] * t12 + a.c[4] * t4) * inv,
+      (a.c[1] * t14 - a.c[2] * t8 - a.c[3] * t11 + a.c[4] * t10 - a.c[4] * t2) * inv,
+      (-a.c[1] * t13 + a.c[2] * t11 - a.c[3] * t8 + a.c[4] * t1 - a.c[4] * t9) * inv);
+}
+
+// apply(sphere, sphere) -> sphere: 60 mul, 37 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> apply(const basic_sphere<T>& a, const basic_sphere<T>& b) {
+  const T t0 =
+      a.c[0] * b.c[4] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3] + a.c[4] * b.c[0];
+  const T t1 = -a.c[0] * b.c[3] + a.c[3] * b.c[0];
+  const T t2 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t3 = -a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  const T t4 = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  const T t5 = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  const T t6 = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t7 = -a.c[0] * b.c[4] + a.c[4] * b.c[0];
+  const T t8 = -a.c[3] * b.c[4] + a.c[4] * b.c[3];
+  const T t9 = a.c[2] * b.c[4] - a.c[4] * b.c[2];
+  const T t10 = -a.c[1] * b.c[4] + a.c[4] * b.c[1];
+  const T inv =
+      T(1) / (T(2) * a.c[0] * a.c[4] - a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_sphere<T>(
+      (a.c[0] * t0 - a.c[0] * t7 + a.c[1] * t4 - a.c[2] * t2 + a.c[3] * t1) * inv,
+      (-a.c[0] * t10 + a.c[1] * t0 + a.c[2] * t6 - a.c[3] * t5 + a.c[4] * t4) * inv,
+      (a.c[0] * t9 - a.c[1] * t6 + a.c[2] * t0 + a.c[3] * t3 - a.c[4] * t2) * inv,
+      (-a.c[0] * t8 + a.c[1] * t5 - a.c[2] * t3 + a.c[3] * t0 + a.c[4] * t1) * inv,
+      (-a.c[1] * t10 + a.c[2] * t9 - a.c[3] * t8 + a.c[4] * t0 + a.c[4] * t7) * inv);
+}
+
+// apply(sphere, plane) -> sphere: 55 mul, 32 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> apply(const basic_sphere<T>& a, const basic_plane<T>& b) {
+  const T t0 = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  const T t1 = -a.c[0] * b.c[3];
+  const T t2 = a.c[0] * b.c[2];
+  const T t3 = -a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  const T t4 = -a.c[0] * b.c[1];
+  const T t5 = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  const T t6 = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t7 = -a.c[0] * b.c[0];
+  const T t8 = -a.c[3] * b.c[0] + a.c[4] * b.c[3];
+  const T t9 = a.c[2] * b.c[0] - a.c[4] * b.c[2];
+  const T t10 = -a.c[1] * b.c[0] + a.c[4] * b.c[1];
+  const T inv =
+      T(1) / (T(2) * a.c[0] * a.c[4] - a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_sphere<T>(
+      (a.c[0] * t0 - a.c[0] * t7 + a.c[1] * t4 - a.c[2] * t2 + a.c[3] * t1) * inv,
+      (-a.c[0] * t10 + a.c[1] * t0 + a.c[2] * t6 - a.c[3] * t5 + a.c[4] * t4) * inv,
+      (a.c[0] * t9 - a.c[1] * t6 + a.c[2] * t0 + a.c[3] * t3 - a.c[4] * t2) * inv,
+      (-a.c[0] * t8 + a.c[1] * t5 - a.c[2] * t3 + a.c[3] * t0 + a.c[4] * t1) * inv,
+      (-a.c[1] * t10 + a.c[2] * t9 - a.c[3] * t8 + a.c[4] * t0 + a.c[4] * t7) * inv);
+}
+
+// apply(sphere, pseudoscalar) -> pseudoscalar: 16 mul, 7 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> apply(const basic_sphere<T>& a,
+                                                 const basic_pseudoscalar<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[3] * b.c[0];
+  const T t2 = -a.c[2] * b.c[0];
+  const T t3 = a.c[1] * b.c[0];
+  const T t4 = a.c[4] * b.c[0];
+  const T inv =
+      T(1) / (T(2) * a.c[0] * a.c[4] - a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_pseudoscalar<T>(
+      (a.c[0] * t4 - a.c[1] * t3 + a.c[2] * t2 - a.c[3] * t1 + a.c[4] * t0) * inv);
+}
+
+// apply(sphere, rotor) -> mv: 82 mul, 46 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_sphere<T>& a, const basic_rotor<T>& b) {
+  const T t0 = -a.c[0] * b.c[3];
+  const T t1 = a.c[0] * b.c[2];
+  const T t2 = -a.c[0] * b.c[1];
+  const T t3 = a.c[0] * b.c[0];
+  const T t4 = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  const T t5 = -a.c[4] * b.c[3];
+  const T t6 = a.c[4] * b.c[2];
+  const T t7 = a.c[1] * b.c[0] - a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  const T t8 = -a.c[4] * b.c[1];
+  const T t9 = a.c[1] * b.c[3] + a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t10 = -a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T t11 = a.c[4] * b.c[0];
+  const T inv =
+      T(1) / (T(2) * a.c[0] * a.c[4] - a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  basic_mv<T> r;
+  r.c[0] = (a.c[0] * t11 - a.c[1] * t7 - a.c[2] * t9 - a.c[3] * t10 + a.c[4] * t3) * inv;
+  r.c[6] = (a.c[0] * t10 - a.c[1] * t1 - a.c[2] * t2 - a.c[3] * t3) * inv;
+  r.c[7] = (-a.c[0] * t9 + a.c[1] * t0 + a.c[2] * t3 - a.c[3] * t2) * inv;
+  r.c[8] = (a.c[0] * t7 - a.c[1] * t3 + a.c[2] * t0 + a.c[3] * t1) * inv;
+  r.c[9] = (a.c[0] * t11 - a.c[4] * t3) * inv;
+  r.c[10] = (-a.c[0] * t8 + a.c[1] * t4 + a.c[2] * t10 - a.c[3] * t9 - a.c[4] * t2) * inv;
+  r.c[11] = (a.c[0] * t6 - a.c[1] * t10 + a.c[2] * t4 + a.c[3] * t7 + a.c[4] * t1) * inv;
+  r.c[12] = (a.c[1] * t6 + a.c[2] * t8 + a.c[3] * t11 - a.c[4] * t10) * inv;
+  r.c[13] = (-a.c[0] * t5 + a.c[1] * t9 - a.c[2] * t7 + a.c[3] * t4 - a.c[4] * t0) * inv;
+  r.c[14] = (-a.c[1] * t5 - a.c[2] * t11 + a.c[3] * t8 + a.c[4] * t9) * inv;
+  r.c[15] = (a.c[1] * t11 - a.c[2] * t5 - a.c[3] * t6 - a.c[4] * t7) * inv;
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// apply(sphere, translator) -> mv: 79 mul, 44 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_sphere<T>& a, const basic_translator<T>& b) {
+  const T t0 = -a.c[0] * b.c[3];
+  const T t1 = a.c[0] * b.c[2];
+  const T t2 = -a.c[0] * b.c[1];
+  const T t3 = a.c[0] * b.c[0];
+  const T t4 = a.c[1] * b.c[2] + a.c[2] * b.c[3];
+  const T t5 = -a.c[1] * b.c[1] + a.c[3] * b.c[3];
+  const T t6 = a.c[0] * b.c[3] + a.c[1] * b.c[0];
+  const T t7 = -a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t8 = -a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  const T t9 = a.c[0] * b.c[1] + a.c[3] * b.c[0];
+  const T t10 = a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1] + a.c[4] * b.c[0];
+  const T inv =
+      T(1) / (T(2) * a.c[0] * a.c[4] - a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  basic_mv<T> r;
+  r.c[0] = (a.c[0] * t10 - a.c[1] * t6 - a.c[2] * t8 - a.c[3] * t9 + a.c[4] * t3) * inv;
+  r.c[6] = (-a.c[0] * t2 + a.c[0] * t9 - a.c[3] * t3) * inv;
+  r.c[7] = (a.c[0] * t1 - a.c[0] * t8 + a.c[2] * t3) * inv;
+  r.c[8] = (-a.c[0] * t0 + a.c[0] * t6 - a.c[1] * t3) * inv;
+  r.c[9] = (a.c[0] * t10 - a.c[1] * t0 - a.c[2] * t1 - a.c[3] * t2 - a.c[4] * t3) * inv;
+  r.c[10] = (-a.c[0] * t7 + a.c[2] * t9 - a.c[3] * t8) * inv;
+  r.c[11] = (a.c[0] * t5 - a.c[1] * t9 + a.c[3] * t6) * inv;
+  r.c[12] = (a.c[1] * t5 + a.c[2] * t7 + a.c[3] * t10 - a.c[4] * t2 - a.c[4] * t9) * inv;
+  r.c[13] = (-a.c[0] * t4 + a.c[1] * t8 - a.c[2] * t6) * inv;
+  r.c[14] = (-a.c[1] * t4 - a.c[2] * t10 + a.c[3] * t7 + a.c[4] * t1 + a.c[4] * t8) * inv;
+  r.c[15] = (a.c[1] * t10 - a.c[2] * t4 - a.c[3] * t5 - a.c[4] * t0 - a.c[4] * t6) * inv;
+  r.bits = 0xffc1u;
+  return r;
+}
+
+// apply(sphere, motor) -> mv: 141 mul, 91 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_sphere<T>& a, const basic_motor<T>& b) {
+  const T t0 = a.c[0] * b.c[7];
+  const T t1 = -a.c[0] * b.c[3];
+  const T t2 = a.c[0] * b.c[2];
+  const T t3 = -a.c[0] * b.c[6];
+  const T t4 = -a.c[0] * b.c[1];
+  const T t5 = a.c[0] * b.c[5];
+  const T t6 = -a.c[0] * b.c[4];
+  const T t7 = a.c[0] * b.c[0];
+  const T t8 = -a.c[0] * b.c[7] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  const T t9 = a.c[1] * b.c[5] + a.c[2] * b.c[6] - a.c[3] * b.c[7] - a.c[4] * b.c[3];
+  const T t10 = -a.c[1] * b.c[4] + a.c[2] * b.c[7] + a.c[3] * b.c[6] + a.c[4] * b.c[2];
+  const T t11 = a.c[0] * b.c[6] + a.c[1] * b.c[0] - a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  const T t12 = -a.c[1] * b.c[7] - a.c[2] * b.c[4] - a.c[3] * b.c[5] - a.c[4] * b.c[1];
+  const T t13 = -a.c[0] * b.c[5] + a.c[1] * b.c[3] + a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t14 = a.c[0] * b.c[4] - a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T t15 = a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[4] + a.c[4] * b.c[0];
+  const T inv =
+      T(1) / (T(2) * a.c[0] * a.c[4] - a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  basic_mv<T> r;
+  r.c[0] = (a.c[0] * t15 - a.c[1] * t11 - a.c[2] * t13 - a.c[3] * t14 + a.c[4] * t7) * inv;
+  r.c[6] = (a.c[0] * t14 - a.c[0] * t6 - a.c[1] * t2 - a.c[2] * t4 - a.c[3] * t7) * inv;
+  r.c[7] = (-a.c[0] * t13 + a.c[0] * t5 + a.c[1] * t1 + a.c[2] * t7 - a.c[3] * t4) * inv;
+  r.c[8] = (a.c[0] * t11 - a.c[0] * t3 - a.c[1] * t7 + a.c[2] * t1 + a.c[3] * t2) * inv;
+  r.c[9] = (a.c[0] * t15 - a.c[1] * t3 - a.c[2] * t5 - a.c[3] * t6 - a.c[4] * t7) * inv;
+  r.c[10] = (-a.c[0] * t12 + a.c[1] * t8 + a.c[2] * t14 - a.c[3] * t13 - a.c[4] * t4) * inv;
+  r.c[11] = (a.c[0] * t10 - a.c[1] * t14 + a.c[2] * t8 + a.c[3] * t11 + a.c[4] * t2) * inv;
+  r.c[12] = (a.c[1] * t10 + a.c[2] * t12 + a.c[3] * t15 - a.c[4] * t14 - a.c[4] * t6) * inv;
+  r.c[13] = (-a.c[0] * t9 + a.c[1] * t13 - a.c[2] * t11 + a.c[3] * t8 - a.c[4] * t1) * inv;
+  r.c[14] = (-a.c[1] * t9 - a.c[2] * t15 + a.c[3] * t12 + a.c[4] * t13 + a.c[4] * t5) * inv;
+  r.c[15] = (a.c[1] * t15 - a.c[2] * t9 - a.c[3] * t10 - a.c[4] * t11 - a.c[4] * t3) * inv;
+  r.c[26] = (a.c[0] * t0 - a.c[0] * t8 + a.c[1] * t4 - a.c[2] * t2 + a.c[3] * t1) * inv;
+  r.c[27] = (-a.c[0] * t12 + a.c[1] * t0 + a.c[2] * t6 - a.c[3] * t5 + a.c[4] * t4) * inv;
+  r.c[28] = (a.c[0] * t10 - a.c[1] * t6 + a.c[2] * t0 + a.c[3] * t3 - a.c[4] * t2) * inv;
+  r.c[29] = (-a.c[0] * t9 + a.c[1] * t5 - a.c[2] * t3 + a.c[3] * t0 + a.c[4] * t1) * inv;
+  r.c[30] = (-a.c[1] * t12 + a.c[2] * t10 - a.c[3] * t9 + a.c[4] * t0 + a.c[4] * t8) * inv;
+  r.bits = 0x7c00ffc1u;
+  return r;
+}
+
+// apply(plane, normalized_point) -> dual_sphere: 43 mul, 26 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_plane<T>& a,
+                                                const basic_normalized_point<T>& b) {
+  const T t0 = -a.c[1];
+  const T t1 = -a.c[2];
+  const T t2 = -a.c[3];
+  const T t3 = -a.c[0];
+  const T t4 = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t5 = a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  const T t6 = -a.c[0] * b.c[2] + a.c[1] * b.c[3];
+  const T t7 = a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  const T t8 = a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  const T t9 = -a.c[0] * b.c[0] + a.c[3] * b.c[3];
+  const T t10 = a.c[0] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  const T inv = T(1) / (-a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_dual_sphere<T>(
+      (-a.c[1] * t0 - a.c[2] * t1 - a.c[3] * t2) * inv,
+      (-a.c[0] * t2 + a.c[1] * t5 + a.c[2] * t7 + a.c[3] * t10) * inv,
+      (a.c[0] * t1 - a.c[1] * t4 - a.c[2] * t10 + a.c[3] * t7) * inv,
+      (-a.c[0] * t0 + a.c[1] * t10 - a.c[2] * t4 - a.c[3] * t5) * inv,
+      (a.c[0] * t10 - a.c[0] * t3 + a.c[1] * t6 + a.c[2] * t8 + a.c[3] * t9) * inv);
+}
+
+// apply(plane, dual_sphere) -> dual_sphere: 48 mul, 26 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_plane<T>& a,
+                                                const basic_dual_sphere<T>& b) {
+  const T t0 = -a.c[1] * b.c[0];
+  const T t1 = -a.c[2] * b.c[0];
+  const T t2 = -a.c[3] * b.c[0];
+  const T t3 = -a.c[0] * b.c[0];
+  const T t4 = -a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  const T t5 = a.c[1] * b.c[1] - a.c[3] * b.c[3];
+  const T t6 = -a.c[0] * b.c[3] + a.c[1] * b.c[4];
+  const T t7 = a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  const T t8 = a.c[0] * b.c[2] + a.c[2] * b.c[4];
+  const T t9 = -a.c[0] * b.c[1] + a.c[3] * b.c[4];
+  const T t10 = a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[3] * b.c[1];
+  const T inv = T(1) / (-a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_dual_sphere<T>(
+      (-a.c[1] * t0 - a.c[2] * t1 - a.c[3] * t2) * inv,
+      (-a.c[0] * t2 + a.c[1] * t5 + a.c[2] * t7 + a.c[3] * t10) * inv,
+      (a.c[0] * t1 - a.c[1] * t4 - a.c[2] * t10 + a.c[3] * t7) * inv,
+      (-a.c[0] * t0 + a.c[1] * t10 - a.c[2] * t4 - a.c[3] * t5) * inv,
+      (a.c[0] * t10 - a.c[0] * t3 + a.c[1] * t6 + a.c[2] * t8 + a.c[3] * t9) * inv);
+}
+
+// apply(plane, dual_plane) -> dual_plane: 35 mul, 19 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> apply(const basic_plane<T>& a,
+                                               const basic_dual_plane<T>& b) {
+  const T t0 = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  const T t2 = -a.c[0] * b.c[2] + a.c[1] * b.c[3];
+  const T t3 = a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  const T t4 = a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  const T t5 = -a.c[0] * b.c[0] + a.c[3] * b.c[3];
+  const T t6 = -a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  const T inv = T(1) / (-a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_dual_plane<T>((a.c[1] * t1 + a.c[2] * t3 + a.c[3] * t6) * inv,
+                             (-a.c[1] * t0 - a.c[2] * t6 + a.c[3] * t3) * inv,
+                             (a.c[1] * t6 - a.c[2] * t0 - a.c[3] * t1) * inv,
+                             (a.c[0] * t6 + a.c[1] * t2 + a.c[2] * t4 + a.c[3] * t5) * inv);
+}
+
+// apply(plane, euclidean_vector) -> dual_plane: 32 mul, 16 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> apply(const basic_plane<T>& a,
+                                               const basic_euclidean_vector<T>& b) {
+  const T t0 = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  const T t2 = -a.c[0] * b.c[2];
+  const T t3 = a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  const T t4 = a.c[0] * b.c[1];
+  const T t5 = -a.c[0] * b.c[0];
+  const T t6 = -a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  const T inv = T(1) / (-a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_dual_plane<T>((a.c[1] * t1 + a.c[2] * t3 + a.c[3] * t6) * inv,
+                             (-a.c[1] * t0 - a.c[2] * t6 + a.c[3] * t3) * inv,
+                             (a.c[1] * t6 - a.c[2] * t0 - a.c[3] * t1) * inv,
+                             (a.c[0] * t6 + a.c[1] * t2 + a.c[2] * t4 + a.c[3] * t5) * inv);
+}
+
+// apply(plane, flat_point) -> flat_point: 35 mul, 19 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> apply(const basic_plane<T>& a,
+                                               const basic_flat_point<T>& b) {
+  const T t0 = a.c[1] * b.c[3];
+  const T t1 = a.c[2] * b.c[3];
+  const T t2 = a.c[3] * b.c[3];
+  const T t3 = a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t4 = -a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  const T t5 = -a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t6 = -a.c[0] * b.c[3] + a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T inv = T(1) / (-a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_flat_point<T>((-a.c[0] * t2 + a.c[1] * t4 + a.c[2] * t5 + a.c[3] * t6) * inv,
+                             (a.c[0] * t1 - a.c[1] * t3 - a.c[2] * t6 + a.c[3] * t5) * inv,
+                             (-a.c[0] * t0 + a.c[1] * t6 - a.c[2] * t3 - a.c[3] * t4) * inv,
+                             (-a.c[1] * t0 - a.c[2] * t1 - a.c[3] * t2) * inv);
+}
+
+// apply(plane, euclidean_bivector) -> dual_line: 39 mul, 19 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> apply(const basic_plane<T>& a,
+                                              const basic_euclidean_bivector<T>& b) {
+  const T t0 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t1 = -a.c[0] * b.c[2];
+  const T t2 = a.c[0] * b.c[1];
+  const T t3 = -a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  const T t4 = -a.c[0] * b.c[0];
+  const T t5 = a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  const T t6 = -a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T inv = T(1) / (-a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_dual_line<T>((a.c[1] * t0 + a.c[2] * t6 - a.c[3] * t5) * inv,
+                            (-a.c[1] * t6 + a.c[2] * t0 + a.c[3] * t3) * inv,
+                            (a.c[1] * t5 - a.c[2] * t3 + a.c[3] * t0) * inv,
+                            (-a.c[0] * t6 + a.c[1] * t2 + a.c[2] * t4) * inv,
+                            (a.c[0] * t5 - a.c[1] * t1 + a.c[3] * t4) * inv,
+                            (-a.c[0] * t3 - a.c[2] * t1 - a.c[3] * t2) * inv);
+}
+
+// apply(plane, point_pair) -> point_pair: 93 mul, 57 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_plane<T>& a,
+                                               const basic_point_pair<T>& b) {
+  const T t0 = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  const T t2 = -a.c[0] * b.c[2] + a.c[1] * b.c[3];
+  const T t3 = a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  const T t4 = a.c[0] * b.c[1] + a.c[2] * b.c[3];
+  const T t5 = -a.c[0] * b.c[0] + a.c[3] * b.c[3];
+  const T t6 = -a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  const T t7 = -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[7];
+  const T t8 = -a.c[0] * b.c[7] + a.c[1] * b.c[8] + a.c[2] * b.c[9];
+  const T t9 = a.c[0] * b.c[5] - a.c[1] * b.c[6] + a.c[3] * b.c[9];
+  const T t10 = -a.c[0] * b.c[2] - a.c[2] * b.c[7] + a.c[3] * b.c[5];
+  const T t11 = -a.c[0] * b.c[4] - a.c[2] * b.c[6] - a.c[3] * b.c[8];
+  const T t12 = a.c[0] * b.c[1] + a.c[1] * b.c[7] - a.c[3] * b.c[4];
+  const T t13 = -a.c[0] * b.c[0] - a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  const T t14 = -a.c[0] * b.c[3] + a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[6];
+  const T inv = T(1) / (-a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_point_pair<T>(
+      (-a.c[1] * t1 - a.c[2] * t3 - a.c[3] * t6) * inv,
+      (a.c[1] * t0 + a.c[2] * t6 - a.c[3] * t3) * inv,
+      (-a.c[1] * t6 + a.c[2] * t0 + a.c[3] * t1) * inv,
+      (-a.c[0] * t6 - a.c[1] * t2 - a.c[2] * t4 - a.c[3] * t5) * inv,
+      (-a.c[0] * t3 + a.c[1] * t7 + a.c[2] * t13 - a.c[3] * t12) * inv,
+      (a.c[0] * t1 - a.c[1] * t13 + a.c[2] * t7 + a.c[3] * t10) * inv,
+      (-a.c[0] * t13 - a.c[0] * t5 + a.c[1] * t9 + a.c[2] * t11 + a.c[3] * t14) * inv,
+      (-a.c[0] * t0 + a.c[1] * t12 - a.c[2] * t10 + a.c[3] * t7) * inv,
+      (a.c[0] * t12 + a.c[0] * t4 - a.c[1] * t8 - a.c[2] * t14 + a.c[3] * t11) * inv,
+      (-a.c[0] * t10 - a.c[0] * t2 + a.c[1] * t14 - a.c[2] * t8 - a.c[3] * t9) * inv);
+}
+
+// apply(plane, dual_line) -> dual_line: 51 mul, 30 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> apply(const basic_plane<T>& a,
+                                              const basic_dual_line<T>& b) {
+  const T t0 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t1 = -a.c[0] * b.c[2] + a.c[1] * b.c[4] + a.c[2] * b.c[5];
+  const T t2 = a.c[0] * b.c[1] - a.c[1] * b.c[3] + a.c[3] * b.c[5];
+  const T t3 = -a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  const T t4 = -a.c[0] * b.c[0] - a.c[2] * b.c[3] - a.c[3] * b.c[4];
+  const T t5 = a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  const T t6 = -a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t7 = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3];
+  const T inv = T(1) / (-a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_dual_line<T>((a.c[1] * t0 + a.c[2] * t6 - a.c[3] * t5) * inv,
+                            (-a.c[1] * t6 + a.c[2] * t0 + a.c[3] * t3) * inv,
+                            (a.c[1] * t5 - a.c[2] * t3 + a.c[3] * t0) * inv,
+                            (-a.c[0] * t6 + a.c[1] * t2 + a.c[2] * t4 + a.c[3] * t7) * inv,
+                            (a.c[0] * t5 - a.c[1] * t1 - a.c[2] * t7 + a.c[3] * t4) * inv,
+                            (-a.c[0] * t3 + a.c[1] * t7 - a.c[2] * t1 - a.c[3] * t2) * inv);
+}
+
+// apply(plane, line) -> line: 51 mul, 30 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> apply(const basic_plane<T>& a, const basic_line<T>& b) {
+  const T t0 = -a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  const T t1 = a.c[1] * b.c[3] - a.c[3] * b.c[5];
+  const T t2 = a.c[2] * b.c[3] + a.c[3] * b.c[4];
+  const T t3 = -a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[3] * b.c[3];
+  const T t4 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t5 = -a.c[0] * b.c[5] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  const T t6 = a.c[0] * b.c[4] + a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  const T t7 = -a.c[0] * b.c[3] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T inv = T(1) / (-a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_line<T>((a.c[0] * t2 - a.c[1] * t4 - a.c[2] * t7 + a.c[3] * t6) * inv,
+                       (-a.c[0] * t1 + a.c[1] * t7 - a.c[2] * t4 - a.c[3] * t5) * inv,
+                       (a.c[0] * t0 - a.c[1] * t6 + a.c[2] * t5 - a.c[3] * t4) * inv,
+                       (a.c[1] * t1 + a.c[2] * t2 + a.c[3] * t3) * inv,
+                       (-a.c[1] * t0 - a.c[2] * t3 + a.c[3] * t2) * inv,
+                       (a.c[1] * t3 - a.c[2] * t0 - a.c[3] * t1) * inv);
+}
+
+// apply(plane, circle) -> circle: 93 mul, 57 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> apply(const basic_plane<T>& a, const basic_circle<T>& b) {
+  const T t0 = a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
+  const T t1 = a.c[0] * b.c[2] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
+  const T t2 = -a.c[0] * b.c[1] + a.c[1] * b.c[3] - a.c[3] * b.c[5];
+  const T t3 = a.c[2] * b.c[2] - a.c[3] * b.c[1];
+  const T t4 = a.c[0] * b.c[0] + a.c[2] * b.c[3] + a.c[3] * b.c[4];
+  const T t5 = -a.c[1] * b.c[2] + a.c[3] * b.c[0];
+  const T t6 = a.c[1] * b.c[1] - a.c[2] * b.c[0];
+  const T t7 = -a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[3] * b.c[3];
+  const T t8 = a.c[0] * b.c[6] - a.c[1] * b.c[7] - a.c[2] * b.c[8] - a.c[3] * b.c[9];
+  const T t9 = -a.c[0] * b.c[2] + a.c[3] * b.c[6];
+  const T t10 = a.c[0] * b.c[1] - a.c[2] * b.c[6];
+  const T t11 = -a.c[0] * b.c[5] - a.c[2] * b.c[9] + a.c[3] * b.c[8];
+  const T t12 = -a.c[0] * b.c[0] + a.c[1] * b.c[6];
+  const T t13 = a.c[0] * b.c[4] + a.c[1] * b.c[9] - a.c[3] * b.c[7];
+  const T t14 = -a.c[0] * b.c[3] - a.c[1] * b.c[8] + a.c[2] * b.c[7];
+  const T inv = T(1) / (-a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_circle<T>(
+      (a.c[1] * t0 + a.c[2] * t6 - a.c[3] * t5) * inv,
+      (-a.c[1] * t6 + a.c[2] * t0 + a.c[3] * t3) * inv,
+      (a.c[1] * t5 - a.c[2] * t3 + a.c[3] * t0) * inv,
+      (-a.c[0] * t6 + a.c[1] * t2 + a.c[2] * t4 + a.c[3] * t7) * inv,
+      (a.c[0] * t5 - a.c[1] * t1 - a.c[2] * t7 + a.c[3] * t4) * inv,
+      (-a.c[0] * t3 + a.c[1] * t7 - a.c[2] * t1 - a.c[3] * t2) * inv,
+      (a.c[0] * t0 - a.c[1] * t12 + a.c[2] * t10 - a.c[3] * t9) * inv,
+      (-a.c[0] * t12 + a.c[0] * t4 - a.c[1] * t8 - a.c[2] * t14 + a.c[3] * t13) * inv,
+      (a.c[0] * t10 - a.c[0] * t2 + a.c[1] * t14 - a.c[2] * t8 - a.c[3] * t11) * inv,
+      (a.c[0] * t1 - a.c[0] * t9 - a.c[1] * t13 + a.c[2] * t11 - a.c[3] * t8) * inv);
+}
+
+// apply(plane, sphere) -> sphere: 48 mul, 26 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> apply(const basic_plane<T>& a, const basic_sphere<T>& b) {
+  const T t0 = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  const T t1 = a.c[3] * b.c[0];
+  const T t2 = -a.c[2] * b.c[0];
+  const T t3 = -a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  const T t4 = a.c[1] * b.c[0];
+  const T t5 = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  const T t6 = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t7 = a.c[0] * b.c[0];
+  const T t8 = a.c[0] * b.c[3] - a.c[3] * b.c[4];
+  const T t9 = -a.c[0] * b.c[2] + a.c[2] * b.c[4];
+  const T t10 = a.c[0] * b.c[1] - a.c[1] * b.c[4];
+  const T inv = T(1) / (-a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_sphere<T>(
+      (a.c[1] * t4 - a.c[2] * t2 + a.c[3] * t1) * inv,
+      (a.c[0] * t4 + a.c[1] * t0 + a.c[2] * t6 - a.c[3] * t5) * inv,
+      (-a.c[0] * t2 - a.c[1] * t6 + a.c[2] * t0 + a.c[3] * t3) * inv,
+      (a.c[0] * t1 + a.c[1] * t5 - a.c[2] * t3 + a.c[3] * t0) * inv,
+      (a.c[0] * t0 + a.c[0] * t7 - a.c[1] * t10 + a.c[2] * t9 - a.c[3] * t8) * inv);
+}
+
+// apply(plane, plane) -> plane: 35 mul, 19 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> apply(const basic_plane<T>& a, const basic_plane<T>& b) {
+  const T t0 = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  const T t1 = -a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  const T t2 = a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  const T t3 = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t4 = a.c[0] * b.c[3] - a.c[3] * b.c[0];
+  const T t5 = -a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  const T t6 = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  const T inv = T(1) / (-a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_plane<T>((a.c[0] * t0 - a.c[1] * t6 + a.c[2] * t5 - a.c[3] * t4) * inv,
+                        (a.c[1] * t0 + a.c[2] * t3 - a.c[3] * t2) * inv,
+                        (-a.c[1] * t3 + a.c[2] * t0 + a.c[3] * t1) * inv,
+                        (a.c[1] * t2 - a.c[2] * t1 + a.c[3] * t0) * inv);
+}
+
+// apply(plane, pseudoscalar) -> pseudoscalar: 10 mul, 4 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> apply(const basic_plane<T>& a,
+                                                 const basic_pseudoscalar<T>& b) {
+  const T t0 = a.c[3] * b.c[0];
+  const T t1 = -a.c[2] * b.c[0];
+  const T t2 = a.c[1] * b.c[0];
+  const T inv = T(1) / (-a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_pseudoscalar<T>((-a.c[1] * t2 + a.c[2] * t1 - a.c[3] * t0) * inv);
+}
+
+// apply(plane, rotor) -> motor: 51 mul, 27 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> apply(const basic_plane<T>& a, const basic_rotor<T>& b) {
+  const T t0 = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  const T t1 = -a.c[0] * b.c[3];
+  const T t2 = a.c[0] * b.c[2];
+  const T t3 = a.c[1] * b.c[0] - a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  const T t4 = -a.c[0] * b.c[1];
+  const T t5 = a.c[1] * b.c[3] + a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t6 = -a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T t7 = a.c[0] * b.c[0];
+  const T inv = T(1) / (-a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_motor<T>((-a.c[1] * t3 - a.c[2] * t5 - a.c[3] * t6) * inv,
+                        (a.c[1] * t0 + a.c[2] * t6 - a.c[3] * t5) * inv,
+                        (-a.c[1] * t6 + a.c[2] * t0 + a.c[3] * t3) * inv,
+                        (a.c[1] * t5 - a.c[2] * t3 + a.c[3] * t0) * inv,
+                        (-a.c[0] * t6 + a.c[1] * t2 + a.c[2] * t4 + a.c[3] * t7) * inv,
+                        (a.c[0] * t5 - a.c[1] * t1 - a.c[2] * t7 + a.c[3] * t4) * inv,
+                        (-a.c[0] * t3 + a.c[1] * t7 - a.c[2] * t1 - a.c[3] * t2) * inv,
+                        (T(0)) * inv);
+}
+
+// apply(plane, translator) -> translator: 35 mul, 19 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> apply(const basic_plane<T>& a,
+                                               const basic_translator<T>& b) {
+  const T t0 = a.c[1] * b.c[2] + a.c[2] * b.c[3];
+  const T t1 = -a.c[1] * b.c[1] + a.c[3] * b.c[3];
+  const T t2 = a.c[1] * b.c[0];
+  const T t3 = -a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t4 = a.c[2] * b.c[0];
+  const T t5 = a.c[3] * b.c[0];
+  const T t6 = a.c[0] * b.c[0] + a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  const T inv = T(1) / (-a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_translator<T>((-a.c[1] * t2 - a.c[2] * t4 - a.c[3] * t5) * inv,
+                             (-a.c[0] * t5 + a.c[1] * t1 + a.c[2] * t3 + a.c[3] * t6) * inv,
+                             (a.c[0] * t4 - a.c[1] * t0 - a.c[2] * t6 + a.c[3] * t3) * inv,
+                             (-a.c[0] * t2 + a.c[1] * t6 - a.c[2] * t0 - a.c[3] * t1) * inv);
+}
+
+// apply(plane, motor) -> motor: 67 mul, 42 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> apply(const basic_plane<T>& a, const basic_motor<T>& b) {
+  const T t0 = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  const T t1 = -a.c[0] * b.c[3] + a.c[1] * b.c[5] + a.c[2] * b.c[6] - a.c[3] * b.c[7];
+  const T t2 = a.c[0] * b.c[2] - a.c[1] * b.c[4] + a.c[2] * b.c[7] + a.c[3] * b.c[6];
+  const T t3 = a.c[1] * b.c[0] - a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  const T t4 = -a.c[0] * b.c[1] - a.c[1] * b.c[7] - a.c[2] * b.c[4] - a.c[3] * b.c[5];
+  const T t5 = a.c[1] * b.c[3] + a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t6 = -a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T t7 = a.c[0] * b.c[0] + a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[4];
+  const T inv = T(1) / (-a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3]);
+  return basic_motor<T>((-a.c[1] * t3 - a.c[2] * t5 - a.c[3] * t6) * inv,
+                        (a.c[1] * t0 + a.c[2] * t6 - a.c[3] * t5) * inv,
+                        (-a.c[1] * t6 + a.c[2] * t0 + a.c[3] * t3) * inv,
+                        (a.c[1] * t5 - a.c[2] * t3 + a.c[3] * t0) * inv,
+                        (-a.c[0] * t6 + a.c[1] * t2 + a.c[2] * t4 + a.c[3] * t7) * inv,
+                        (a.c[0] * t5 - a.c[1] * t1 - a.c[2] * t7 + a.c[3] * t4) * inv,
+                        (-a.c[0] * t3 + a.c[1] * t7 - a.c[2] * t1 - a.c[3] * t2) * inv,
+                        (a.c[0] * t0 - a.c[1] * t4 + a.c[2] * t2 - a.c[3] * t1) * inv);
+}
+
+// apply(pseudoscalar, normalized_point) -> normalized_point: 13 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_normalized_point<T> apply(const basic_pseudoscalar<T>& a,
+                                                     const basic_normalized_point<T>& b) {
+  const T t1 = -a.c[0] * b.c[2];
+  const T t2 = a.c[0] * b.c[1];
+  const T t3 = -a.c[0] * b.c[0];
+  const T t4 = -a.c[0] * b.c[3];
+  const T inv = T(1) / (-a.c[0] * a.c[0]);
+  return basic_normalized_point<T>((a.c[0] * t3) * inv, (-a.c[0] * t2) * inv, (a.c[0] * t1) * inv,
+                                   (a.c[0] * t4) * inv);
+}
+
+// apply(pseudoscalar, dual_sphere) -> dual_sphere: 16 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_pseudoscalar<T>& a,
+                                                const basic_dual_sphere<T>& b) {
+  const T t0 = -a.c[0] * b.c[0];
+  const T t1 = -a.c[0] * b.c[3];
+  const T t2 = a.c[0] * b.c[2];
+  const T t3 = -a.c[0] * b.c[1];
+  const T t4 = -a.c[0] * b.c[4];
+  const T inv = T(1) / (-a.c[0] * a.c[0]);
+  return basic_dual_sphere<T>((a.c[0] * t0) * inv, (a.c[0] * t3) * inv, (-a.c[0] * t2) * inv,
+                              (a.c[0] * t1) * inv, (a.c[0] * t4) * inv);
+}
+
+// apply(pseudoscalar, dual_plane) -> dual_plane: 13 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> apply(const basic_pseudoscalar<T>& a,
+                                               const basic_dual_plane<T>& b) {
+  const T t0 = -a.c[0] * b.c[2];
+  const T t1 = a.c[0] * b.c[1];
+  const T t2 = -a.c[0] * b.c[0];
+  const T t3 = -a.c[0] * b.c[3];
+  const T inv = T(1) / (-a.c[0] * a.c[0]);
+  return basic_dual_plane<T>((a.c[0] * t2) * inv, (-a.c[0] * t1) * inv, (a.c[0] * t0) * inv,
+                             (a.c[0] * t3) * inv);
+}
+
+// apply(pseudoscalar, euclidean_vector) -> euclidean_vector: 10 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> apply(const basic_pseudoscalar<T>& a,
+                                                     const basic_euclidean_vector<T>& b) {
+  const T t0 = -a.c[0] * b.c[2];
+  const T t1 = a.c[0] * b.c[1];
+  const T t2 = -a.c[0] * b.c[0];
+  const T inv = T(1) / (-a.c[0] * a.c[0]);
+  return basic_euclidean_vector<T>((a.c[0] * t2) * inv, (-a.c[0] * t1) * inv, (a.c[0] * t0) * inv);
+}
+
+// apply(pseudoscalar, flat_point) -> flat_point: 13 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> apply(const basic_pseudoscalar<T>& a,
+                                               const basic_flat_point<T>& b) {
+  const T t0 = -a.c[0] * b.c[3];
+  const T t1 = -a.c[0] * b.c[2];
+  const T t2 = a.c[0] * b.c[1];
+  const T t3 = -a.c[0] * b.c[0];
+  const T inv = T(1) / (-a.c[0] * a.c[0]);
+  return basic_flat_point<T>((a.c[0] * t3) * inv, (-a.c[0] * t2) * inv, (a.c[0] * t1) * inv,
+                             (a.c[0] * t0) * inv);
+}
+
+// apply(pseudoscalar, euclidean_bivector) -> euclidean_bivector: 10 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> apply(const basic_pseudoscalar<T>& a,
+                                                       const basic_euclidean_bivector<T>& b) {
+  const T t0 = -a.c[0] * b.c[2];
+  const T t1 = a.c[0] * b.c[1];
+  const T t2 = -a.c[0] * b.c[0];
+  const T inv = T(1) / (-a.c[0] * a.c[0]);
+  return basic_euclidean_bivector<T>((a.c[0] * t2) * inv, (-a.c[0] * t1) * inv,
+                                     (a.c[0] * t0) * inv);
+}
+
+// apply(pseudoscalar, point_pair) -> point_pair: 31 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_pseudoscalar<T>& a,
+                                               const basic_point_pair<T>& b) {
+  const T t0 = -a.c[0] * b.c[2];
+  const T t1 = a.c[0] * b.c[1];
+  const T t2 = -a.c[0] * b.c[0];
+  const T t3 = -a.c[0] * b.c[3];
+  const T t4 = -a.c[0] * b.c[7];
+  const T t5 = a.c[0] * b.c[5];
+  const T t6 = -a.c[0] * b.c[9];
+  const T t7 = -a.c[0] * b.c[4];
+  const T t8 = a.c[0] * b.c[8];
+  const T t9 = -a.c[0] * b.c[6];
+  const T inv = T(1) / (-a.c[0] * a.c[0]);
+  return basic_point_pair<T>((a.c[0] * t2) * inv, (-a.c[0] * t1) * inv, (a.c[0] * t0) * inv,
+                             (a.c[0] * t3) * inv, (a.c[0] * t7) * inv, (-a.c[0] * t5) * inv,
+                             (a.c[0] * t9) * inv, (a.c[0] * t4) * inv, (-a.c[0] * t8) * inv,
+                             (a.c[0] * t6) * inv);
+}
+
+// apply(pseudoscalar, dual_line) -> dual_line: 19 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> apply(const basic_pseudoscalar<T>& a,
+                                              const basic_dual_line<T>& b) {
+  const T t0 = -a.c[0] * b.c[2];
+  const T t1 = a.c[0] * b.c[1];
+  const T t2 = -a.c[0] * b.c[5];
+  const T t3 = -a.c[0] * b.c[0];
+  const T t4 = a.c[0] * b.c[4];
+  const T t5 = -a.c[0] * b.c[3];
+  const T inv = T(1) / (-a.c[0] * a.c[0]);
+  return basic_dual_line<T>((a.c[0] * t3) * inv, (-a.c[0] * t1) * inv, (a.c[0] * t0) * inv,
+                            (a.c[0] * t5) * inv, (-a.c[0] * t4) * inv, (a.c[0] * t2) * inv);
+}
+
+// apply(pseudoscalar, line) -> line: 19 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> apply(const basic_pseudoscalar<T>& a, const basic_line<T>& b) {
+  const T t0 = a.c[0] * b.c[5];
+  const T t1 = -a.c[0] * b.c[4];
+  const T t2 = a.c[0] * b.c[3];
+  const T t3 = a.c[0] * b.c[2];
+  const T t4 = -a.c[0] * b.c[1];
+  const T t5 = a.c[0] * b.c[0];
+  const T inv = T(1) / (-a.c[0] * a.c[0]);
+  return basic_line<T>((-a.c[0] * t5) * inv, (a.c[0] * t4) * inv, (-a.c[0] * t3) * inv,
+                       (-a.c[0] * t2) * inv, (a.c[0] * t1) * inv, (-a.c[0] * t0) * inv);
+}
+
+// apply(pseudoscalar, circle) -> circle: 31 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> apply(const basic_pseudoscalar<T>& a,
+                                           const basic_circle<T>& b) {
+  const T t0 = a.c[0] * b.c[2];
+  const T t1 = -a.c[0] * b.c[1];
+  const T t2 = a.c[0] * b.c[5];
+  const T t3 = a.c[0] * b.c[0];
+  const T t4 = -a.c[0] * b.c[4];
+  const T t5 = a.c[0] * b.c[3];
+  const T t6 = a.c[0] * b.c[6];
+  const T t7 = a.c[0] * b.c[9];
+  const T t8 = -a.c[0] * b.c[8];
+  const T t9 = a.c[0] * b.c[7];
+  const T inv = T(1) / (-a.c[0] * a.c[0]);
+  return basic_circle<T>((-a.c[0] * t3) * inv, (a.c[0] * t1) * inv, (-a.c[0] * t0) * inv,
+                         (-a.c[0] * t5) * inv, (a.c[0] * t4) * inv, (-a.c[0] * t2) * inv,
+                         (-a.c[0] * t6) * inv, (-a.c[0] * t9) * inv, (a.c[0] * t8) * inv,
+                         (-a.c[0] * t7) * inv);
+}
+
+// apply(pseudoscalar, sphere) -> sphere: 16 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> apply(const basic_pseudoscalar<T>& a,
+                                           const basic_sphere<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[0] * b.c[3];
+  const T t2 = -a.c[0] * b.c[2];
+  const T t3 = a.c[0] * b.c[1];
+  const T t4 = a.c[0] * b.c[4];
+  const T inv = T(1) / (-a.c[0] * a.c[0]);
+  return basic_sphere<T>((-a.c[0] * t0) * inv, (-a.c[0] * t3) * inv, (a.c[0] * t2) * inv,
+                         (-a.c[0] * t1) * inv, (-a.c[0] * t4) * inv);
+}
+
+// apply(pseudoscalar, plane) -> plane: 13 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> apply(const basic_pseudoscalar<T>& a, const basic_plane<T>& b) {
+  const T t0 = a.c[0] * b.c[3];
+  const T t1 = -a.c[0] * b.c[2];
+  const T t2 = a.c[0] * b.c[1];
+  const T t3 = a.c[0] * b.c[0];
+  const T inv = T(1) / (-a.c[0] * a.c[0]);
+  return basic_plane<T>((-a.c[0] * t3) * inv, (-a.c[0] * t2) * inv, (a.c[0] * t1) * inv,
+                        (-a.c[0] * t0) * inv);
+}
+
+// apply(pseudoscalar, pseudoscalar) -> pseudoscalar: 4 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> apply(const basic_pseudoscalar<T>& a,
+                                                 const basic_pseudoscalar<T>& b) {
+  const T t0 = -a.c[0] * b.c[0];
+  const T inv = T(1) / (-a.c[0] * a.c[0]);
+  return basic_pseudoscalar<T>((a.c[0] * t0) * inv);
+}
+
+// apply(pseudoscalar, rotor) -> rotor: 13 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> apply(const basic_pseudoscalar<T>& a, const basic_rotor<T>& b) {
+  const T t0 = -a.c[0] * b.c[3];
+  const T t1 = a.c[0] * b.c[2];
+  const T t2 = -a.c[0] * b.c[1];
+  const T t3 = a.c[0] * b.c[0];
+  const T inv = T(1) / (-a.c[0] * a.c[0]);
+  return basic_rotor<T>((-a.c[0] * t3) * inv, (a.c[0] * t2) * inv, (-a.c[0] * t1) * inv,
+                        (a.c[0] * t0) * inv);
+}
+
+// apply(pseudoscalar, translator) -> translator: 13 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> apply(const basic_pseudoscalar<T>& a,
+                                               const basic_translator<T>& b) {
+  const T t0 = -a.c[0] * b.c[3];
+  const T t1 = a.c[0] * b.c[2];
+  const T t2 = -a.c[0] * b.c[1];
+  const T t3 = a.c[0] * b.c[0];
+  const T inv = T(1) / (-a.c[0] * a.c[0]);
+  return basic_translator<T>((-a.c[0] * t3) * inv, (a.c[0] * t2) * inv, (-a.c[0] * t1) * inv,
+                             (a.c[0] * t0) * inv);
+}
+
+// apply(pseudoscalar, motor) -> motor: 25 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> apply(const basic_pseudoscalar<T>& a, const basic_motor<T>& b) {
+  const T t0 = a.c[0] * b.c[7];
+  const T t1 = -a.c[0] * b.c[3];
+  const T t2 = a.c[0] * b.c[2];
+  const T t3 = -a.c[0] * b.c[6];
+  const T t4 = -a.c[0] * b.c[1];
+  const T t5 = a.c[0] * b.c[5];
+  const T t6 = -a.c[0] * b.c[4];
+  const T t7 = a.c[0] * b.c[0];
+  const T inv = T(1) / (-a.c[0] * a.c[0]);
+  return basic_motor<T>((-a.c[0] * t7) * inv, (a.c[0] * t4) * inv, (-a.c[0] * t2) * inv,
+                        (a.c[0] * t1) * inv, (a.c[0] * t6) * inv, (-a.c[0] * t5) * inv,
+                        (a.c[0] * t3) * inv, (-a.c[0] * t0) * inv);
+}
+
+// apply(rotor, dual_sphere) -> dual_sphere: 49 mul, 26 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_rotor<T>& a,
+                                                const basic_dual_sphere<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3];
+  const T t2 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[3] * b.c[3];
+  const T t3 = a.c[1] * b.c[0];
+  const T t4 = a.c[0] * b.c[3] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t5 = a.c[2] * b.c[0];
+  const T t6 = a.c[3] * b.c[0];
+  const T t7 = a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  const T t8 = a.c[0] * b.c[4];
+  const T t9 = a.c[1] * b.c[4];
+  const T t10 = a.c[2] * b.c[4];
+  const T t11 = a.c[3] * b.c[4];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_dual_sphere<T>((a.c[0] * t0 + a.c[1] * t3 + a.c[2] * t5 + a.c[3] * t6) * inv,
+                              (a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t4 + a.c[3] * t7) * inv,
+                              (a.c[0] * t2 - a.c[1] * t1 - a.c[2] * t7 + a.c[3] * t4) * inv,
+                              (a.c[0] * t4 + a.c[1] * t7 - a.c[2] * t1 - a.c[3] * t2) * inv,
+                              (a.c[0] * t8 + a.c[1] * t9 + a.c[2] * t10 + a.c[3] * t11) * inv);
+}
+
+// apply(rotor, dual_plane) -> dual_plane: 40 mul, 23 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> apply(const basic_rotor<T>& a,
+                                               const basic_dual_plane<T>& b) {
+  const T t0 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t1 = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  const T t2 = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t3 = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T t4 = a.c[0] * b.c[3];
+  const T t5 = a.c[1] * b.c[3];
+  const T t6 = a.c[2] * b.c[3];
+  const T t7 = a.c[3] * b.c[3];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_dual_plane<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2 + a.c[3] * t3) * inv,
+                             (a.c[0] * t1 - a.c[1] * t0 - a.c[2] * t3 + a.c[3] * t2) * inv,
+                             (a.c[0] * t2 + a.c[1] * t3 - a.c[2] * t0 - a.c[3] * t1) * inv,
+                             (a.c[0] * t4 + a.c[1] * t5 + a.c[2] * t6 + a.c[3] * t7) * inv);
+}
+
+// apply(rotor, euclidean_vector) -> euclidean_vector: 31 mul, 20 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_vector<T> apply(const basic_rotor<T>& a,
+                                                     const basic_euclidean_vector<T>& b) {
+  const T t0 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t1 = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  const T t2 = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t3 = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_euclidean_vector<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2 + a.c[3] * t3) * inv,
+                                   (a.c[0] * t1 - a.c[1] * t0 - a.c[2] * t3 + a.c[3] * t2) * inv,
+                                   (a.c[0] * t2 + a.c[1] * t3 - a.c[2] * t0 - a.c[3] * t1) * inv);
+}
+
+// apply(rotor, flat_point) -> flat_point: 40 mul, 23 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> apply(const basic_rotor<T>& a,
+                                               const basic_flat_point<T>& b) {
+  const T t0 = a.c[0] * b.c[3];
+  const T t1 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t2 = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  const T t3 = a.c[1] * b.c[3];
+  const T t4 = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t5 = a.c[2] * b.c[3];
+  const T t6 = a.c[3] * b.c[3];
+  const T t7 = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_flat_point<T>((a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t4 + a.c[3] * t7) * inv,
+                             (a.c[0] * t2 - a.c[1] * t1 - a.c[2] * t7 + a.c[3] * t4) * inv,
+                             (a.c[0] * t4 + a.c[1] * t7 - a.c[2] * t1 - a.c[3] * t2) * inv,
+                             (a.c[0] * t0 + a.c[1] * t3 + a.c[2] * t5 + a.c[3] * t6) * inv);
+}
+
+// apply(rotor, euclidean_bivector) -> euclidean_bivector: 31 mul, 20 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> apply(const basic_rotor<T>& a,
+                                                       const basic_euclidean_bivector<T>& b) {
+  const T t0 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t1 = a.c[0] * b.c[0] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  const T t2 = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  const T t3 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_euclidean_bivector<T>((a.c[0] * t1 - a.c[1] * t0 - a.c[2] * t3 + a.c[3] * t2) * inv,
+                                     (a.c[0] * t2 + a.c[1] * t3 - a.c[2] * t0 - a.c[3] * t1) * inv,
+                                     (a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1 - a.c[3] * t0) * inv);
+}
+
+// apply(rotor, point_pair) -> point_pair: 94 mul, 57 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_rotor<T>& a,
+                                               const basic_point_pair<T>& b) {
+  const T t0 = -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[7];
+  const T t1 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t2 = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  const T t3 = a.c[0] * b.c[4] - a.c[2] * b.c[7] + a.c[3] * b.c[5];
+  const T t4 = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t5 = a.c[0] * b.c[5] + a.c[1] * b.c[7] - a.c[3] * b.c[4];
+  const T t6 = a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4];
+  const T t7 = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T t8 = a.c[0] * b.c[3];
+  const T t9 = a.c[0] * b.c[6] + a.c[1] * b.c[8] + a.c[2] * b.c[9];
+  const T t10 = a.c[0] * b.c[8] - a.c[1] * b.c[6] + a.c[3] * b.c[9];
+  const T t11 = a.c[1] * b.c[3];
+  const T t12 = a.c[0] * b.c[9] - a.c[2] * b.c[6] - a.c[3] * b.c[8];
+  const T t13 = a.c[2] * b.c[3];
+  const T t14 = a.c[3] * b.c[3];
+  const T t15 = a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[6];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_point_pair<T>((a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t4 + a.c[3] * t7) * inv,
+                             (a.c[0] * t2 - a.c[1] * t1 - a.c[2] * t7 + a.c[3] * t4) * inv,
+                             (a.c[0] * t4 + a.c[1] * t7 - a.c[2] * t1 - a.c[3] * t2) * inv,
+                             (a.c[0] * t8 + a.c[1] * t11 + a.c[2] * t13 + a.c[3] * t14) * inv,
+                             (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t6 + a.c[3] * t5) * inv,
+                             (a.c[0] * t5 + a.c[1] * t6 - a.c[2] * t0 - a.c[3] * t3) * inv,
+                             (a.c[0] * t9 + a.c[1] * t10 + a.c[2] * t12 + a.c[3] * t15) * inv,
+                             (a.c[0] * t6 - a.c[1] * t5 + a.c[2] * t3 - a.c[3] * t0) * inv,
+                             (a.c[0] * t10 - a.c[1] * t9 - a.c[2] * t15 + a.c[3] * t12) * inv,
+                             (a.c[0] * t12 + a.c[1] * t15 - a.c[2] * t9 - a.c[3] * t10) * inv);
+}
+
+// apply(rotor, dual_line) -> dual_line: 58 mul, 37 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> apply(const basic_rotor<T>& a,
+                                              const basic_dual_line<T>& b) {
+  const T t0 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t1 = a.c[0] * b.c[0] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  const T t2 = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  const T t3 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t4 = a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5];
+  const T t5 = a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[5];
+  const T t6 = a.c[0] * b.c[5] - a.c[2] * b.c[3] - a.c[3] * b.c[4];
+  const T t7 = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_dual_line<T>((a.c[0] * t1 - a.c[1] * t0 - a.c[2] * t3 + a.c[3] * t2) * inv,
+                            (a.c[0] * t2 + a.c[1] * t3 - a.c[2] * t0 - a.c[3] * t1) * inv,
+                            (a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1 - a.c[3] * t0) * inv,
+                            (a.c[0] * t4 + a.c[1] * t5 + a.c[2] * t6 + a.c[3] * t7) * inv,
+                            (a.c[0] * t5 - a.c[1] * t4 - a.c[2] * t7 + a.c[3] * t6) * inv,
+                            (a.c[0] * t6 + a.c[1] * t7 - a.c[2] * t4 - a.c[3] * t5) * inv);
+}
+
+// apply(rotor, line) -> line: 58 mul, 37 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> apply(const basic_rotor<T>& a, const basic_line<T>& b) {
+  const T t0 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t1 = a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5];
+  const T t2 = a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[5];
+  const T t3 = a.c[0] * b.c[0] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  const T t4 = a.c[0] * b.c[5] - a.c[2] * b.c[3] - a.c[3] * b.c[4];
+  const T t5 = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  const T t6 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t7 = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_line<T>((a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t6 + a.c[3] * t5) * inv,
+                       (a.c[0] * t5 + a.c[1] * t6 - a.c[2] * t0 - a.c[3] * t3) * inv,
+                       (a.c[0] * t6 - a.c[1] * t5 + a.c[2] * t3 - a.c[3] * t0) * inv,
+                       (a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t4 + a.c[3] * t7) * inv,
+                       (a.c[0] * t2 - a.c[1] * t1 - a.c[2] * t7 + a.c[3] * t4) * inv,
+                       (a.c[0] * t4 + a.c[1] * t7 - a.c[2] * t1 - a.c[3] * t2) * inv);
+}
+
+// apply(rotor, circle) -> circle: 94 mul, 57 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> apply(const basic_rotor<T>& a, const basic_circle<T>& b) {
+  const T t0 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t1 = -a.c[3] * b.c[6];
+  const T t2 = a.c[2] * b.c[6];
+  const T t3 = a.c[0] * b.c[0] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  const T t4 = -a.c[1] * b.c[6];
+  const T t5 = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  const T t6 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t7 = a.c[0] * b.c[6];
+  const T t8 = -a.c[1] * b.c[7] - a.c[2] * b.c[8] - a.c[3] * b.c[9];
+  const T t9 = a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5];
+  const T t10 = a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[5];
+  const T t11 = a.c[0] * b.c[7] - a.c[2] * b.c[9] + a.c[3] * b.c[8];
+  const T t12 = a.c[0] * b.c[5] - a.c[2] * b.c[3] - a.c[3] * b.c[4];
+  const T t13 = a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[3] * b.c[7];
+  const T t14 = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7];
+  const T t15 = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_circle<T>((a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t6 + a.c[3] * t5) * inv,
+                         (a.c[0] * t5 + a.c[1] * t6 - a.c[2] * t0 - a.c[3] * t3) * inv,
+                         (a.c[0] * t6 - a.c[1] * t5 + a.c[2] * t3 - a.c[3] * t0) * inv,
+                         (a.c[0] * t9 + a.c[1] * t10 + a.c[2] * t12 + a.c[3] * t15) * inv,
+                         (a.c[0] * t10 - a.c[1] * t9 - a.c[2] * t15 + a.c[3] * t12) * inv,
+                         (a.c[0] * t12 + a.c[1] * t15 - a.c[2] * t9 - a.c[3] * t10) * inv,
+                         (a.c[0] * t7 - a.c[1] * t4 + a.c[2] * t2 - a.c[3] * t1) * inv,
+                         (a.c[0] * t11 - a.c[1] * t8 - a.c[2] * t14 + a.c[3] * t13) * inv,
+                         (a.c[0] * t13 + a.c[1] * t14 - a.c[2] * t8 - a.c[3] * t11) * inv,
+                         (a.c[0] * t14 - a.c[1] * t13 + a.c[2] * t11 - a.c[3] * t8) * inv);
+}
+
+// apply(rotor, sphere) -> sphere: 49 mul, 26 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> apply(const basic_rotor<T>& a, const basic_sphere<T>& b) {
+  const T t0 = -a.c[3] * b.c[0];
+  const T t1 = a.c[2] * b.c[0];
+  const T t2 = -a.c[1] * b.c[0];
+  const T t3 = a.c[0] * b.c[0];
+  const T t4 = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  const T t5 = -a.c[3] * b.c[4];
+  const T t6 = a.c[2] * b.c[4];
+  const T t7 = a.c[0] * b.c[1] - a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  const T t8 = -a.c[1] * b.c[4];
+  const T t9 = a.c[0] * b.c[2] + a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  const T t10 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t11 = a.c[0] * b.c[4];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_sphere<T>((a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1 - a.c[3] * t0) * inv,
+                         (a.c[0] * t7 - a.c[1] * t4 - a.c[2] * t10 + a.c[3] * t9) * inv,
+                         (a.c[0] * t9 + a.c[1] * t10 - a.c[2] * t4 - a.c[3] * t7) * inv,
+                         (a.c[0] * t10 - a.c[1] * t9 + a.c[2] * t7 - a.c[3] * t4) * inv,
+                         (a.c[0] * t11 - a.c[1] * t8 + a.c[2] * t6 - a.c[3] * t5) * inv);
+}
+
+// apply(rotor, plane) -> plane: 40 mul, 23 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> apply(const basic_rotor<T>& a, const basic_plane<T>& b) {
+  const T t0 = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  const T t1 = -a.c[3] * b.c[0];
+  const T t2 = a.c[2] * b.c[0];
+  const T t3 = a.c[0] * b.c[1] - a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  const T t4 = -a.c[1] * b.c[0];
+  const T t5 = a.c[0] * b.c[2] + a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  const T t6 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t7 = a.c[0] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_plane<T>((a.c[0] * t7 - a.c[1] * t4 + a.c[2] * t2 - a.c[3] * t1) * inv,
+                        (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t6 + a.c[3] * t5) * inv,
+                        (a.c[0] * t5 + a.c[1] * t6 - a.c[2] * t0 - a.c[3] * t3) * inv,
+                        (a.c[0] * t6 - a.c[1] * t5 + a.c[2] * t3 - a.c[3] * t0) * inv);
+}
+
+// apply(rotor, pseudoscalar) -> pseudoscalar: 13 mul, 6 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> apply(const basic_rotor<T>& a,
+                                                 const basic_pseudoscalar<T>& b) {
+  const T t0 = -a.c[3] * b.c[0];
+  const T t1 = a.c[2] * b.c[0];
+  const T t2 = -a.c[1] * b.c[0];
+  const T t3 = a.c[0] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_pseudoscalar<T>((a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1 - a.c[3] * t0) * inv);
+}
+
+// apply(rotor, rotor) -> rotor: 40 mul, 27 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> apply(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+  const T t0 = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  const T t1 = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  const T t2 = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t3 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_rotor<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2 + a.c[3] * t3) * inv,
+                        (a.c[0] * t1 - a.c[1] * t0 - a.c[2] * t3 + a.c[3] * t2) * inv,
+                        (a.c[0] * t2 + a.c[1] * t3 - a.c[2] * t0 - a.c[3] * t1) * inv,
+                        (a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1 - a.c[3] * t0) * inv);
+}
+
+// apply(rotor, translator) -> translator: 40 mul, 23 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> apply(const basic_rotor<T>& a,
+                                               const basic_translator<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[1] * b.c[0];
+  const T t2 = a.c[2] * b.c[0];
+  const T t3 = a.c[3] * b.c[0];
+  const T t4 = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3];
+  const T t5 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[3] * b.c[3];
+  const T t6 = a.c[0] * b.c[3] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t7 = a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_translator<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2 + a.c[3] * t3) * inv,
+                             (a.c[0] * t4 + a.c[1] * t5 + a.c[2] * t6 + a.c[3] * t7) * inv,
+                             (a.c[0] * t5 - a.c[1] * t4 - a.c[2] * t7 + a.c[3] * t6) * inv,
+                             (a.c[0] * t6 + a.c[1] * t7 - a.c[2] * t4 - a.c[3] * t5) * inv);
+}
+
+// apply(rotor, motor) -> motor: 76 mul, 51 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> apply(const basic_rotor<T>& a, const basic_motor<T>& b) {
+  const T t0 = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  const T t1 = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  const T t2 = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t3 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T t4 = a.c[0] * b.c[4] + a.c[1] * b.c[5] + a.c[2] * b.c[6] - a.c[3] * b.c[7];
+  const T t5 = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[7] + a.c[3] * b.c[6];
+  const T t6 = a.c[0] * b.c[6] - a.c[1] * b.c[7] - a.c[2] * b.c[4] - a.c[3] * b.c[5];
+  const T t7 = a.c[0] * b.c[7] + a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[4];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_motor<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2 + a.c[3] * t3) * inv,
+                        (a.c[0] * t1 - a.c[1] * t0 - a.c[2] * t3 + a.c[3] * t2) * inv,
+                        (a.c[0] * t2 + a.c[1] * t3 - a.c[2] * t0 - a.c[3] * t1) * inv,
+                        (a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1 - a.c[3] * t0) * inv,
+                        (a.c[0] * t4 + a.c[1] * t5 + a.c[2] * t6 + a.c[3] * t7) * inv,
+                        (a.c[0] * t5 - a.c[1] * t4 - a.c[2] * t7 + a.c[3] * t6) * inv,
+                        (a.c[0] * t6 + a.c[1] * t7 - a.c[2] * t4 - a.c[3] * t5) * inv,
+                        (a.c[0] * t7 - a.c[1] * t6 + a.c[2] * t5 - a.c[3] * t4) * inv);
+}
+
+// apply(translator, dual_sphere) -> dual_sphere: 34 mul, 15 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> apply(const basic_translator<T>& a,
+                                                const basic_dual_sphere<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  const T t2 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t3 = a.c[0] * b.c[3] - a.c[3] * b.c[0];
+  const T t4 = a.c[0] * b.c[4] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  const T t5 = a.c[1] * b.c[0];
+  const T t6 = a.c[2] * b.c[0];
+  const T t8 = a.c[3] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_dual_sphere<T>((a.c[0] * t0) * inv, (a.c[0] * t1 - a.c[1] * t0) * inv,
+                              (a.c[0] * t2 - a.c[2] * t0) * inv, (a.c[0] * t3 - a.c[3] * t0) * inv,
+                              (a.c[0] * t4 - a.c[1] * t1 + a.c[1] * t5 - a.c[2] * t2 + a.c[2] * t6 -
+                               a.c[3] * t3 + a.c[3] * t8) *
+                                  inv);
+}
+
+// apply(translator, dual_plane) -> dual_plane: 19 mul, 6 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> apply(const basic_translator<T>& a,
+                                               const basic_dual_plane<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[0] * b.c[1];
+  const T t2 = a.c[0] * b.c[2];
+  const T t3 = a.c[0] * b.c[3] - a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_dual_plane<T>((a.c[0] * t0) * inv, (a.c[0] * t1) * inv, (a.c[0] * t2) * inv,
+                             (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t1 - a.c[3] * t2) * inv);
+}
+
+// apply(translator, euclidean_vector) -> dual_plane: 18 mul, 5 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> apply(const basic_translator<T>& a,
+                                               const basic_euclidean_vector<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[0] * b.c[1];
+  const T t2 = a.c[0] * b.c[2];
+  const T t3 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_dual_plane<T>((a.c[0] * t0) * inv, (a.c[0] * t1) * inv, (a.c[0] * t2) * inv,
+                             (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t1 - a.c[3] * t2) * inv);
+}
+
+// apply(translator, flat_point) -> flat_point: 19 mul, 6 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> apply(const basic_translator<T>& a,
+                                               const basic_flat_point<T>& b) {
+  const T t0 = a.c[0] * b.c[3];
+  const T t1 = a.c[0] * b.c[0] - a.c[1] * b.c[3];
+  const T t2 = a.c[0] * b.c[1] - a.c[2] * b.c[3];
+  const T t3 = a.c[0] * b.c[2] - a.c[3] * b.c[3];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_flat_point<T>((a.c[0] * t1 - a.c[1] * t0) * inv, (a.c[0] * t2 - a.c[2] * t0) * inv,
+                             (a.c[0] * t3 - a.c[3] * t0) * inv, (a.c[0] * t0) * inv);
+}
+
+// apply(translator, euclidean_bivector) -> dual_line: 28 mul, 9 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> apply(const basic_translator<T>& a,
+                                              const basic_euclidean_bivector<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[0] * b.c[1];
+  const T t2 = a.c[0] * b.c[2];
+  const T t3 = -a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t4 = a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  const T t5 = a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_dual_line<T>((a.c[0] * t0) * inv, (a.c[0] * t1) * inv, (a.c[0] * t2) * inv,
+                            (a.c[0] * t3 - a.c[2] * t0 - a.c[3] * t1) * inv,
+                            (a.c[0] * t4 + a.c[1] * t0 - a.c[3] * t2) * inv,
+                            (a.c[0] * t5 + a.c[1] * t1 + a.c[2] * t2) * inv);
+}
+
+// apply(translator, point_pair) -> point_pair: 85 mul, 50 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_point_pair<T> apply(const basic_translator<T>& a,
+                                               const basic_point_pair<T>& b) {
+  const T t0 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t1 = a.c[0] * b.c[0];
+  const T t2 = a.c[0] * b.c[1];
+  const T t3 = a.c[0] * b.c[4] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t4 = a.c[0] * b.c[2];
+  const T t5 = a.c[0] * b.c[5] - a.c[1] * b.c[2] + a.c[3] * b.c[0];
+  const T t6 = a.c[0] * b.c[7] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  const T t7 = a.c[0] * b.c[3] - a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t8 = a.c[0] * b.c[6] - a.c[1] * b.c[3] - a.c[2] * b.c[4] - a.c[3] * b.c[5];
+  const T t9 = a.c[0] * b.c[8] + a.c[1] * b.c[4] - a.c[2] * b.c[3] - a.c[3] * b.c[7];
+  const T t10 = -a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t11 = a.c[0] * b.c[9] + a.c[1] * b.c[5] + a.c[2] * b.c[7] - a.c[3] * b.c[3];
+  const T t12 = -a.c[1] * b.c[2] + a.c[3] * b.c[0];
+  const T t13 = -a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_point_pair<T>((a.c[0] * t1) * inv, (a.c[0] * t2) * inv, (a.c[0] * t4) * inv,
+                             (a.c[0] * t7 - a.c[1] * t1 - a.c[2] * t2 - a.c[3] * t4) * inv,
+                             (a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1) * inv,
+                             (a.c[0] * t5 - a.c[1] * t4 + a.c[3] * t1) * inv,
+                             (a.c[0] * t8 - a.c[1] * t0 - a.c[1] * t7 - a.c[2] * t10 - a.c[2] * t3 -
+                              a.c[3] * t12 - a.c[3] * t5) *
+                                 inv,
+                             (a.c[0] * t6 - a.c[2] * t4 + a.c[3] * t2) * inv,
+                             (a.c[0] * t9 + a.c[1] * t10 + a.c[1] * t3 - a.c[2] * t0 - a.c[2] * t7 -
+                              a.c[3] * t13 - a.c[3] * t6) *
+                                 inv,
+                             (a.c[0] * t11 + a.c[1] * t12 + a.c[1] * t5 + a.c[2] * t13 +
+                              a.c[2] * t6 - a.c[3] * t0 - a.c[3] * t7) *
+                                 inv);
+}
+
+// apply(translator, dual_line) -> dual_line: 31 mul, 12 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> apply(const basic_translator<T>& a,
+                                              const basic_dual_line<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[0] * b.c[1];
+  const T t2 = a.c[0] * b.c[2];
+  const T t3 = a.c[0] * b.c[3] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t4 = a.c[0] * b.c[4] + a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  const T t5 = a.c[0] * b.c[5] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_dual_line<T>((a.c[0] * t0) * inv, (a.c[0] * t1) * inv, (a.c[0] * t2) * inv,
+                            (a.c[0] * t3 - a.c[2] * t0 - a.c[3] * t1) * inv,
+                            (a.c[0] * t4 + a.c[1] * t0 - a.c[3] * t2) * inv,
+                            (a.c[0] * t5 + a.c[1] * t1 + a.c[2] * t2) * inv);
+}
+
+// apply(translator, line) -> line: 31 mul, 12 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> apply(const basic_translator<T>& a, const basic_line<T>& b) {
+  const T t1 = a.c[0] * b.c[3];
+  const T t2 = a.c[0] * b.c[4];
+  const T t3 = a.c[0] * b.c[0] - a.c[1] * b.c[4] + a.c[2] * b.c[3];
+  const T t4 = a.c[0] * b.c[5];
+  const T t5 = a.c[0] * b.c[1] - a.c[1] * b.c[5] + a.c[3] * b.c[3];
+  const T t6 = a.c[0] * b.c[2] - a.c[2] * b.c[5] + a.c[3] * b.c[4];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_line<T>((a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1) * inv,
+                       (a.c[0] * t5 - a.c[1] * t4 + a.c[3] * t1) * inv,
+                       (a.c[0] * t6 - a.c[2] * t4 + a.c[3] * t2) * inv, (a.c[0] * t1) * inv,
+                       (a.c[0] * t2) * inv, (a.c[0] * t4) * inv);
+}
+
+// apply(translator, circle) -> circle: 85 mul, 50 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_circle<T> apply(const basic_translator<T>& a, const basic_circle<T>& b) {
+  const T t0 = a.c[2] * b.c[0] + a.c[3] * b.c[1];
+  const T t1 = -a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  const T t2 = a.c[0] * b.c[0];
+  const T t3 = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t4 = a.c[0] * b.c[1];
+  const T t5 = a.c[0] * b.c[2];
+  const T t6 = a.c[0] * b.c[6] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[3] * b.c[0];
+  const T t8 = a.c[0] * b.c[3] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t9 = a.c[0] * b.c[4] + a.c[1] * b.c[0] - a.c[3] * b.c[2];
+  const T t10 = a.c[0] * b.c[7] - a.c[1] * b.c[4] + a.c[2] * b.c[3] - a.c[3] * b.c[6];
+  const T t11 = a.c[0] * b.c[5] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t12 = a.c[0] * b.c[8] - a.c[1] * b.c[5] + a.c[2] * b.c[6] + a.c[3] * b.c[3];
+  const T t13 = a.c[0] * b.c[9] - a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[4];
+  const T t14 = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_circle<T>((a.c[0] * t2) * inv, (a.c[0] * t4) * inv, (a.c[0] * t5) * inv,
+                         (a.c[0] * t8 - a.c[2] * t2 - a.c[3] * t4) * inv,
+                         (a.c[0] * t9 + a.c[1] * t2 - a.c[3] * t5) * inv,
+                         (a.c[0] * t11 + a.c[1] * t4 + a.c[2] * t5) * inv,
+                         (a.c[0] * t6 - a.c[1] * t5 + a.c[2] * t4 - a.c[3] * t2) * inv,
+                         (a.c[0] * t10 + a.c[1] * t1 - a.c[1] * t9 - a.c[2] * t0 + a.c[2] * t8 +
+                          a.c[3] * t14 - a.c[3] * t6) *
+                             inv,
+                         (a.c[0] * t12 - a.c[1] * t11 + a.c[1] * t3 - a.c[2] * t14 + a.c[2] * t6 -
+                          a.c[3] * t0 + a.c[3] * t8) *
+                             inv,
+                         (a.c[0] * t13 + a.c[1] * t14 - a.c[1] * t6 - a.c[2] * t11 + a.c[2] * t3 -
+                          a.c[3] * t1 + a.c[3] * t9) *
+                             inv);
+}
+
+// apply(translator, sphere) -> sphere: 34 mul, 15 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> apply(const basic_translator<T>& a, const basic_sphere<T>& b) {
+  const T t0 = -a.c[3] * b.c[0];
+  const T t1 = a.c[2] * b.c[0];
+  const T t2 = -a.c[1] * b.c[0];
+  const T t3 = a.c[0] * b.c[0];
+  const T t6 = a.c[0] * b.c[1] - a.c[3] * b.c[0];
+  const T t8 = a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  const T t9 = a.c[0] * b.c[3] - a.c[1] * b.c[0];
+  const T t10 = a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[3] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_sphere<T>((a.c[0] * t3) * inv, (a.c[0] * t6 - a.c[3] * t3) * inv,
+                         (a.c[0] * t8 + a.c[2] * t3) * inv, (a.c[0] * t9 - a.c[1] * t3) * inv,
+                         (a.c[0] * t10 - a.c[1] * t2 - a.c[1] * t9 + a.c[2] * t1 + a.c[2] * t8 -
+                          a.c[3] * t0 - a.c[3] * t6) *
+                             inv);
+}
+
+// apply(translator, plane) -> plane: 19 mul, 6 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> apply(const basic_translator<T>& a, const basic_plane<T>& b) {
+  const T t2 = a.c[0] * b.c[1];
+  const T t4 = a.c[0] * b.c[2];
+  const T t5 = a.c[0] * b.c[3];
+  const T t6 = a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2] - a.c[3] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_plane<T>((a.c[0] * t6 - a.c[1] * t5 + a.c[2] * t4 - a.c[3] * t2) * inv,
+                        (a.c[0] * t2) * inv, (a.c[0] * t4) * inv, (a.c[0] * t5) * inv);
+}
+
+// apply(translator, pseudoscalar) -> pseudoscalar: 4 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> apply(const basic_translator<T>& a,
+                                                 const basic_pseudoscalar<T>& b) {
+  const T t3 = a.c[0] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_pseudoscalar<T>((a.c[0] * t3) * inv);
+}
+
+// apply(translator, rotor) -> motor: 38 mul, 15 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> apply(const basic_translator<T>& a, const basic_rotor<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[0] * b.c[1];
+  const T t2 = a.c[0] * b.c[2];
+  const T t3 = a.c[0] * b.c[3];
+  const T t4 = a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t5 = a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[3] * b.c[3];
+  const T t6 = a.c[1] * b.c[2] + a.c[2] * b.c[3] + a.c[3] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_motor<T>(
+      (a.c[0] * t0) * inv, (a.c[0] * t1) * inv, (a.c[0] * t2) * inv, (a.c[0] * t3) * inv,
+      (a.c[0] * t4 - a.c[1] * t0 - a.c[2] * t1 - a.c[3] * t2) * inv,
+      (a.c[0] * t5 + a.c[1] * t1 - a.c[2] * t0 - a.c[3] * t3) * inv,
+      (a.c[0] * t6 + a.c[1] * t2 + a.c[2] * t3 - a.c[3] * t0) * inv, (T(0)) * inv);
+}
+
+// apply(translator, translator) -> translator: 19 mul, 6 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> apply(const basic_translator<T>& a,
+                                               const basic_translator<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  const T t2 = a.c[0] * b.c[2] + a.c[2] * b.c[0];
+  const T t3 = a.c[0] * b.c[3] + a.c[3] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_translator<T>((a.c[0] * t0) * inv, (a.c[0] * t1 - a.c[1] * t0) * inv,
+                             (a.c[0] * t2 - a.c[2] * t0) * inv, (a.c[0] * t3 - a.c[3] * t0) * inv);
+}
+
+// apply(translator, motor) -> motor: 49 mul, 24 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> apply(const basic_translator<T>& a, const basic_motor<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[0] * b.c[1];
+  const T t2 = a.c[0] * b.c[2];
+  const T t3 = a.c[0] * b.c[3];
+  const T t4 = a.c[0] * b.c[4] + a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t5 = a.c[0] * b.c[5] + a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[3] * b.c[3];
+  const T t6 = a.c[0] * b.c[6] + a.c[1] * b.c[2] + a.c[2] * b.c[3] + a.c[3] * b.c[0];
+  const T t7 = a.c[0] * b.c[7] + a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_motor<T>((a.c[0] * t0) * inv, (a.c[0] * t1) * inv, (a.c[0] * t2) * inv,
+                        (a.c[0] * t3) * inv,
+                        (a.c[0] * t4 - a.c[1] * t0 - a.c[2] * t1 - a.c[3] * t2) * inv,
+                        (a.c[0] * t5 + a.c[1] * t1 - a.c[2] * t0 - a.c[3] * t3) * inv,
+                        (a.c[0] * t6 + a.c[1] * t2 + a.c[2] * t3 - a.c[3] * t0) * inv,
+                        (a.c[0] * t7 - a.c[1] * t3 + a.c[2] * t2 - a.c[3] * t1) * inv);
+}
+
+// apply(motor, euclidean_vector) -> dual_plane: 52 mul, 35 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_plane<T> apply(const basic_motor<T>& a,
+                                               const basic_euclidean_vector<T>& b) {
+  const T t0 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t1 = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  const T t2 = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t3 = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T t4 = -a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[6] * b.c[2];
+  const T t5 = -a.c[4] * b.c[1] + a.c[5] * b.c[0] - a.c[7] * b.c[2];
+  const T t6 = -a.c[4] * b.c[2] + a.c[6] * b.c[0] + a.c[7] * b.c[1];
+  const T t7 = -a.c[5] * b.c[2] + a.c[6] * b.c[1] - a.c[7] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_dual_plane<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2 + a.c[3] * t3) * inv,
+                             (a.c[0] * t1 - a.c[1] * t0 - a.c[2] * t3 + a.c[3] * t2) * inv,
+                             (a.c[0] * t2 + a.c[1] * t3 - a.c[2] * t0 - a.c[3] * t1) * inv,
+                             (a.c[0] * t4 + a.c[1] * t5 + a.c[2] * t6 + a.c[3] * t7 - a.c[4] * t0 -
+                              a.c[5] * t1 - a.c[6] * t2 - a.c[7] * t3) *
+                                 inv);
+}
+
+// apply(motor, flat_point) -> flat_point: 56 mul, 39 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_flat_point<T> apply(const basic_motor<T>& a,
+                                               const basic_flat_point<T>& b) {
+  const T t0 = a.c[0] * b.c[3];
+  const T t1 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] - a.c[4] * b.c[3];
+  const T t2 = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2] - a.c[5] * b.c[3];
+  const T t3 = a.c[1] * b.c[3];
+  const T t4 = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[1] - a.c[6] * b.c[3];
+  const T t5 = a.c[2] * b.c[3];
+  const T t6 = a.c[3] * b.c[3];
+  const T t7 = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0] - a.c[7] * b.c[3];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_flat_point<T>((a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t4 + a.c[3] * t7 - a.c[4] * t0 -
+                              a.c[5] * t3 - a.c[6] * t5 - a.c[7] * t6) *
+                                 inv,
+                             (a.c[0] * t2 - a.c[1] * t1 - a.c[2] * t7 + a.c[3] * t4 + a.c[4] * t3 -
+                              a.c[5] * t0 - a.c[6] * t6 + a.c[7] * t5) *
+                                 inv,
+                             (a.c[0] * t4 + a.c[1] * t7 - a.c[2] * t1 - a.c[3] * t2 + a.c[4] * t5 +
+                              a.c[5] * t6 - a.c[6] * t0 - a.c[7] * t3) *
+                                 inv,
+                             (a.c[0] * t0 + a.c[1] * t3 + a.c[2] * t5 + a.c[3] * t6) * inv);
+}
+
+// apply(motor, euclidean_bivector) -> dual_line: 70 mul, 49 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> apply(const basic_motor<T>& a,
+                                              const basic_euclidean_bivector<T>& b) {
+  const T t0 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t1 = a.c[0] * b.c[0] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  const T t2 = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  const T t3 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t4 = -a.c[5] * b.c[0] - a.c[6] * b.c[1] - a.c[7] * b.c[2];
+  const T t5 = a.c[4] * b.c[0] - a.c[6] * b.c[2] + a.c[7] * b.c[1];
+  const T t6 = a.c[4] * b.c[1] + a.c[5] * b.c[2] - a.c[7] * b.c[0];
+  const T t7 = a.c[4] * b.c[2] - a.c[5] * b.c[1] + a.c[6] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_dual_line<T>((a.c[0] * t1 - a.c[1] * t0 - a.c[2] * t3 + a.c[3] * t2) * inv,
+                            (a.c[0] * t2 + a.c[1] * t3 - a.c[2] * t0 - a.c[3] * t1) * inv,
+                            (a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1 - a.c[3] * t0) * inv,
+                            (a.c[0] * t4 + a.c[1] * t5 + a.c[2] * t6 + a.c[3] * t7 - a.c[4] * t0 -
+                             a.c[5] * t1 - a.c[6] * t2 - a.c[7] * t3) *
+                                inv,
+                            (a.c[0] * t5 - a.c[1] * t4 - a.c[2] * t7 + a.c[3] * t6 + a.c[4] * t1 -
+                             a.c[5] * t0 - a.c[6] * t3 + a.c[7] * t2) *
+                                inv,
+                            (a.c[0] * t6 + a.c[1] * t7 - a.c[2] * t4 - a.c[3] * t5 + a.c[4] * t2 +
+                             a.c[5] * t3 - a.c[6] * t0 - a.c[7] * t1) *
+                                inv);
+}
+
+// apply(motor, point_pair) -> point_pair: 174 mul, 137 add, 1 div
+template <class T>
+basic_point_pair<T> apply(const basic_motor<T>& a, const basic_point_pair<T>& b) {
+  const T t0 = -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[7] - a.c[4] * b.c[0] -
+               a.c[5] * b.c[1] - a.c[6] * b.c[2];
+  const T t1 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t2 = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
+  const T t3 = a.c[0] * b.c[4] - a.c[2] * b.c[7] + a.c[3] * b.c[5] - a.c[4] * b.c[1] +
+               a.c[5] * b.c[0] - a.c[7] * b.c[2];
+  const T t4 = a.c[0] * b.c[2] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t5 = a.c[0] * b.c[5] + a.c[1] * b.c[7] - a.c[3] * b.c[4] - a.c[4] * b.c[2] +
+               a.c[6] * b.c[0] + a.c[7] * b.c[1];
+  const T t6 = a.c[0] * b.c[7] - a.c[1] * b.c[5] + a.c[2] * b.c[4] - a.c[5] * b.c[2] +
+               a.c[6] * b.c[1] - a.c[7] * b.c[0];
+  const T t7 = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T t8 = a.c[0] * b.c[3] - a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[6] * b.c[2];
+  const T t9 = a.c[0] * b.c[6] + a.c[1] * b.c[8] + a.c[2] * b.c[9] - a.c[4] * b.c[3] -
+               a.c[5] * b.c[4] - a.c[6] * b.c[5] - a.c[7] * b.c[7];
+  const T t10 = a.c[0] * b.c[8] - a.c[1] * b.c[6] + a.c[3] * b.c[9] + a.c[4] * b.c[4] -
+                a.c[5] * b.c[3] - a.c[6] * b.c[7] + a.c[7] * b.c[5];
+  const T t11 = a.c[1] * b.c[3] - a.c[4] * b.c[1] + a.c[5] * b.c[0] - a.c[7] * b.c[2];
+  const T t12 = a.c[0] * b.c[9] - a.c[2] * b.c[6] - a.c[3] * b.c[8] + a.c[4] * b.c[5] +
+                a.c[5] * b.c[7] - a.c[6] * b.c[3] - a.c[7] * b.c[4];
+  const T t13 = a.c[2] * b.c[3] - a.c[4] * b.c[2] + a.c[6] * b.c[0] + a.c[7] * b.c[1];
+  const T t14 = a.c[3] * b.c[3] - a.c[5] * b.c[2] + a.c[6] * b.c[1] - a.c[7] * b.c[0];
+  const T t15 = a.c[1] * b.c[9] - a.c[2] * b.c[8] + a.c[3] * b.c[6] + a.c[4] * b.c[7] -
+                a.c[5] * b.c[5] + a.c[6] * b.c[4] - a.c[7] * b.c[3];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_point_pair<T>(
+      (a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t4 + a.c[3] * t7) * inv,
+      (a.c[0] * t2 - a.c[1] * t1 - a.c[2] * t7 + a.c[3] * t4) * inv,
+      (a.c[0] * t4 + a.c[1] * t7 - a.c[2] * t1 - a.c[3] * t2) * inv,
+      (a.c[0] * t8 + a.c[1] * t11 + a.c[2] * t13 + a.c[3] * t14 - a.c[4] * t1 - a.c[5] * t2 -
+       a.c[6] * t4 - a.c[7] * t7) *
+          inv,
+      (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t6 + a.c[3] * t5 - a.c[4] * t2 + a.c[5] * t1 +
+       a.c[6] * t7 - a.c[7] * t4) *
+          inv,
+      (a.c[0] * t5 + a.c[1] * t6 - a.c[2] * t0 - a.c[3] * t3 - a.c[4] * t4 - a.c[5] * t7 +
+       a.c[6] * t1 + a.c[7] * t2) *
+          inv,
+      (a.c[0] * t9 + a.c[1] * t10 + a.c[2] * t12 + a.c[3] * t15 - a.c[4] * t0 - a.c[4] * t8 -
+       a.c[5] * t11 - a.c[5] * t3 - a.c[6] * t13 - a.c[6] * t5 - a.c[7] * t14 - a.c[7] * t6) *
+          inv,
+      (a.c[0] * t6 - a.c[1] * t5 + a.c[2] * t3 - a.c[3] * t0 + a.c[4] * t7 - a.c[5] * t4 +
+       a.c[6] * t2 - a.c[7] * t1) *
+          inv,
+      (a.c[0] * t10 - a.c[1] * t9 - a.c[2] * t15 + a.c[3] * t12 + a.c[4] * t11 + a.c[4] * t3 -
+       a.c[5] * t0 - a.c[5] * t8 - a.c[6] * t14 - a.c[6] * t6 + a.c[7] * t13 + a.c[7] * t5) *
+          inv,
+      (a.c[0] * t12 + a.c[1] * t15 - a.c[2] * t9 - a.c[3] * t10 + a.c[4] * t13 + a.c[4] * t5 +
+       a.c[5] * t14 + a.c[5] * t6 - a.c[6] * t0 - a.c[6] * t8 - a.c[7] * t11 - a.c[7] * t3) *
+          inv);
+}
+
+// apply(motor, dual_line) -> dual_line: 82 mul, 61 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_dual_line<T> apply(const basic_motor<T>& a,
+                                              const basic_dual_line<T>& b) {
+  const T t0 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t1 = a.c[0] * b.c[0] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  const T t2 = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  const T t3 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t4 = a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5] - a.c[5] * b.c[0] -
+               a.c[6] * b.c[1] - a.c[7] * b.c[2];
+  const T t5 = a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[5] + a.c[4] * b.c[0] -
+               a.c[6] * b.c[2] + a.c[7] * b.c[1];
+  const T t6 = a.c[0] * b.c[5] - a.c[2] * b.c[3] - a.c[3] * b.c[4] + a.c[4] * b.c[1] +
+               a.c[5] * b.c[2] - a.c[7] * b.c[0];
+  const T t7 = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3] + a.c[4] * b.c[2] -
+               a.c[5] * b.c[1] + a.c[6] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_dual_line<T>((a.c[0] * t1 - a.c[1] * t0 - a.c[2] * t3 + a.c[3] * t2) * inv,
+                            (a.c[0] * t2 + a.c[1] * t3 - a.c[2] * t0 - a.c[3] * t1) * inv,
+                            (a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1 - a.c[3] * t0) * inv,
+                            (a.c[0] * t4 + a.c[1] * t5 + a.c[2] * t6 + a.c[3] * t7 - a.c[4] * t0 -
+                             a.c[5] * t1 - a.c[6] * t2 - a.c[7] * t3) *
+                                inv,
+                            (a.c[0] * t5 - a.c[1] * t4 - a.c[2] * t7 + a.c[3] * t6 + a.c[4] * t1 -
+                             a.c[5] * t0 - a.c[6] * t3 + a.c[7] * t2) *
+                                inv,
+                            (a.c[0] * t6 + a.c[1] * t7 - a.c[2] * t4 - a.c[3] * t5 + a.c[4] * t2 +
+                             a.c[5] * t3 - a.c[6] * t0 - a.c[7] * t1) *
+                                inv);
+}
+
+// apply(motor, line) -> line: 82 mul, 61 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_line<T> apply(const basic_motor<T>& a, const basic_line<T>& b) {
+  const T t0 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2] - a.c[4] * b.c[3] -
+               a.c[5] * b.c[4] - a.c[6] * b.c[5];
+  const T t1 = a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5];
+  const T t2 = a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[5];
+  const T t3 = a.c[0] * b.c[0] - a.c[2] * b.c[2] + a.c[3] * b.c[1] - a.c[4] * b.c[4] +
+               a.c[5] * b.c[3] - a.c[7] * b.c[5];
+  const T t4 = a.c[0] * b.c[5] - a.c[2] * b.c[3] - a.c[3] * b.c[4];
+  const T t5 = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[0] - a.c[4] * b.c[5] +
+               a.c[6] * b.c[3] + a.c[7] * b.c[4];
+  const T t6 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[5] * b.c[5] +
+               a.c[6] * b.c[4] - a.c[7] * b.c[3];
+  const T t7 = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_line<T>((a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t6 + a.c[3] * t5 - a.c[4] * t2 +
+                        a.c[5] * t1 + a.c[6] * t7 - a.c[7] * t4) *
+                           inv,
+                       (a.c[0] * t5 + a.c[1] * t6 - a.c[2] * t0 - a.c[3] * t3 - a.c[4] * t4 -
+                        a.c[5] * t7 + a.c[6] * t1 + a.c[7] * t2) *
+                           inv,
+                       (a.c[0] * t6 - a.c[1] * t5 + a.c[2] * t3 - a.c[3] * t0 + a.c[4] * t7 -
+                        a.c[5] * t4 + a.c[6] * t2 - a.c[7] * t1) *
+                           inv,
+                       (a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t4 + a.c[3] * t7) * inv,
+                       (a.c[0] * t2 - a.c[1] * t1 - a.c[2] * t7 + a.c[3] * t4) * inv,
+                       (a.c[0] * t4 + a.c[1] * t7 - a.c[2] * t1 - a.c[3] * t2) * inv);
+}
+
+// apply(motor, circle) -> circle: 174 mul, 137 add, 1 div
+template <class T>
+basic_circle<T> apply(const basic_motor<T>& a, const basic_circle<T>& b) {
+  const T t0 = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+  const T t1 = -a.c[3] * b.c[6] + a.c[5] * b.c[0] + a.c[6] * b.c[1] + a.c[7] * b.c[2];
+  const T t2 = a.c[2] * b.c[6] - a.c[4] * b.c[0] + a.c[6] * b.c[2] - a.c[7] * b.c[1];
+  const T t3 = a.c[0] * b.c[0] - a.c[2] * b.c[2] + a.c[3] * b.c[1];
+  const T t4 = -a.c[1] * b.c[6] - a.c[4] * b.c[1] - a.c[5] * b.c[2] + a.c[7] * b.c[0];
+  const T t5 = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[0];
+  const T t6 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T t7 = a.c[0] * b.c[6] - a.c[4] * b.c[2] + a.c[5] * b.c[1] - a.c[6] * b.c[0];
+  const T t8 = -a.c[1] * b.c[7] - a.c[2] * b.c[8] - a.c[3] * b.c[9] - a.c[4] * b.c[3] -
+               a.c[5] * b.c[4] - a.c[6] * b.c[5] + a.c[7] * b.c[6];
+  const T t9 = a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5] - a.c[5] * b.c[0] -
+               a.c[6] * b.c[1] - a.c[7] * b.c[2];
+  const T t10 = a.c[0] * b.c[4] - a.c[1] * b.c[3] + a.c[3] * b.c[5] + a.c[4] * b.c[0] -
+                a.c[6] * b.c[2] + a.c[7] * b.c[1];
+  const T t11 = a.c[0] * b.c[7] - a.c[2] * b.c[9] + a.c[3] * b.c[8] - a.c[4] * b.c[4] +
+                a.c[5] * b.c[3] - a.c[6] * b.c[6] - a.c[7] * b.c[5];
+  const T t12 = a.c[0] * b.c[5] - a.c[2] * b.c[3] - a.c[3] * b.c[4] + a.c[4] * b.c[1] +
+                a.c[5] * b.c[2] - a.c[7] * b.c[0];
+  const T t13 = a.c[0] * b.c[8] + a.c[1] * b.c[9] - a.c[3] * b.c[7] - a.c[4] * b.c[5] +
+                a.c[5] * b.c[6] + a.c[6] * b.c[3] + a.c[7] * b.c[4];
+  const T t14 = a.c[0] * b.c[9] - a.c[1] * b.c[8] + a.c[2] * b.c[7] - a.c[4] * b.c[6] -
+                a.c[5] * b.c[5] + a.c[6] * b.c[4] - a.c[7] * b.c[3];
+  const T t15 = a.c[1] * b.c[5] - a.c[2] * b.c[4] + a.c[3] * b.c[3] + a.c[4] * b.c[2] -
+                a.c[5] * b.c[1] + a.c[6] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_circle<T>(
+      (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t6 + a.c[3] * t5) * inv,
+      (a.c[0] * t5 + a.c[1] * t6 - a.c[2] * t0 - a.c[3] * t3) * inv,
+      (a.c[0] * t6 - a.c[1] * t5 + a.c[2] * t3 - a.c[3] * t0) * inv,
+      (a.c[0] * t9 + a.c[1] * t10 + a.c[2] * t12 + a.c[3] * t15 - a.c[4] * t0 - a.c[5] * t3 -
+       a.c[6] * t5 - a.c[7] * t6) *
+          inv,
+      (a.c[0] * t10 - a.c[1] * t9 - a.c[2] * t15 + a.c[3] * t12 + a.c[4] * t3 - a.c[5] * t0 -
+       a.c[6] * t6 + a.c[7] * t5) *
+          inv,
+      (a.c[0] * t12 + a.c[1] * t15 - a.c[2] * t9 - a.c[3] * t10 + a.c[4] * t5 + a.c[5] * t6 -
+       a.c[6] * t0 - a.c[7] * t3) *
+          inv,
+      (a.c[0] * t7 - a.c[1] * t4 + a.c[2] * t2 - a.c[3] * t1 - a.c[4] * t6 + a.c[5] * t5 -
+       a.c[6] * t3 + a.c[7] * t0) *
+          inv,
+      (a.c[0] * t11 - a.c[1] * t8 - a.c[2] * t14 + a.c[3] * t13 - a.c[4] * t10 + a.c[4] * t2 -
+       a.c[5] * t1 + a.c[5] * t9 + a.c[6] * t15 - a.c[6] * t7 - a.c[7] * t12 + a.c[7] * t4) *
+          inv,
+      (a.c[0] * t13 + a.c[1] * t14 - a.c[2] * t8 - a.c[3] * t11 - a.c[4] * t12 + a.c[4] * t4 -
+       a.c[5] * t15 + a.c[5] * t7 - a.c[6] * t1 + a.c[6] * t9 + a.c[7] * t10 - a.c[7] * t2) *
+          inv,
+      (a.c[0] * t14 - a.c[1] * t13 + a.c[2] * t11 - a.c[3] * t8 + a.c[4] * t15 - a.c[4] * t7 -
+       a.c[5] * t12 + a.c[5] * t4 + a.c[6] * t10 - a.c[6] * t2 + a.c[7] * t1 - a.c[7] * t9) *
+          inv);
+}
+
+// apply(motor, sphere) -> sphere: 89 mul, 62 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_sphere<T> apply(const basic_motor<T>& a, const basic_sphere<T>& b) {
+  const T t0 = a.c[7] * b.c[0];
+  const T t1 = -a.c[3] * b.c[0];
+  const T t2 = a.c[2] * b.c[0];
+  const T t3 = -a.c[6] * b.c[0];
+  const T t4 = -a.c[1] * b.c[0];
+  const T t5 = a.c[5] * b.c[0];
+  const T t6 = -a.c[4] * b.c[0];
+  const T t7 = a.c[0] * b.c[0];
+  const T t8 = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3] + a.c[7] * b.c[0];
+  const T t9 = -a.c[3] * b.c[4] + a.c[5] * b.c[1] + a.c[6] * b.c[2] + a.c[7] * b.c[3];
+  const T t10 = a.c[2] * b.c[4] - a.c[4] * b.c[1] + a.c[6] * b.c[3] - a.c[7] * b.c[2];
+  const T t11 = a.c[0] * b.c[1] - a.c[2] * b.c[3] + a.c[3] * b.c[2] - a.c[6] * b.c[0];
+  const T t12 = -a.c[1] * b.c[4] - a.c[4] * b.c[2] - a.c[5] * b.c[3] + a.c[7] * b.c[1];
+  const T t13 = a.c[0] * b.c[2] + a.c[1] * b.c[3] - a.c[3] * b.c[1] + a.c[5] * b.c[0];
+  const T t14 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] - a.c[4] * b.c[0];
+  const T t15 = a.c[0] * b.c[4] - a.c[4] * b.c[3] + a.c[5] * b.c[2] - a.c[6] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_sphere<T>(
+      (a.c[0] * t7 - a.c[1] * t4 + a.c[2] * t2 - a.c[3] * t1) * inv,
+      (a.c[0] * t11 - a.c[1] * t8 - a.c[2] * t14 + a.c[3] * t13 + a.c[4] * t2 - a.c[5] * t1 -
+       a.c[6] * t7 + a.c[7] * t4) *
+          inv,
+      (a.c[0] * t13 + a.c[1] * t14 - a.c[2] * t8 - a.c[3] * t11 + a.c[4] * t4 + a.c[5] * t7 -
+       a.c[6] * t1 - a.c[7] * t2) *
+          inv,
+      (a.c[0] * t14 - a.c[1] * t13 + a.c[2] * t11 - a.c[3] * t8 - a.c[4] * t7 + a.c[5] * t4 -
+       a.c[6] * t2 + a.c[7] * t1) *
+          inv,
+      (a.c[0] * t15 - a.c[1] * t12 + a.c[2] * t10 - a.c[3] * t9 - a.c[4] * t14 - a.c[4] * t6 +
+       a.c[5] * t13 + a.c[5] * t5 - a.c[6] * t11 - a.c[6] * t3 + a.c[7] * t0 + a.c[7] * t8) *
+          inv);
+}
+
+// apply(motor, plane) -> plane: 56 mul, 39 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_plane<T> apply(const basic_motor<T>& a, const basic_plane<T>& b) {
+  const T t0 = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  const T t1 = -a.c[3] * b.c[0] + a.c[5] * b.c[1] + a.c[6] * b.c[2] + a.c[7] * b.c[3];
+  const T t2 = a.c[2] * b.c[0] - a.c[4] * b.c[1] + a.c[6] * b.c[3] - a.c[7] * b.c[2];
+  const T t3 = a.c[0] * b.c[1] - a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  const T t4 = -a.c[1] * b.c[0] - a.c[4] * b.c[2] - a.c[5] * b.c[3] + a.c[7] * b.c[1];
+  const T t5 = a.c[0] * b.c[2] + a.c[1] * b.c[3] - a.c[3] * b.c[1];
+  const T t6 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t7 = a.c[0] * b.c[0] - a.c[4] * b.c[3] + a.c[5] * b.c[2] - a.c[6] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_plane<T>((a.c[0] * t7 - a.c[1] * t4 + a.c[2] * t2 - a.c[3] * t1 - a.c[4] * t6 +
+                         a.c[5] * t5 - a.c[6] * t3 + a.c[7] * t0) *
+                            inv,
+                        (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t6 + a.c[3] * t5) * inv,
+                        (a.c[0] * t5 + a.c[1] * t6 - a.c[2] * t0 - a.c[3] * t3) * inv,
+                        (a.c[0] * t6 - a.c[1] * t5 + a.c[2] * t3 - a.c[3] * t0) * inv);
+}
+
+// apply(motor, pseudoscalar) -> pseudoscalar: 13 mul, 6 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> apply(const basic_motor<T>& a,
+                                                 const basic_pseudoscalar<T>& b) {
+  const T t1 = -a.c[3] * b.c[0];
+  const T t2 = a.c[2] * b.c[0];
+  const T t4 = -a.c[1] * b.c[0];
+  const T t7 = a.c[0] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_pseudoscalar<T>((a.c[0] * t7 - a.c[1] * t4 + a.c[2] * t2 - a.c[3] * t1) * inv);
+}
+
+// apply(motor, rotor) -> motor: 84 mul, 60 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> apply(const basic_motor<T>& a, const basic_rotor<T>& b) {
+  const T t0 = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  const T t1 = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  const T t2 = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t3 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T t4 = a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[6] * b.c[2] - a.c[7] * b.c[3];
+  const T t5 = a.c[4] * b.c[1] + a.c[5] * b.c[0] - a.c[6] * b.c[3] + a.c[7] * b.c[2];
+  const T t6 = a.c[4] * b.c[2] + a.c[5] * b.c[3] + a.c[6] * b.c[0] - a.c[7] * b.c[1];
+  const T t7 = a.c[4] * b.c[3] - a.c[5] * b.c[2] + a.c[6] * b.c[1] + a.c[7] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_motor<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2 + a.c[3] * t3) * inv,
+                        (a.c[0] * t1 - a.c[1] * t0 - a.c[2] * t3 + a.c[3] * t2) * inv,
+                        (a.c[0] * t2 + a.c[1] * t3 - a.c[2] * t0 - a.c[3] * t1) * inv,
+                        (a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1 - a.c[3] * t0) * inv,
+                        (a.c[0] * t4 + a.c[1] * t5 + a.c[2] * t6 + a.c[3] * t7 - a.c[4] * t0 -
+                         a.c[5] * t1 - a.c[6] * t2 - a.c[7] * t3) *
+                            inv,
+                        (a.c[0] * t5 - a.c[1] * t4 - a.c[2] * t7 + a.c[3] * t6 + a.c[4] * t1 -
+                         a.c[5] * t0 - a.c[6] * t3 + a.c[7] * t2) *
+                            inv,
+                        (a.c[0] * t6 + a.c[1] * t7 - a.c[2] * t4 - a.c[3] * t5 + a.c[4] * t2 +
+                         a.c[5] * t3 - a.c[6] * t0 - a.c[7] * t1) *
+                            inv,
+                        (T(0)) * inv);
+}
+
+// apply(motor, translator) -> translator: 56 mul, 39 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_translator<T> apply(const basic_motor<T>& a,
+                                               const basic_translator<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[1] * b.c[0];
+  const T t2 = a.c[2] * b.c[0];
+  const T t3 = a.c[3] * b.c[0];
+  const T t4 = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] + a.c[4] * b.c[0];
+  const T t5 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[3] * b.c[3] + a.c[5] * b.c[0];
+  const T t6 = a.c[0] * b.c[3] - a.c[2] * b.c[1] - a.c[3] * b.c[2] + a.c[6] * b.c[0];
+  const T t7 = a.c[1] * b.c[3] - a.c[2] * b.c[2] + a.c[3] * b.c[1] + a.c[7] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_translator<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2 + a.c[3] * t3) * inv,
+                             (a.c[0] * t4 + a.c[1] * t5 + a.c[2] * t6 + a.c[3] * t7 - a.c[4] * t0 -
+                              a.c[5] * t1 - a.c[6] * t2 - a.c[7] * t3) *
+                                 inv,
+                             (a.c[0] * t5 - a.c[1] * t4 - a.c[2] * t7 + a.c[3] * t6 + a.c[4] * t1 -
+                              a.c[5] * t0 - a.c[6] * t3 + a.c[7] * t2) *
+                                 inv,
+                             (a.c[0] * t6 + a.c[1] * t7 - a.c[2] * t4 - a.c[3] * t5 + a.c[4] * t2 +
+                              a.c[5] * t3 - a.c[6] * t0 - a.c[7] * t1) *
+                                 inv);
+}
+
+// apply(motor, motor) -> motor: 108 mul, 83 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_motor<T> apply(const basic_motor<T>& a, const basic_motor<T>& b) {
+  const T t0 = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  const T t1 = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  const T t2 = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t3 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T t4 = a.c[0] * b.c[4] + a.c[1] * b.c[5] + a.c[2] * b.c[6] - a.c[3] * b.c[7] +
+               a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[6] * b.c[2] - a.c[7] * b.c[3];
+  const T t5 = a.c[0] * b.c[5] - a.c[1] * b.c[4] + a.c[2] * b.c[7] + a.c[3] * b.c[6] +
+               a.c[4] * b.c[1] + a.c[5] * b.c[0] - a.c[6] * b.c[3] + a.c[7] * b.c[2];
+  const T t6 = a.c[0] * b.c[6] - a.c[1] * b.c[7] - a.c[2] * b.c[4] - a.c[3] * b.c[5] +
+               a.c[4] * b.c[2] + a.c[5] * b.c[3] + a.c[6] * b.c[0] - a.c[7] * b.c[1];
+  const T t7 = a.c[0] * b.c[7] + a.c[1] * b.c[6] - a.c[2] * b.c[5] + a.c[3] * b.c[4] +
+               a.c[4] * b.c[3] - a.c[5] * b.c[2] + a.c[6] * b.c[1] + a.c[7] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_motor<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2 + a.c[3] * t3) * inv,
+                        (a.c[0] * t1 - a.c[1] * t0 - a.c[2] * t3 + a.c[3] * t2) * inv,
+                        (a.c[0] * t2 + a.c[1] * t3 - a.c[2] * t0 - a.c[3] * t1) * inv,
+                        (a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1 - a.c[3] * t0) * inv,
+                        (a.c[0] * t4 + a.c[1] * t5 + a.c[2] * t6 + a.c[3] * t7 - a.c[4] * t0 -
+                         a.c[5] * t1 - a.c[6] * t2 - a.c[7] * t3) *
+                            inv,
+                        (a.c[0] * t5 - a.c[1] * t4 - a.c[2] * t7 + a.c[3] * t6 + a.c[4] * t1 -
+                         a.c[5] * t0 - a.c[6] * t3 + a.c[7] * t2) *
+                            inv,
+                        (a.c[0] * t6 + a.c[1] * t7 - a.c[2] * t4 - a.c[3] * t5 + a.c[4] * t2 +
+                         a.c[5] * t3 - a.c[6] * t0 - a.c[7] * t1) *
+                            inv,
+                        (a.c[0] * t7 - a.c[1] * t6 + a.c[2] * t5 - a.c[3] * t4 - a.c[4] * t3 +
+                         a.c[5] * t2 - a.c[6] * t1 + a.c[7] * t0) *
+                            inv);
+}
+
 }  // namespace c3ga

@@ -4,13 +4,9 @@
 // Profile: profiling/profiles/c3ga.json (744949 calls; 146 mv kernels at coverage 0.999)
 // Regenerate: gaphys-gen generate specs/c3ga.ga --variant optimized --out generated/optimized --profile profiling/profiles/c3ga.json --coverage 0.999
 // Straight-line code for functions on mv whose argument bitmaps a profile
-// showed to be common, and the dispatchers the mv functions ask first. A
-// dispatcher returns false for every other bitmap (and always, without a
-// profile), and the caller takes the generic table-driven path. Kernels write
-// every coefficient of the caller's result r (which need not be zeroed first)
-// and its bits; r is none of the arguments (the kernels take it restrict-qualified).
-// A dispatcher tries, in order: the stored bitmaps, the exactly nonzero
-// coefficients' bitmaps, and the cheapest kernel made for a superset of those.
+// showed to be common, and per function the switch over them: what the
+// functions on mv ask first (gaphys/ga/mv_dispatch.hpp says how). Without a
+// profile there is none, and every call takes the generic table-driven path.
 #pragma once
 
 #include <cstdint>
@@ -22,19 +18,9 @@
 namespace c3ga {
 namespace detail {
 
-constexpr std::uint64_t pair_key(std::uint32_t a, std::uint32_t b) {
-  return std::uint64_t(a) << 32 | b;
-}
-
-// The (function, argument bitmaps) combinations with straight-line code, and
-// whether the kernel also serves subsets of its bitmaps, for tests and
-// reports; the last entry has no function.
-struct specialized_combination {
-  const char* function;
-  std::uint32_t a, b;
-  bool covers_subsets;
-};
-inline constexpr specialized_combination specialized_combinations[] = {
+// The (function, argument bitmaps) combinations with straight-line code; the
+// last entry has no function.
+inline constexpr gaphys::ga::specialized_combination specialized_combinations[] = {
     {"add", 0x3eu, 0x3eu, true},
     {"add", 0xffc0u, 0xffc0u, true},
     {"add", 0x4000fc01u, 0x4000fc01u, true},
@@ -183,6 +169,10 @@ inline constexpr specialized_combination specialized_combinations[] = {
     {"undual", 0x3800000u, 0x0u, true},
     {nullptr, 0, 0, false},
 };
+
+// The kernels of function F; a function the profile made none for keeps these.
+template <call F>
+struct kernels : gaphys::ga::no_kernels {};
 
 // add on mv {no, e1, e2, e3, ni} x {no, e1, e2, e3, ni}: 0 mul, 5 add (320 profiled calls)
 template <class T>
@@ -2633,121 +2623,126 @@ void undual_3800000(const basic_mv<T>& GAPHYS_RESTRICT a, basic_mv<T>& GAPHYS_RE
   r.bits = 0xd000u;
 }
 
-template <class T>
-GAPHYS_ALWAYS_INLINE bool specialized_gp_by_key(std::uint64_t key, const basic_mv<T>& a,
-                                                const basic_mv<T>& b, basic_mv<T>& r) {
-  switch (key) {
-    case 0x3c0000003cull:
-      gp_3c_3c(a, b, r);
-      return true;
-    case 0x3e0000003eull:
-      gp_3e_3e(a, b, r);
-      return true;
-    case 0x20010000d001ull:
-      gp_2001_d001(a, b, r);
-      return true;
-    case 0x2c010000d001ull:
-      gp_2c01_d001(a, b, r);
-      return true;
-    case 0xfc010000fc01ull:
-      gp_fc01_fc01(a, b, r);
-      return true;
-    case 0xffc00000ffc0ull:
-      gp_ffc0_ffc0(a, b, r);
-      return true;
-    case 0x81000000000020ull:
-      gp_810000_20(a, b, r);
-      return true;
-    case 0x91000000000020ull:
-      gp_910000_20(a, b, r);
-      return true;
-    case 0x95000000000020ull:
-      gp_950000_20(a, b, r);
-      return true;
-    case 0xc1000000000020ull:
-      gp_c10000_20(a, b, r);
-      return true;
-    case 0x248000000000020ull:
-      gp_2480000_20(a, b, r);
-      return true;
-    case 0x299000000000020ull:
-      gp_2990000_20(a, b, r);
-      return true;
-    case 0x38000384000f001ull:
-      gp_3800038_4000f001(a, b, r);
-      return true;
-    case 0x3c0003c4000fc01ull:
-      gp_3c0003c_4000fc01(a, b, r);
-      return true;
-    case 0x3e6000000000020ull:
-      gp_3e60000_20(a, b, r);
-      return true;
-    case 0x3f8000000000020ull:
-      gp_3f80000_20(a, b, r);
-      return true;
-    case 0x3ff000000000020ull:
-      gp_3ff0000_20(a, b, r);
-      return true;
-    case 0x800040000810000ull:
-      gp_8000400_810000(a, b, r);
-      return true;
-    case 0x800440000910000ull:
-      gp_8004400_910000(a, b, r);
-      return true;
-    case 0x800540000950000ull:
-      gp_8005400_950000(a, b, r);
-      return true;
-    case 0x2800640002990000ull:
-      gp_28006400_2990000(a, b, r);
-      return true;
-    case 0x4000f00100000010ull:
-      gp_4000f001_10(a, b, r);
-      return true;
-    case 0x4000fc0100000010ull:
-      gp_4000fc01_10(a, b, r);
-      return true;
-    case 0x4000fc010000003eull:
-      gp_4000fc01_3e(a, b, r);
-      return true;
-    case 0x4000fc014000fc01ull:
-      gp_4000fc01_4000fc01(a, b, r);
-      return true;
-    case 0x4800040000c10000ull:
-      gp_48000400_c10000(a, b, r);
-      return true;
-    case 0x5000980003e60000ull:
-      gp_50009800_3e60000(a, b, r);
-      return true;
-    case 0x6000200002480000ull:
-      gp_60002000_2480000(a, b, r);
-      return true;
-    case 0x6000e00003f80000ull:
-      gp_6000e000_3f80000(a, b, r);
-      return true;
-    case 0x7800fc0003ff0000ull:
-      gp_7800fc00_3ff0000(a, b, r);
-      return true;
-    case 0x83ff003e4000fc01ull:
-      gp_83ff003e_4000fc01(a, b, r);
-      return true;
-    case 0xffffffffffffffffull:
-      gp_ffffffff_ffffffff(a, b, r);
-      return true;
-    default:
-      return false;
-  }
-}
+template <>
+struct kernels<call::gp> {
+  static constexpr bool profiled = true;
 
-// Bitmaps no kernel was made for: the cheapest kernel made for a superset of
-// them. It reads exact zeros where the arguments have no coefficient, so its
-// result is the generic path's; its result bits may mark some exact zeros.
-// Kernels come cheapest first, and the search ends at one costing more than
-// 8 operations per term of the generic path (`work`), which would be
-// faster. Kernels that divide never serve subsets (a divisor that vanishes on
-// the subset is the generic path's to handle).
+  template <class T>
+  GAPHYS_ALWAYS_INLINE static bool by_key(std::uint64_t key, const basic_mv<T>& a,
+                                          const basic_mv<T>& b, basic_mv<T>& r) {
+    switch (key) {
+      case 0x3c0000003cull:
+        gp_3c_3c(a, b, r);
+        return true;
+      case 0x3e0000003eull:
+        gp_3e_3e(a, b, r);
+        return true;
+      case 0x20010000d001ull:
+        gp_2001_d001(a, b, r);
+        return true;
+      case 0x2c010000d001ull:
+        gp_2c01_d001(a, b, r);
+        return true;
+      case 0xfc010000fc01ull:
+        gp_fc01_fc01(a, b, r);
+        return true;
+      case 0xffc00000ffc0ull:
+        gp_ffc0_ffc0(a, b, r);
+        return true;
+      case 0x81000000000020ull:
+        gp_810000_20(a, b, r);
+        return true;
+      case 0x91000000000020ull:
+        gp_910000_20(a, b, r);
+        return true;
+      case 0x95000000000020ull:
+        gp_950000_20(a, b, r);
+        return true;
+      case 0xc1000000000020ull:
+        gp_c10000_20(a, b, r);
+        return true;
+      case 0x248000000000020ull:
+        gp_2480000_20(a, b, r);
+        return true;
+      case 0x299000000000020ull:
+        gp_2990000_20(a, b, r);
+        return true;
+      case 0x38000384000f001ull:
+        gp_3800038_4000f001(a, b, r);
+        return true;
+      case 0x3c0003c4000fc01ull:
+        gp_3c0003c_4000fc01(a, b, r);
+        return true;
+      case 0x3e6000000000020ull:
+        gp_3e60000_20(a, b, r);
+        return true;
+      case 0x3f8000000000020ull:
+        gp_3f80000_20(a, b, r);
+        return true;
+      case 0x3ff000000000020ull:
+        gp_3ff0000_20(a, b, r);
+        return true;
+      case 0x800040000810000ull:
+        gp_8000400_810000(a, b, r);
+        return true;
+      case 0x800440000910000ull:
+        gp_8004400_910000(a, b, r);
+        return true;
+      case 0x800540000950000ull:
+        gp_8005400_950000(a, b, r);
+        return true;
+      case 0x2800640002990000ull:
+        gp_28006400_2990000(a, b, r);
+        return true;
+      case 0x4000f00100000010ull:
+        gp_4000f001_10(a, b, r);
+        return true;
+      case 0x4000fc0100000010ull:
+        gp_4000fc01_10(a, b, r);
+        return true;
+      case 0x4000fc010000003eull:
+        gp_4000fc01_3e(a, b, r);
+        return true;
+      case 0x4000fc014000fc01ull:
+        gp_4000fc01_4000fc01(a, b, r);
+        return true;
+      case 0x4800040000c10000ull:
+        gp_48000400_c10000(a, b, r);
+        return true;
+      case 0x5000980003e60000ull:
+        gp_50009800_3e60000(a, b, r);
+        return true;
+      case 0x6000200002480000ull:
+        gp_60002000_2480000(a, b, r);
+        return true;
+      case 0x6000e00003f80000ull:
+        gp_6000e000_3f80000(a, b, r);
+        return true;
+      case 0x7800fc0003ff0000ull:
+        gp_7800fc00_3ff0000(a, b, r);
+        return true;
+      case 0x83ff003e4000fc01ull:
+        gp_83ff003e_4000fc01(a, b, r);
+        return true;
+      case 0xffffffffffffffffull:
+        gp_ffffffff_ffffffff(a, b, r);
+        return true;
+      default:
+        return false;
+    }
+  }
+
+  // The cheapest kernel made for a superset of the bits, unless it costs more than
+  // 8 operations per term of the generic path (`work`).
+  template <class T>
+  static bool covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
+                       const basic_mv<T>& b, basic_mv<T>& r);
+};
+
+// Out of the class, so not inline: only the switch is meant to be.
 template <class T>
-bool specialized_gp_covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
-                             const basic_mv<T>& b, basic_mv<T>& r) {
+bool kernels<call::gp>::covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
+                                 const basic_mv<T>& b, basic_mv<T>& r) {
   const int work = gaphys::ga::bit_count(a_bits) * gaphys::ga::bit_count(b_bits);
   if (8 * work < 2) return false;
   if (!(a_bits & ~0x810000u) && !(b_bits & ~0x20u)) {
@@ -2912,111 +2907,96 @@ bool specialized_gp_covering(std::uint32_t a_bits, std::uint32_t b_bits, const b
   return false;
 }
 
-// The profile keys on the really nonzero coefficients, while stored bits may
-// still mark exact zeros (a product's structure): on a miss, retry with the
-// exactly nonzero ones, then with a kernel made for a superset of them.
-template <class T>
-bool specialized_gp_on_exact_bits(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
-  const std::uint32_t a_bits = gaphys::ga::exact_bits(a);
-  const std::uint32_t b_bits = gaphys::ga::exact_bits(b);
-  const std::uint64_t exact = pair_key(a_bits, b_bits);
-  if (exact != pair_key(a.bits, b.bits) && specialized_gp_by_key(exact, a, b, r)) return true;
-  return specialized_gp_covering(a_bits, b_bits, a, b, r);
-}
+template <>
+struct kernels<call::op> {
+  static constexpr bool profiled = true;
 
-// Kept small, and the switch forced inline, so that a hit runs inside the mv
-// function (one call in all); only a miss calls the retry.
-template <class T>
-inline bool specialized_gp(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
-  return specialized_gp_by_key(pair_key(a.bits, b.bits), a, b, r) ||
-         specialized_gp_on_exact_bits(a, b, r);
-}
-
-template <class T>
-GAPHYS_ALWAYS_INLINE bool specialized_op_by_key(std::uint64_t key, const basic_mv<T>& a,
-                                                const basic_mv<T>& b, basic_mv<T>& r) {
-  switch (key) {
-    case 0x1000000032ull:
-      op_10_32(a, b, r);
-      return true;
-    case 0x1000000036ull:
-      op_10_36(a, b, r);
-      return true;
-    case 0x100000003eull:
-      op_10_3e(a, b, r);
-      return true;
-    case 0x1400000036ull:
-      op_14_36(a, b, r);
-      return true;
-    case 0x240000003eull:
-      op_24_3e(a, b, r);
-      return true;
-    case 0x2600000026ull:
-      op_26_26(a, b, r);
-      return true;
-    case 0x280000003eull:
-      op_28_3e(a, b, r);
-      return true;
-    case 0x3200000032ull:
-      op_32_32(a, b, r);
-      return true;
-    case 0x3e0000003eull:
-      op_3e_3e(a, b, r);
-      return true;
-    case 0x40000000020ull:
-      op_400_20(a, b, r);
-      return true;
-    case 0x200000000020ull:
-      op_2000_20(a, b, r);
-      return true;
-    case 0x440000000020ull:
-      op_4400_20(a, b, r);
-      return true;
-    case 0x540000000020ull:
-      op_5400_20(a, b, r);
-      return true;
-    case 0x640000000020ull:
-      op_6400_20(a, b, r);
-      return true;
-    case 0x980000000020ull:
-      op_9800_20(a, b, r);
-      return true;
-    case 0xe00000000020ull:
-      op_e000_20(a, b, r);
-      return true;
-    case 0xfc0000000020ull:
-      op_fc00_20(a, b, r);
-      return true;
-    case 0xffc00000003eull:
-      op_ffc0_3e(a, b, r);
-      return true;
-    case 0xffc00000ffc0ull:
-      op_ffc0_ffc0(a, b, r);
-      return true;
-    case 0x3ff00000000003eull:
-      op_3ff0000_3e(a, b, r);
-      return true;
-    case 0x4000fc014000fc01ull:
-      op_4000fc01_4000fc01(a, b, r);
-      return true;
-    case 0xffffffffffffffffull:
-      op_ffffffff_ffffffff(a, b, r);
-      return true;
-    default:
-      return false;
+  template <class T>
+  GAPHYS_ALWAYS_INLINE static bool by_key(std::uint64_t key, const basic_mv<T>& a,
+                                          const basic_mv<T>& b, basic_mv<T>& r) {
+    switch (key) {
+      case 0x1000000032ull:
+        op_10_32(a, b, r);
+        return true;
+      case 0x1000000036ull:
+        op_10_36(a, b, r);
+        return true;
+      case 0x100000003eull:
+        op_10_3e(a, b, r);
+        return true;
+      case 0x1400000036ull:
+        op_14_36(a, b, r);
+        return true;
+      case 0x240000003eull:
+        op_24_3e(a, b, r);
+        return true;
+      case 0x2600000026ull:
+        op_26_26(a, b, r);
+        return true;
+      case 0x280000003eull:
+        op_28_3e(a, b, r);
+        return true;
+      case 0x3200000032ull:
+        op_32_32(a, b, r);
+        return true;
+      case 0x3e0000003eull:
+        op_3e_3e(a, b, r);
+        return true;
+      case 0x40000000020ull:
+        op_400_20(a, b, r);
+        return true;
+      case 0x200000000020ull:
+        op_2000_20(a, b, r);
+        return true;
+      case 0x440000000020ull:
+        op_4400_20(a, b, r);
+        return true;
+      case 0x540000000020ull:
+        op_5400_20(a, b, r);
+        return true;
+      case 0x640000000020ull:
+        op_6400_20(a, b, r);
+        return true;
+      case 0x980000000020ull:
+        op_9800_20(a, b, r);
+        return true;
+      case 0xe00000000020ull:
+        op_e000_20(a, b, r);
+        return true;
+      case 0xfc0000000020ull:
+        op_fc00_20(a, b, r);
+        return true;
+      case 0xffc00000003eull:
+        op_ffc0_3e(a, b, r);
+        return true;
+      case 0xffc00000ffc0ull:
+        op_ffc0_ffc0(a, b, r);
+        return true;
+      case 0x3ff00000000003eull:
+        op_3ff0000_3e(a, b, r);
+        return true;
+      case 0x4000fc014000fc01ull:
+        op_4000fc01_4000fc01(a, b, r);
+        return true;
+      case 0xffffffffffffffffull:
+        op_ffffffff_ffffffff(a, b, r);
+        return true;
+      default:
+        return false;
+    }
   }
-}
 
-// Bitmaps no kernel was made for: the cheapest kernel made for a superset of
-// them. It reads exact zeros where the arguments have no coefficient, so its
-// result is the generic path's; its result bits may mark some exact zeros.
-// Kernels come cheapest first, and the search ends at one costing more than
-// 8 operations per term of the generic path (`work`), which would be
-// faster. Kernels that divide never serve subsets (a divisor that vanishes on
-// the subset is the generic path's to handle).
+  // The cheapest kernel made for a superset of the bits, unless it costs more than
+  // 8 operations per term of the generic path (`work`).
+  template <class T>
+  static bool covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
+                       const basic_mv<T>& b, basic_mv<T>& r);
+};
+
+// Out of the class, so not inline: only the switch is meant to be.
 template <class T>
-bool specialized_op_covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
-                             const basic_mv<T>& b, basic_mv<T>& r) {
+bool kernels<call::op>::covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
+                                 const basic_mv<T>& b, basic_mv<T>& r) {
   const int work = gaphys::ga::bit_count(a_bits) * gaphys::ga::bit_count(b_bits);
   if (8 * work < 1) return false;
   if (!(a_bits & ~0x400u) && !(b_bits & ~0x20u)) {
@@ -3131,99 +3111,84 @@ bool specialized_op_covering(std::uint32_t a_bits, std::uint32_t b_bits, const b
   return false;
 }
 
-// The profile keys on the really nonzero coefficients, while stored bits may
-// still mark exact zeros (a product's structure): on a miss, retry with the
-// exactly nonzero ones, then with a kernel made for a superset of them.
-template <class T>
-bool specialized_op_on_exact_bits(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
-  const std::uint32_t a_bits = gaphys::ga::exact_bits(a);
-  const std::uint32_t b_bits = gaphys::ga::exact_bits(b);
-  const std::uint64_t exact = pair_key(a_bits, b_bits);
-  if (exact != pair_key(a.bits, b.bits) && specialized_op_by_key(exact, a, b, r)) return true;
-  return specialized_op_covering(a_bits, b_bits, a, b, r);
-}
+template <>
+struct kernels<call::lc> {
+  static constexpr bool profiled = true;
 
-// Kept small, and the switch forced inline, so that a hit runs inside the mv
-// function (one call in all); only a miss calls the retry.
-template <class T>
-inline bool specialized_op(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
-  return specialized_op_by_key(pair_key(a.bits, b.bits), a, b, r) ||
-         specialized_op_on_exact_bits(a, b, r);
-}
-
-template <class T>
-GAPHYS_ALWAYS_INLINE bool specialized_lc_by_key(std::uint64_t key, const basic_mv<T>& a,
-                                                const basic_mv<T>& b, basic_mv<T>& r) {
-  switch (key) {
-    case 0x200001000ull:
-      lc_2_1000(a, b, r);
-      return true;
-    case 0x200004000ull:
-      lc_2_4000(a, b, r);
-      return true;
-    case 0x200008000ull:
-      lc_2_8000(a, b, r);
-      return true;
-    case 0x200009000ull:
-      lc_2_9000(a, b, r);
-      return true;
-    case 0x20000d000ull:
-      lc_2_d000(a, b, r);
-      return true;
-    case 0x2000810000ull:
-      lc_20_810000(a, b, r);
-      return true;
-    case 0x2000910000ull:
-      lc_20_910000(a, b, r);
-      return true;
-    case 0x2000950000ull:
-      lc_20_950000(a, b, r);
-      return true;
-    case 0x2000c10000ull:
-      lc_20_c10000(a, b, r);
-      return true;
-    case 0x2002480000ull:
-      lc_20_2480000(a, b, r);
-      return true;
-    case 0x2002990000ull:
-      lc_20_2990000(a, b, r);
-      return true;
-    case 0x2003e60000ull:
-      lc_20_3e60000(a, b, r);
-      return true;
-    case 0x2003f80000ull:
-      lc_20_3f80000(a, b, r);
-      return true;
-    case 0x2003ff0000ull:
-      lc_20_3ff0000(a, b, r);
-      return true;
-    case 0x3e0000003eull:
-      lc_3e_3e(a, b, r);
-      return true;
-    case 0xffc00000ffc0ull:
-      lc_ffc0_ffc0(a, b, r);
-      return true;
-    case 0x4000fc014000fc01ull:
-      lc_4000fc01_4000fc01(a, b, r);
-      return true;
-    case 0xffffffffffffffffull:
-      lc_ffffffff_ffffffff(a, b, r);
-      return true;
-    default:
-      return false;
+  template <class T>
+  GAPHYS_ALWAYS_INLINE static bool by_key(std::uint64_t key, const basic_mv<T>& a,
+                                          const basic_mv<T>& b, basic_mv<T>& r) {
+    switch (key) {
+      case 0x200001000ull:
+        lc_2_1000(a, b, r);
+        return true;
+      case 0x200004000ull:
+        lc_2_4000(a, b, r);
+        return true;
+      case 0x200008000ull:
+        lc_2_8000(a, b, r);
+        return true;
+      case 0x200009000ull:
+        lc_2_9000(a, b, r);
+        return true;
+      case 0x20000d000ull:
+        lc_2_d000(a, b, r);
+        return true;
+      case 0x2000810000ull:
+        lc_20_810000(a, b, r);
+        return true;
+      case 0x2000910000ull:
+        lc_20_910000(a, b, r);
+        return true;
+      case 0x2000950000ull:
+        lc_20_950000(a, b, r);
+        return true;
+      case 0x2000c10000ull:
+        lc_20_c10000(a, b, r);
+        return true;
+      case 0x2002480000ull:
+        lc_20_2480000(a, b, r);
+        return true;
+      case 0x2002990000ull:
+        lc_20_2990000(a, b, r);
+        return true;
+      case 0x2003e60000ull:
+        lc_20_3e60000(a, b, r);
+        return true;
+      case 0x2003f80000ull:
+        lc_20_3f80000(a, b, r);
+        return true;
+      case 0x2003ff0000ull:
+        lc_20_3ff0000(a, b, r);
+        return true;
+      case 0x3e0000003eull:
+        lc_3e_3e(a, b, r);
+        return true;
+      case 0xffc00000ffc0ull:
+        lc_ffc0_ffc0(a, b, r);
+        return true;
+      case 0x4000fc014000fc01ull:
+        lc_4000fc01_4000fc01(a, b, r);
+        return true;
+      case 0xffffffffffffffffull:
+        lc_ffffffff_ffffffff(a, b, r);
+        return true;
+      default:
+        return false;
+    }
   }
-}
 
-// Bitmaps no kernel was made for: the cheapest kernel made for a superset of
-// them. It reads exact zeros where the arguments have no coefficient, so its
-// result is the generic path's; its result bits may mark some exact zeros.
-// Kernels come cheapest first, and the search ends at one costing more than
-// 8 operations per term of the generic path (`work`), which would be
-// faster. Kernels that divide never serve subsets (a divisor that vanishes on
-// the subset is the generic path's to handle).
+  // The cheapest kernel made for a superset of the bits, unless it costs more than
+  // 8 operations per term of the generic path (`work`).
+  template <class T>
+  static bool covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
+                       const basic_mv<T>& b, basic_mv<T>& r);
+};
+
+// Out of the class, so not inline: only the switch is meant to be.
 template <class T>
-bool specialized_lc_covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
-                             const basic_mv<T>& b, basic_mv<T>& r) {
+bool kernels<call::lc>::covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
+                                 const basic_mv<T>& b, basic_mv<T>& r) {
   const int work = gaphys::ga::bit_count(a_bits) * gaphys::ga::bit_count(b_bits);
   if (8 * work < 1) return false;
   if (!(a_bits & ~0x2u) && !(b_bits & ~0x1000u)) {
@@ -3318,159 +3283,135 @@ bool specialized_lc_covering(std::uint32_t a_bits, std::uint32_t b_bits, const b
   return false;
 }
 
-// The profile keys on the really nonzero coefficients, while stored bits may
-// still mark exact zeros (a product's structure): on a miss, retry with the
-// exactly nonzero ones, then with a kernel made for a superset of them.
-template <class T>
-bool specialized_lc_on_exact_bits(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
-  const std::uint32_t a_bits = gaphys::ga::exact_bits(a);
-  const std::uint32_t b_bits = gaphys::ga::exact_bits(b);
-  const std::uint64_t exact = pair_key(a_bits, b_bits);
-  if (exact != pair_key(a.bits, b.bits) && specialized_lc_by_key(exact, a, b, r)) return true;
-  return specialized_lc_covering(a_bits, b_bits, a, b, r);
-}
+template <>
+struct kernels<call::scp> {
+  static constexpr bool profiled = true;
 
-// Kept small, and the switch forced inline, so that a hit runs inside the mv
-// function (one call in all); only a miss calls the retry.
-template <class T>
-inline bool specialized_lc(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
-  return specialized_lc_by_key(pair_key(a.bits, b.bits), a, b, r) ||
-         specialized_lc_on_exact_bits(a, b, r);
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_rc(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
-  switch (pair_key(a.bits, b.bits)) {
-    default:
-      return false;
+  template <class T>
+  GAPHYS_ALWAYS_INLINE static bool by_key(std::uint64_t key, const basic_mv<T>& a,
+                                          const basic_mv<T>& b, T& r) {
+    switch (key) {
+      case 0x100000003eull:
+        scp_10_3e(a, b, r);
+        return true;
+      case 0x1400000036ull:
+        scp_14_36(a, b, r);
+        return true;
+      case 0x1c0000001cull:
+        scp_1c_1c(a, b, r);
+        return true;
+      case 0x2000000002ull:
+        scp_20_2(a, b, r);
+        return true;
+      case 0x2000000026ull:
+        scp_20_26(a, b, r);
+        return true;
+      case 0x200000002eull:
+        scp_20_2e(a, b, r);
+        return true;
+      case 0x2000000032ull:
+        scp_20_32(a, b, r);
+        return true;
+      case 0x2000000036ull:
+        scp_20_36(a, b, r);
+        return true;
+      case 0x200000003eull:
+        scp_20_3e(a, b, r);
+        return true;
+      case 0x240000003eull:
+        scp_24_3e(a, b, r);
+        return true;
+      case 0x2600000026ull:
+        scp_26_26(a, b, r);
+        return true;
+      case 0x280000003eull:
+        scp_28_3e(a, b, r);
+        return true;
+      case 0x3e00000010ull:
+        scp_3e_10(a, b, r);
+        return true;
+      case 0x3e0000003eull:
+        scp_3e_3e(a, b, r);
+        return true;
+      case 0x40000000400ull:
+        scp_400_400(a, b, r);
+        return true;
+      case 0x200000002000ull:
+        scp_2000_2000(a, b, r);
+        return true;
+      case 0x440000004400ull:
+        scp_4400_4400(a, b, r);
+        return true;
+      case 0x540000005400ull:
+        scp_5400_5400(a, b, r);
+        return true;
+      case 0x640000006400ull:
+        scp_6400_6400(a, b, r);
+        return true;
+      case 0x980000009800ull:
+        scp_9800_9800(a, b, r);
+        return true;
+      case 0xe0000000e000ull:
+        scp_e000_e000(a, b, r);
+        return true;
+      case 0xfc000000fc00ull:
+        scp_fc00_fc00(a, b, r);
+        return true;
+      case 0xffc00000ffc0ull:
+        scp_ffc0_ffc0(a, b, r);
+        return true;
+      case 0x81000000810000ull:
+        scp_810000_810000(a, b, r);
+        return true;
+      case 0x91000000910000ull:
+        scp_910000_910000(a, b, r);
+        return true;
+      case 0x95000000950000ull:
+        scp_950000_950000(a, b, r);
+        return true;
+      case 0xc1000000c10000ull:
+        scp_c10000_c10000(a, b, r);
+        return true;
+      case 0x248000002480000ull:
+        scp_2480000_2480000(a, b, r);
+        return true;
+      case 0x299000002990000ull:
+        scp_2990000_2990000(a, b, r);
+        return true;
+      case 0x3e6000003e60000ull:
+        scp_3e60000_3e60000(a, b, r);
+        return true;
+      case 0x3f8000003f80000ull:
+        scp_3f80000_3f80000(a, b, r);
+        return true;
+      case 0x3ff000003ff0000ull:
+        scp_3ff0000_3ff0000(a, b, r);
+        return true;
+      case 0x4000f0014000f001ull:
+        scp_4000f001_4000f001(a, b, r);
+        return true;
+      case 0x4000fc014000fc01ull:
+        scp_4000fc01_4000fc01(a, b, r);
+        return true;
+      case 0xffffffffffffffffull:
+        scp_ffffffff_ffffffff(a, b, r);
+        return true;
+      default:
+        return false;
+    }
   }
-}
 
-template <class T>
-GAPHYS_ALWAYS_INLINE bool specialized_scp_by_key(std::uint64_t key, const basic_mv<T>& a,
-                                                 const basic_mv<T>& b, T& r) {
-  switch (key) {
-    case 0x100000003eull:
-      scp_10_3e(a, b, r);
-      return true;
-    case 0x1400000036ull:
-      scp_14_36(a, b, r);
-      return true;
-    case 0x1c0000001cull:
-      scp_1c_1c(a, b, r);
-      return true;
-    case 0x2000000002ull:
-      scp_20_2(a, b, r);
-      return true;
-    case 0x2000000026ull:
-      scp_20_26(a, b, r);
-      return true;
-    case 0x200000002eull:
-      scp_20_2e(a, b, r);
-      return true;
-    case 0x2000000032ull:
-      scp_20_32(a, b, r);
-      return true;
-    case 0x2000000036ull:
-      scp_20_36(a, b, r);
-      return true;
-    case 0x200000003eull:
-      scp_20_3e(a, b, r);
-      return true;
-    case 0x240000003eull:
-      scp_24_3e(a, b, r);
-      return true;
-    case 0x2600000026ull:
-      scp_26_26(a, b, r);
-      return true;
-    case 0x280000003eull:
-      scp_28_3e(a, b, r);
-      return true;
-    case 0x3e00000010ull:
-      scp_3e_10(a, b, r);
-      return true;
-    case 0x3e0000003eull:
-      scp_3e_3e(a, b, r);
-      return true;
-    case 0x40000000400ull:
-      scp_400_400(a, b, r);
-      return true;
-    case 0x200000002000ull:
-      scp_2000_2000(a, b, r);
-      return true;
-    case 0x440000004400ull:
-      scp_4400_4400(a, b, r);
-      return true;
-    case 0x540000005400ull:
-      scp_5400_5400(a, b, r);
-      return true;
-    case 0x640000006400ull:
-      scp_6400_6400(a, b, r);
-      return true;
-    case 0x980000009800ull:
-      scp_9800_9800(a, b, r);
-      return true;
-    case 0xe0000000e000ull:
-      scp_e000_e000(a, b, r);
-      return true;
-    case 0xfc000000fc00ull:
-      scp_fc00_fc00(a, b, r);
-      return true;
-    case 0xffc00000ffc0ull:
-      scp_ffc0_ffc0(a, b, r);
-      return true;
-    case 0x81000000810000ull:
-      scp_810000_810000(a, b, r);
-      return true;
-    case 0x91000000910000ull:
-      scp_910000_910000(a, b, r);
-      return true;
-    case 0x95000000950000ull:
-      scp_950000_950000(a, b, r);
-      return true;
-    case 0xc1000000c10000ull:
-      scp_c10000_c10000(a, b, r);
-      return true;
-    case 0x248000002480000ull:
-      scp_2480000_2480000(a, b, r);
-      return true;
-    case 0x299000002990000ull:
-      scp_2990000_2990000(a, b, r);
-      return true;
-    case 0x3e6000003e60000ull:
-      scp_3e60000_3e60000(a, b, r);
-      return true;
-    case 0x3f8000003f80000ull:
-      scp_3f80000_3f80000(a, b, r);
-      return true;
-    case 0x3ff000003ff0000ull:
-      scp_3ff0000_3ff0000(a, b, r);
-      return true;
-    case 0x4000f0014000f001ull:
-      scp_4000f001_4000f001(a, b, r);
-      return true;
-    case 0x4000fc014000fc01ull:
-      scp_4000fc01_4000fc01(a, b, r);
-      return true;
-    case 0xffffffffffffffffull:
-      scp_ffffffff_ffffffff(a, b, r);
-      return true;
-    default:
-      return false;
-  }
-}
+  // The cheapest kernel made for a superset of the bits, unless it costs more than
+  // 8 operations per term of the generic path (`work`).
+  template <class T>
+  static bool covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
+                       const basic_mv<T>& b, T& r);
+};
 
-// Bitmaps no kernel was made for: the cheapest kernel made for a superset of
-// them. It reads exact zeros where the arguments have no coefficient, so its
-// result is the generic path's; its result bits may mark some exact zeros.
-// Kernels come cheapest first, and the search ends at one costing more than
-// 8 operations per term of the generic path (`work`), which would be
-// faster. Kernels that divide never serve subsets (a divisor that vanishes on
-// the subset is the generic path's to handle).
+// Out of the class, so not inline: only the switch is meant to be.
 template <class T>
-bool specialized_scp_covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
-                              const basic_mv<T>& b, T& r) {
+bool kernels<call::scp>::covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
+                                  const basic_mv<T>& b, T& r) {
   const int work = gaphys::ga::bit_count(a_bits) * gaphys::ga::bit_count(b_bits);
   if (8 * work < 1) return false;
   if (!(a_bits & ~0x10u) && !(b_bits & ~0x3eu)) {
@@ -3650,57 +3591,42 @@ bool specialized_scp_covering(std::uint32_t a_bits, std::uint32_t b_bits, const 
   return false;
 }
 
-// The profile keys on the really nonzero coefficients, while stored bits may
-// still mark exact zeros (a product's structure): on a miss, retry with the
-// exactly nonzero ones, then with a kernel made for a superset of them.
-template <class T>
-bool specialized_scp_on_exact_bits(const basic_mv<T>& a, const basic_mv<T>& b, T& r) {
-  const std::uint32_t a_bits = gaphys::ga::exact_bits(a);
-  const std::uint32_t b_bits = gaphys::ga::exact_bits(b);
-  const std::uint64_t exact = pair_key(a_bits, b_bits);
-  if (exact != pair_key(a.bits, b.bits) && specialized_scp_by_key(exact, a, b, r)) return true;
-  return specialized_scp_covering(a_bits, b_bits, a, b, r);
-}
+template <>
+struct kernels<call::add> {
+  static constexpr bool profiled = true;
 
-// Kept small, and the switch forced inline, so that a hit runs inside the mv
-// function (one call in all); only a miss calls the retry.
-template <class T>
-inline bool specialized_scp(const basic_mv<T>& a, const basic_mv<T>& b, T& r) {
-  return specialized_scp_by_key(pair_key(a.bits, b.bits), a, b, r) ||
-         specialized_scp_on_exact_bits(a, b, r);
-}
-
-template <class T>
-GAPHYS_ALWAYS_INLINE bool specialized_add_by_key(std::uint64_t key, const basic_mv<T>& a,
-                                                 const basic_mv<T>& b, basic_mv<T>& r) {
-  switch (key) {
-    case 0x3e0000003eull:
-      add_3e_3e(a, b, r);
-      return true;
-    case 0xffc00000ffc0ull:
-      add_ffc0_ffc0(a, b, r);
-      return true;
-    case 0x4000fc014000fc01ull:
-      add_4000fc01_4000fc01(a, b, r);
-      return true;
-    case 0xffffffffffffffffull:
-      add_ffffffff_ffffffff(a, b, r);
-      return true;
-    default:
-      return false;
+  template <class T>
+  GAPHYS_ALWAYS_INLINE static bool by_key(std::uint64_t key, const basic_mv<T>& a,
+                                          const basic_mv<T>& b, basic_mv<T>& r) {
+    switch (key) {
+      case 0x3e0000003eull:
+        add_3e_3e(a, b, r);
+        return true;
+      case 0xffc00000ffc0ull:
+        add_ffc0_ffc0(a, b, r);
+        return true;
+      case 0x4000fc014000fc01ull:
+        add_4000fc01_4000fc01(a, b, r);
+        return true;
+      case 0xffffffffffffffffull:
+        add_ffffffff_ffffffff(a, b, r);
+        return true;
+      default:
+        return false;
+    }
   }
-}
 
-// Bitmaps no kernel was made for: the cheapest kernel made for a superset of
-// them. It reads exact zeros where the arguments have no coefficient, so its
-// result is the generic path's; its result bits may mark some exact zeros.
-// Kernels come cheapest first, and the search ends at one costing more than
-// 8 operations per term of the generic path (`work`), which would be
-// faster. Kernels that divide never serve subsets (a divisor that vanishes on
-// the subset is the generic path's to handle).
+  // The cheapest kernel made for a superset of the bits, unless it costs more than
+  // 8 operations per term of the generic path (`work`).
+  template <class T>
+  static bool covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
+                       const basic_mv<T>& b, basic_mv<T>& r);
+};
+
+// Out of the class, so not inline: only the switch is meant to be.
 template <class T>
-bool specialized_add_covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
-                              const basic_mv<T>& b, basic_mv<T>& r) {
+bool kernels<call::add>::covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
+                                  const basic_mv<T>& b, basic_mv<T>& r) {
   const int work = gaphys::ga::bit_count(a_bits) + gaphys::ga::bit_count(b_bits);
   if (8 * work < 5) return false;
   if (!(a_bits & ~0x3eu) && !(b_bits & ~0x3eu)) {
@@ -3725,111 +3651,69 @@ bool specialized_add_covering(std::uint32_t a_bits, std::uint32_t b_bits, const 
   return false;
 }
 
-// The profile keys on the really nonzero coefficients, while stored bits may
-// still mark exact zeros (a product's structure): on a miss, retry with the
-// exactly nonzero ones, then with a kernel made for a superset of them.
-template <class T>
-bool specialized_add_on_exact_bits(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
-  const std::uint32_t a_bits = gaphys::ga::exact_bits(a);
-  const std::uint32_t b_bits = gaphys::ga::exact_bits(b);
-  const std::uint64_t exact = pair_key(a_bits, b_bits);
-  if (exact != pair_key(a.bits, b.bits) && specialized_add_by_key(exact, a, b, r)) return true;
-  return specialized_add_covering(a_bits, b_bits, a, b, r);
-}
+template <>
+struct kernels<call::apply> {
+  static constexpr bool profiled = true;
 
-// Kept small, and the switch forced inline, so that a hit runs inside the mv
-// function (one call in all); only a miss calls the retry.
-template <class T>
-inline bool specialized_add(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
-  return specialized_add_by_key(pair_key(a.bits, b.bits), a, b, r) ||
-         specialized_add_on_exact_bits(a, b, r);
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_sub(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
-  switch (pair_key(a.bits, b.bits)) {
-    default:
-      return false;
+  template <class T>
+  GAPHYS_ALWAYS_INLINE static bool by_key(std::uint64_t key, const basic_mv<T>& a,
+                                          const basic_mv<T>& b, basic_mv<T>& r) {
+    switch (key) {
+      case 0x4000f00100000010ull:
+        apply_4000f001_10(a, b, r);
+        return true;
+      case 0x4000fc0100000010ull:
+        apply_4000fc01_10(a, b, r);
+        return true;
+      case 0x4000fc010000003eull:
+        apply_4000fc01_3e(a, b, r);
+        return true;
+      default:
+        return false;
+    }
   }
-}
 
-template <class T>
-GAPHYS_ALWAYS_INLINE bool specialized_apply_by_key(std::uint64_t key, const basic_mv<T>& a,
-                                                   const basic_mv<T>& b, basic_mv<T>& r) {
-  switch (key) {
-    case 0x4000f00100000010ull:
-      apply_4000f001_10(a, b, r);
-      return true;
-    case 0x4000fc0100000010ull:
-      apply_4000fc01_10(a, b, r);
-      return true;
-    case 0x4000fc010000003eull:
-      apply_4000fc01_3e(a, b, r);
-      return true;
-    default:
-      return false;
-  }
-}
+  // The cheapest kernel made for a superset of the bits, unless it costs more than
+  // 8 operations per term of the generic path (`work`).
+  template <class T>
+  static bool covering(std::uint32_t, std::uint32_t, const basic_mv<T>&, const basic_mv<T>&,
+                       basic_mv<T>&);
+};
 
-// Bitmaps no kernel was made for: the cheapest kernel made for a superset of
-// them. It reads exact zeros where the arguments have no coefficient, so its
-// result is the generic path's; its result bits may mark some exact zeros.
-// Kernels come cheapest first, and the search ends at one costing more than
-// 8 operations per term of the generic path (`work`), which would be
-// faster. Kernels that divide never serve subsets (a divisor that vanishes on
-// the subset is the generic path's to handle).
+// Out of the class, so not inline: only the switch is meant to be.
 template <class T>
-bool specialized_apply_covering([[maybe_unused]] std::uint32_t a_bits,
-                                [[maybe_unused]] std::uint32_t b_bits,
-                                [[maybe_unused]] const basic_mv<T>& a,
-                                [[maybe_unused]] const basic_mv<T>& b,
-                                [[maybe_unused]] basic_mv<T>& r) {
+bool kernels<call::apply>::covering(std::uint32_t, std::uint32_t, const basic_mv<T>&,
+                                    const basic_mv<T>&, basic_mv<T>&) {
   return false;
 }
 
-// The profile keys on the really nonzero coefficients, while stored bits may
-// still mark exact zeros (a product's structure): on a miss, retry with the
-// exactly nonzero ones, then with a kernel made for a superset of them.
-template <class T>
-bool specialized_apply_on_exact_bits(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
-  const std::uint32_t a_bits = gaphys::ga::exact_bits(a);
-  const std::uint32_t b_bits = gaphys::ga::exact_bits(b);
-  const std::uint64_t exact = pair_key(a_bits, b_bits);
-  if (exact != pair_key(a.bits, b.bits) && specialized_apply_by_key(exact, a, b, r)) return true;
-  return specialized_apply_covering(a_bits, b_bits, a, b, r);
-}
+template <>
+struct kernels<call::meet> {
+  static constexpr bool profiled = true;
 
-// Kept small, and the switch forced inline, so that a hit runs inside the mv
-// function (one call in all); only a miss calls the retry.
-template <class T>
-inline bool specialized_apply(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
-  return specialized_apply_by_key(pair_key(a.bits, b.bits), a, b, r) ||
-         specialized_apply_on_exact_bits(a, b, r);
-}
-
-template <class T>
-GAPHYS_ALWAYS_INLINE bool specialized_meet_by_key(std::uint64_t key, const basic_mv<T>& a,
-                                                  const basic_mv<T>& b, basic_mv<T>& r) {
-  switch (key) {
-    case 0x7c0000007c000000ull:
-      meet_7c000000_7c000000(a, b, r);
-      return true;
-    default:
-      return false;
+  template <class T>
+  GAPHYS_ALWAYS_INLINE static bool by_key(std::uint64_t key, const basic_mv<T>& a,
+                                          const basic_mv<T>& b, basic_mv<T>& r) {
+    switch (key) {
+      case 0x7c0000007c000000ull:
+        meet_7c000000_7c000000(a, b, r);
+        return true;
+      default:
+        return false;
+    }
   }
-}
 
-// Bitmaps no kernel was made for: the cheapest kernel made for a superset of
-// them. It reads exact zeros where the arguments have no coefficient, so its
-// result is the generic path's; its result bits may mark some exact zeros.
-// Kernels come cheapest first, and the search ends at one costing more than
-// 8 operations per term of the generic path (`work`), which would be
-// faster. Kernels that divide never serve subsets (a divisor that vanishes on
-// the subset is the generic path's to handle).
+  // The cheapest kernel made for a superset of the bits, unless it costs more than
+  // 8 operations per term of the generic path (`work`).
+  template <class T>
+  static bool covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
+                       const basic_mv<T>& b, basic_mv<T>& r);
+};
+
+// Out of the class, so not inline: only the switch is meant to be.
 template <class T>
-bool specialized_meet_covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
-                               const basic_mv<T>& b, basic_mv<T>& r) {
+bool kernels<call::meet>::covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
+                                   const basic_mv<T>& b, basic_mv<T>& r) {
   const int work = gaphys::ga::bit_count(a_bits) * gaphys::ga::bit_count(b_bits);
   if (8 * work < 30) return false;
   if (!(a_bits & ~0x7c000000u) && !(b_bits & ~0x7c000000u)) {
@@ -3839,65 +3723,39 @@ bool specialized_meet_covering(std::uint32_t a_bits, std::uint32_t b_bits, const
   return false;
 }
 
-// The profile keys on the really nonzero coefficients, while stored bits may
-// still mark exact zeros (a product's structure): on a miss, retry with the
-// exactly nonzero ones, then with a kernel made for a superset of them.
-template <class T>
-bool specialized_meet_on_exact_bits(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
-  const std::uint32_t a_bits = gaphys::ga::exact_bits(a);
-  const std::uint32_t b_bits = gaphys::ga::exact_bits(b);
-  const std::uint64_t exact = pair_key(a_bits, b_bits);
-  if (exact != pair_key(a.bits, b.bits) && specialized_meet_by_key(exact, a, b, r)) return true;
-  return specialized_meet_covering(a_bits, b_bits, a, b, r);
-}
+template <>
+struct kernels<call::neg> {
+  static constexpr bool profiled = true;
 
-// Kept small, and the switch forced inline, so that a hit runs inside the mv
-// function (one call in all); only a miss calls the retry.
-template <class T>
-inline bool specialized_meet(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
-  return specialized_meet_by_key(pair_key(a.bits, b.bits), a, b, r) ||
-         specialized_meet_on_exact_bits(a, b, r);
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_join(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
-  switch (pair_key(a.bits, b.bits)) {
-    default:
-      return false;
+  template <class T>
+  GAPHYS_ALWAYS_INLINE static bool by_key(std::uint32_t key, const basic_mv<T>& a, basic_mv<T>& r) {
+    switch (key) {
+      case 0x10u:
+        neg_10(a, r);
+        return true;
+      case 0x14u:
+        neg_14(a, r);
+        return true;
+      case 0x24u:
+        neg_24(a, r);
+        return true;
+      case 0x28u:
+        neg_28(a, r);
+        return true;
+      default:
+        return false;
+    }
   }
-}
 
-template <class T>
-GAPHYS_ALWAYS_INLINE bool specialized_neg_by_key(std::uint32_t key, const basic_mv<T>& a,
-                                                 basic_mv<T>& r) {
-  switch (key) {
-    case 0x10u:
-      neg_10(a, r);
-      return true;
-    case 0x14u:
-      neg_14(a, r);
-      return true;
-    case 0x24u:
-      neg_24(a, r);
-      return true;
-    case 0x28u:
-      neg_28(a, r);
-      return true;
-    default:
-      return false;
-  }
-}
+  // The cheapest kernel made for a superset of the bits, unless it costs more than
+  // 8 operations per term of the generic path (`work`).
+  template <class T>
+  static bool covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_mv<T>& r);
+};
 
-// Bitmaps no kernel was made for: the cheapest kernel made for a superset of
-// them. It reads exact zeros where the arguments have no coefficient, so its
-// result is the generic path's; its result bits may mark some exact zeros.
-// Kernels come cheapest first, and the search ends at one costing more than
-// 8 operations per term of the generic path (`work`), which would be
-// faster. Kernels that divide never serve subsets (a divisor that vanishes on
-// the subset is the generic path's to handle).
+// Out of the class, so not inline: only the switch is meant to be.
 template <class T>
-bool specialized_neg_covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_mv<T>& r) {
+bool kernels<call::neg>::covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_mv<T>& r) {
   const int work = gaphys::ga::bit_count(a_bits);
   if (8 * work < 0) return false;
   if (!(a_bits & ~0x10u)) {
@@ -3922,51 +3780,36 @@ bool specialized_neg_covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_
   return false;
 }
 
-// The profile keys on the really nonzero coefficients, while stored bits may
-// still mark exact zeros (a product's structure): on a miss, retry with the
-// exactly nonzero ones, then with a kernel made for a superset of them.
-template <class T>
-bool specialized_neg_on_exact_bits(const basic_mv<T>& a, basic_mv<T>& r) {
-  const std::uint32_t a_bits = gaphys::ga::exact_bits(a);
-  const std::uint32_t exact = a_bits;
-  if (exact != a.bits && specialized_neg_by_key(exact, a, r)) return true;
-  return specialized_neg_covering(a_bits, a, r);
-}
+template <>
+struct kernels<call::reverse> {
+  static constexpr bool profiled = true;
 
-// Kept small, and the switch forced inline, so that a hit runs inside the mv
-// function (one call in all); only a miss calls the retry.
-template <class T>
-inline bool specialized_neg(const basic_mv<T>& a, basic_mv<T>& r) {
-  return specialized_neg_by_key(a.bits, a, r) || specialized_neg_on_exact_bits(a, r);
-}
-
-template <class T>
-GAPHYS_ALWAYS_INLINE bool specialized_reverse_by_key(std::uint32_t key, const basic_mv<T>& a,
-                                                     basic_mv<T>& r) {
-  switch (key) {
-    case 0x1cu:
-      reverse_1c(a, r);
-      return true;
-    case 0x4000f001u:
-      reverse_4000f001(a, r);
-      return true;
-    case 0x4000fc01u:
-      reverse_4000fc01(a, r);
-      return true;
-    default:
-      return false;
+  template <class T>
+  GAPHYS_ALWAYS_INLINE static bool by_key(std::uint32_t key, const basic_mv<T>& a, basic_mv<T>& r) {
+    switch (key) {
+      case 0x1cu:
+        reverse_1c(a, r);
+        return true;
+      case 0x4000f001u:
+        reverse_4000f001(a, r);
+        return true;
+      case 0x4000fc01u:
+        reverse_4000fc01(a, r);
+        return true;
+      default:
+        return false;
+    }
   }
-}
 
-// Bitmaps no kernel was made for: the cheapest kernel made for a superset of
-// them. It reads exact zeros where the arguments have no coefficient, so its
-// result is the generic path's; its result bits may mark some exact zeros.
-// Kernels come cheapest first, and the search ends at one costing more than
-// 8 operations per term of the generic path (`work`), which would be
-// faster. Kernels that divide never serve subsets (a divisor that vanishes on
-// the subset is the generic path's to handle).
+  // The cheapest kernel made for a superset of the bits, unless it costs more than
+  // 8 operations per term of the generic path (`work`).
+  template <class T>
+  static bool covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_mv<T>& r);
+};
+
+// Out of the class, so not inline: only the switch is meant to be.
 template <class T>
-bool specialized_reverse_covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_mv<T>& r) {
+bool kernels<call::reverse>::covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_mv<T>& r) {
   const int work = gaphys::ga::bit_count(a_bits);
   if (8 * work < 0) return false;
   if (!(a_bits & ~0x1cu)) {
@@ -3986,69 +3829,54 @@ bool specialized_reverse_covering(std::uint32_t a_bits, const basic_mv<T>& a, ba
   return false;
 }
 
-// The profile keys on the really nonzero coefficients, while stored bits may
-// still mark exact zeros (a product's structure): on a miss, retry with the
-// exactly nonzero ones, then with a kernel made for a superset of them.
-template <class T>
-bool specialized_reverse_on_exact_bits(const basic_mv<T>& a, basic_mv<T>& r) {
-  const std::uint32_t a_bits = gaphys::ga::exact_bits(a);
-  const std::uint32_t exact = a_bits;
-  if (exact != a.bits && specialized_reverse_by_key(exact, a, r)) return true;
-  return specialized_reverse_covering(a_bits, a, r);
-}
+template <>
+struct kernels<call::involute> {
+  static constexpr bool profiled = true;
 
-// Kept small, and the switch forced inline, so that a hit runs inside the mv
-// function (one call in all); only a miss calls the retry.
-template <class T>
-inline bool specialized_reverse(const basic_mv<T>& a, basic_mv<T>& r) {
-  return specialized_reverse_by_key(a.bits, a, r) || specialized_reverse_on_exact_bits(a, r);
-}
-
-template <class T>
-GAPHYS_ALWAYS_INLINE bool specialized_involute_by_key(std::uint32_t key, const basic_mv<T>& a,
-                                                      basic_mv<T>& r) {
-  switch (key) {
-    case 0x810000u:
-      involute_810000(a, r);
-      return true;
-    case 0x910000u:
-      involute_910000(a, r);
-      return true;
-    case 0x950000u:
-      involute_950000(a, r);
-      return true;
-    case 0xc10000u:
-      involute_c10000(a, r);
-      return true;
-    case 0x2480000u:
-      involute_2480000(a, r);
-      return true;
-    case 0x2990000u:
-      involute_2990000(a, r);
-      return true;
-    case 0x3e60000u:
-      involute_3e60000(a, r);
-      return true;
-    case 0x3f80000u:
-      involute_3f80000(a, r);
-      return true;
-    case 0x3ff0000u:
-      involute_3ff0000(a, r);
-      return true;
-    default:
-      return false;
+  template <class T>
+  GAPHYS_ALWAYS_INLINE static bool by_key(std::uint32_t key, const basic_mv<T>& a, basic_mv<T>& r) {
+    switch (key) {
+      case 0x810000u:
+        involute_810000(a, r);
+        return true;
+      case 0x910000u:
+        involute_910000(a, r);
+        return true;
+      case 0x950000u:
+        involute_950000(a, r);
+        return true;
+      case 0xc10000u:
+        involute_c10000(a, r);
+        return true;
+      case 0x2480000u:
+        involute_2480000(a, r);
+        return true;
+      case 0x2990000u:
+        involute_2990000(a, r);
+        return true;
+      case 0x3e60000u:
+        involute_3e60000(a, r);
+        return true;
+      case 0x3f80000u:
+        involute_3f80000(a, r);
+        return true;
+      case 0x3ff0000u:
+        involute_3ff0000(a, r);
+        return true;
+      default:
+        return false;
+    }
   }
-}
 
-// Bitmaps no kernel was made for: the cheapest kernel made for a superset of
-// them. It reads exact zeros where the arguments have no coefficient, so its
-// result is the generic path's; its result bits may mark some exact zeros.
-// Kernels come cheapest first, and the search ends at one costing more than
-// 8 operations per term of the generic path (`work`), which would be
-// faster. Kernels that divide never serve subsets (a divisor that vanishes on
-// the subset is the generic path's to handle).
+  // The cheapest kernel made for a superset of the bits, unless it costs more than
+  // 8 operations per term of the generic path (`work`).
+  template <class T>
+  static bool covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_mv<T>& r);
+};
+
+// Out of the class, so not inline: only the switch is meant to be.
 template <class T>
-bool specialized_involute_covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_mv<T>& r) {
+bool kernels<call::involute>::covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_mv<T>& r) {
   const int work = gaphys::ga::bit_count(a_bits);
   if (8 * work < 0) return false;
   if (!(a_bits & ~0x810000u)) {
@@ -4098,54 +3926,30 @@ bool specialized_involute_covering(std::uint32_t a_bits, const basic_mv<T>& a, b
   return false;
 }
 
-// The profile keys on the really nonzero coefficients, while stored bits may
-// still mark exact zeros (a product's structure): on a miss, retry with the
-// exactly nonzero ones, then with a kernel made for a superset of them.
-template <class T>
-bool specialized_involute_on_exact_bits(const basic_mv<T>& a, basic_mv<T>& r) {
-  const std::uint32_t a_bits = gaphys::ga::exact_bits(a);
-  const std::uint32_t exact = a_bits;
-  if (exact != a.bits && specialized_involute_by_key(exact, a, r)) return true;
-  return specialized_involute_covering(a_bits, a, r);
-}
+template <>
+struct kernels<call::dual> {
+  static constexpr bool profiled = true;
 
-// Kept small, and the switch forced inline, so that a hit runs inside the mv
-// function (one call in all); only a miss calls the retry.
-template <class T>
-inline bool specialized_involute(const basic_mv<T>& a, basic_mv<T>& r) {
-  return specialized_involute_by_key(a.bits, a, r) || specialized_involute_on_exact_bits(a, r);
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_conjugate(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
-  switch (a.bits) {
-    default:
-      return false;
+  template <class T>
+  GAPHYS_ALWAYS_INLINE static bool by_key(std::uint32_t key, const basic_mv<T>& a, basic_mv<T>& r) {
+    switch (key) {
+      case 0x3eu:
+        dual_3e(a, r);
+        return true;
+      default:
+        return false;
+    }
   }
-}
 
-template <class T>
-GAPHYS_ALWAYS_INLINE bool specialized_dual_by_key(std::uint32_t key, const basic_mv<T>& a,
-                                                  basic_mv<T>& r) {
-  switch (key) {
-    case 0x3eu:
-      dual_3e(a, r);
-      return true;
-    default:
-      return false;
-  }
-}
+  // The cheapest kernel made for a superset of the bits, unless it costs more than
+  // 8 operations per term of the generic path (`work`).
+  template <class T>
+  static bool covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_mv<T>& r);
+};
 
-// Bitmaps no kernel was made for: the cheapest kernel made for a superset of
-// them. It reads exact zeros where the arguments have no coefficient, so its
-// result is the generic path's; its result bits may mark some exact zeros.
-// Kernels come cheapest first, and the search ends at one costing more than
-// 8 operations per term of the generic path (`work`), which would be
-// faster. Kernels that divide never serve subsets (a divisor that vanishes on
-// the subset is the generic path's to handle).
+// Out of the class, so not inline: only the switch is meant to be.
 template <class T>
-bool specialized_dual_covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_mv<T>& r) {
+bool kernels<call::dual>::covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_mv<T>& r) {
   const int work = gaphys::ga::bit_count(a_bits);
   if (8 * work < 0) return false;
   if (!(a_bits & ~0x3eu)) {
@@ -4155,84 +3959,69 @@ bool specialized_dual_covering(std::uint32_t a_bits, const basic_mv<T>& a, basic
   return false;
 }
 
-// The profile keys on the really nonzero coefficients, while stored bits may
-// still mark exact zeros (a product's structure): on a miss, retry with the
-// exactly nonzero ones, then with a kernel made for a superset of them.
-template <class T>
-bool specialized_dual_on_exact_bits(const basic_mv<T>& a, basic_mv<T>& r) {
-  const std::uint32_t a_bits = gaphys::ga::exact_bits(a);
-  const std::uint32_t exact = a_bits;
-  if (exact != a.bits && specialized_dual_by_key(exact, a, r)) return true;
-  return specialized_dual_covering(a_bits, a, r);
-}
+template <>
+struct kernels<call::undual> {
+  static constexpr bool profiled = true;
 
-// Kept small, and the switch forced inline, so that a hit runs inside the mv
-// function (one call in all); only a miss calls the retry.
-template <class T>
-inline bool specialized_dual(const basic_mv<T>& a, basic_mv<T>& r) {
-  return specialized_dual_by_key(a.bits, a, r) || specialized_dual_on_exact_bits(a, r);
-}
-
-template <class T>
-GAPHYS_ALWAYS_INLINE bool specialized_undual_by_key(std::uint32_t key, const basic_mv<T>& a,
-                                                    basic_mv<T>& r) {
-  switch (key) {
-    case 0x1240u:
-      undual_1240(a, r);
-      return true;
-    case 0x8100u:
-      undual_8100(a, r);
-      return true;
-    case 0x8300u:
-      undual_8300(a, r);
-      return true;
-    case 0x8900u:
-      undual_8900(a, r);
-      return true;
-    case 0x9940u:
-      undual_9940(a, r);
-      return true;
-    case 0xa900u:
-      undual_a900(a, r);
-      return true;
-    case 0xde40u:
-      undual_de40(a, r);
-      return true;
-    case 0xf680u:
-      undual_f680(a, r);
-      return true;
-    case 0xffc0u:
-      undual_ffc0(a, r);
-      return true;
-    case 0x800000u:
-      undual_800000(a, r);
-      return true;
-    case 0x1000000u:
-      undual_1000000(a, r);
-      return true;
-    case 0x2000000u:
-      undual_2000000(a, r);
-      return true;
-    case 0x2800000u:
-      undual_2800000(a, r);
-      return true;
-    case 0x3800000u:
-      undual_3800000(a, r);
-      return true;
-    default:
-      return false;
+  template <class T>
+  GAPHYS_ALWAYS_INLINE static bool by_key(std::uint32_t key, const basic_mv<T>& a, basic_mv<T>& r) {
+    switch (key) {
+      case 0x1240u:
+        undual_1240(a, r);
+        return true;
+      case 0x8100u:
+        undual_8100(a, r);
+        return true;
+      case 0x8300u:
+        undual_8300(a, r);
+        return true;
+      case 0x8900u:
+        undual_8900(a, r);
+        return true;
+      case 0x9940u:
+        undual_9940(a, r);
+        return true;
+      case 0xa900u:
+        undual_a900(a, r);
+        return true;
+      case 0xde40u:
+        undual_de40(a, r);
+        return true;
+      case 0xf680u:
+        undual_f680(a, r);
+        return true;
+      case 0xffc0u:
+        undual_ffc0(a, r);
+        return true;
+      case 0x800000u:
+        undual_800000(a, r);
+        return true;
+      case 0x1000000u:
+        undual_1000000(a, r);
+        return true;
+      case 0x2000000u:
+        undual_2000000(a, r);
+        return true;
+      case 0x2800000u:
+        undual_2800000(a, r);
+        return true;
+      case 0x3800000u:
+        undual_3800000(a, r);
+        return true;
+      default:
+        return false;
+    }
   }
-}
 
-// Bitmaps no kernel was made for: the cheapest kernel made for a superset of
-// them. It reads exact zeros where the arguments have no coefficient, so its
-// result is the generic path's; its result bits may mark some exact zeros.
-// Kernels come cheapest first, and the search ends at one costing more than
-// 8 operations per term of the generic path (`work`), which would be
-// faster. Kernels that divide never serve subsets (a divisor that vanishes on
-// the subset is the generic path's to handle).
+  // The cheapest kernel made for a superset of the bits, unless it costs more than
+  // 8 operations per term of the generic path (`work`).
+  template <class T>
+  static bool covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_mv<T>& r);
+};
+
+// Out of the class, so not inline: only the switch is meant to be.
 template <class T>
-bool specialized_undual_covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_mv<T>& r) {
+bool kernels<call::undual>::covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_mv<T>& r) {
   const int work = gaphys::ga::bit_count(a_bits);
   if (8 * work < 0) return false;
   if (!(a_bits & ~0x1240u)) {
@@ -4307,23 +4096,23 @@ bool specialized_undual_covering(std::uint32_t a_bits, const basic_mv<T>& a, bas
   return false;
 }
 
-// The profile keys on the really nonzero coefficients, while stored bits may
-// still mark exact zeros (a product's structure): on a miss, retry with the
-// exactly nonzero ones, then with a kernel made for a superset of them.
-template <class T>
-bool specialized_undual_on_exact_bits(const basic_mv<T>& a, basic_mv<T>& r) {
-  const std::uint32_t a_bits = gaphys::ga::exact_bits(a);
-  const std::uint32_t exact = a_bits;
-  if (exact != a.bits && specialized_undual_by_key(exact, a, r)) return true;
-  return specialized_undual_covering(a_bits, a, r);
-}
-
-// Kept small, and the switch forced inline, so that a hit runs inside the mv
-// function (one call in all); only a miss calls the retry.
-template <class T>
-inline bool specialized_undual(const basic_mv<T>& a, basic_mv<T>& r) {
-  return specialized_undual_by_key(a.bits, a, r) || specialized_undual_on_exact_bits(a, r);
-}
+// The hooks the functions on mv ask first (gaphys/ga/mv_dispatch.hpp).
+using gaphys::ga::dispatch::specialized_add;
+using gaphys::ga::dispatch::specialized_apply;
+using gaphys::ga::dispatch::specialized_conjugate;
+using gaphys::ga::dispatch::specialized_dual;
+using gaphys::ga::dispatch::specialized_gp;
+using gaphys::ga::dispatch::specialized_involute;
+using gaphys::ga::dispatch::specialized_join;
+using gaphys::ga::dispatch::specialized_lc;
+using gaphys::ga::dispatch::specialized_meet;
+using gaphys::ga::dispatch::specialized_neg;
+using gaphys::ga::dispatch::specialized_op;
+using gaphys::ga::dispatch::specialized_rc;
+using gaphys::ga::dispatch::specialized_reverse;
+using gaphys::ga::dispatch::specialized_scp;
+using gaphys::ga::dispatch::specialized_sub;
+using gaphys::ga::dispatch::specialized_undual;
 
 }  // namespace detail
 }  // namespace c3ga

@@ -11,7 +11,7 @@
 #include <array>
 #include <cstdint>
 
-static_assert(GAPHYS_GA_RUNTIME_VERSION == 1, "c3ga was generated for gaphys GA runtime version 1");
+static_assert(GAPHYS_GA_RUNTIME_VERSION == 2, "c3ga was generated for gaphys GA runtime version 2");
 
 namespace c3ga {
 
@@ -65,6 +65,246 @@ enum class call : int {
   exp,
   log,
 };
+
+// The dense path of table_product (a full argument): the products in
+// an orthogonal basis, where each is a signed XOR permutation of blades.
+inline constexpr std::uint8_t orthogonal_to_left_to[] = {
+    0,  16, 2,  4,  8,  1,  18, 20, 24, 17, 6,  10, 3,  12, 5,  9,
+    22, 26, 19, 28, 21, 25, 14, 7,  11, 13, 30, 23, 27, 29, 15, 31,
+};
+inline constexpr double orthogonal_to_left_scale[] = {
+    1.0,  -1.0, 1.0, 1.0,  1.0, 0.5, -1.0, 1.0, 1.0, -1.0, -1.0, -1.0, -0.5, 1.0,  0.5,  0.5,
+    -1.0, -1.0, 1.0, -1.0, 1.0, 1.0, 1.0,  0.5, 0.5, 0.5,  -1.0, 1.0,  1.0,  -1.0, -0.5, 1.0,
+};
+inline constexpr std::uint8_t orthogonal_to_left_extra_from[] = {
+    1, 5, 6, 7, 8, 12, 14, 15, 16, 17, 19, 23, 24, 25, 26, 30,
+};
+inline constexpr std::uint8_t orthogonal_to_left_extra_to[] = {
+    1, 16, 3, 5, 9, 18, 20, 24, 7, 11, 13, 22, 26, 28, 15, 30,
+};
+inline constexpr double orthogonal_to_left_extra_scale[] = {
+    0.5, 1.0, 0.5, -0.5, -0.5, -1.0, 1.0, 1.0, 0.5, 0.5, 0.5, 1.0, 1.0, 1.0, 0.5, -1.0,
+};
+inline constexpr std::uint8_t orthogonal_to_right_to[] = {
+    0,  16, 2,  4,  8,  1,  18, 20, 24, 17, 6,  10, 3,  12, 5,  9,
+    22, 26, 19, 28, 21, 25, 14, 7,  11, 13, 30, 23, 27, 29, 15, 31,
+};
+inline constexpr double orthogonal_to_right_scale[] = {
+    1.0,  -1.0, 1.0, 1.0,  1.0, 0.5, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, -0.5, 1.0, -0.5, -0.5,
+    -1.0, -1.0, 1.0, -1.0, 1.0, 1.0, 1.0, 0.5, 0.5, 0.5, 1.0, 1.0, 1.0,  1.0, -0.5, 1.0,
+};
+inline constexpr std::uint8_t orthogonal_to_right_extra_from[] = {
+    1, 5, 6, 7, 8, 12, 14, 15, 16, 17, 19, 23, 24, 25, 26, 30,
+};
+inline constexpr std::uint8_t orthogonal_to_right_extra_to[] = {
+    1, 16, 3, 5, 9, 18, 20, 24, 7, 11, 13, 22, 26, 28, 15, 30,
+};
+inline constexpr double orthogonal_to_right_extra_scale[] = {
+    0.5, 1.0, 0.5, 0.5, 0.5, 1.0, 1.0, 1.0, 0.5, 0.5, 0.5, 1.0, 1.0, 1.0, 0.5, 1.0,
+};
+inline constexpr std::uint8_t orthogonal_from_to[] = {
+    0, 5, 2, 12, 3, 14, 10, 23, 4, 15, 11, 24, 13, 25, 22, 30,
+    1, 9, 6, 18, 7, 20, 16, 27, 8, 21, 17, 28, 19, 29, 26, 31,
+};
+inline constexpr double orthogonal_from_scale[] = {
+    1.0,  1.0, 1.0, -1.0, 1.0, -1.0, 1.0,  1.0, 1.0, -1.0, 1.0,  1.0, 1.0,  1.0, 1.0, -1.0,
+    -0.5, 1.0, 0.5, 1.0,  0.5, 1.0,  -0.5, 1.0, 0.5, 1.0,  -0.5, 1.0, -0.5, 1.0, 0.5, 1.0,
+};
+inline constexpr std::uint8_t orthogonal_from_extra_from[] = {
+    1, 3, 5, 7, 9, 11, 13, 15, 16, 18, 20, 22, 24, 26, 28, 30,
+};
+inline constexpr std::uint8_t orthogonal_from_extra_to[] = {
+    1, 6, 7, 16, 8, 17, 19, 26, 5, 12, 14, 23, 15, 24, 25, 30,
+};
+inline constexpr double orthogonal_from_extra_scale[] = {
+    1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5,
+};
+inline constexpr gaphys::ga::orthogonal_basis orthogonal_coordinates{
+    {orthogonal_to_left_to, orthogonal_to_left_scale, 16, orthogonal_to_left_extra_from,
+     orthogonal_to_left_extra_to, orthogonal_to_left_extra_scale},
+    {orthogonal_to_right_to, orthogonal_to_right_scale, 16, orthogonal_to_right_extra_from,
+     orthogonal_to_right_extra_to, orthogonal_to_right_extra_scale},
+    {orthogonal_from_to, orthogonal_from_scale, 16, orthogonal_from_extra_from,
+     orthogonal_from_extra_to, orthogonal_from_extra_scale},
+};
+inline constexpr double gp_dense_lanes[] = {
+    1.0, 1.0, 1.0, 1.0, -2.0, 1.0, -2.0, 1.0, 1.0, -1.0, 1.0, -1.0, 2.0, 1.0, 2.0, 1.0,
+};
+inline constexpr double gp_dense_blocks[] = {
+    1.0, 1.0,  1.0,  1.0, 1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,
+    1.0, 1.0,  1.0,  1.0, 1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,
+    1.0, -1.0, -1.0, 1.0, 1.0,  -1.0, -1.0, 1.0,  1.0,  -1.0, -1.0, 1.0,  1.0,  -1.0, -1.0, 1.0,
+    1.0, -1.0, -1.0, 1.0, 1.0,  -1.0, -1.0, 1.0,  1.0,  -1.0, -1.0, 1.0,  1.0,  -1.0, -1.0, 1.0,
+    1.0, -1.0, -1.0, 1.0, -1.0, 1.0,  1.0,  -1.0, 1.0,  -1.0, -1.0, 1.0,  -1.0, 1.0,  1.0,  -1.0,
+    1.0, -1.0, -1.0, 1.0, -1.0, 1.0,  1.0,  -1.0, 1.0,  -1.0, -1.0, 1.0,  -1.0, 1.0,  1.0,  -1.0,
+    1.0, 1.0,  1.0,  1.0, -1.0, -1.0, -1.0, -1.0, 1.0,  1.0,  1.0,  1.0,  -1.0, -1.0, -1.0, -1.0,
+    1.0, 1.0,  1.0,  1.0, -1.0, -1.0, -1.0, -1.0, 1.0,  1.0,  1.0,  1.0,  -1.0, -1.0, -1.0, -1.0,
+    1.0, -1.0, -1.0, 1.0, -1.0, 1.0,  1.0,  -1.0, -1.0, 1.0,  1.0,  -1.0, 1.0,  -1.0, -1.0, 1.0,
+    0.5, -0.5, -0.5, 0.5, -0.5, 0.5,  0.5,  -0.5, -0.5, 0.5,  0.5,  -0.5, 0.5,  -0.5, -0.5, 0.5,
+    1.0, 1.0,  1.0,  1.0, -1.0, -1.0, -1.0, -1.0, -1.0, -1.0, -1.0, -1.0, 1.0,  1.0,  1.0,  1.0,
+    0.5, 0.5,  0.5,  0.5, -0.5, -0.5, -0.5, -0.5, -0.5, -0.5, -0.5, -0.5, 0.5,  0.5,  0.5,  0.5,
+    1.0, 1.0,  1.0,  1.0, 1.0,  1.0,  1.0,  1.0,  -1.0, -1.0, -1.0, -1.0, -1.0, -1.0, -1.0, -1.0,
+    0.5, 0.5,  0.5,  0.5, 0.5,  0.5,  0.5,  0.5,  -0.5, -0.5, -0.5, -0.5, -0.5, -0.5, -0.5, -0.5,
+    1.0, -1.0, -1.0, 1.0, 1.0,  -1.0, -1.0, 1.0,  -1.0, 1.0,  1.0,  -1.0, -1.0, 1.0,  1.0,  -1.0,
+    0.5, -0.5, -0.5, 0.5, 0.5,  -0.5, -0.5, 0.5,  -0.5, 0.5,  0.5,  -0.5, -0.5, 0.5,  0.5,  -0.5,
+};
+inline constexpr std::uint32_t gp_reach_rows[] = {
+    0xffffffffu, 0xbc7f2fdfu, 0xffffffffu, 0xffffffffu, 0xffffffffu, 0xfbf4fe3du, 0xbc7f2fdfu,
+    0xbc7f2fdfu, 0xbc7f2fdfu, 0xffffffffu, 0xffffffffu, 0xffffffffu, 0xfbf4fe3du, 0xffffffffu,
+    0xfbf4fe3du, 0xfbf4fe3du, 0xbc7f2fdfu, 0xbc7f2fdfu, 0xffffffffu, 0xbc7f2fdfu, 0xffffffffu,
+    0xffffffffu, 0xffffffffu, 0xfbf4fe3du, 0xfbf4fe3du, 0xfbf4fe3du, 0xbc7f2fdfu, 0xffffffffu,
+    0xffffffffu, 0xffffffffu, 0xfbf4fe3du, 0xffffffffu,
+};
+inline constexpr std::uint32_t gp_reach_columns[] = {
+    0xffffffffu, 0xbc7f2fdfu, 0xffffffffu, 0xffffffffu, 0xffffffffu, 0xfbf4fe3du, 0xbc7f2fdfu,
+    0xbc7f2fdfu, 0xbc7f2fdfu, 0xffffffffu, 0xffffffffu, 0xffffffffu, 0xfbf4fe3du, 0xffffffffu,
+    0xfbf4fe3du, 0xfbf4fe3du, 0xbc7f2fdfu, 0xbc7f2fdfu, 0xffffffffu, 0xbc7f2fdfu, 0xffffffffu,
+    0xffffffffu, 0xffffffffu, 0xfbf4fe3du, 0xfbf4fe3du, 0xfbf4fe3du, 0xbc7f2fdfu, 0xffffffffu,
+    0xffffffffu, 0xffffffffu, 0xfbf4fe3du, 0xffffffffu,
+};
+inline constexpr gaphys::ga::dense_product gp_dense{
+    &orthogonal_coordinates, gp_dense_lanes, gp_dense_blocks, gp_reach_rows, gp_reach_columns};
+inline constexpr double op_dense_lanes[] = {
+    1.0, 1.0, 1.0, 1.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 1.0, -1.0, 0.0, 0.0, 0.0, 1.0,
+};
+inline constexpr double op_dense_blocks[] = {
+    1.0, 1.0,  1.0,  1.0, 1.0,  1.0, 1.0, 1.0,  1.0,  1.0,  1.0,  1.0,  1.0, 1.0,  1.0,  1.0,
+    1.0, 1.0,  1.0,  1.0, 1.0,  1.0, 1.0, 1.0,  1.0,  1.0,  1.0,  1.0,  1.0, 1.0,  1.0,  1.0,
+    1.0, -1.0, -1.0, 1.0, 0.0,  0.0, 0.0, 0.0,  1.0,  -1.0, -1.0, 1.0,  0.0, 0.0,  0.0,  0.0,
+    1.0, -1.0, -1.0, 1.0, 0.0,  0.0, 0.0, 0.0,  1.0,  -1.0, -1.0, 1.0,  0.0, 0.0,  0.0,  0.0,
+    1.0, -1.0, -1.0, 1.0, -1.0, 1.0, 1.0, -1.0, 0.0,  0.0,  0.0,  0.0,  0.0, 0.0,  0.0,  0.0,
+    1.0, -1.0, -1.0, 1.0, -1.0, 1.0, 1.0, -1.0, 0.0,  0.0,  0.0,  0.0,  0.0, 0.0,  0.0,  0.0,
+    1.0, 1.0,  1.0,  1.0, 0.0,  0.0, 0.0, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0, 0.0,  0.0,  0.0,
+    1.0, 1.0,  1.0,  1.0, 0.0,  0.0, 0.0, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0, 0.0,  0.0,  0.0,
+    1.0, -1.0, -1.0, 1.0, -1.0, 1.0, 1.0, -1.0, -1.0, 1.0,  1.0,  -1.0, 1.0, -1.0, -1.0, 1.0,
+    0.0, 0.0,  0.0,  0.0, 0.0,  0.0, 0.0, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0, 0.0,  0.0,  0.0,
+    1.0, 1.0,  1.0,  1.0, 0.0,  0.0, 0.0, 0.0,  -1.0, -1.0, -1.0, -1.0, 0.0, 0.0,  0.0,  0.0,
+    0.0, 0.0,  0.0,  0.0, 0.0,  0.0, 0.0, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0, 0.0,  0.0,  0.0,
+    1.0, 1.0,  1.0,  1.0, 1.0,  1.0, 1.0, 1.0,  0.0,  0.0,  0.0,  0.0,  0.0, 0.0,  0.0,  0.0,
+    0.0, 0.0,  0.0,  0.0, 0.0,  0.0, 0.0, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0, 0.0,  0.0,  0.0,
+    1.0, -1.0, -1.0, 1.0, 0.0,  0.0, 0.0, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0, 0.0,  0.0,  0.0,
+    0.0, 0.0,  0.0,  0.0, 0.0,  0.0, 0.0, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0, 0.0,  0.0,  0.0,
+};
+inline constexpr std::uint32_t op_reach_rows[] = {
+    0xffffffffu, 0xbc3f03c2u, 0xddc71c44u, 0xeed96488u, 0xf76aa910u, 0xfbb4d220u, 0x9c070040u,
+    0xac190080u, 0xb42a0100u, 0xb8340200u, 0xccc10400u, 0xd5420800u, 0xd9841000u, 0xe6482000u,
+    0xea904000u, 0xf3208000u, 0x8c010000u, 0x94020000u, 0x98040000u, 0xa4080000u, 0xa8100000u,
+    0xb0200000u, 0xc4400000u, 0xc8800000u, 0xd1000000u, 0xe2000000u, 0x84000000u, 0x88000000u,
+    0x90000000u, 0xa0000000u, 0xc0000000u, 0x80000000u,
+};
+inline constexpr std::uint32_t op_reach_columns[] = {
+    0xffffffffu, 0xbc3f03c2u, 0xddc71c44u, 0xeed96488u, 0xf76aa910u, 0xfbb4d220u, 0x9c070040u,
+    0xac190080u, 0xb42a0100u, 0xb8340200u, 0xccc10400u, 0xd5420800u, 0xd9841000u, 0xe6482000u,
+    0xea904000u, 0xf3208000u, 0x8c010000u, 0x94020000u, 0x98040000u, 0xa4080000u, 0xa8100000u,
+    0xb0200000u, 0xc4400000u, 0xc8800000u, 0xd1000000u, 0xe2000000u, 0x84000000u, 0x88000000u,
+    0x90000000u, 0xa0000000u, 0xc0000000u, 0x80000000u,
+};
+inline constexpr gaphys::ga::dense_product op_dense{
+    &orthogonal_coordinates, op_dense_lanes, op_dense_blocks, op_reach_rows, op_reach_columns};
+inline constexpr double lc_dense_lanes[] = {
+    1.0, 1.0, 1.0, 1.0, -2.0, 0.0, -2.0, 0.0, 1.0, -1.0, 0.0, 0.0, 2.0, 0.0, 0.0, 0.0,
+};
+inline constexpr double lc_dense_blocks[] = {
+    1.0, 1.0,  1.0,  1.0, 1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,
+    1.0, 1.0,  1.0,  1.0, 1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,  1.0,
+    0.0, 0.0,  0.0,  0.0, 1.0,  -1.0, -1.0, 1.0,  0.0,  0.0,  0.0,  0.0,  1.0,  -1.0, -1.0, 1.0,
+    0.0, 0.0,  0.0,  0.0, 1.0,  -1.0, -1.0, 1.0,  0.0,  0.0,  0.0,  0.0,  1.0,  -1.0, -1.0, 1.0,
+    0.0, 0.0,  0.0,  0.0, 0.0,  0.0,  0.0,  0.0,  1.0,  -1.0, -1.0, 1.0,  -1.0, 1.0,  1.0,  -1.0,
+    0.0, 0.0,  0.0,  0.0, 0.0,  0.0,  0.0,  0.0,  1.0,  -1.0, -1.0, 1.0,  -1.0, 1.0,  1.0,  -1.0,
+    0.0, 0.0,  0.0,  0.0, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  -1.0, -1.0, -1.0, -1.0,
+    0.0, 0.0,  0.0,  0.0, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  -1.0, -1.0, -1.0, -1.0,
+    0.0, 0.0,  0.0,  0.0, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,
+    0.5, -0.5, -0.5, 0.5, -0.5, 0.5,  0.5,  -0.5, -0.5, 0.5,  0.5,  -0.5, 0.5,  -0.5, -0.5, 0.5,
+    0.0, 0.0,  0.0,  0.0, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,
+    0.0, 0.0,  0.0,  0.0, -0.5, -0.5, -0.5, -0.5, 0.0,  0.0,  0.0,  0.0,  0.5,  0.5,  0.5,  0.5,
+    0.0, 0.0,  0.0,  0.0, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,
+    0.0, 0.0,  0.0,  0.0, 0.0,  0.0,  0.0,  0.0,  -0.5, -0.5, -0.5, -0.5, -0.5, -0.5, -0.5, -0.5,
+    0.0, 0.0,  0.0,  0.0, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,
+    0.0, 0.0,  0.0,  0.0, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  -0.5, 0.5,  0.5,  -0.5,
+};
+inline constexpr std::uint32_t lc_reach_rows[] = {
+    0xffffffffu, 0x44b2ddfu, 0x2238e3bbu, 0x11269b77u, 0x89556efu, 0x43c0fc3du, 0x8219bu,
+    0x20957u,    0x104cfu,   0x402c1du,   0x208333u,   0x1042abu,  0x200e039u,  0x41267u,
+    0x1009835u,  0x80542du,  0x113u,      0x8bu,       0x2019u,    0x47u,       0x815u,
+    0x40du,      0x223u,     0x8031u,     0x4029u,     0x1025u,    0x3u,        0x11u,
+    0x9u,        0x5u,       0x21u,       0x1u,
+};
+inline constexpr std::uint32_t lc_reach_columns[] = {
+    0x1u,        0x3u,        0x5u,        0x9u,        0x11u,      0x21u,      0x47u,
+    0x8bu,       0x113u,      0x223u,      0x40du,      0x815u,     0x1025u,    0x2019u,
+    0x4029u,     0x8031u,     0x104cfu,    0x20957u,    0x41267u,   0x8219bu,   0x1042abu,
+    0x208333u,   0x402c1du,   0x80542du,   0x1009835u,  0x200e039u, 0x44b2ddfu, 0x89556efu,
+    0x11269b77u, 0x2238e3bbu, 0x43c0fc3du, 0xffffffffu,
+};
+inline constexpr gaphys::ga::dense_product lc_dense{
+    &orthogonal_coordinates, lc_dense_lanes, lc_dense_blocks, lc_reach_rows, lc_reach_columns};
+inline constexpr double rc_dense_lanes[] = {
+    1.0, 0.0, 0.0, 0.0, -2.0, 1.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 2.0, 1.0, 2.0, 1.0,
+};
+inline constexpr double rc_dense_blocks[] = {
+    1.0, 1.0,  1.0,  1.0, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,
+    0.0, 0.0,  0.0,  0.0, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,
+    1.0, -1.0, -1.0, 1.0, 1.0,  -1.0, -1.0, 1.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,
+    0.0, 0.0,  0.0,  0.0, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,
+    1.0, -1.0, -1.0, 1.0, 0.0,  0.0,  0.0,  0.0,  1.0,  -1.0, -1.0, 1.0,  0.0,  0.0,  0.0,  0.0,
+    0.0, 0.0,  0.0,  0.0, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,
+    1.0, 1.0,  1.0,  1.0, -1.0, -1.0, -1.0, -1.0, 1.0,  1.0,  1.0,  1.0,  -1.0, -1.0, -1.0, -1.0,
+    0.0, 0.0,  0.0,  0.0, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,
+    1.0, -1.0, -1.0, 1.0, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,
+    0.5, -0.5, -0.5, 0.5, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,
+    1.0, 1.0,  1.0,  1.0, -1.0, -1.0, -1.0, -1.0, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,
+    0.5, 0.5,  0.5,  0.5, -0.5, -0.5, -0.5, -0.5, 0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,  0.0,
+    1.0, 1.0,  1.0,  1.0, 0.0,  0.0,  0.0,  0.0,  -1.0, -1.0, -1.0, -1.0, 0.0,  0.0,  0.0,  0.0,
+    0.5, 0.5,  0.5,  0.5, 0.0,  0.0,  0.0,  0.0,  -0.5, -0.5, -0.5, -0.5, 0.0,  0.0,  0.0,  0.0,
+    1.0, -1.0, -1.0, 1.0, 1.0,  -1.0, -1.0, 1.0,  -1.0, 1.0,  1.0,  -1.0, -1.0, 1.0,  1.0,  -1.0,
+    0.5, -0.5, -0.5, 0.5, 0.5,  -0.5, -0.5, 0.5,  -0.5, 0.5,  0.5,  -0.5, -0.5, 0.5,  0.5,  -0.5,
+};
+inline constexpr std::uint32_t rc_reach_rows[] = {
+    0x1u,        0x3u,        0x5u,        0x9u,        0x11u,      0x21u,      0x47u,
+    0x8bu,       0x113u,      0x223u,      0x40du,      0x815u,     0x1025u,    0x2019u,
+    0x4029u,     0x8031u,     0x104cfu,    0x20957u,    0x41267u,   0x8219bu,   0x1042abu,
+    0x208333u,   0x402c1du,   0x80542du,   0x1009835u,  0x200e039u, 0x44b2ddfu, 0x89556efu,
+    0x11269b77u, 0x2238e3bbu, 0x43c0fc3du, 0xffffffffu,
+};
+inline constexpr std::uint32_t rc_reach_columns[] = {
+    0xffffffffu, 0x44b2ddfu, 0x2238e3bbu, 0x11269b77u, 0x89556efu, 0x43c0fc3du, 0x8219bu,
+    0x20957u,    0x104cfu,   0x402c1du,   0x208333u,   0x1042abu,  0x200e039u,  0x41267u,
+    0x1009835u,  0x80542du,  0x113u,      0x8bu,       0x2019u,    0x47u,       0x815u,
+    0x40du,      0x223u,     0x8031u,     0x4029u,     0x1025u,    0x3u,        0x11u,
+    0x9u,        0x5u,       0x21u,       0x1u,
+};
+inline constexpr gaphys::ga::dense_product rc_dense{
+    &orthogonal_coordinates, rc_dense_lanes, rc_dense_blocks, rc_reach_rows, rc_reach_columns};
+inline constexpr double scp_dense_lanes[] = {
+    1.0, 0.0, 0.0, 0.0, -2.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 2.0, 0.0, 0.0, 0.0,
+};
+inline constexpr double scp_dense_blocks[] = {
+    1.0,  1.0,  1.0,  1.0,  0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+    0.0,  0.0,  0.0,  0.0,  0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+    1.0,  -1.0, -1.0, 1.0,  0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+    0.0,  0.0,  0.0,  0.0,  0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+    1.0,  -1.0, -1.0, 1.0,  0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+    0.0,  0.0,  0.0,  0.0,  0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+    -1.0, -1.0, -1.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+    0.0,  0.0,  0.0,  0.0,  0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+    0.5,  -0.5, -0.5, 0.5,  0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+    0.0,  0.0,  0.0,  0.0,  0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+    -0.5, -0.5, -0.5, -0.5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+    0.0,  0.0,  0.0,  0.0,  0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+    -0.5, -0.5, -0.5, -0.5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+    0.0,  0.0,  0.0,  0.0,  0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+    -0.5, 0.5,  0.5,  -0.5,
+};
+inline constexpr std::uint32_t scp_reach_rows[] = {
+    0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u,
+    0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u,
+};
+inline constexpr std::uint32_t scp_reach_columns[] = {
+    0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u,
+    0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u,
+};
+inline constexpr gaphys::ga::dense_product scp_dense{
+    &orthogonal_coordinates, scp_dense_lanes, scp_dense_blocks, scp_reach_rows, scp_reach_columns};
 
 // gp of canonical blades i, j: terms [offsets[i * blade_count + j], offsets[... + 1]).
 inline constexpr std::uint16_t gp_offsets[] = {
@@ -264,7 +504,7 @@ inline constexpr gaphys::ga::product_term gp_terms[] = {
     {8, 1.0},   {7, -1.0},  {13, 1.0},  {6, 1.0},   {11, -1.0}, {10, 1.0},  {9, 1.0},   {15, 1.0},
     {14, -1.0}, {12, 1.0},  {1, 1.0},   {4, 1.0},   {3, -1.0},  {2, 1.0},   {5, 1.0},   {0, -1.0},
 };
-inline constexpr gaphys::ga::product_table gp_table{gp_offsets, gp_terms};
+inline constexpr gaphys::ga::product_table gp_table{gp_offsets, gp_terms, &gp_dense};
 
 // op of canonical blades i, j: terms [offsets[i * blade_count + j], offsets[... + 1]).
 inline constexpr std::uint16_t op_offsets[] = {
@@ -356,7 +596,7 @@ inline constexpr gaphys::ga::product_term op_terms[] = {
     {26, 1.0},  {31, 1.0},  {27, 1.0},  {31, -1.0}, {28, 1.0},  {31, 1.0},  {29, 1.0},  {31, -1.0},
     {30, 1.0},  {31, 1.0},  {31, 1.0},
 };
-inline constexpr gaphys::ga::product_table op_table{op_offsets, op_terms};
+inline constexpr gaphys::ga::product_table op_table{op_offsets, op_terms, &op_dense};
 
 // lc of canonical blades i, j: terms [offsets[i * blade_count + j], offsets[... + 1]).
 inline constexpr std::uint16_t lc_offsets[] = {
@@ -448,7 +688,7 @@ inline constexpr gaphys::ga::product_term lc_terms[] = {
     {0, 1.0},   {1, 1.0},   {0, -1.0},  {4, 1.0},   {0, -1.0},  {3, -1.0},  {0, -1.0},  {2, 1.0},
     {0, 1.0},   {5, 1.0},   {0, -1.0},
 };
-inline constexpr gaphys::ga::product_table lc_table{lc_offsets, lc_terms};
+inline constexpr gaphys::ga::product_table lc_table{lc_offsets, lc_terms, &lc_dense};
 
 // rc of canonical blades i, j: terms [offsets[i * blade_count + j], offsets[... + 1]).
 inline constexpr std::uint16_t rc_offsets[] = {
@@ -540,7 +780,7 @@ inline constexpr gaphys::ga::product_term rc_terms[] = {
     {10, 1.0},  {9, 1.0},   {15, 1.0},  {14, -1.0}, {12, 1.0},  {1, 1.0},   {4, 1.0},   {3, -1.0},
     {2, 1.0},   {5, 1.0},   {0, -1.0},
 };
-inline constexpr gaphys::ga::product_table rc_table{rc_offsets, rc_terms};
+inline constexpr gaphys::ga::product_table rc_table{rc_offsets, rc_terms, &rc_dense};
 
 // scp of canonical blades i, j: terms [offsets[i * blade_count + j], offsets[... + 1]).
 inline constexpr std::uint16_t scp_offsets[] = {
@@ -594,7 +834,7 @@ inline constexpr gaphys::ga::product_term scp_terms[] = {
     {0, 1.0},  {0, 1.0},  {0, 1.0},  {0, 1.0},  {0, 1.0},  {0, 1.0},  {0, -1.0}, {0, 1.0},
     {0, 1.0},  {0, 1.0},  {0, 1.0},  {0, -1.0}, {0, -1.0}, {0, -1.0}, {0, 1.0},  {0, -1.0},
 };
-inline constexpr gaphys::ga::product_table scp_table{scp_offsets, scp_terms};
+inline constexpr gaphys::ga::product_table scp_table{scp_offsets, scp_terms, &scp_dense};
 
 // dual of canonical blade i: terms [offsets[i], offsets[i + 1]).
 inline constexpr std::uint16_t dual_offsets[] = {

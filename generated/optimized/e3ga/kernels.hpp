@@ -590,4 +590,944 @@ GAPHYS_ALWAYS_INLINE basic_rotor<T> op(const basic_rotor<T>& a, const basic_roto
                         a.c[0] * b.c[2] + a.c[2] * b.c[0], a.c[0] * b.c[3] + a.c[3] * b.c[0]);
 }
 
+// gp(scalar, scalar) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T gp(const basic_scalar<T>& a, const basic_scalar<T>& b) {
+  return a.c[0] * b.c[0];
+}
+
+// gp(scalar, vector) -> vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> gp(const basic_scalar<T>& a, const basic_vector<T>& b) {
+  return basic_vector<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// gp(scalar, bivector) -> bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> gp(const basic_scalar<T>& a, const basic_bivector<T>& b) {
+  return basic_bivector<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// gp(scalar, trivector) -> trivector: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_trivector<T> gp(const basic_scalar<T>& a, const basic_trivector<T>& b) {
+  return basic_trivector<T>(a.c[0] * b.c[0]);
+}
+
+// gp(scalar, rotor) -> rotor: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> gp(const basic_scalar<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// gp(vector, scalar) -> vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> gp(const basic_vector<T>& a, const basic_scalar<T>& b) {
+  return basic_vector<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// gp(vector, trivector) -> bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> gp(const basic_vector<T>& a, const basic_trivector<T>& b) {
+  return basic_bivector<T>(a.c[2] * b.c[0], -a.c[1] * b.c[0], a.c[0] * b.c[0]);
+}
+
+// gp(bivector, scalar) -> bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> gp(const basic_bivector<T>& a, const basic_scalar<T>& b) {
+  return basic_bivector<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// gp(bivector, trivector) -> vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> gp(const basic_bivector<T>& a, const basic_trivector<T>& b) {
+  return basic_vector<T>(-a.c[2] * b.c[0], a.c[1] * b.c[0], -a.c[0] * b.c[0]);
+}
+
+// gp(trivector, scalar) -> trivector: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_trivector<T> gp(const basic_trivector<T>& a, const basic_scalar<T>& b) {
+  return basic_trivector<T>(a.c[0] * b.c[0]);
+}
+
+// gp(trivector, vector) -> bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> gp(const basic_trivector<T>& a, const basic_vector<T>& b) {
+  return basic_bivector<T>(a.c[0] * b.c[2], -a.c[0] * b.c[1], a.c[0] * b.c[0]);
+}
+
+// gp(trivector, bivector) -> vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> gp(const basic_trivector<T>& a, const basic_bivector<T>& b) {
+  return basic_vector<T>(-a.c[0] * b.c[2], a.c[0] * b.c[1], -a.c[0] * b.c[0]);
+}
+
+// gp(trivector, trivector) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T gp(const basic_trivector<T>& a, const basic_trivector<T>& b) {
+  return -a.c[0] * b.c[0];
+}
+
+// gp(trivector, rotor) -> mv: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_trivector<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[0] * b.c[3];
+  r.c[2] = a.c[0] * b.c[2];
+  r.c[3] = -a.c[0] * b.c[1];
+  r.c[7] = a.c[0] * b.c[0];
+  r.bits = 0x8eu;
+  return r;
+}
+
+// gp(rotor, scalar) -> rotor: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> gp(const basic_rotor<T>& a, const basic_scalar<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// gp(rotor, trivector) -> mv: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_trivector<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[3] * b.c[0];
+  r.c[2] = a.c[2] * b.c[0];
+  r.c[3] = -a.c[1] * b.c[0];
+  r.c[7] = a.c[0] * b.c[0];
+  r.bits = 0x8eu;
+  return r;
+}
+
+// op(scalar, scalar) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T op(const basic_scalar<T>& a, const basic_scalar<T>& b) {
+  return a.c[0] * b.c[0];
+}
+
+// op(scalar, vector) -> vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> op(const basic_scalar<T>& a, const basic_vector<T>& b) {
+  return basic_vector<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// op(scalar, bivector) -> bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> op(const basic_scalar<T>& a, const basic_bivector<T>& b) {
+  return basic_bivector<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// op(scalar, trivector) -> trivector: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_trivector<T> op(const basic_scalar<T>& a, const basic_trivector<T>& b) {
+  return basic_trivector<T>(a.c[0] * b.c[0]);
+}
+
+// op(scalar, rotor) -> rotor: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> op(const basic_scalar<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// op(vector, scalar) -> vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> op(const basic_vector<T>& a, const basic_scalar<T>& b) {
+  return basic_vector<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// op(vector, rotor) -> mv: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_vector<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[1] * b.c[0];
+  r.c[3] = a.c[2] * b.c[0];
+  r.c[7] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.bits = 0x8eu;
+  return r;
+}
+
+// op(bivector, scalar) -> bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> op(const basic_bivector<T>& a, const basic_scalar<T>& b) {
+  return basic_bivector<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// op(bivector, rotor) -> bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> op(const basic_bivector<T>& a, const basic_rotor<T>& b) {
+  return basic_bivector<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// op(trivector, scalar) -> trivector: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_trivector<T> op(const basic_trivector<T>& a, const basic_scalar<T>& b) {
+  return basic_trivector<T>(a.c[0] * b.c[0]);
+}
+
+// op(trivector, rotor) -> trivector: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_trivector<T> op(const basic_trivector<T>& a, const basic_rotor<T>& b) {
+  return basic_trivector<T>(a.c[0] * b.c[0]);
+}
+
+// op(rotor, scalar) -> rotor: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> op(const basic_rotor<T>& a, const basic_scalar<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// op(rotor, vector) -> mv: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[0] * b.c[1];
+  r.c[3] = a.c[0] * b.c[2];
+  r.c[7] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.bits = 0x8eu;
+  return r;
+}
+
+// op(rotor, bivector) -> bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> op(const basic_rotor<T>& a, const basic_bivector<T>& b) {
+  return basic_bivector<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// op(rotor, trivector) -> trivector: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_trivector<T> op(const basic_rotor<T>& a, const basic_trivector<T>& b) {
+  return basic_trivector<T>(a.c[0] * b.c[0]);
+}
+
+// lc(scalar, scalar) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_scalar<T>& a, const basic_scalar<T>& b) {
+  return a.c[0] * b.c[0];
+}
+
+// lc(scalar, vector) -> vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> lc(const basic_scalar<T>& a, const basic_vector<T>& b) {
+  return basic_vector<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// lc(scalar, bivector) -> bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> lc(const basic_scalar<T>& a, const basic_bivector<T>& b) {
+  return basic_bivector<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// lc(scalar, trivector) -> trivector: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_trivector<T> lc(const basic_scalar<T>& a, const basic_trivector<T>& b) {
+  return basic_trivector<T>(a.c[0] * b.c[0]);
+}
+
+// lc(scalar, rotor) -> rotor: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> lc(const basic_scalar<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// lc(vector, trivector) -> bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> lc(const basic_vector<T>& a, const basic_trivector<T>& b) {
+  return basic_bivector<T>(a.c[2] * b.c[0], -a.c[1] * b.c[0], a.c[0] * b.c[0]);
+}
+
+// lc(vector, rotor) -> vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> lc(const basic_vector<T>& a, const basic_rotor<T>& b) {
+  return basic_vector<T>(-a.c[1] * b.c[1] - a.c[2] * b.c[2], a.c[0] * b.c[1] - a.c[2] * b.c[3],
+                         a.c[0] * b.c[2] + a.c[1] * b.c[3]);
+}
+
+// lc(bivector, trivector) -> vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> lc(const basic_bivector<T>& a, const basic_trivector<T>& b) {
+  return basic_vector<T>(-a.c[2] * b.c[0], a.c[1] * b.c[0], -a.c[0] * b.c[0]);
+}
+
+// lc(bivector, rotor) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_bivector<T>& a, const basic_rotor<T>& b) {
+  return -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+}
+
+// lc(trivector, trivector) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_trivector<T>& a, const basic_trivector<T>& b) {
+  return -a.c[0] * b.c[0];
+}
+
+// lc(rotor, scalar) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T lc(const basic_rotor<T>& a, const basic_scalar<T>& b) {
+  return a.c[0] * b.c[0];
+}
+
+// lc(rotor, vector) -> vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> lc(const basic_rotor<T>& a, const basic_vector<T>& b) {
+  return basic_vector<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// lc(rotor, bivector) -> rotor: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> lc(const basic_rotor<T>& a, const basic_bivector<T>& b) {
+  return basic_rotor<T>(-a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2], a.c[0] * b.c[0],
+                        a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// lc(rotor, trivector) -> mv: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_rotor<T>& a, const basic_trivector<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[3] * b.c[0];
+  r.c[2] = a.c[2] * b.c[0];
+  r.c[3] = -a.c[1] * b.c[0];
+  r.c[7] = a.c[0] * b.c[0];
+  r.bits = 0x8eu;
+  return r;
+}
+
+// rc(scalar, scalar) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_scalar<T>& a, const basic_scalar<T>& b) {
+  return a.c[0] * b.c[0];
+}
+
+// rc(scalar, rotor) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_scalar<T>& a, const basic_rotor<T>& b) {
+  return a.c[0] * b.c[0];
+}
+
+// rc(vector, scalar) -> vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> rc(const basic_vector<T>& a, const basic_scalar<T>& b) {
+  return basic_vector<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// rc(vector, vector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_vector<T>& a, const basic_vector<T>& b) {
+  return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+// rc(vector, rotor) -> vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> rc(const basic_vector<T>& a, const basic_rotor<T>& b) {
+  return basic_vector<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// rc(bivector, scalar) -> bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> rc(const basic_bivector<T>& a, const basic_scalar<T>& b) {
+  return basic_bivector<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// rc(bivector, bivector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_bivector<T>& a, const basic_bivector<T>& b) {
+  return -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+}
+
+// rc(bivector, rotor) -> rotor: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> rc(const basic_bivector<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(-a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3], a.c[0] * b.c[0],
+                        a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// rc(trivector, scalar) -> trivector: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_trivector<T> rc(const basic_trivector<T>& a, const basic_scalar<T>& b) {
+  return basic_trivector<T>(a.c[0] * b.c[0]);
+}
+
+// rc(trivector, vector) -> bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> rc(const basic_trivector<T>& a, const basic_vector<T>& b) {
+  return basic_bivector<T>(a.c[0] * b.c[2], -a.c[0] * b.c[1], a.c[0] * b.c[0]);
+}
+
+// rc(trivector, bivector) -> vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> rc(const basic_trivector<T>& a, const basic_bivector<T>& b) {
+  return basic_vector<T>(-a.c[0] * b.c[2], a.c[0] * b.c[1], -a.c[0] * b.c[0]);
+}
+
+// rc(trivector, trivector) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_trivector<T>& a, const basic_trivector<T>& b) {
+  return -a.c[0] * b.c[0];
+}
+
+// rc(trivector, rotor) -> mv: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_trivector<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = -a.c[0] * b.c[3];
+  r.c[2] = a.c[0] * b.c[2];
+  r.c[3] = -a.c[0] * b.c[1];
+  r.c[7] = a.c[0] * b.c[0];
+  r.bits = 0x8eu;
+  return r;
+}
+
+// rc(rotor, scalar) -> rotor: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> rc(const basic_rotor<T>& a, const basic_scalar<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// rc(rotor, vector) -> vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> rc(const basic_rotor<T>& a, const basic_vector<T>& b) {
+  return basic_vector<T>(a.c[1] * b.c[1] + a.c[2] * b.c[2], -a.c[1] * b.c[0] + a.c[3] * b.c[2],
+                         -a.c[2] * b.c[0] - a.c[3] * b.c[1]);
+}
+
+// rc(rotor, bivector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T rc(const basic_rotor<T>& a, const basic_bivector<T>& b) {
+  return -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+}
+
+// rc(rotor, rotor) -> rotor: 7 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> rc(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3],
+                        a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// scp(scalar, scalar) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_scalar<T>& a, const basic_scalar<T>& b) {
+  return a.c[0] * b.c[0];
+}
+
+// scp(scalar, rotor) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_scalar<T>& a, const basic_rotor<T>& b) {
+  return a.c[0] * b.c[0];
+}
+
+// scp(bivector, rotor) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_bivector<T>& a, const basic_rotor<T>& b) {
+  return -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+}
+
+// scp(trivector, trivector) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_trivector<T>& a, const basic_trivector<T>& b) {
+  return -a.c[0] * b.c[0];
+}
+
+// scp(rotor, scalar) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_rotor<T>& a, const basic_scalar<T>& b) {
+  return a.c[0] * b.c[0];
+}
+
+// scp(rotor, bivector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T scp(const basic_rotor<T>& a, const basic_bivector<T>& b) {
+  return -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
+}
+
+// meet(scalar, trivector) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_scalar<T>& a, const basic_trivector<T>& b) {
+  return a.c[0] * b.c[0];
+}
+
+// meet(vector, bivector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_vector<T>& a, const basic_bivector<T>& b) {
+  return a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+}
+
+// meet(vector, trivector) -> vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> meet(const basic_vector<T>& a, const basic_trivector<T>& b) {
+  return basic_vector<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// meet(vector, rotor) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_vector<T>& a, const basic_rotor<T>& b) {
+  return a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+}
+
+// meet(bivector, vector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_bivector<T>& a, const basic_vector<T>& b) {
+  return a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+}
+
+// meet(bivector, trivector) -> bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> meet(const basic_bivector<T>& a,
+                                            const basic_trivector<T>& b) {
+  return basic_bivector<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// meet(bivector, rotor) -> vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> meet(const basic_bivector<T>& a, const basic_rotor<T>& b) {
+  return basic_vector<T>(-a.c[0] * b.c[2] + a.c[1] * b.c[1], -a.c[0] * b.c[3] + a.c[2] * b.c[1],
+                         -a.c[1] * b.c[3] + a.c[2] * b.c[2]);
+}
+
+// meet(trivector, scalar) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_trivector<T>& a, const basic_scalar<T>& b) {
+  return a.c[0] * b.c[0];
+}
+
+// meet(trivector, vector) -> vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> meet(const basic_trivector<T>& a, const basic_vector<T>& b) {
+  return basic_vector<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// meet(trivector, bivector) -> bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> meet(const basic_trivector<T>& a,
+                                            const basic_bivector<T>& b) {
+  return basic_bivector<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// meet(trivector, trivector) -> trivector: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_trivector<T> meet(const basic_trivector<T>& a,
+                                             const basic_trivector<T>& b) {
+  return basic_trivector<T>(a.c[0] * b.c[0]);
+}
+
+// meet(trivector, rotor) -> rotor: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> meet(const basic_trivector<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// meet(rotor, vector) -> scalar: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T meet(const basic_rotor<T>& a, const basic_vector<T>& b) {
+  return a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+}
+
+// meet(rotor, bivector) -> vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> meet(const basic_rotor<T>& a, const basic_bivector<T>& b) {
+  return basic_vector<T>(-a.c[1] * b.c[1] + a.c[2] * b.c[0], -a.c[1] * b.c[2] + a.c[3] * b.c[0],
+                         -a.c[2] * b.c[2] + a.c[3] * b.c[1]);
+}
+
+// meet(rotor, trivector) -> rotor: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> meet(const basic_rotor<T>& a, const basic_trivector<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// meet(rotor, rotor) -> vector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> meet(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+  return basic_vector<T>(-a.c[1] * b.c[2] + a.c[2] * b.c[1], -a.c[1] * b.c[3] + a.c[3] * b.c[1],
+                         -a.c[2] * b.c[3] + a.c[3] * b.c[2]);
+}
+
+// join(scalar, scalar) -> scalar: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE T join(const basic_scalar<T>& a, const basic_scalar<T>& b) {
+  return a.c[0] * b.c[0];
+}
+
+// join(scalar, vector) -> vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> join(const basic_scalar<T>& a, const basic_vector<T>& b) {
+  return basic_vector<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// join(scalar, bivector) -> bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> join(const basic_scalar<T>& a, const basic_bivector<T>& b) {
+  return basic_bivector<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// join(scalar, trivector) -> trivector: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_trivector<T> join(const basic_scalar<T>& a,
+                                             const basic_trivector<T>& b) {
+  return basic_trivector<T>(a.c[0] * b.c[0]);
+}
+
+// join(scalar, rotor) -> rotor: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> join(const basic_scalar<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2], a.c[0] * b.c[3]);
+}
+
+// join(vector, scalar) -> vector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> join(const basic_vector<T>& a, const basic_scalar<T>& b) {
+  return basic_vector<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// join(vector, vector) -> bivector: 6 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> join(const basic_vector<T>& a, const basic_vector<T>& b) {
+  return basic_bivector<T>(a.c[0] * b.c[1] - a.c[1] * b.c[0], a.c[0] * b.c[2] - a.c[2] * b.c[0],
+                           a.c[1] * b.c[2] - a.c[2] * b.c[1]);
+}
+
+// join(vector, bivector) -> trivector: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_trivector<T> join(const basic_vector<T>& a, const basic_bivector<T>& b) {
+  return basic_trivector<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0]);
+}
+
+// join(vector, rotor) -> mv: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_vector<T>& a, const basic_rotor<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[1] * b.c[0];
+  r.c[3] = a.c[2] * b.c[0];
+  r.c[7] = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  r.bits = 0x8eu;
+  return r;
+}
+
+// join(bivector, scalar) -> bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> join(const basic_bivector<T>& a, const basic_scalar<T>& b) {
+  return basic_bivector<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// join(bivector, vector) -> trivector: 3 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_trivector<T> join(const basic_bivector<T>& a, const basic_vector<T>& b) {
+  return basic_trivector<T>(a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0]);
+}
+
+// join(bivector, rotor) -> bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> join(const basic_bivector<T>& a, const basic_rotor<T>& b) {
+  return basic_bivector<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0]);
+}
+
+// join(trivector, scalar) -> trivector: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_trivector<T> join(const basic_trivector<T>& a,
+                                             const basic_scalar<T>& b) {
+  return basic_trivector<T>(a.c[0] * b.c[0]);
+}
+
+// join(trivector, rotor) -> trivector: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_trivector<T> join(const basic_trivector<T>& a, const basic_rotor<T>& b) {
+  return basic_trivector<T>(a.c[0] * b.c[0]);
+}
+
+// join(rotor, scalar) -> rotor: 4 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> join(const basic_rotor<T>& a, const basic_scalar<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0], a.c[1] * b.c[0], a.c[2] * b.c[0], a.c[3] * b.c[0]);
+}
+
+// join(rotor, vector) -> mv: 6 mul, 2 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_vector<T>& b) {
+  basic_mv<T> r;
+  r.c[1] = a.c[0] * b.c[0];
+  r.c[2] = a.c[0] * b.c[1];
+  r.c[3] = a.c[0] * b.c[2];
+  r.c[7] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  r.bits = 0x8eu;
+  return r;
+}
+
+// join(rotor, bivector) -> bivector: 3 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> join(const basic_rotor<T>& a, const basic_bivector<T>& b) {
+  return basic_bivector<T>(a.c[0] * b.c[0], a.c[0] * b.c[1], a.c[0] * b.c[2]);
+}
+
+// join(rotor, trivector) -> trivector: 1 mul, 0 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_trivector<T> join(const basic_rotor<T>& a, const basic_trivector<T>& b) {
+  return basic_trivector<T>(a.c[0] * b.c[0]);
+}
+
+// join(rotor, rotor) -> rotor: 7 mul, 3 add
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> join(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+  return basic_rotor<T>(a.c[0] * b.c[0], a.c[0] * b.c[1] + a.c[1] * b.c[0],
+                        a.c[0] * b.c[2] + a.c[2] * b.c[0], a.c[0] * b.c[3] + a.c[3] * b.c[0]);
+}
+
+// apply(scalar, scalar) -> scalar: 4 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE T apply(const basic_scalar<T>& a, const basic_scalar<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return (a.c[0] * t0) * inv;
+}
+
+// apply(scalar, vector) -> vector: 10 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> apply(const basic_scalar<T>& a, const basic_vector<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[0] * b.c[1];
+  const T t2 = a.c[0] * b.c[2];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_vector<T>((a.c[0] * t0) * inv, (a.c[0] * t1) * inv, (a.c[0] * t2) * inv);
+}
+
+// apply(scalar, bivector) -> bivector: 10 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> apply(const basic_scalar<T>& a, const basic_bivector<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[0] * b.c[1];
+  const T t2 = a.c[0] * b.c[2];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_bivector<T>((a.c[0] * t0) * inv, (a.c[0] * t1) * inv, (a.c[0] * t2) * inv);
+}
+
+// apply(scalar, trivector) -> trivector: 4 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_trivector<T> apply(const basic_scalar<T>& a,
+                                              const basic_trivector<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_trivector<T>((a.c[0] * t0) * inv);
+}
+
+// apply(scalar, rotor) -> rotor: 13 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> apply(const basic_scalar<T>& a, const basic_rotor<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[0] * b.c[1];
+  const T t2 = a.c[0] * b.c[2];
+  const T t3 = a.c[0] * b.c[3];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_rotor<T>((a.c[0] * t0) * inv, (a.c[0] * t1) * inv, (a.c[0] * t2) * inv,
+                        (a.c[0] * t3) * inv);
+}
+
+// apply(vector, scalar) -> scalar: 10 mul, 4 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE T apply(const basic_vector<T>& a, const basic_scalar<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[1] * b.c[0];
+  const T t2 = a.c[2] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return (a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2) * inv;
+}
+
+// apply(vector, vector) -> vector: 24 mul, 13 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> apply(const basic_vector<T>& a, const basic_vector<T>& b) {
+  const T t0 = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+  const T t1 = a.c[0] * b.c[1] - a.c[1] * b.c[0];
+  const T t2 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t3 = a.c[1] * b.c[2] - a.c[2] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_vector<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2) * inv,
+                         (-a.c[0] * t1 + a.c[1] * t0 + a.c[2] * t3) * inv,
+                         (-a.c[0] * t2 - a.c[1] * t3 + a.c[2] * t0) * inv);
+}
+
+// apply(vector, bivector) -> bivector: 24 mul, 13 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> apply(const basic_vector<T>& a, const basic_bivector<T>& b) {
+  const T t0 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t1 = a.c[0] * b.c[0] - a.c[2] * b.c[2];
+  const T t2 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t3 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_bivector<T>((-a.c[0] * t1 + a.c[1] * t0 + a.c[2] * t3) * inv,
+                           (-a.c[0] * t2 - a.c[1] * t3 + a.c[2] * t0) * inv,
+                           (a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1) * inv);
+}
+
+// apply(vector, trivector) -> trivector: 10 mul, 4 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_trivector<T> apply(const basic_vector<T>& a,
+                                              const basic_trivector<T>& b) {
+  const T t0 = a.c[2] * b.c[0];
+  const T t1 = -a.c[1] * b.c[0];
+  const T t2 = a.c[0] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_trivector<T>((a.c[0] * t2 - a.c[1] * t1 + a.c[2] * t0) * inv);
+}
+
+// apply(vector, rotor) -> rotor: 31 mul, 18 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> apply(const basic_vector<T>& a, const basic_rotor<T>& b) {
+  const T t0 = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
+  const T t2 = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0];
+  const T t3 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_rotor<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2) * inv,
+                        (-a.c[0] * t1 + a.c[1] * t0 + a.c[2] * t3) * inv,
+                        (-a.c[0] * t2 - a.c[1] * t3 + a.c[2] * t0) * inv,
+                        (a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1) * inv);
+}
+
+// apply(bivector, scalar) -> scalar: 10 mul, 4 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE T apply(const basic_bivector<T>& a, const basic_scalar<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[1] * b.c[0];
+  const T t2 = a.c[2] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return (a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2) * inv;
+}
+
+// apply(bivector, vector) -> vector: 24 mul, 13 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> apply(const basic_bivector<T>& a, const basic_vector<T>& b) {
+  const T t0 = a.c[0] * b.c[1] + a.c[1] * b.c[2];
+  const T t1 = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
+  const T t2 = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t3 = a.c[0] * b.c[2] - a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_vector<T>((a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t3) * inv,
+                         (-a.c[0] * t0 - a.c[1] * t3 + a.c[2] * t2) * inv,
+                         (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t1) * inv);
+}
+
+// apply(bivector, bivector) -> bivector: 24 mul, 13 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> apply(const basic_bivector<T>& a,
+                                             const basic_bivector<T>& b) {
+  const T t0 = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
+  const T t1 = -a.c[1] * b.c[2] + a.c[2] * b.c[1];
+  const T t2 = a.c[0] * b.c[2] - a.c[2] * b.c[0];
+  const T t3 = -a.c[0] * b.c[1] + a.c[1] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_bivector<T>((-a.c[0] * t0 - a.c[1] * t3 + a.c[2] * t2) * inv,
+                           (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t1) * inv,
+                           (-a.c[0] * t2 + a.c[1] * t1 - a.c[2] * t0) * inv);
+}
+
+// apply(bivector, trivector) -> trivector: 10 mul, 4 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_trivector<T> apply(const basic_bivector<T>& a,
+                                              const basic_trivector<T>& b) {
+  const T t0 = -a.c[2] * b.c[0];
+  const T t1 = a.c[1] * b.c[0];
+  const T t2 = -a.c[0] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_trivector<T>((-a.c[0] * t2 + a.c[1] * t1 - a.c[2] * t0) * inv);
+}
+
+// apply(bivector, rotor) -> rotor: 31 mul, 18 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> apply(const basic_bivector<T>& a, const basic_rotor<T>& b) {
+  const T t0 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
+  const T t1 = a.c[0] * b.c[0] - a.c[1] * b.c[3] + a.c[2] * b.c[2];
+  const T t2 = a.c[0] * b.c[3] + a.c[1] * b.c[0] - a.c[2] * b.c[1];
+  const T t3 = -a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[2] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2]);
+  return basic_rotor<T>((a.c[0] * t1 + a.c[1] * t2 + a.c[2] * t3) * inv,
+                        (-a.c[0] * t0 - a.c[1] * t3 + a.c[2] * t2) * inv,
+                        (a.c[0] * t3 - a.c[1] * t0 - a.c[2] * t1) * inv,
+                        (-a.c[0] * t2 + a.c[1] * t1 - a.c[2] * t0) * inv);
+}
+
+// apply(trivector, scalar) -> scalar: 4 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE T apply(const basic_trivector<T>& a, const basic_scalar<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return (a.c[0] * t0) * inv;
+}
+
+// apply(trivector, vector) -> vector: 10 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_vector<T> apply(const basic_trivector<T>& a, const basic_vector<T>& b) {
+  const T t0 = a.c[0] * b.c[2];
+  const T t1 = -a.c[0] * b.c[1];
+  const T t2 = a.c[0] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_vector<T>((a.c[0] * t2) * inv, (-a.c[0] * t1) * inv, (a.c[0] * t0) * inv);
+}
+
+// apply(trivector, bivector) -> bivector: 10 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_bivector<T> apply(const basic_trivector<T>& a,
+                                             const basic_bivector<T>& b) {
+  const T t0 = -a.c[0] * b.c[2];
+  const T t1 = a.c[0] * b.c[1];
+  const T t2 = -a.c[0] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_bivector<T>((-a.c[0] * t2) * inv, (a.c[0] * t1) * inv, (-a.c[0] * t0) * inv);
+}
+
+// apply(trivector, trivector) -> trivector: 4 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_trivector<T> apply(const basic_trivector<T>& a,
+                                              const basic_trivector<T>& b) {
+  const T t0 = -a.c[0] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_trivector<T>((-a.c[0] * t0) * inv);
+}
+
+// apply(trivector, rotor) -> rotor: 13 mul, 0 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> apply(const basic_trivector<T>& a, const basic_rotor<T>& b) {
+  const T t0 = -a.c[0] * b.c[3];
+  const T t1 = a.c[0] * b.c[2];
+  const T t2 = -a.c[0] * b.c[1];
+  const T t3 = a.c[0] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0]);
+  return basic_rotor<T>((a.c[0] * t3) * inv, (-a.c[0] * t2) * inv, (a.c[0] * t1) * inv,
+                        (-a.c[0] * t0) * inv);
+}
+
+// apply(rotor, scalar) -> scalar: 13 mul, 6 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE T apply(const basic_rotor<T>& a, const basic_scalar<T>& b) {
+  const T t0 = a.c[0] * b.c[0];
+  const T t1 = a.c[1] * b.c[0];
+  const T t2 = a.c[2] * b.c[0];
+  const T t3 = a.c[3] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return (a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2 + a.c[3] * t3) * inv;
+}
+
+// apply(rotor, trivector) -> trivector: 13 mul, 6 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_trivector<T> apply(const basic_rotor<T>& a,
+                                              const basic_trivector<T>& b) {
+  const T t0 = -a.c[3] * b.c[0];
+  const T t1 = a.c[2] * b.c[0];
+  const T t2 = -a.c[1] * b.c[0];
+  const T t3 = a.c[0] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_trivector<T>((a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1 - a.c[3] * t0) * inv);
+}
+
+// apply(rotor, rotor) -> rotor: 40 mul, 27 add, 1 div
+template <class T>
+GAPHYS_ALWAYS_INLINE basic_rotor<T> apply(const basic_rotor<T>& a, const basic_rotor<T>& b) {
+  const T t0 = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
+  const T t1 = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3] + a.c[3] * b.c[2];
+  const T t2 = a.c[0] * b.c[2] + a.c[1] * b.c[3] + a.c[2] * b.c[0] - a.c[3] * b.c[1];
+  const T t3 = a.c[0] * b.c[3] - a.c[1] * b.c[2] + a.c[2] * b.c[1] + a.c[3] * b.c[0];
+  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+  return basic_rotor<T>((a.c[0] * t0 + a.c[1] * t1 + a.c[2] * t2 + a.c[3] * t3) * inv,
+                        (a.c[0] * t1 - a.c[1] * t0 - a.c[2] * t3 + a.c[3] * t2) * inv,
+                        (a.c[0] * t2 + a.c[1] * t3 - a.c[2] * t0 - a.c[3] * t1) * inv,
+                        (a.c[0] * t3 - a.c[1] * t2 + a.c[2] * t1 - a.c[3] * t0) * inv);
+}
+
 }  // namespace e3ga

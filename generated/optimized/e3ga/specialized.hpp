@@ -4,13 +4,9 @@
 // Profile: profiling/profiles/e3ga.json (27538220 calls; 175 mv kernels at coverage 0.999)
 // Regenerate: gaphys-gen generate specs/e3ga.ga --variant optimized --out generated/optimized --profile profiling/profiles/e3ga.json --coverage 0.999
 // Straight-line code for functions on mv whose argument bitmaps a profile
-// showed to be common, and the dispatchers the mv functions ask first. A
-// dispatcher returns false for every other bitmap (and always, without a
-// profile), and the caller takes the generic table-driven path. Kernels write
-// every coefficient of the caller's result r (which need not be zeroed first)
-// and its bits; r is none of the arguments (the kernels take it restrict-qualified).
-// A dispatcher tries, in order: the stored bitmaps, the exactly nonzero
-// coefficients' bitmaps, and the cheapest kernel made for a superset of those.
+// showed to be common, and per function the switch over them: what the
+// functions on mv ask first (gaphys/ga/mv_dispatch.hpp says how). Without a
+// profile there is none, and every call takes the generic table-driven path.
 #pragma once
 
 #include <cstdint>
@@ -22,19 +18,9 @@
 namespace e3ga {
 namespace detail {
 
-constexpr std::uint64_t pair_key(std::uint32_t a, std::uint32_t b) {
-  return std::uint64_t(a) << 32 | b;
-}
-
-// The (function, argument bitmaps) combinations with straight-line code, and
-// whether the kernel also serves subsets of its bitmaps, for tests and
-// reports; the last entry has no function.
-struct specialized_combination {
-  const char* function;
-  std::uint32_t a, b;
-  bool covers_subsets;
-};
-inline constexpr specialized_combination specialized_combinations[] = {
+// The (function, argument bitmaps) combinations with straight-line code; the
+// last entry has no function.
+inline constexpr gaphys::ga::specialized_combination specialized_combinations[] = {
     {"apply", 0x1u, 0x2u, false},   {"apply", 0x1u, 0x4u, false},   {"apply", 0x1u, 0x8u, false},
     {"apply", 0x1u, 0xau, false},   {"apply", 0x41u, 0x0u, false},  {"apply", 0x71u, 0x0u, false},
     {"apply", 0x71u, 0x8u, false},  {"apply", 0x71u, 0xeu, false},  {"apply", 0x71u, 0x30u, false},
@@ -95,6 +81,10 @@ inline constexpr specialized_combination specialized_combinations[] = {
     {"scp", 0x30u, 0x30u, true},    {"scp", 0x41u, 0x41u, true},    {"scp", 0x70u, 0x70u, true},
     {"scp", 0x71u, 0x71u, true},    {nullptr, 0, 0, false},
 };
+
+// The kernels of function F; a function the profile made none for keeps these.
+template <call F>
+struct kernels : gaphys::ga::no_kernels {};
 
 // apply on mv {1} x {e1}: 4 mul, 0 add, 1 div (3684 profiled calls)
 template <class T>
@@ -1796,103 +1786,108 @@ void scp_71_71(const basic_mv<T>& GAPHYS_RESTRICT a, const basic_mv<T>& GAPHYS_R
   r = (a.c[0] * b.c[0] - a.c[4] * b.c[4] - a.c[5] * b.c[5] - a.c[6] * b.c[6]);
 }
 
-template <class T>
-GAPHYS_ALWAYS_INLINE bool specialized_gp_by_key(std::uint64_t key, const basic_mv<T>& a,
-                                                const basic_mv<T>& b, basic_mv<T>& r) {
-  switch (key) {
-    case 0x000000000ull:
-      gp_0_0(a, b, r);
-      return true;
-    case 0x000000041ull:
-      gp_0_41(a, b, r);
-      return true;
-    case 0x000000071ull:
-      gp_0_71(a, b, r);
-      return true;
-    case 0x100000001ull:
-      gp_1_1(a, b, r);
-      return true;
-    case 0x100000002ull:
-      gp_1_2(a, b, r);
-      return true;
-    case 0x100000004ull:
-      gp_1_4(a, b, r);
-      return true;
-    case 0x100000008ull:
-      gp_1_8(a, b, r);
-      return true;
-    case 0x10000000aull:
-      gp_1_a(a, b, r);
-      return true;
-    case 0x100000071ull:
-      gp_1_71(a, b, r);
-      return true;
-    case 0x200000001ull:
-      gp_2_1(a, b, r);
-      return true;
-    case 0x400000001ull:
-      gp_4_1(a, b, r);
-      return true;
-    case 0x800000001ull:
-      gp_8_1(a, b, r);
-      return true;
-    case 0xa00000001ull:
-      gp_a_1(a, b, r);
-      return true;
-    case 0x4100000000ull:
-      gp_41_0(a, b, r);
-      return true;
-    case 0x6000000060ull:
-      gp_60_60(a, b, r);
-      return true;
-    case 0x6100000071ull:
-      gp_61_71(a, b, r);
-      return true;
-    case 0x7000000070ull:
-      gp_70_70(a, b, r);
-      return true;
-    case 0x7100000000ull:
-      gp_71_0(a, b, r);
-      return true;
-    case 0x7100000008ull:
-      gp_71_8(a, b, r);
-      return true;
-    case 0x710000000eull:
-      gp_71_e(a, b, r);
-      return true;
-    case 0x7100000030ull:
-      gp_71_30(a, b, r);
-      return true;
-    case 0x7100000050ull:
-      gp_71_50(a, b, r);
-      return true;
-    case 0x7100000060ull:
-      gp_71_60(a, b, r);
-      return true;
-    case 0x7100000070ull:
-      gp_71_70(a, b, r);
-      return true;
-    case 0x7100000071ull:
-      gp_71_71(a, b, r);
-      return true;
-    case 0x8e00000071ull:
-      gp_8e_71(a, b, r);
-      return true;
-    default:
-      return false;
-  }
-}
+template <>
+struct kernels<call::gp> {
+  static constexpr bool profiled = true;
 
-// Bitmaps no kernel was made for: the cheapest kernel made for a superset of
-// them. It reads exact zeros where the arguments have no coefficient, so its
-// result is the generic path's; its result bits may mark some exact zeros.
-// Kernels come cheapest first, and the search ends at one costing more than
-// 8 operations per term of the generic path (`work`), which would be
-// faster. Kernels that divide never serve subsets (a divisor that vanishes on
-// the subset is the generic path's to handle).
+  template <class T>
+  GAPHYS_ALWAYS_INLINE static bool by_key(std::uint64_t key, const basic_mv<T>& a,
+                                          const basic_mv<T>& b, basic_mv<T>& r) {
+    switch (key) {
+      case 0x000000000ull:
+        gp_0_0(a, b, r);
+        return true;
+      case 0x000000041ull:
+        gp_0_41(a, b, r);
+        return true;
+      case 0x000000071ull:
+        gp_0_71(a, b, r);
+        return true;
+      case 0x100000001ull:
+        gp_1_1(a, b, r);
+        return true;
+      case 0x100000002ull:
+        gp_1_2(a, b, r);
+        return true;
+      case 0x100000004ull:
+        gp_1_4(a, b, r);
+        return true;
+      case 0x100000008ull:
+        gp_1_8(a, b, r);
+        return true;
+      case 0x10000000aull:
+        gp_1_a(a, b, r);
+        return true;
+      case 0x100000071ull:
+        gp_1_71(a, b, r);
+        return true;
+      case 0x200000001ull:
+        gp_2_1(a, b, r);
+        return true;
+      case 0x400000001ull:
+        gp_4_1(a, b, r);
+        return true;
+      case 0x800000001ull:
+        gp_8_1(a, b, r);
+        return true;
+      case 0xa00000001ull:
+        gp_a_1(a, b, r);
+        return true;
+      case 0x4100000000ull:
+        gp_41_0(a, b, r);
+        return true;
+      case 0x6000000060ull:
+        gp_60_60(a, b, r);
+        return true;
+      case 0x6100000071ull:
+        gp_61_71(a, b, r);
+        return true;
+      case 0x7000000070ull:
+        gp_70_70(a, b, r);
+        return true;
+      case 0x7100000000ull:
+        gp_71_0(a, b, r);
+        return true;
+      case 0x7100000008ull:
+        gp_71_8(a, b, r);
+        return true;
+      case 0x710000000eull:
+        gp_71_e(a, b, r);
+        return true;
+      case 0x7100000030ull:
+        gp_71_30(a, b, r);
+        return true;
+      case 0x7100000050ull:
+        gp_71_50(a, b, r);
+        return true;
+      case 0x7100000060ull:
+        gp_71_60(a, b, r);
+        return true;
+      case 0x7100000070ull:
+        gp_71_70(a, b, r);
+        return true;
+      case 0x7100000071ull:
+        gp_71_71(a, b, r);
+        return true;
+      case 0x8e00000071ull:
+        gp_8e_71(a, b, r);
+        return true;
+      default:
+        return false;
+    }
+  }
+
+  // The cheapest kernel made for a superset of the bits, unless it costs more than
+  // 8 operations per term of the generic path (`work`).
+  template <class T>
+  static bool covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
+                       const basic_mv<T>& b, basic_mv<T>& r);
+};
+
+// Out of the class, so not inline: only the switch is meant to be.
 template <class T>
-bool specialized_gp_covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
-                             const basic_mv<T>& b, basic_mv<T>& r) {
+bool kernels<call::gp>::covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
+                                 const basic_mv<T>& b, basic_mv<T>& r) {
   const int work = gaphys::ga::bit_count(a_bits) * gaphys::ga::bit_count(b_bits);
   if (8 * work < 0) return false;
   if (!(a_bits & ~0x0u) && !(b_bits & ~0x0u)) {
@@ -2027,111 +2022,96 @@ bool specialized_gp_covering(std::uint32_t a_bits, std::uint32_t b_bits, const b
   return false;
 }
 
-// The profile keys on the really nonzero coefficients, while stored bits may
-// still mark exact zeros (a product's structure): on a miss, retry with the
-// exactly nonzero ones, then with a kernel made for a superset of them.
-template <class T>
-bool specialized_gp_on_exact_bits(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
-  const std::uint32_t a_bits = gaphys::ga::exact_bits(a);
-  const std::uint32_t b_bits = gaphys::ga::exact_bits(b);
-  const std::uint64_t exact = pair_key(a_bits, b_bits);
-  if (exact != pair_key(a.bits, b.bits) && specialized_gp_by_key(exact, a, b, r)) return true;
-  return specialized_gp_covering(a_bits, b_bits, a, b, r);
-}
+template <>
+struct kernels<call::op> {
+  static constexpr bool profiled = true;
 
-// Kept small, and the switch forced inline, so that a hit runs inside the mv
-// function (one call in all); only a miss calls the retry.
-template <class T>
-inline bool specialized_gp(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
-  return specialized_gp_by_key(pair_key(a.bits, b.bits), a, b, r) ||
-         specialized_gp_on_exact_bits(a, b, r);
-}
-
-template <class T>
-GAPHYS_ALWAYS_INLINE bool specialized_op_by_key(std::uint64_t key, const basic_mv<T>& a,
-                                                const basic_mv<T>& b, basic_mv<T>& r) {
-  switch (key) {
-    case 0x200000004ull:
-      op_2_4(a, b, r);
-      return true;
-    case 0x200000008ull:
-      op_2_8(a, b, r);
-      return true;
-    case 0x20000000eull:
-      op_2_e(a, b, r);
-      return true;
-    case 0x400000002ull:
-      op_4_2(a, b, r);
-      return true;
-    case 0x400000008ull:
-      op_4_8(a, b, r);
-      return true;
-    case 0x40000000aull:
-      op_4_a(a, b, r);
-      return true;
-    case 0x40000000eull:
-      op_4_e(a, b, r);
-      return true;
-    case 0x60000000eull:
-      op_6_e(a, b, r);
-      return true;
-    case 0x800000002ull:
-      op_8_2(a, b, r);
-      return true;
-    case 0x800000004ull:
-      op_8_4(a, b, r);
-      return true;
-    case 0x80000000eull:
-      op_8_e(a, b, r);
-      return true;
-    case 0xa00000004ull:
-      op_a_4(a, b, r);
-      return true;
-    case 0xa0000000aull:
-      op_a_a(a, b, r);
-      return true;
-    case 0xa0000000eull:
-      op_a_e(a, b, r);
-      return true;
-    case 0xc0000000eull:
-      op_c_e(a, b, r);
-      return true;
-    case 0xe00000002ull:
-      op_e_2(a, b, r);
-      return true;
-    case 0xe00000004ull:
-      op_e_4(a, b, r);
-      return true;
-    case 0xe00000006ull:
-      op_e_6(a, b, r);
-      return true;
-    case 0xe00000008ull:
-      op_e_8(a, b, r);
-      return true;
-    case 0xe0000000aull:
-      op_e_a(a, b, r);
-      return true;
-    case 0xe0000000cull:
-      op_e_c(a, b, r);
-      return true;
-    case 0xe0000000eull:
-      op_e_e(a, b, r);
-      return true;
-    default:
-      return false;
+  template <class T>
+  GAPHYS_ALWAYS_INLINE static bool by_key(std::uint64_t key, const basic_mv<T>& a,
+                                          const basic_mv<T>& b, basic_mv<T>& r) {
+    switch (key) {
+      case 0x200000004ull:
+        op_2_4(a, b, r);
+        return true;
+      case 0x200000008ull:
+        op_2_8(a, b, r);
+        return true;
+      case 0x20000000eull:
+        op_2_e(a, b, r);
+        return true;
+      case 0x400000002ull:
+        op_4_2(a, b, r);
+        return true;
+      case 0x400000008ull:
+        op_4_8(a, b, r);
+        return true;
+      case 0x40000000aull:
+        op_4_a(a, b, r);
+        return true;
+      case 0x40000000eull:
+        op_4_e(a, b, r);
+        return true;
+      case 0x60000000eull:
+        op_6_e(a, b, r);
+        return true;
+      case 0x800000002ull:
+        op_8_2(a, b, r);
+        return true;
+      case 0x800000004ull:
+        op_8_4(a, b, r);
+        return true;
+      case 0x80000000eull:
+        op_8_e(a, b, r);
+        return true;
+      case 0xa00000004ull:
+        op_a_4(a, b, r);
+        return true;
+      case 0xa0000000aull:
+        op_a_a(a, b, r);
+        return true;
+      case 0xa0000000eull:
+        op_a_e(a, b, r);
+        return true;
+      case 0xc0000000eull:
+        op_c_e(a, b, r);
+        return true;
+      case 0xe00000002ull:
+        op_e_2(a, b, r);
+        return true;
+      case 0xe00000004ull:
+        op_e_4(a, b, r);
+        return true;
+      case 0xe00000006ull:
+        op_e_6(a, b, r);
+        return true;
+      case 0xe00000008ull:
+        op_e_8(a, b, r);
+        return true;
+      case 0xe0000000aull:
+        op_e_a(a, b, r);
+        return true;
+      case 0xe0000000cull:
+        op_e_c(a, b, r);
+        return true;
+      case 0xe0000000eull:
+        op_e_e(a, b, r);
+        return true;
+      default:
+        return false;
+    }
   }
-}
 
-// Bitmaps no kernel was made for: the cheapest kernel made for a superset of
-// them. It reads exact zeros where the arguments have no coefficient, so its
-// result is the generic path's; its result bits may mark some exact zeros.
-// Kernels come cheapest first, and the search ends at one costing more than
-// 8 operations per term of the generic path (`work`), which would be
-// faster. Kernels that divide never serve subsets (a divisor that vanishes on
-// the subset is the generic path's to handle).
+  // The cheapest kernel made for a superset of the bits, unless it costs more than
+  // 8 operations per term of the generic path (`work`).
+  template <class T>
+  static bool covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
+                       const basic_mv<T>& b, basic_mv<T>& r);
+};
+
+// Out of the class, so not inline: only the switch is meant to be.
 template <class T>
-bool specialized_op_covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
-                             const basic_mv<T>& b, basic_mv<T>& r) {
+bool kernels<call::op>::covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
+                                 const basic_mv<T>& b, basic_mv<T>& r) {
   const int work = gaphys::ga::bit_count(a_bits) * gaphys::ga::bit_count(b_bits);
   if (8 * work < 1) return false;
   if (!(a_bits & ~0x2u) && !(b_bits & ~0x4u)) {
@@ -2246,156 +2226,141 @@ bool specialized_op_covering(std::uint32_t a_bits, std::uint32_t b_bits, const b
   return false;
 }
 
-// The profile keys on the really nonzero coefficients, while stored bits may
-// still mark exact zeros (a product's structure): on a miss, retry with the
-// exactly nonzero ones, then with a kernel made for a superset of them.
-template <class T>
-bool specialized_op_on_exact_bits(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
-  const std::uint32_t a_bits = gaphys::ga::exact_bits(a);
-  const std::uint32_t b_bits = gaphys::ga::exact_bits(b);
-  const std::uint64_t exact = pair_key(a_bits, b_bits);
-  if (exact != pair_key(a.bits, b.bits) && specialized_op_by_key(exact, a, b, r)) return true;
-  return specialized_op_covering(a_bits, b_bits, a, b, r);
-}
+template <>
+struct kernels<call::lc> {
+  static constexpr bool profiled = true;
 
-// Kept small, and the switch forced inline, so that a hit runs inside the mv
-// function (one call in all); only a miss calls the retry.
-template <class T>
-inline bool specialized_op(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
-  return specialized_op_by_key(pair_key(a.bits, b.bits), a, b, r) ||
-         specialized_op_on_exact_bits(a, b, r);
-}
-
-template <class T>
-GAPHYS_ALWAYS_INLINE bool specialized_lc_by_key(std::uint64_t key, const basic_mv<T>& a,
-                                                const basic_mv<T>& b, basic_mv<T>& r) {
-  switch (key) {
-    case 0x000000000ull:
-      lc_0_0(a, b, r);
-      return true;
-    case 0x000000070ull:
-      lc_0_70(a, b, r);
-      return true;
-    case 0x200000000ull:
-      lc_2_0(a, b, r);
-      return true;
-    case 0x200000070ull:
-      lc_2_70(a, b, r);
-      return true;
-    case 0x400000000ull:
-      lc_4_0(a, b, r);
-      return true;
-    case 0x400000070ull:
-      lc_4_70(a, b, r);
-      return true;
-    case 0x600000000ull:
-      lc_6_0(a, b, r);
-      return true;
-    case 0x800000000ull:
-      lc_8_0(a, b, r);
-      return true;
-    case 0x800000070ull:
-      lc_8_70(a, b, r);
-      return true;
-    case 0xe00000000ull:
-      lc_e_0(a, b, r);
-      return true;
-    case 0xe00000070ull:
-      lc_e_70(a, b, r);
-      return true;
-    case 0x1000000010ull:
-      lc_10_10(a, b, r);
-      return true;
-    case 0x1000000020ull:
-      lc_10_20(a, b, r);
-      return true;
-    case 0x1000000040ull:
-      lc_10_40(a, b, r);
-      return true;
-    case 0x1000000070ull:
-      lc_10_70(a, b, r);
-      return true;
-    case 0x2000000000ull:
-      lc_20_0(a, b, r);
-      return true;
-    case 0x2000000020ull:
-      lc_20_20(a, b, r);
-      return true;
-    case 0x2000000030ull:
-      lc_20_30(a, b, r);
-      return true;
-    case 0x2000000040ull:
-      lc_20_40(a, b, r);
-      return true;
-    case 0x2000000050ull:
-      lc_20_50(a, b, r);
-      return true;
-    case 0x2000000070ull:
-      lc_20_70(a, b, r);
-      return true;
-    case 0x3000000030ull:
-      lc_30_30(a, b, r);
-      return true;
-    case 0x3000000060ull:
-      lc_30_60(a, b, r);
-      return true;
-    case 0x3000000070ull:
-      lc_30_70(a, b, r);
-      return true;
-    case 0x4000000000ull:
-      lc_40_0(a, b, r);
-      return true;
-    case 0x4000000030ull:
-      lc_40_30(a, b, r);
-      return true;
-    case 0x4000000040ull:
-      lc_40_40(a, b, r);
-      return true;
-    case 0x4000000050ull:
-      lc_40_50(a, b, r);
-      return true;
-    case 0x4000000070ull:
-      lc_40_70(a, b, r);
-      return true;
-    case 0x5000000020ull:
-      lc_50_20(a, b, r);
-      return true;
-    case 0x5000000050ull:
-      lc_50_50(a, b, r);
-      return true;
-    case 0x5000000060ull:
-      lc_50_60(a, b, r);
-      return true;
-    case 0x5000000070ull:
-      lc_50_70(a, b, r);
-      return true;
-    case 0x6000000000ull:
-      lc_60_0(a, b, r);
-      return true;
-    case 0x6000000060ull:
-      lc_60_60(a, b, r);
-      return true;
-    case 0x6000000070ull:
-      lc_60_70(a, b, r);
-      return true;
-    case 0x7000000070ull:
-      lc_70_70(a, b, r);
-      return true;
-    default:
-      return false;
+  template <class T>
+  GAPHYS_ALWAYS_INLINE static bool by_key(std::uint64_t key, const basic_mv<T>& a,
+                                          const basic_mv<T>& b, basic_mv<T>& r) {
+    switch (key) {
+      case 0x000000000ull:
+        lc_0_0(a, b, r);
+        return true;
+      case 0x000000070ull:
+        lc_0_70(a, b, r);
+        return true;
+      case 0x200000000ull:
+        lc_2_0(a, b, r);
+        return true;
+      case 0x200000070ull:
+        lc_2_70(a, b, r);
+        return true;
+      case 0x400000000ull:
+        lc_4_0(a, b, r);
+        return true;
+      case 0x400000070ull:
+        lc_4_70(a, b, r);
+        return true;
+      case 0x600000000ull:
+        lc_6_0(a, b, r);
+        return true;
+      case 0x800000000ull:
+        lc_8_0(a, b, r);
+        return true;
+      case 0x800000070ull:
+        lc_8_70(a, b, r);
+        return true;
+      case 0xe00000000ull:
+        lc_e_0(a, b, r);
+        return true;
+      case 0xe00000070ull:
+        lc_e_70(a, b, r);
+        return true;
+      case 0x1000000010ull:
+        lc_10_10(a, b, r);
+        return true;
+      case 0x1000000020ull:
+        lc_10_20(a, b, r);
+        return true;
+      case 0x1000000040ull:
+        lc_10_40(a, b, r);
+        return true;
+      case 0x1000000070ull:
+        lc_10_70(a, b, r);
+        return true;
+      case 0x2000000000ull:
+        lc_20_0(a, b, r);
+        return true;
+      case 0x2000000020ull:
+        lc_20_20(a, b, r);
+        return true;
+      case 0x2000000030ull:
+        lc_20_30(a, b, r);
+        return true;
+      case 0x2000000040ull:
+        lc_20_40(a, b, r);
+        return true;
+      case 0x2000000050ull:
+        lc_20_50(a, b, r);
+        return true;
+      case 0x2000000070ull:
+        lc_20_70(a, b, r);
+        return true;
+      case 0x3000000030ull:
+        lc_30_30(a, b, r);
+        return true;
+      case 0x3000000060ull:
+        lc_30_60(a, b, r);
+        return true;
+      case 0x3000000070ull:
+        lc_30_70(a, b, r);
+        return true;
+      case 0x4000000000ull:
+        lc_40_0(a, b, r);
+        return true;
+      case 0x4000000030ull:
+        lc_40_30(a, b, r);
+        return true;
+      case 0x4000000040ull:
+        lc_40_40(a, b, r);
+        return true;
+      case 0x4000000050ull:
+        lc_40_50(a, b, r);
+        return true;
+      case 0x4000000070ull:
+        lc_40_70(a, b, r);
+        return true;
+      case 0x5000000020ull:
+        lc_50_20(a, b, r);
+        return true;
+      case 0x5000000050ull:
+        lc_50_50(a, b, r);
+        return true;
+      case 0x5000000060ull:
+        lc_50_60(a, b, r);
+        return true;
+      case 0x5000000070ull:
+        lc_50_70(a, b, r);
+        return true;
+      case 0x6000000000ull:
+        lc_60_0(a, b, r);
+        return true;
+      case 0x6000000060ull:
+        lc_60_60(a, b, r);
+        return true;
+      case 0x6000000070ull:
+        lc_60_70(a, b, r);
+        return true;
+      case 0x7000000070ull:
+        lc_70_70(a, b, r);
+        return true;
+      default:
+        return false;
+    }
   }
-}
 
-// Bitmaps no kernel was made for: the cheapest kernel made for a superset of
-// them. It reads exact zeros where the arguments have no coefficient, so its
-// result is the generic path's; its result bits may mark some exact zeros.
-// Kernels come cheapest first, and the search ends at one costing more than
-// 8 operations per term of the generic path (`work`), which would be
-// faster. Kernels that divide never serve subsets (a divisor that vanishes on
-// the subset is the generic path's to handle).
+  // The cheapest kernel made for a superset of the bits, unless it costs more than
+  // 8 operations per term of the generic path (`work`).
+  template <class T>
+  static bool covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
+                       const basic_mv<T>& b, basic_mv<T>& r);
+};
+
+// Out of the class, so not inline: only the switch is meant to be.
 template <class T>
-bool specialized_lc_covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
-                             const basic_mv<T>& b, basic_mv<T>& r) {
+bool kernels<call::lc>::covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
+                                 const basic_mv<T>& b, basic_mv<T>& r) {
   const int work = gaphys::ga::bit_count(a_bits) * gaphys::ga::bit_count(b_bits);
   if (8 * work < 0) return false;
   if (!(a_bits & ~0x0u) && !(b_bits & ~0x0u)) {
@@ -2585,231 +2550,207 @@ bool specialized_lc_covering(std::uint32_t a_bits, std::uint32_t b_bits, const b
   return false;
 }
 
-// The profile keys on the really nonzero coefficients, while stored bits may
-// still mark exact zeros (a product's structure): on a miss, retry with the
-// exactly nonzero ones, then with a kernel made for a superset of them.
-template <class T>
-bool specialized_lc_on_exact_bits(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
-  const std::uint32_t a_bits = gaphys::ga::exact_bits(a);
-  const std::uint32_t b_bits = gaphys::ga::exact_bits(b);
-  const std::uint64_t exact = pair_key(a_bits, b_bits);
-  if (exact != pair_key(a.bits, b.bits) && specialized_lc_by_key(exact, a, b, r)) return true;
-  return specialized_lc_covering(a_bits, b_bits, a, b, r);
-}
+template <>
+struct kernels<call::scp> {
+  static constexpr bool profiled = true;
 
-// Kept small, and the switch forced inline, so that a hit runs inside the mv
-// function (one call in all); only a miss calls the retry.
-template <class T>
-inline bool specialized_lc(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
-  return specialized_lc_by_key(pair_key(a.bits, b.bits), a, b, r) ||
-         specialized_lc_on_exact_bits(a, b, r);
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_rc(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
-  switch (pair_key(a.bits, b.bits)) {
-    default:
-      return false;
+  template <class T>
+  GAPHYS_ALWAYS_INLINE static bool by_key(std::uint64_t key, const basic_mv<T>& a,
+                                          const basic_mv<T>& b, T& r) {
+    switch (key) {
+      case 0x000000000ull:
+        scp_0_0(a, b, r);
+        return true;
+      case 0x000000002ull:
+        scp_0_2(a, b, r);
+        return true;
+      case 0x000000004ull:
+        scp_0_4(a, b, r);
+        return true;
+      case 0x000000006ull:
+        scp_0_6(a, b, r);
+        return true;
+      case 0x000000008ull:
+        scp_0_8(a, b, r);
+        return true;
+      case 0x00000000eull:
+        scp_0_e(a, b, r);
+        return true;
+      case 0x100000001ull:
+        scp_1_1(a, b, r);
+        return true;
+      case 0x200000000ull:
+        scp_2_0(a, b, r);
+        return true;
+      case 0x200000002ull:
+        scp_2_2(a, b, r);
+        return true;
+      case 0x200000004ull:
+        scp_2_4(a, b, r);
+        return true;
+      case 0x200000006ull:
+        scp_2_6(a, b, r);
+        return true;
+      case 0x200000008ull:
+        scp_2_8(a, b, r);
+        return true;
+      case 0x20000000aull:
+        scp_2_a(a, b, r);
+        return true;
+      case 0x20000000cull:
+        scp_2_c(a, b, r);
+        return true;
+      case 0x20000000eull:
+        scp_2_e(a, b, r);
+        return true;
+      case 0x400000000ull:
+        scp_4_0(a, b, r);
+        return true;
+      case 0x400000002ull:
+        scp_4_2(a, b, r);
+        return true;
+      case 0x400000004ull:
+        scp_4_4(a, b, r);
+        return true;
+      case 0x400000006ull:
+        scp_4_6(a, b, r);
+        return true;
+      case 0x400000008ull:
+        scp_4_8(a, b, r);
+        return true;
+      case 0x40000000aull:
+        scp_4_a(a, b, r);
+        return true;
+      case 0x40000000cull:
+        scp_4_c(a, b, r);
+        return true;
+      case 0x40000000eull:
+        scp_4_e(a, b, r);
+        return true;
+      case 0x600000002ull:
+        scp_6_2(a, b, r);
+        return true;
+      case 0x600000004ull:
+        scp_6_4(a, b, r);
+        return true;
+      case 0x600000006ull:
+        scp_6_6(a, b, r);
+        return true;
+      case 0x600000008ull:
+        scp_6_8(a, b, r);
+        return true;
+      case 0x60000000eull:
+        scp_6_e(a, b, r);
+        return true;
+      case 0x800000000ull:
+        scp_8_0(a, b, r);
+        return true;
+      case 0x800000002ull:
+        scp_8_2(a, b, r);
+        return true;
+      case 0x800000004ull:
+        scp_8_4(a, b, r);
+        return true;
+      case 0x800000006ull:
+        scp_8_6(a, b, r);
+        return true;
+      case 0x800000008ull:
+        scp_8_8(a, b, r);
+        return true;
+      case 0x80000000aull:
+        scp_8_a(a, b, r);
+        return true;
+      case 0x80000000cull:
+        scp_8_c(a, b, r);
+        return true;
+      case 0x80000000eull:
+        scp_8_e(a, b, r);
+        return true;
+      case 0xa00000000ull:
+        scp_a_0(a, b, r);
+        return true;
+      case 0xa00000002ull:
+        scp_a_2(a, b, r);
+        return true;
+      case 0xa00000004ull:
+        scp_a_4(a, b, r);
+        return true;
+      case 0xa00000008ull:
+        scp_a_8(a, b, r);
+        return true;
+      case 0xa0000000aull:
+        scp_a_a(a, b, r);
+        return true;
+      case 0xa0000000eull:
+        scp_a_e(a, b, r);
+        return true;
+      case 0xc00000002ull:
+        scp_c_2(a, b, r);
+        return true;
+      case 0xc00000004ull:
+        scp_c_4(a, b, r);
+        return true;
+      case 0xc00000008ull:
+        scp_c_8(a, b, r);
+        return true;
+      case 0xc0000000cull:
+        scp_c_c(a, b, r);
+        return true;
+      case 0xc0000000eull:
+        scp_c_e(a, b, r);
+        return true;
+      case 0xe00000002ull:
+        scp_e_2(a, b, r);
+        return true;
+      case 0xe00000004ull:
+        scp_e_4(a, b, r);
+        return true;
+      case 0xe00000006ull:
+        scp_e_6(a, b, r);
+        return true;
+      case 0xe00000008ull:
+        scp_e_8(a, b, r);
+        return true;
+      case 0xe0000000aull:
+        scp_e_a(a, b, r);
+        return true;
+      case 0xe0000000cull:
+        scp_e_c(a, b, r);
+        return true;
+      case 0xe0000000eull:
+        scp_e_e(a, b, r);
+        return true;
+      case 0x2000000020ull:
+        scp_20_20(a, b, r);
+        return true;
+      case 0x3000000030ull:
+        scp_30_30(a, b, r);
+        return true;
+      case 0x4100000041ull:
+        scp_41_41(a, b, r);
+        return true;
+      case 0x7000000070ull:
+        scp_70_70(a, b, r);
+        return true;
+      case 0x7100000071ull:
+        scp_71_71(a, b, r);
+        return true;
+      default:
+        return false;
+    }
   }
-}
 
-template <class T>
-GAPHYS_ALWAYS_INLINE bool specialized_scp_by_key(std::uint64_t key, const basic_mv<T>& a,
-                                                 const basic_mv<T>& b, T& r) {
-  switch (key) {
-    case 0x000000000ull:
-      scp_0_0(a, b, r);
-      return true;
-    case 0x000000002ull:
-      scp_0_2(a, b, r);
-      return true;
-    case 0x000000004ull:
-      scp_0_4(a, b, r);
-      return true;
-    case 0x000000006ull:
-      scp_0_6(a, b, r);
-      return true;
-    case 0x000000008ull:
-      scp_0_8(a, b, r);
-      return true;
-    case 0x00000000eull:
-      scp_0_e(a, b, r);
-      return true;
-    case 0x100000001ull:
-      scp_1_1(a, b, r);
-      return true;
-    case 0x200000000ull:
-      scp_2_0(a, b, r);
-      return true;
-    case 0x200000002ull:
-      scp_2_2(a, b, r);
-      return true;
-    case 0x200000004ull:
-      scp_2_4(a, b, r);
-      return true;
-    case 0x200000006ull:
-      scp_2_6(a, b, r);
-      return true;
-    case 0x200000008ull:
-      scp_2_8(a, b, r);
-      return true;
-    case 0x20000000aull:
-      scp_2_a(a, b, r);
-      return true;
-    case 0x20000000cull:
-      scp_2_c(a, b, r);
-      return true;
-    case 0x20000000eull:
-      scp_2_e(a, b, r);
-      return true;
-    case 0x400000000ull:
-      scp_4_0(a, b, r);
-      return true;
-    case 0x400000002ull:
-      scp_4_2(a, b, r);
-      return true;
-    case 0x400000004ull:
-      scp_4_4(a, b, r);
-      return true;
-    case 0x400000006ull:
-      scp_4_6(a, b, r);
-      return true;
-    case 0x400000008ull:
-      scp_4_8(a, b, r);
-      return true;
-    case 0x40000000aull:
-      scp_4_a(a, b, r);
-      return true;
-    case 0x40000000cull:
-      scp_4_c(a, b, r);
-      return true;
-    case 0x40000000eull:
-      scp_4_e(a, b, r);
-      return true;
-    case 0x600000002ull:
-      scp_6_2(a, b, r);
-      return true;
-    case 0x600000004ull:
-      scp_6_4(a, b, r);
-      return true;
-    case 0x600000006ull:
-      scp_6_6(a, b, r);
-      return true;
-    case 0x600000008ull:
-      scp_6_8(a, b, r);
-      return true;
-    case 0x60000000eull:
-      scp_6_e(a, b, r);
-      return true;
-    case 0x800000000ull:
-      scp_8_0(a, b, r);
-      return true;
-    case 0x800000002ull:
-      scp_8_2(a, b, r);
-      return true;
-    case 0x800000004ull:
-      scp_8_4(a, b, r);
-      return true;
-    case 0x800000006ull:
-      scp_8_6(a, b, r);
-      return true;
-    case 0x800000008ull:
-      scp_8_8(a, b, r);
-      return true;
-    case 0x80000000aull:
-      scp_8_a(a, b, r);
-      return true;
-    case 0x80000000cull:
-      scp_8_c(a, b, r);
-      return true;
-    case 0x80000000eull:
-      scp_8_e(a, b, r);
-      return true;
-    case 0xa00000000ull:
-      scp_a_0(a, b, r);
-      return true;
-    case 0xa00000002ull:
-      scp_a_2(a, b, r);
-      return true;
-    case 0xa00000004ull:
-      scp_a_4(a, b, r);
-      return true;
-    case 0xa00000008ull:
-      scp_a_8(a, b, r);
-      return true;
-    case 0xa0000000aull:
-      scp_a_a(a, b, r);
-      return true;
-    case 0xa0000000eull:
-      scp_a_e(a, b, r);
-      return true;
-    case 0xc00000002ull:
-      scp_c_2(a, b, r);
-      return true;
-    case 0xc00000004ull:
-      scp_c_4(a, b, r);
-      return true;
-    case 0xc00000008ull:
-      scp_c_8(a, b, r);
-      return true;
-    case 0xc0000000cull:
-      scp_c_c(a, b, r);
-      return true;
-    case 0xc0000000eull:
-      scp_c_e(a, b, r);
-      return true;
-    case 0xe00000002ull:
-      scp_e_2(a, b, r);
-      return true;
-    case 0xe00000004ull:
-      scp_e_4(a, b, r);
-      return true;
-    case 0xe00000006ull:
-      scp_e_6(a, b, r);
-      return true;
-    case 0xe00000008ull:
-      scp_e_8(a, b, r);
-      return true;
-    case 0xe0000000aull:
-      scp_e_a(a, b, r);
-      return true;
-    case 0xe0000000cull:
-      scp_e_c(a, b, r);
-      return true;
-    case 0xe0000000eull:
-      scp_e_e(a, b, r);
-      return true;
-    case 0x2000000020ull:
-      scp_20_20(a, b, r);
-      return true;
-    case 0x3000000030ull:
-      scp_30_30(a, b, r);
-      return true;
-    case 0x4100000041ull:
-      scp_41_41(a, b, r);
-      return true;
-    case 0x7000000070ull:
-      scp_70_70(a, b, r);
-      return true;
-    case 0x7100000071ull:
-      scp_71_71(a, b, r);
-      return true;
-    default:
-      return false;
-  }
-}
+  // The cheapest kernel made for a superset of the bits, unless it costs more than
+  // 8 operations per term of the generic path (`work`).
+  template <class T>
+  static bool covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
+                       const basic_mv<T>& b, T& r);
+};
 
-// Bitmaps no kernel was made for: the cheapest kernel made for a superset of
-// them. It reads exact zeros where the arguments have no coefficient, so its
-// result is the generic path's; its result bits may mark some exact zeros.
-// Kernels come cheapest first, and the search ends at one costing more than
-// 8 operations per term of the generic path (`work`), which would be
-// faster. Kernels that divide never serve subsets (a divisor that vanishes on
-// the subset is the generic path's to handle).
+// Out of the class, so not inline: only the switch is meant to be.
 template <class T>
-bool specialized_scp_covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
-                              const basic_mv<T>& b, T& r) {
+bool kernels<call::scp>::covering(std::uint32_t a_bits, std::uint32_t b_bits, const basic_mv<T>& a,
+                                  const basic_mv<T>& b, T& r) {
   const int work = gaphys::ga::bit_count(a_bits) * gaphys::ga::bit_count(b_bits);
   if (8 * work < 0) return false;
   if (!(a_bits & ~0x0u) && !(b_bits & ~0x0u)) {
@@ -3109,176 +3050,105 @@ bool specialized_scp_covering(std::uint32_t a_bits, std::uint32_t b_bits, const 
   return false;
 }
 
-// The profile keys on the really nonzero coefficients, while stored bits may
-// still mark exact zeros (a product's structure): on a miss, retry with the
-// exactly nonzero ones, then with a kernel made for a superset of them.
-template <class T>
-bool specialized_scp_on_exact_bits(const basic_mv<T>& a, const basic_mv<T>& b, T& r) {
-  const std::uint32_t a_bits = gaphys::ga::exact_bits(a);
-  const std::uint32_t b_bits = gaphys::ga::exact_bits(b);
-  const std::uint64_t exact = pair_key(a_bits, b_bits);
-  if (exact != pair_key(a.bits, b.bits) && specialized_scp_by_key(exact, a, b, r)) return true;
-  return specialized_scp_covering(a_bits, b_bits, a, b, r);
-}
+template <>
+struct kernels<call::apply> {
+  static constexpr bool profiled = true;
 
-// Kept small, and the switch forced inline, so that a hit runs inside the mv
-// function (one call in all); only a miss calls the retry.
-template <class T>
-inline bool specialized_scp(const basic_mv<T>& a, const basic_mv<T>& b, T& r) {
-  return specialized_scp_by_key(pair_key(a.bits, b.bits), a, b, r) ||
-         specialized_scp_on_exact_bits(a, b, r);
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_add(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
-  switch (pair_key(a.bits, b.bits)) {
-    default:
-      return false;
+  template <class T>
+  GAPHYS_ALWAYS_INLINE static bool by_key(std::uint64_t key, const basic_mv<T>& a,
+                                          const basic_mv<T>& b, basic_mv<T>& r) {
+    switch (key) {
+      case 0x100000002ull:
+        apply_1_2(a, b, r);
+        return true;
+      case 0x100000004ull:
+        apply_1_4(a, b, r);
+        return true;
+      case 0x100000008ull:
+        apply_1_8(a, b, r);
+        return true;
+      case 0x10000000aull:
+        apply_1_a(a, b, r);
+        return true;
+      case 0x4100000000ull:
+        apply_41_0(a, b, r);
+        return true;
+      case 0x7100000000ull:
+        apply_71_0(a, b, r);
+        return true;
+      case 0x7100000008ull:
+        apply_71_8(a, b, r);
+        return true;
+      case 0x710000000eull:
+        apply_71_e(a, b, r);
+        return true;
+      case 0x7100000030ull:
+        apply_71_30(a, b, r);
+        return true;
+      case 0x7100000050ull:
+        apply_71_50(a, b, r);
+        return true;
+      case 0x7100000060ull:
+        apply_71_60(a, b, r);
+        return true;
+      case 0x7100000070ull:
+        apply_71_70(a, b, r);
+        return true;
+      default:
+        return false;
+    }
   }
-}
 
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_sub(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
-  switch (pair_key(a.bits, b.bits)) {
-    default:
-      return false;
-  }
-}
+  // The cheapest kernel made for a superset of the bits, unless it costs more than
+  // 8 operations per term of the generic path (`work`).
+  template <class T>
+  static bool covering(std::uint32_t, std::uint32_t, const basic_mv<T>&, const basic_mv<T>&,
+                       basic_mv<T>&);
+};
 
+// Out of the class, so not inline: only the switch is meant to be.
 template <class T>
-GAPHYS_ALWAYS_INLINE bool specialized_apply_by_key(std::uint64_t key, const basic_mv<T>& a,
-                                                   const basic_mv<T>& b, basic_mv<T>& r) {
-  switch (key) {
-    case 0x100000002ull:
-      apply_1_2(a, b, r);
-      return true;
-    case 0x100000004ull:
-      apply_1_4(a, b, r);
-      return true;
-    case 0x100000008ull:
-      apply_1_8(a, b, r);
-      return true;
-    case 0x10000000aull:
-      apply_1_a(a, b, r);
-      return true;
-    case 0x4100000000ull:
-      apply_41_0(a, b, r);
-      return true;
-    case 0x7100000000ull:
-      apply_71_0(a, b, r);
-      return true;
-    case 0x7100000008ull:
-      apply_71_8(a, b, r);
-      return true;
-    case 0x710000000eull:
-      apply_71_e(a, b, r);
-      return true;
-    case 0x7100000030ull:
-      apply_71_30(a, b, r);
-      return true;
-    case 0x7100000050ull:
-      apply_71_50(a, b, r);
-      return true;
-    case 0x7100000060ull:
-      apply_71_60(a, b, r);
-      return true;
-    case 0x7100000070ull:
-      apply_71_70(a, b, r);
-      return true;
-    default:
-      return false;
-  }
-}
-
-// Bitmaps no kernel was made for: the cheapest kernel made for a superset of
-// them. It reads exact zeros where the arguments have no coefficient, so its
-// result is the generic path's; its result bits may mark some exact zeros.
-// Kernels come cheapest first, and the search ends at one costing more than
-// 8 operations per term of the generic path (`work`), which would be
-// faster. Kernels that divide never serve subsets (a divisor that vanishes on
-// the subset is the generic path's to handle).
-template <class T>
-bool specialized_apply_covering([[maybe_unused]] std::uint32_t a_bits,
-                                [[maybe_unused]] std::uint32_t b_bits,
-                                [[maybe_unused]] const basic_mv<T>& a,
-                                [[maybe_unused]] const basic_mv<T>& b,
-                                [[maybe_unused]] basic_mv<T>& r) {
+bool kernels<call::apply>::covering(std::uint32_t, std::uint32_t, const basic_mv<T>&,
+                                    const basic_mv<T>&, basic_mv<T>&) {
   return false;
 }
 
-// The profile keys on the really nonzero coefficients, while stored bits may
-// still mark exact zeros (a product's structure): on a miss, retry with the
-// exactly nonzero ones, then with a kernel made for a superset of them.
-template <class T>
-bool specialized_apply_on_exact_bits(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
-  const std::uint32_t a_bits = gaphys::ga::exact_bits(a);
-  const std::uint32_t b_bits = gaphys::ga::exact_bits(b);
-  const std::uint64_t exact = pair_key(a_bits, b_bits);
-  if (exact != pair_key(a.bits, b.bits) && specialized_apply_by_key(exact, a, b, r)) return true;
-  return specialized_apply_covering(a_bits, b_bits, a, b, r);
-}
+template <>
+struct kernels<call::neg> {
+  static constexpr bool profiled = true;
 
-// Kept small, and the switch forced inline, so that a hit runs inside the mv
-// function (one call in all); only a miss calls the retry.
-template <class T>
-inline bool specialized_apply(const basic_mv<T>& a, const basic_mv<T>& b, basic_mv<T>& r) {
-  return specialized_apply_by_key(pair_key(a.bits, b.bits), a, b, r) ||
-         specialized_apply_on_exact_bits(a, b, r);
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_meet(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
-  switch (pair_key(a.bits, b.bits)) {
-    default:
-      return false;
+  template <class T>
+  GAPHYS_ALWAYS_INLINE static bool by_key(std::uint32_t key, const basic_mv<T>& a, basic_mv<T>& r) {
+    switch (key) {
+      case 0x2u:
+        neg_2(a, r);
+        return true;
+      case 0x4u:
+        neg_4(a, r);
+        return true;
+      case 0x8u:
+        neg_8(a, r);
+        return true;
+      case 0xau:
+        neg_a(a, r);
+        return true;
+      case 0xeu:
+        neg_e(a, r);
+        return true;
+      default:
+        return false;
+    }
   }
-}
 
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_join(const basic_mv<T>& a, const basic_mv<T>& b, [[maybe_unused]] basic_mv<T>& r) {
-  switch (pair_key(a.bits, b.bits)) {
-    default:
-      return false;
-  }
-}
+  // The cheapest kernel made for a superset of the bits, unless it costs more than
+  // 8 operations per term of the generic path (`work`).
+  template <class T>
+  static bool covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_mv<T>& r);
+};
 
+// Out of the class, so not inline: only the switch is meant to be.
 template <class T>
-GAPHYS_ALWAYS_INLINE bool specialized_neg_by_key(std::uint32_t key, const basic_mv<T>& a,
-                                                 basic_mv<T>& r) {
-  switch (key) {
-    case 0x2u:
-      neg_2(a, r);
-      return true;
-    case 0x4u:
-      neg_4(a, r);
-      return true;
-    case 0x8u:
-      neg_8(a, r);
-      return true;
-    case 0xau:
-      neg_a(a, r);
-      return true;
-    case 0xeu:
-      neg_e(a, r);
-      return true;
-    default:
-      return false;
-  }
-}
-
-// Bitmaps no kernel was made for: the cheapest kernel made for a superset of
-// them. It reads exact zeros where the arguments have no coefficient, so its
-// result is the generic path's; its result bits may mark some exact zeros.
-// Kernels come cheapest first, and the search ends at one costing more than
-// 8 operations per term of the generic path (`work`), which would be
-// faster. Kernels that divide never serve subsets (a divisor that vanishes on
-// the subset is the generic path's to handle).
-template <class T>
-bool specialized_neg_covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_mv<T>& r) {
+bool kernels<call::neg>::covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_mv<T>& r) {
   const int work = gaphys::ga::bit_count(a_bits);
   if (8 * work < 0) return false;
   if (!(a_bits & ~0x2u)) {
@@ -3308,84 +3178,69 @@ bool specialized_neg_covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_
   return false;
 }
 
-// The profile keys on the really nonzero coefficients, while stored bits may
-// still mark exact zeros (a product's structure): on a miss, retry with the
-// exactly nonzero ones, then with a kernel made for a superset of them.
-template <class T>
-bool specialized_neg_on_exact_bits(const basic_mv<T>& a, basic_mv<T>& r) {
-  const std::uint32_t a_bits = gaphys::ga::exact_bits(a);
-  const std::uint32_t exact = a_bits;
-  if (exact != a.bits && specialized_neg_by_key(exact, a, r)) return true;
-  return specialized_neg_covering(a_bits, a, r);
-}
+template <>
+struct kernels<call::reverse> {
+  static constexpr bool profiled = true;
 
-// Kept small, and the switch forced inline, so that a hit runs inside the mv
-// function (one call in all); only a miss calls the retry.
-template <class T>
-inline bool specialized_neg(const basic_mv<T>& a, basic_mv<T>& r) {
-  return specialized_neg_by_key(a.bits, a, r) || specialized_neg_on_exact_bits(a, r);
-}
-
-template <class T>
-GAPHYS_ALWAYS_INLINE bool specialized_reverse_by_key(std::uint32_t key, const basic_mv<T>& a,
-                                                     basic_mv<T>& r) {
-  switch (key) {
-    case 0x0u:
-      reverse_0(a, r);
-      return true;
-    case 0x1u:
-      reverse_1(a, r);
-      return true;
-    case 0x2u:
-      reverse_2(a, r);
-      return true;
-    case 0x4u:
-      reverse_4(a, r);
-      return true;
-    case 0x6u:
-      reverse_6(a, r);
-      return true;
-    case 0x8u:
-      reverse_8(a, r);
-      return true;
-    case 0xau:
-      reverse_a(a, r);
-      return true;
-    case 0xcu:
-      reverse_c(a, r);
-      return true;
-    case 0xeu:
-      reverse_e(a, r);
-      return true;
-    case 0x20u:
-      reverse_20(a, r);
-      return true;
-    case 0x30u:
-      reverse_30(a, r);
-      return true;
-    case 0x41u:
-      reverse_41(a, r);
-      return true;
-    case 0x70u:
-      reverse_70(a, r);
-      return true;
-    case 0x71u:
-      reverse_71(a, r);
-      return true;
-    default:
-      return false;
+  template <class T>
+  GAPHYS_ALWAYS_INLINE static bool by_key(std::uint32_t key, const basic_mv<T>& a, basic_mv<T>& r) {
+    switch (key) {
+      case 0x0u:
+        reverse_0(a, r);
+        return true;
+      case 0x1u:
+        reverse_1(a, r);
+        return true;
+      case 0x2u:
+        reverse_2(a, r);
+        return true;
+      case 0x4u:
+        reverse_4(a, r);
+        return true;
+      case 0x6u:
+        reverse_6(a, r);
+        return true;
+      case 0x8u:
+        reverse_8(a, r);
+        return true;
+      case 0xau:
+        reverse_a(a, r);
+        return true;
+      case 0xcu:
+        reverse_c(a, r);
+        return true;
+      case 0xeu:
+        reverse_e(a, r);
+        return true;
+      case 0x20u:
+        reverse_20(a, r);
+        return true;
+      case 0x30u:
+        reverse_30(a, r);
+        return true;
+      case 0x41u:
+        reverse_41(a, r);
+        return true;
+      case 0x70u:
+        reverse_70(a, r);
+        return true;
+      case 0x71u:
+        reverse_71(a, r);
+        return true;
+      default:
+        return false;
+    }
   }
-}
 
-// Bitmaps no kernel was made for: the cheapest kernel made for a superset of
-// them. It reads exact zeros where the arguments have no coefficient, so its
-// result is the generic path's; its result bits may mark some exact zeros.
-// Kernels come cheapest first, and the search ends at one costing more than
-// 8 operations per term of the generic path (`work`), which would be
-// faster. Kernels that divide never serve subsets (a divisor that vanishes on
-// the subset is the generic path's to handle).
+  // The cheapest kernel made for a superset of the bits, unless it costs more than
+  // 8 operations per term of the generic path (`work`).
+  template <class T>
+  static bool covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_mv<T>& r);
+};
+
+// Out of the class, so not inline: only the switch is meant to be.
 template <class T>
-bool specialized_reverse_covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_mv<T>& r) {
+bool kernels<call::reverse>::covering(std::uint32_t a_bits, const basic_mv<T>& a, basic_mv<T>& r) {
   const int work = gaphys::ga::bit_count(a_bits);
   if (8 * work < 0) return false;
   if (!(a_bits & ~0x0u)) {
@@ -3460,59 +3315,23 @@ bool specialized_reverse_covering(std::uint32_t a_bits, const basic_mv<T>& a, ba
   return false;
 }
 
-// The profile keys on the really nonzero coefficients, while stored bits may
-// still mark exact zeros (a product's structure): on a miss, retry with the
-// exactly nonzero ones, then with a kernel made for a superset of them.
-template <class T>
-bool specialized_reverse_on_exact_bits(const basic_mv<T>& a, basic_mv<T>& r) {
-  const std::uint32_t a_bits = gaphys::ga::exact_bits(a);
-  const std::uint32_t exact = a_bits;
-  if (exact != a.bits && specialized_reverse_by_key(exact, a, r)) return true;
-  return specialized_reverse_covering(a_bits, a, r);
-}
-
-// Kept small, and the switch forced inline, so that a hit runs inside the mv
-// function (one call in all); only a miss calls the retry.
-template <class T>
-inline bool specialized_reverse(const basic_mv<T>& a, basic_mv<T>& r) {
-  return specialized_reverse_by_key(a.bits, a, r) || specialized_reverse_on_exact_bits(a, r);
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_involute(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
-  switch (a.bits) {
-    default:
-      return false;
-  }
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_conjugate(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
-  switch (a.bits) {
-    default:
-      return false;
-  }
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_dual(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
-  switch (a.bits) {
-    default:
-      return false;
-  }
-}
-
-// No profiled combination: always the generic path.
-template <class T>
-bool specialized_undual(const basic_mv<T>& a, [[maybe_unused]] basic_mv<T>& r) {
-  switch (a.bits) {
-    default:
-      return false;
-  }
-}
+// The hooks the functions on mv ask first (gaphys/ga/mv_dispatch.hpp).
+using gaphys::ga::dispatch::specialized_add;
+using gaphys::ga::dispatch::specialized_apply;
+using gaphys::ga::dispatch::specialized_conjugate;
+using gaphys::ga::dispatch::specialized_dual;
+using gaphys::ga::dispatch::specialized_gp;
+using gaphys::ga::dispatch::specialized_involute;
+using gaphys::ga::dispatch::specialized_join;
+using gaphys::ga::dispatch::specialized_lc;
+using gaphys::ga::dispatch::specialized_meet;
+using gaphys::ga::dispatch::specialized_neg;
+using gaphys::ga::dispatch::specialized_op;
+using gaphys::ga::dispatch::specialized_rc;
+using gaphys::ga::dispatch::specialized_reverse;
+using gaphys::ga::dispatch::specialized_scp;
+using gaphys::ga::dispatch::specialized_sub;
+using gaphys::ga::dispatch::specialized_undual;
 
 }  // namespace detail
 }  // namespace e3ga

@@ -11,7 +11,7 @@
 #include <array>
 #include <cstdint>
 
-static_assert(GAPHYS_GA_RUNTIME_VERSION == 1, "e3ga was generated for gaphys GA runtime version 1");
+static_assert(GAPHYS_GA_RUNTIME_VERSION == 2, "e3ga was generated for gaphys GA runtime version 2");
 
 namespace e3ga {
 
@@ -62,6 +62,102 @@ enum class call : int {
   log,
 };
 
+// The dense path of table_product (a full argument): the products in
+// an orthogonal basis, where each is a signed XOR permutation of blades.
+inline constexpr std::uint8_t orthogonal_to_left_to[] = {
+    0, 1, 2, 4, 3, 5, 6, 7,
+};
+inline constexpr double orthogonal_to_left_scale[] = {
+    1.0, 1.0, 1.0, 1.0, 1.0, -1.0, -1.0, 1.0,
+};
+inline constexpr std::uint8_t orthogonal_to_right_to[] = {
+    0, 1, 2, 4, 3, 5, 6, 7,
+};
+inline constexpr double orthogonal_to_right_scale[] = {
+    1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0,
+};
+inline constexpr std::uint8_t orthogonal_from_to[] = {
+    0, 1, 2, 4, 3, 5, 6, 7,
+};
+inline constexpr double orthogonal_from_scale[] = {
+    1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0,
+};
+inline constexpr gaphys::ga::orthogonal_basis orthogonal_coordinates{
+    {orthogonal_to_left_to, orthogonal_to_left_scale, 0, nullptr, nullptr, nullptr},
+    {orthogonal_to_right_to, orthogonal_to_right_scale, 0, nullptr, nullptr, nullptr},
+    {orthogonal_from_to, orthogonal_from_scale, 0, nullptr, nullptr, nullptr},
+};
+inline constexpr double gp_dense_lanes[] = {
+    1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, -1.0, 1.0, -1.0, -1.0, 1.0, -1.0, 1.0,
+};
+inline constexpr double gp_dense_blocks[] = {
+    1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, -1.0, -1.0, 1.0, 1.0, -1.0, -1.0, 1.0,
+};
+inline constexpr std::uint32_t gp_reach_rows[] = {
+    0xffu, 0xffu, 0xffu, 0xffu, 0xffu, 0xffu, 0xffu, 0xffu,
+};
+inline constexpr std::uint32_t gp_reach_columns[] = {
+    0xffu, 0xffu, 0xffu, 0xffu, 0xffu, 0xffu, 0xffu, 0xffu,
+};
+inline constexpr gaphys::ga::dense_product gp_dense{
+    &orthogonal_coordinates, gp_dense_lanes, gp_dense_blocks, gp_reach_rows, gp_reach_columns};
+inline constexpr double op_dense_lanes[] = {
+    1.0, 1.0, 1.0, 1.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 1.0, -1.0, 0.0, 0.0, 0.0, 1.0,
+};
+inline constexpr double op_dense_blocks[] = {
+    1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, -1.0, -1.0, 1.0, 0.0, 0.0, 0.0, 0.0,
+};
+inline constexpr std::uint32_t op_reach_rows[] = {
+    0xffu, 0xb2u, 0xd4u, 0xe8u, 0x90u, 0xa0u, 0xc0u, 0x80u,
+};
+inline constexpr std::uint32_t op_reach_columns[] = {
+    0xffu, 0xb2u, 0xd4u, 0xe8u, 0x90u, 0xa0u, 0xc0u, 0x80u,
+};
+inline constexpr gaphys::ga::dense_product op_dense{
+    &orthogonal_coordinates, op_dense_lanes, op_dense_blocks, op_reach_rows, op_reach_columns};
+inline constexpr double lc_dense_lanes[] = {
+    1.0, 1.0, 1.0, 1.0, 1.0, 0.0, 1.0, 0.0, 1.0, -1.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0,
+};
+inline constexpr double lc_dense_blocks[] = {
+    1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, -1.0, -1.0, 1.0,
+};
+inline constexpr std::uint32_t lc_reach_rows[] = {
+    0xffu, 0x4du, 0x2bu, 0x17u, 0x9u, 0x5u, 0x3u, 0x1u,
+};
+inline constexpr std::uint32_t lc_reach_columns[] = {
+    0x1u, 0x3u, 0x5u, 0x9u, 0x17u, 0x2bu, 0x4du, 0xffu,
+};
+inline constexpr gaphys::ga::dense_product lc_dense{
+    &orthogonal_coordinates, lc_dense_lanes, lc_dense_blocks, lc_reach_rows, lc_reach_columns};
+inline constexpr double rc_dense_lanes[] = {
+    1.0, 0.0, 0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, -1.0, 1.0, -1.0, 1.0,
+};
+inline constexpr double rc_dense_blocks[] = {
+    1.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, -1.0, -1.0, 1.0, 1.0, -1.0, -1.0, 1.0,
+};
+inline constexpr std::uint32_t rc_reach_rows[] = {
+    0x1u, 0x3u, 0x5u, 0x9u, 0x17u, 0x2bu, 0x4du, 0xffu,
+};
+inline constexpr std::uint32_t rc_reach_columns[] = {
+    0xffu, 0x4du, 0x2bu, 0x17u, 0x9u, 0x5u, 0x3u, 0x1u,
+};
+inline constexpr gaphys::ga::dense_product rc_dense{
+    &orthogonal_coordinates, rc_dense_lanes, rc_dense_blocks, rc_reach_rows, rc_reach_columns};
+inline constexpr double scp_dense_lanes[] = {
+    1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0,
+};
+inline constexpr double scp_dense_blocks[] = {
+    1.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, -1.0, -1.0, 1.0,
+};
+inline constexpr std::uint32_t scp_reach_rows[] = {
+    0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u,
+};
+inline constexpr std::uint32_t scp_reach_columns[] = {
+    0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u, 0x1u,
+};
+inline constexpr gaphys::ga::dense_product scp_dense{
+    &orthogonal_coordinates, scp_dense_lanes, scp_dense_blocks, scp_reach_rows, scp_reach_columns};
+
 // gp of canonical blades i, j: terms [offsets[i * blade_count + j], offsets[... + 1]).
 inline constexpr std::uint16_t gp_offsets[] = {
     0,  1,  2,  3,  4,  5,  6,  7,  8,  9,  10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21,
@@ -78,7 +174,7 @@ inline constexpr gaphys::ga::product_term gp_terms[] = {
     {6, 1.0}, {7, 1.0},  {3, -1.0}, {2, 1.0}, {5, -1.0}, {4, 1.0},  {0, -1.0}, {1, -1.0},
     {7, 1.0}, {6, 1.0},  {5, -1.0}, {4, 1.0}, {3, -1.0}, {2, 1.0},  {1, -1.0}, {0, -1.0},
 };
-inline constexpr gaphys::ga::product_table gp_table{gp_offsets, gp_terms};
+inline constexpr gaphys::ga::product_table gp_table{gp_offsets, gp_terms, &gp_dense};
 
 // op of canonical blades i, j: terms [offsets[i * blade_count + j], offsets[... + 1]).
 inline constexpr std::uint16_t op_offsets[] = {
@@ -91,7 +187,7 @@ inline constexpr gaphys::ga::product_term op_terms[] = {
     {4, 1.0},  {5, 1.0}, {7, 1.0}, {2, 1.0}, {4, -1.0}, {6, 1.0},  {7, -1.0}, {3, 1.0}, {5, -1.0},
     {6, -1.0}, {7, 1.0}, {4, 1.0}, {7, 1.0}, {5, 1.0},  {7, -1.0}, {6, 1.0},  {7, 1.0}, {7, 1.0},
 };
-inline constexpr gaphys::ga::product_table op_table{op_offsets, op_terms};
+inline constexpr gaphys::ga::product_table op_table{op_offsets, op_terms, &op_dense};
 
 // lc of canonical blades i, j: terms [offsets[i * blade_count + j], offsets[... + 1]).
 inline constexpr std::uint16_t lc_offsets[] = {
@@ -104,7 +200,7 @@ inline constexpr gaphys::ga::product_term lc_terms[] = {
     {2, 1.0},  {3, 1.0}, {6, 1.0},  {0, 1.0},  {1, -1.0}, {3, 1.0}, {5, -1.0}, {0, 1.0},  {1, -1.0},
     {2, -1.0}, {4, 1.0}, {0, -1.0}, {3, -1.0}, {0, -1.0}, {2, 1.0}, {0, -1.0}, {1, -1.0}, {0, -1.0},
 };
-inline constexpr gaphys::ga::product_table lc_table{lc_offsets, lc_terms};
+inline constexpr gaphys::ga::product_table lc_table{lc_offsets, lc_terms, &lc_dense};
 
 // rc of canonical blades i, j: terms [offsets[i * blade_count + j], offsets[... + 1]).
 inline constexpr std::uint16_t rc_offsets[] = {
@@ -117,7 +213,7 @@ inline constexpr gaphys::ga::product_term rc_terms[] = {
     {1, 1.0},  {0, -1.0}, {5, 1.0}, {3, -1.0}, {1, 1.0}, {0, -1.0}, {6, 1.0}, {3, -1.0}, {2, 1.0},
     {0, -1.0}, {7, 1.0},  {6, 1.0}, {5, -1.0}, {4, 1.0}, {3, -1.0}, {2, 1.0}, {1, -1.0}, {0, -1.0},
 };
-inline constexpr gaphys::ga::product_table rc_table{rc_offsets, rc_terms};
+inline constexpr gaphys::ga::product_table rc_table{rc_offsets, rc_terms, &rc_dense};
 
 // scp of canonical blades i, j: terms [offsets[i * blade_count + j], offsets[... + 1]).
 inline constexpr std::uint16_t scp_offsets[] = {
@@ -128,7 +224,7 @@ inline constexpr std::uint16_t scp_offsets[] = {
 inline constexpr gaphys::ga::product_term scp_terms[] = {
     {0, 1.0}, {0, 1.0}, {0, 1.0}, {0, 1.0}, {0, -1.0}, {0, -1.0}, {0, -1.0}, {0, -1.0},
 };
-inline constexpr gaphys::ga::product_table scp_table{scp_offsets, scp_terms};
+inline constexpr gaphys::ga::product_table scp_table{scp_offsets, scp_terms, &scp_dense};
 
 // dual of canonical blade i: terms [offsets[i], offsets[i + 1]).
 inline constexpr std::uint16_t dual_offsets[] = {

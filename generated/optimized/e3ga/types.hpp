@@ -17,12 +17,16 @@
 #include "e3ga/tables.hpp"
 
 namespace e3ga {
+namespace detail {
+struct algebra;  // what gaphys/ga/mv_functions.hpp needs of e3ga (mv_functions.hpp)
+}  // namespace detail
 
 // All blade_count coefficients in canonical order, and a bitmap: bit i clear
 // means c[i] == 0 exactly; bit i set means c[i] may be nonzero.
 template <class T>
 struct basic_mv {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = blade_count;
 
   std::array<T, size> c;
@@ -73,6 +77,7 @@ using mv = basic_mv<real>;
 template <class T>
 struct basic_scalar {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 1;
 
   std::array<T, size> c{};  // scalar
@@ -100,6 +105,7 @@ using scalar = basic_scalar<real>;
 template <class T>
 struct basic_vector {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 3;
 
   std::array<T, size> c{};  // e1, e2, e3
@@ -135,6 +141,7 @@ using vector = basic_vector<real>;
 template <class T>
 struct basic_bivector {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 3;
 
   std::array<T, size> c{};  // e12, e13, e23
@@ -170,6 +177,7 @@ using bivector = basic_bivector<real>;
 template <class T>
 struct basic_trivector {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 1;
 
   std::array<T, size> c{};  // e123
@@ -197,6 +205,7 @@ using trivector = basic_trivector<real>;
 template <class T>
 struct basic_rotor {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 4;
 
   std::array<T, size> c{};  // scalar, e12, e13, e23

@@ -2,12 +2,13 @@
 // Spec: specs/c3ga.ga (sha256 dc4346f9365b7039dca38cf91bfe2f491cd87c7bc8ce65f7930fb41c39b2392d)
 // Variant: reference
 // Regenerate: gaphys-gen generate specs/c3ga.ga --variant reference --out generated/reference
-// Functions on the general multivector (table-driven), the overloads that
-// send every other combination of types through it, and the operators.
+// The library functions of c3ga: written once in gaphys/ga/mv_functions.hpp
+// (on basic_mv, the overloads that widen every other combination of types to
+// it, and the operators), and declared here, next to the named-type kernels,
+// so that c3ga::gp(a, b) and argument-dependent lookup find them.
 #pragma once
 
-#include <cmath>
-#include <ostream>
+#include <gaphys/ga/mv_functions.hpp>
 
 #include "c3ga/recording.hpp"
 #include "c3ga/specialized.hpp"
@@ -15,383 +16,79 @@
 #include "c3ga/types.hpp"
 
 namespace c3ga {
-
-// ---- general multivector ------------------------------------------------------
-// Every function first asks detail::specialized_<f> for straight-line code for
-// its arguments' bitmaps (profile-guided, optimized variant only), and reports
-// itself to detail::on_call, which records the call in the instrumented
-// variant; both compile to nothing where they have nothing to do.
-template <class T>
-basic_mv<T> gp(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r(gaphys::ga::uninitialized);
-  if (!detail::specialized_gp(a, b, r)) r = gaphys::ga::table_product(detail::gp_table, a, b);
-  detail::on_call(detail::call::gp, r, a, b);
-  return r;
-}
-template <class T>
-basic_mv<T> op(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r(gaphys::ga::uninitialized);
-  if (!detail::specialized_op(a, b, r)) r = gaphys::ga::table_product(detail::op_table, a, b);
-  detail::on_call(detail::call::op, r, a, b);
-  return r;
-}
-template <class T>
-basic_mv<T> lc(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r(gaphys::ga::uninitialized);
-  if (!detail::specialized_lc(a, b, r)) r = gaphys::ga::table_product(detail::lc_table, a, b);
-  detail::on_call(detail::call::lc, r, a, b);
-  return r;
-}
-template <class T>
-basic_mv<T> rc(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r(gaphys::ga::uninitialized);
-  if (!detail::specialized_rc(a, b, r)) r = gaphys::ga::table_product(detail::rc_table, a, b);
-  detail::on_call(detail::call::rc, r, a, b);
-  return r;
-}
-template <class T>
-T scp(const basic_mv<T>& a, const basic_mv<T>& b) {
-  T r = 0;
-  if (!detail::specialized_scp(a, b, r))
-    r = gaphys::ga::table_product(detail::scp_table, a, b).c[0];
-  detail::on_call(detail::call::scp, r, a, b);
-  return r;
-}
-template <class T>
-basic_mv<T> add(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r(gaphys::ga::uninitialized);
-  if (!detail::specialized_add(a, b, r)) r = gaphys::ga::linear_combination(T(1), a, T(1), b);
-  detail::on_call(detail::call::add, r, a, b);
-  return r;
-}
-template <class T>
-basic_mv<T> sub(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r(gaphys::ga::uninitialized);
-  if (!detail::specialized_sub(a, b, r)) r = gaphys::ga::linear_combination(T(1), a, T(-1), b);
-  detail::on_call(detail::call::sub, r, a, b);
-  return r;
-}
-template <class T>
-basic_mv<T> smul(T s, const basic_mv<T>& a) {
-  basic_mv<T> r = a;
-  for (T& x : r.c) x *= s;
-  detail::on_call(detail::call::smul, r, a);
-  return r;
-}
-template <class T>
-basic_mv<T> neg(const basic_mv<T>& a) {
-  basic_mv<T> r(gaphys::ga::uninitialized);
-  if (detail::specialized_neg(a, r)) return r;
-  r = a;
-  for (T& x : r.c) x = -x;
-  detail::on_call(detail::call::neg, r, a);
-  return r;
-}
-template <class T>
-basic_mv<T> reverse(const basic_mv<T>& a) {
-  basic_mv<T> r(gaphys::ga::uninitialized);
-  if (detail::specialized_reverse(a, r)) return r;
-  r = a;
-  for (int i = 0; i < blade_count; ++i) r.c[i] *= T(detail::reverse_signs[i]);
-  detail::on_call(detail::call::reverse, r, a);
-  return r;
-}
-template <class T>
-basic_mv<T> involute(const basic_mv<T>& a) {
-  basic_mv<T> r(gaphys::ga::uninitialized);
-  if (detail::specialized_involute(a, r)) return r;
-  r = a;
-  for (int i = 0; i < blade_count; ++i) r.c[i] *= T(detail::involute_signs[i]);
-  detail::on_call(detail::call::involute, r, a);
-  return r;
-}
-template <class T>
-basic_mv<T> conjugate(const basic_mv<T>& a) {
-  basic_mv<T> r(gaphys::ga::uninitialized);
-  if (detail::specialized_conjugate(a, r)) return r;
-  r = a;
-  for (int i = 0; i < blade_count; ++i) r.c[i] *= T(detail::conjugate_signs[i]);
-  detail::on_call(detail::call::conjugate, r, a);
-  return r;
-}
-template <class T>
-basic_mv<T> grade(const basic_mv<T>& a, int k) {
-  return gaphys::ga::keep_grades(a, basic_mv<T>::grade_mask(k));
-}
-template <class T>
-basic_mv<T> dual(const basic_mv<T>& a) {
-  basic_mv<T> r(gaphys::ga::uninitialized);
-  if (!detail::specialized_dual(a, r)) r = gaphys::ga::table_linear_map(detail::dual_table, a);
-  detail::on_call(detail::call::dual, r, a);
-  return r;
-}
-template <class T>
-basic_mv<T> undual(const basic_mv<T>& a) {
-  basic_mv<T> r(gaphys::ga::uninitialized);
-  if (!detail::specialized_undual(a, r)) r = gaphys::ga::table_linear_map(detail::undual_table, a);
-  detail::on_call(detail::call::undual, r, a);
-  return r;
-}
-// The functions below are built from the ones above; in the instrumented
-// variant those inner calls are recorded too.
-template <class T>
-T norm2(const basic_mv<T>& a) {
-  const T r = scp(a, reverse(a));
-  detail::on_call(detail::call::norm2, r, a);
-  return r;
-}
-// Versor inverse ~a / <a ~a>_0: exact for blades and versors; throws
-// std::domain_error for a null a (<a ~a>_0 = 0).
-template <class T>
-basic_mv<T> inverse(const basic_mv<T>& a) {
-  const basic_mv<T> r = smul(gaphys::ga::inverse_norm2(norm2(a)), reverse(a));
-  detail::on_call(detail::call::inverse, r, a);
-  return r;
-}
-// Inverse of any invertible multivector; throws std::domain_error if singular.
-template <class T>
-basic_mv<T> general_inverse(const basic_mv<T>& a) {
-  const basic_mv<T> r = gaphys::ga::general_inverse(a);
-  detail::on_call(detail::call::general_inverse, r, a);
-  return r;
-}
-template <class T>
-basic_mv<T> exp(const basic_mv<T>& a) {
-  const basic_mv<T> r = gaphys::ga::exp_general(a);
-  detail::on_call(detail::call::exp, r, a);
-  return r;
-}
 namespace detail {
-// log whose rotation by 2 pi (for a = -1) may only turn in the bivectors of
-// `planes`: a named type's log, whose result must stay in that type.
-template <class T>
-basic_mv<T> log_within(const basic_mv<T>& a, std::uint32_t planes) {
-  const basic_mv<T> r = gaphys::ga::log_general(a, planes);
-  detail::on_call(detail::call::log, r, a);
-  return r;
-}
-}  // namespace detail
-template <class T>
-basic_mv<T> log(const basic_mv<T>& a) {
-  return detail::log_within(a, basic_mv<T>::grade_mask(2));
-}
-// v x v^-1 as v x ~v / <v ~v>_0, keeping the grades x has: a versor preserves grade.
-template <class T>
-basic_mv<T> apply(const basic_mv<T>& v, const basic_mv<T>& x) {
-  basic_mv<T> r(gaphys::ga::uninitialized);  // one result variable on every path: built in place
-  if (!detail::specialized_apply(v, x, r)) {
-    std::uint32_t mask = 0;
-    for (int k = 0; k <= dimension; ++k)
-      if (x.bits & grade_masks[k]) mask |= grade_masks[k];
-    const basic_mv<T> rv = reverse(v);
-    r = smul(T(1) / scp(v, rv), gaphys::ga::keep_grades(gp(gp(v, x), rv), mask));
+
+// c3ga as the functions of gaphys/ga/mv_functions.hpp see it: what
+// the spec decides, and the variant's hooks (profiled kernels, recording).
+struct algebra {
+  template <class T>
+  using mv = basic_mv<T>;
+  template <class X>
+  static constexpr bool holds = is_multivector_v<X>;
+  using call = detail::call;
+  template <call F>
+  using kernels = detail::kernels<F>;
+  template <class... X>
+  static void on_call(call function, const X&... x) {
+    detail::on_call(function, x...);
   }
-  detail::on_call(detail::call::apply, r, v, x);
-  return r;
-}
-namespace detail {
-// a v b, the regressive product: left_complement(right_complement(b) ^
-// right_complement(a)). The complements need no metric, so this works in a
-// degenerate metric too; where I^2 = +-1 it is undual(dual(a) ^ dual(b)).
-template <class T>
-basic_mv<T> regressive(const basic_mv<T>& a, const basic_mv<T>& b) {
-  using gaphys::ga::table_linear_map;
-  return table_linear_map(
-      left_complement_table,
-      gaphys::ga::table_product(op_table, table_linear_map(right_complement_table, b),
-                                table_linear_map(right_complement_table, a)));
-}
-}  // namespace detail
-// c3ga blades are direct ("representation" in the spec):
-// meet and join are the regressive and outer products.
-template <class T>
-basic_mv<T> meet(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r(gaphys::ga::uninitialized);
-  if (!detail::specialized_meet(a, b, r)) r = detail::regressive(a, b);
-  detail::on_call(detail::call::meet, r, a, b);
-  return r;
-}
-template <class T>
-basic_mv<T> join(const basic_mv<T>& a, const basic_mv<T>& b) {
-  basic_mv<T> r(gaphys::ga::uninitialized);
-  if (!detail::specialized_join(a, b, r)) r = gaphys::ga::table_product(detail::op_table, a, b);
-  detail::on_call(detail::call::join, r, a, b);
-  return r;
-}
-template <class T>
-bool approx_equal(const basic_mv<T>& a, const basic_mv<T>& b, T tolerance) {
-  return gaphys::ga::max_abs(sub(a, b)) <= tolerance;
-}
-template <class T>
-std::ostream& operator<<(std::ostream& out, const basic_mv<T>& a) {
-  return gaphys::ga::print(out, a);
-}
 
-// ---- any other combination of types goes through basic_mv ------------------------
-namespace detail {
-template <class A>
-using if_multivector = std::enable_if_t<is_multivector_v<A>, int>;
-template <class A, class B>
-using if_multivectors =
-    std::enable_if_t<is_multivector_v<A> && is_multivector_v<B> &&
-                         std::is_same_v<typename A::scalar_type, typename B::scalar_type>,
-                     int>;
+  static constexpr int dimension = c3ga::dimension;
+  // c3ga blades are direct ("representation" in the spec): meet and join are
+  // the regressive and outer products.
+  static constexpr bool meet_is_regressive = true;
+  static constexpr const auto& gp_table = detail::gp_table;
+  static constexpr const auto& op_table = detail::op_table;
+  static constexpr const auto& lc_table = detail::lc_table;
+  static constexpr const auto& rc_table = detail::rc_table;
+  static constexpr const auto& scp_table = detail::scp_table;
+  static constexpr const auto& dual_table = detail::dual_table;
+  static constexpr const auto& undual_table = detail::undual_table;
+  static constexpr const auto& left_complement_table = detail::left_complement_table;
+  static constexpr const auto& right_complement_table = detail::right_complement_table;
+  static constexpr const auto& reverse_signs = detail::reverse_signs;
+  static constexpr const auto& involute_signs = detail::involute_signs;
+  static constexpr const auto& conjugate_signs = detail::conjugate_signs;
+};
+
+using gaphys::ga::api::log_within;  // a named type's log
+using gaphys::ga::api::regressive;
+
 }  // namespace detail
 
-template <class A, detail::if_multivector<A> = 0>
-basic_mv<typename A::scalar_type> to_mv(const A& a) {
-  return basic_mv<typename A::scalar_type>(a);
-}
-
-template <class A, class B, detail::if_multivectors<A, B> = 0>
-basic_mv<typename A::scalar_type> gp(const A& a, const B& b) {
-  return gp(to_mv(a), to_mv(b));
-}
-template <class A, class B, detail::if_multivectors<A, B> = 0>
-basic_mv<typename A::scalar_type> op(const A& a, const B& b) {
-  return op(to_mv(a), to_mv(b));
-}
-template <class A, class B, detail::if_multivectors<A, B> = 0>
-basic_mv<typename A::scalar_type> lc(const A& a, const B& b) {
-  return lc(to_mv(a), to_mv(b));
-}
-template <class A, class B, detail::if_multivectors<A, B> = 0>
-basic_mv<typename A::scalar_type> rc(const A& a, const B& b) {
-  return rc(to_mv(a), to_mv(b));
-}
-template <class A, class B, detail::if_multivectors<A, B> = 0>
-basic_mv<typename A::scalar_type> add(const A& a, const B& b) {
-  return add(to_mv(a), to_mv(b));
-}
-template <class A, class B, detail::if_multivectors<A, B> = 0>
-basic_mv<typename A::scalar_type> sub(const A& a, const B& b) {
-  return sub(to_mv(a), to_mv(b));
-}
-template <class A, class B, detail::if_multivectors<A, B> = 0>
-basic_mv<typename A::scalar_type> apply(const A& a, const B& b) {
-  return apply(to_mv(a), to_mv(b));
-}
-template <class A, class B, detail::if_multivectors<A, B> = 0>
-basic_mv<typename A::scalar_type> meet(const A& a, const B& b) {
-  return meet(to_mv(a), to_mv(b));
-}
-template <class A, class B, detail::if_multivectors<A, B> = 0>
-basic_mv<typename A::scalar_type> join(const A& a, const B& b) {
-  return join(to_mv(a), to_mv(b));
-}
-template <class A, class B, detail::if_multivectors<A, B> = 0>
-typename A::scalar_type scp(const A& a, const B& b) {
-  return scp(to_mv(a), to_mv(b));
-}
-template <class A, detail::if_multivector<A> = 0>
-basic_mv<typename A::scalar_type> neg(const A& a) {
-  return neg(to_mv(a));
-}
-template <class A, detail::if_multivector<A> = 0>
-basic_mv<typename A::scalar_type> general_inverse(const A& a) {
-  return general_inverse(to_mv(a));
-}
-template <class A, detail::if_multivector<A> = 0>
-basic_mv<typename A::scalar_type> exp(const A& a) {
-  return exp(to_mv(a));
-}
-template <class A, detail::if_multivector<A> = 0>
-basic_mv<typename A::scalar_type> log(const A& a) {
-  return log(to_mv(a));
-}
-template <class A, detail::if_multivector<A> = 0>
-basic_mv<typename A::scalar_type> inverse(const A& a) {
-  return inverse(to_mv(a));
-}
-template <class A, detail::if_multivector<A> = 0>
-basic_mv<typename A::scalar_type> reverse(const A& a) {
-  return reverse(to_mv(a));
-}
-template <class A, detail::if_multivector<A> = 0>
-basic_mv<typename A::scalar_type> involute(const A& a) {
-  return involute(to_mv(a));
-}
-template <class A, detail::if_multivector<A> = 0>
-basic_mv<typename A::scalar_type> conjugate(const A& a) {
-  return conjugate(to_mv(a));
-}
-template <class A, detail::if_multivector<A> = 0>
-basic_mv<typename A::scalar_type> dual(const A& a) {
-  return dual(to_mv(a));
-}
-template <class A, detail::if_multivector<A> = 0>
-basic_mv<typename A::scalar_type> undual(const A& a) {
-  return undual(to_mv(a));
-}
-template <class A, detail::if_multivector<A> = 0>
-typename A::scalar_type norm2(const A& a) {
-  return norm2(to_mv(a));
-}
-template <class A, detail::if_multivector<A> = 0>
-basic_mv<typename A::scalar_type> smul(typename A::scalar_type s, const A& a) {
-  return smul(s, to_mv(a));
-}
-template <class A, detail::if_multivector<A> = 0>
-basic_mv<typename A::scalar_type> grade(const A& a, int k) {
-  return grade(to_mv(a), k);
-}
-template <class A, class B, detail::if_multivectors<A, B> = 0>
-bool approx_equal(const A& a, const B& b, typename A::scalar_type tolerance) {
-  return approx_equal(to_mv(a), to_mv(b), tolerance);
-}
-template <class A, detail::if_multivector<A> = 0>
-std::ostream& operator<<(std::ostream& out, const A& a) {
-  return gaphys::ga::print(out, to_mv(a));
-}
-
-// ---- derived from the above, for every type -----------------------------------------
-// sqrt(|<a ~a>_0|)
-template <class A, detail::if_multivector<A> = 0>
-typename A::scalar_type norm(const A& a) {
-  using std::abs, std::sqrt;
-  return sqrt(abs(norm2(a)));
-}
-template <class A, detail::if_multivector<A> = 0>
-auto unit(const A& a) {
-  return smul(typename A::scalar_type(1) / norm(a), a);
-}
-
-// ---- operators (precedence trap: ^ binds looser than +, - and ==) -----------------
-template <class A, class B, detail::if_multivectors<A, B> = 0>
-auto operator*(const A& a, const B& b) {
-  return gp(a, b);
-}
-template <class A, class B, detail::if_multivectors<A, B> = 0>
-auto operator^(const A& a, const B& b) {
-  return op(a, b);
-}
-template <class A, class B, detail::if_multivectors<A, B> = 0>
-auto operator+(const A& a, const B& b) {
-  return add(a, b);
-}
-template <class A, class B, detail::if_multivectors<A, B> = 0>
-auto operator-(const A& a, const B& b) {
-  return sub(a, b);
-}
-template <class A, detail::if_multivector<A> = 0>
-auto operator-(const A& a) {
-  return neg(a);
-}
-template <class A, detail::if_multivector<A> = 0>
-auto operator~(const A& a) {
-  return reverse(a);
-}
-template <class A, detail::if_multivector<A> = 0>
-auto operator*(typename A::scalar_type s, const A& a) {
-  return smul(s, a);
-}
-template <class A, detail::if_multivector<A> = 0>
-auto operator*(const A& a, typename A::scalar_type s) {
-  return smul(s, a);
-}
-template <class A, detail::if_multivector<A> = 0>
-auto operator/(const A& a, typename A::scalar_type s) {
-  return smul(typename A::scalar_type(1) / s, a);
-}
+using gaphys::ga::api::add;
+using gaphys::ga::api::apply;
+using gaphys::ga::api::approx_equal;
+using gaphys::ga::api::conjugate;
+using gaphys::ga::api::dual;
+using gaphys::ga::api::exp;
+using gaphys::ga::api::general_inverse;
+using gaphys::ga::api::gp;
+using gaphys::ga::api::grade;
+using gaphys::ga::api::inverse;
+using gaphys::ga::api::involute;
+using gaphys::ga::api::join;
+using gaphys::ga::api::lc;
+using gaphys::ga::api::log;
+using gaphys::ga::api::meet;
+using gaphys::ga::api::neg;
+using gaphys::ga::api::norm;
+using gaphys::ga::api::norm2;
+using gaphys::ga::api::op;
+using gaphys::ga::api::rc;
+using gaphys::ga::api::reverse;
+using gaphys::ga::api::scp;
+using gaphys::ga::api::smul;
+using gaphys::ga::api::sub;
+using gaphys::ga::api::to_mv;
+using gaphys::ga::api::undual;
+using gaphys::ga::api::unit;
+using gaphys::ga::api::operator<<;
+using gaphys::ga::api::operator*;
+using gaphys::ga::api::operator^;
+using gaphys::ga::api::operator+;
+using gaphys::ga::api::operator-;
+using gaphys::ga::api::operator~;
+using gaphys::ga::api::operator/;
 
 }  // namespace c3ga

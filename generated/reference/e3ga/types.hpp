@@ -16,12 +16,16 @@
 #include "e3ga/tables.hpp"
 
 namespace e3ga {
+namespace detail {
+struct algebra;  // what gaphys/ga/mv_functions.hpp needs of e3ga (mv_functions.hpp)
+}  // namespace detail
 
 // All blade_count coefficients in canonical order, and a bitmap: bit i clear
 // means c[i] == 0 exactly; bit i set means c[i] may be nonzero.
 template <class T>
 struct basic_mv {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = blade_count;
 
   std::array<T, size> c;
@@ -72,6 +76,7 @@ using mv = basic_mv<real>;
 template <class T>
 struct basic_scalar {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 1;
 
   std::array<T, size> c{};  // scalar
@@ -99,6 +104,7 @@ using scalar = basic_scalar<real>;
 template <class T>
 struct basic_vector {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 3;
 
   std::array<T, size> c{};  // e1, e2, e3
@@ -134,6 +140,7 @@ using vector = basic_vector<real>;
 template <class T>
 struct basic_bivector {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 3;
 
   std::array<T, size> c{};  // e12, e13, e23
@@ -169,6 +176,7 @@ using bivector = basic_bivector<real>;
 template <class T>
 struct basic_trivector {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 1;
 
   std::array<T, size> c{};  // e123
@@ -196,6 +204,7 @@ using trivector = basic_trivector<real>;
 template <class T>
 struct basic_rotor {
   using scalar_type = T;
+  using algebra = detail::algebra;
   static constexpr int size = 4;
 
   std::array<T, size> c{};  // scalar, e12, e13, e23

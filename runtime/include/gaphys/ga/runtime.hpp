@@ -3,6 +3,8 @@
 
 #include "mv_algorithms.hpp"
 #include "compiler.hpp"
+#include "mv_dispatch.hpp"
+#include "mv_functions.hpp"
 #include "scalar_functions.hpp"
 #include "table_product.hpp"
 #include "uninitialized.hpp"

@@ -2,4 +2,4 @@
 // header generated for another runtime fails loudly instead of misbehaving.
 #pragma once
 
-#define GAPHYS_GA_RUNTIME_VERSION 1
+#define GAPHYS_GA_RUNTIME_VERSION 2
