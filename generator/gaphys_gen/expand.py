@@ -317,11 +317,11 @@ def expand(algebra: Algebra) -> list[Kernel]:
     expander = Expander(algebra)
     kernels: dict[tuple, Kernel] = {}
 
-    def add(function: str, arguments: tuple[NamedType, ...], location=None):
+    def add(function: str, arguments: tuple[NamedType, ...], location=None, only_nonzero=False):
         key = (function, tuple(a.name for a in arguments))
         if key not in kernels:
             kernel = expander.kernel(function, arguments, location)
-            if kernel is not None:
+            if kernel is not None and (not only_nonzero or any(not poly.is_zero() for _, poly in kernel.outputs)):
                 kernels[key] = kernel
 
     for named in algebra.types:
@@ -340,10 +340,7 @@ def expand(algebra: Algebra) -> list[Kernel]:
     for function in every_pair:
         for a in algebra.types:
             for b in algebra.types:
-                if (function, (a.name, b.name)) not in kernels:
-                    kernel = expander.kernel(function, (a, b))
-                    if kernel is not None and any(not poly.is_zero() for _, poly in kernel.outputs):
-                        kernels[(function, (a.name, b.name))] = kernel
+                add(function, (a, b), only_nonzero=True)
     return list(kernels.values())
 
 

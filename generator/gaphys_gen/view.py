@@ -98,9 +98,9 @@ def return_type(kernel: Kernel) -> str:
     return type_cpp(kernel.result.named) + "<T>"
 
 
-def cost_text(kernel: Kernel) -> str:
-    """': 16 mul, 12 add' (', 1 div'): what the kernel's comment states."""
-    muls, adds = cpp.count(kernel.polys)
+def cost_text(kernel: Kernel, muls: int, adds: int) -> str:
+    """': 16 mul, 12 add' (', 1 div'): what the kernel's comment states, from
+    cpp.count of its polynomials."""
     if kernel.divisor is None:
         return f": {muls} mul, {adds} add"
     return f": {muls + len(kernel.outputs)} mul, {adds} add, 1 div"  # each output times 1/divisor
@@ -146,8 +146,8 @@ def kernel_view(kernel: Kernel) -> dict:
         via_mv = call
     extra = {"exp_closed": ", 1 exp_of_square", "log_closed": ", 1 log_factor", "via_mv": " (general mv path)"}
     result_name = kernel.result.named.name if kernel.result.named else ("scalar" if kernel.result.kind == "scalar" else "mv")
-    cost = "" if kernel.form == "via_mv" else cost_text(kernel)
     muls, adds = cpp.count(kernel.polys)
+    cost = "" if kernel.form == "via_mv" else cost_text(kernel, muls, adds)
     return {
         "form": kernel.form,
         "inline": "GAPHYS_ALWAYS_INLINE " if muls + adds <= INLINE_OPERATION_LIMIT else "",
@@ -221,7 +221,7 @@ def mv_kernel_view(algebra: Algebra, mk) -> dict:
         body += [f"r.bits = {hex(kernel.mv_bits)}u;"]
     return {
         "name": mk.name,
-        "comment": f"{mk.function} on mv {shown}{cost_text(kernel)} ({mk.calls} profiled calls)",
+        "comment": f"{mk.function} on mv {shown}{cost_text(kernel, *cpp.count(kernel.polys))} ({mk.calls} profiled calls)",
         # Restrict: the result is never an argument (see gaphys/ga/compiler.hpp).
         "params": ", ".join(
             ("" if letter in read else "[[maybe_unused]] ") + f"const basic_mv<T>& GAPHYS_RESTRICT {letter}"
