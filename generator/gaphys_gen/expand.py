@@ -82,6 +82,7 @@ class Expander:
         pseudoscalar = (1 << len(algebra.basis)) - 1
         self.full = pseudoscalar
         norm = dict(self.products.gp(pseudoscalar, pseudoscalar)).get(0, Fraction(0))
+        self.pseudoscalar_square = norm
         # A degenerate metric (I^2 = 0) has no I^-1: its dual is the complement.
         self.has_dual = norm != 0
         self.pseudoscalar = {pseudoscalar: Poly.constant(1)}

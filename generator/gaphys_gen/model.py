@@ -13,7 +13,12 @@ from . import syntax as ast
 from .blades import BladeAlgebra, Multivector, grade, reorder_sign
 from .errors import Location, SpecError
 
-MAX_DIMENSION = 5  # run-time bitmaps are 32-bit: one bit per basis blade
+MAX_DIMENSION = 16  # blades are 32-bit bitmaps at run time; 16 is the 15-D quadric conformal algebra and one more
+# Up to this many basis vectors (32 blades) the general mv is dense: every
+# coefficient in an array, a 32-bit bitmap of those that may be nonzero, and
+# product tables. Above it, the mv holds a sorted list of terms and multiplies
+# them bitwise (gaphys/ga/sparse_mv.hpp): no 2^n x 2^n table anywhere.
+DENSE_MAX_DIMENSION = 5
 
 BINARY_FUNCTIONS = ("gp", "op", "lc", "rc", "scp", "add", "sub", "meet", "join", "apply")
 UNARY_FUNCTIONS = ("neg", "reverse", "involute", "conjugate", "dual", "undual", "norm2", "inverse", "exp", "log")
@@ -27,7 +32,7 @@ _CPP_RESERVED = set(
     operator or or_eq private protected public register reinterpret_cast requires return short signed
     sizeof static static_assert static_cast struct switch template this thread_local throw true try
     typedef typeid typename union unsigned using virtual void volatile wchar_t while xor xor_eq
-    mv real std blade_count dimension""".split()
+    mv real std blade_count dimension algebra basis_names""".split()
 )
 _LIBRARY_NAMES = set(FUNCTION_ARITY) | {
     "norm", "unit", "grade", "general_inverse", "approx_equal", "blade_names", "blade_grades",
@@ -108,6 +113,11 @@ class Algebra:
     @property
     def blade_count(self) -> int:
         return len(self.blades)
+
+    @property
+    def sparse(self) -> bool:
+        """The general mv is a sparse list of terms (gaphys/ga/sparse_mv.hpp)."""
+        return len(self.basis) > DENSE_MAX_DIMENSION
 
     def blade_by_bitmap(self, bitmap: int) -> Blade:
         return self._by_bitmap[bitmap]

@@ -216,3 +216,30 @@ def dense_tables(algebra, canonical: dict) -> dict | None:
             "reach_columns": [hex(m) + "u" for m in reach_columns],
         }
     return view
+
+
+def sparse_basis(algebra) -> dict:
+    """The view of a sparse algebra's orthogonal basis (gaphys::ga::
+    sparse_orthogonal_basis): the changes between the spec's basis and an
+    orthogonal one, vector by vector, and the squares of the orthogonal
+    vectors. The runtime maps blades by their outermorphisms."""
+    f = orthogonalize(algebra.metric)
+    n = len(f)
+    to_orthogonal = _inverse(f)  # to_orthogonal[i][k]: f_k's part of e_i
+
+    def vector_map(columns):
+        offsets, vectors, coefficients = [0], [], []
+        for column in columns:
+            for k, value in enumerate(column):
+                if value:
+                    vectors.append(k)
+                    coefficients.append(repr(float(value)))
+            offsets.append(len(vectors))
+        return {"offsets": offsets, "vectors": vectors, "coefficients": coefficients}
+
+    return {
+        "identity": all(f[k][i] == (1 if i == k else 0) for k in range(n) for i in range(n)),
+        "squares": [repr(float(_bilinear(algebra.metric, v, v))) for v in f],
+        "to_orthogonal": vector_map(to_orthogonal),
+        "from_orthogonal": vector_map(f),
+    }

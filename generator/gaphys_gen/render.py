@@ -13,7 +13,7 @@ import jinja2
 from . import VERSION, profile, view
 from .errors import UsageError
 from .expand import expand, expand_profile
-from .model import Algebra
+from .model import DENSE_MAX_DIMENSION, Algebra
 
 VARIANTS = ("reference", "instrumented", "optimized")
 
@@ -37,15 +37,17 @@ def environment() -> jinja2.Environment:
     )
 
 
-def files_for(variant: str) -> list[tuple[str, str]]:
-    """(template, file name inside the algebra's folder) pairs."""
+def files_for(variant: str, sparse: bool = False) -> list[tuple[str, str]]:
+    """(template, file name inside the algebra's folder) pairs. A sparse
+    algebra records no calls: its mv kernels would key on 2^n-bit bitmaps."""
+    recording = "off" if sparse else _RECORDING[variant]
     return [
         ("algebra.hpp.j2", "{ns}.hpp"),
         ("tables.hpp.j2", "tables.hpp"),
         ("types.hpp.j2", "types.hpp"),
         ("mv_functions.hpp.j2", "mv_functions.hpp"),
         (f"kernels_{_KERNELS[variant]}.hpp.j2", "kernels.hpp"),
-        (f"recording_{_RECORDING[variant]}.hpp.j2", "recording.hpp"),
+        (f"recording_{recording}.hpp.j2", "recording.hpp"),
         ("specialized.hpp.j2", "specialized.hpp"),
     ]
 
@@ -86,6 +88,10 @@ def render(algebra: Algebra, variant: str, namespace: str, command: str,
     if profile_path is not None:
         if variant != "optimized":
             raise UsageError("--profile goes with --variant optimized")
+        if algebra.sparse:
+            raise UsageError(f"--profile: {algebra.name} has {len(algebra.basis)} basis vectors; profiled mv kernels "
+                             f"are made for algebras of at most {DENSE_MAX_DIMENSION} (the sparse mv of a larger one "
+                             f"takes the bitwise path, and its named types have kernels without a profile)")
         recorded = profile.load(profile_path, algebra)
         chosen = profile.select(recorded, coverage)
         mv_kernels = expand_profile(algebra, chosen)
@@ -96,7 +102,7 @@ def render(algebra: Algebra, variant: str, namespace: str, command: str,
                        mv_kernels)
     env = environment()
     files = {}
-    for template, name in files_for(variant):
+    for template, name in files_for(variant, algebra.sparse):
         text = env.get_template(template).render(**model)
         files[f"{namespace}/{name.format(ns=namespace)}"] = clang_format(text, formatter)
     return files

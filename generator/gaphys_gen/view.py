@@ -4,13 +4,15 @@ Templates only loop and print; every decision about the algebra (result
 types, expressions, counts, table contents) is made here.
 """
 
+import functools
+import operator
 from fractions import Fraction
 
 from . import VERSION, cpp, profile
 from .blades import PRODUCTS, conjugate_sign, involute_sign, left_complement, reverse_sign, right_complement
 from .expand import OPERATIONS_PER_GENERIC_TERM, SPECIALIZABLE, Expander, Kernel, generic_work_kind
 from .model import Algebra, NamedType
-from .orthogonal import dense_tables
+from .orthogonal import dense_tables, sparse_basis
 from .symbolic import Poly
 
 # Functions with a generic (mv) implementation that returns a scalar.
@@ -62,18 +64,30 @@ def tables(algebra: Algebra, expander: Expander) -> dict:
     return {"products": products, "linear": linear, "complements": complements, "signs": signs, "dense": dense}
 
 
-def named_type(named: NamedType) -> dict:
+def sparse_tables(expander: Expander) -> dict:
+    """What a sparse algebra's products and maps need (gaphys/ga/sparse_mv.hpp):
+    its orthogonal basis and I^2, in place of the product tables."""
+    return {"basis": sparse_basis(expander.algebra), "pseudoscalar_square": repr(float(expander.pseudoscalar_square))}
+
+
+def grade_bit(bitmap: int) -> int:
+    """A sparse mv's bit for the grade of a blade."""
+    return 1 << bin(bitmap).count("1")
+
+
+def named_type(named: NamedType, sparse: bool) -> dict:
     coordinates, stored = [], 0
     for c in named.coordinates:
         coordinates.append(
             {
                 "accessor": c.accessor,
                 "blade_index": c.blade.index,
+                "blade": hex(c.blade.bitmap) + "u",
                 "blade_name": c.blade.name,
                 "sign": "" if c.sign > 0 else "-",
                 "stored_index": None if c.constant is not None else stored,
                 "constant": None if c.constant is None else cpp.number(c.constant),
-                "bit": hex(1 << c.blade.index) + "u",
+                "bit": hex(grade_bit(c.blade.bitmap) if sparse else 1 << c.blade.index) + "u",
             }
         )
         stored += c.constant is None
@@ -85,7 +99,9 @@ def named_type(named: NamedType) -> dict:
         "coordinates": coordinates,
         "stored": [c for c in coordinates if c["stored_index"] is not None],
         "constants": [c for c in coordinates if c["constant"] is not None],
-        "constant_bits": hex(sum(1 << c.blade.index for c in named.coordinates if c.constant is not None)) + "u",
+        "constant_bits": hex(functools.reduce(operator.or_, (
+            grade_bit(c.blade.bitmap) if sparse else 1 << c.blade.index
+            for c in named.coordinates if c.constant is not None), 0)) + "u",
         "description": ", ".join(c.name + ("" if c.constant is None else f" = {c.constant}") for c in named.coordinates),
     }
 
@@ -119,7 +135,7 @@ def variables_read(polys) -> set[str]:
 INLINE_OPERATION_LIMIT = 256
 
 
-def kernel_view(kernel: Kernel) -> dict:
+def kernel_view(algebra: Algebra, kernel: Kernel) -> dict:
     names = [a.name for a in kernel.arguments]
     # An argument the expansion never reads (pga3d norm2 of a point with
     # e123 = 1 is the constant 1) is marked, so -Wunused-parameter stays quiet.
@@ -136,12 +152,16 @@ def kernel_view(kernel: Kernel) -> dict:
     call = f"{kernel.function}({', '.join(mv_args)})"
     if kernel.function == "log" and kernel.result.kind == "named":
         # -1 turns by 2 pi in a plane of the result's type, or has no log in it.
-        planes = sum(1 << c.blade.index for c in kernel.result.named.coordinates)
-        call = f"detail::log_within({', '.join(mv_args)}, {hex(planes)}u)"
+        if algebra.sparse:
+            blades = ", ".join(hex(c.blade.bitmap) + "u" for c in kernel.result.named.coordinates)
+            planes = f"gaphys::ga::plane_list{{{{{blades}}}}}"
+        else:
+            planes = hex(sum(1 << c.blade.index for c in kernel.result.named.coordinates)) + "u"
+        call = f"detail::log_within({', '.join(mv_args)}, {planes})"
     if kernel.result.kind == "named":
         via_mv = f"{rtype}({call})"
     elif kernel.result.kind == "scalar" and kernel.function not in SCALAR_GENERIC:
-        via_mv = f"{call}.c[0]"
+        via_mv = f"gaphys::ga::scalar_part({call})"
     else:
         via_mv = call
     extra = {"exp_closed": ", 1 exp_of_square", "log_closed": ", 1 log_factor", "via_mv": " (general mv path)"}
@@ -159,7 +179,9 @@ def kernel_view(kernel: Kernel) -> dict:
         "result_kind": kernel.result.kind,
         # The value each output returns: divided by the kernel's divisor when it has one.
         "outputs": [
-            {"index": i, "value": f"({cpp.expression(p)}) * inv" if kernel.divisor is not None else cpp.expression(p)}
+            {"index": i, "value": f"({cpp.expression(p)}) * inv" if kernel.divisor is not None else cpp.expression(p),
+             # a sparse mv's blade (mv results only)
+             "blade": hex(algebra.blades[i].bitmap) + "u" if kernel.result.kind == "mv" else None}
             for i, p in kernel.outputs
         ],
         "temporaries": [{"name": n, "expr": cpp.expression(p)} for n, p in kernel.temporaries],
@@ -172,7 +194,9 @@ def kernel_view(kernel: Kernel) -> dict:
         "cosine": cpp.expression(kernel.cosine) if kernel.cosine is not None else None,
         "size2": cpp.expression(kernel.size2) if kernel.size2 is not None else None,
         "fallback_index": kernel.log_fallback_output,
-        "mv_bits": hex(kernel.mv_bits) + "u",
+        "mv_bits": hex(functools.reduce(operator.or_, (grade_bit(algebra.blades[i].bitmap) for i, _ in kernel.outputs), 0)
+                       if algebra.sparse else kernel.mv_bits) + "u",
+        "sparse": algebra.sparse,
         "via_mv": via_mv,
     }
 
@@ -309,9 +333,12 @@ def constant_view(algebra: Algebra, expander: Expander, constant) -> dict:
         named = rtype.named
         args = [cpp.number(Fraction(c.sign) * value.get(c.blade.bitmap, Fraction(0))) for c in named.stored]
         return {"name": constant.name, "type": type_cpp(named) + "<T>", "init": "{" + ", ".join(args) + "}"}
-    entries = ", ".join(f"{{{algebra.blade_by_bitmap(b).index}, {cpp.number(v)}}}" for b, v in sorted(value.items()))
     if rtype.kind == "scalar":
         return {"name": constant.name, "type": "T", "init": f"({cpp.number(value.get(0, Fraction(0)))})"}
+    if algebra.sparse:
+        entries = ", ".join(f"{{{hex(b)}u, {cpp.number(v)}}}" for b, v in sorted(value.items()))
+        return {"name": constant.name, "type": "basic_mv<T>", "init": f"(basic_mv<T>::from_blades({{{entries}}}))"}
+    entries = ", ".join(f"{{{algebra.blade_by_bitmap(b).index}, {cpp.number(v)}}}" for b, v in sorted(value.items()))
     return {"name": constant.name, "type": "basic_mv<T>", "init": f"(basic_mv<T>::from_terms({{{entries}}}))"}
 
 
@@ -336,9 +363,13 @@ def build(algebra: Algebra, kernels: list[Kernel], variant: str, banner: list[st
         "dimension": len(algebra.basis),
         "blade_count": algebra.blade_count,
         "basis": list(algebra.basis),
-        "blades": [{"index": b.index, "name": b.name, "grade": b.grade} for b in algebra.blades],
+        "sparse": algebra.sparse,
+        # A sparse algebra names its blades at run time, from the basis.
+        "blades": [] if algebra.sparse else [{"index": b.index, "name": b.name, "grade": b.grade} for b in algebra.blades],
+        # Per grade: the canonical-index bits of its blades (dense), or its own bit (sparse).
         "grade_masks": [
-            hex(sum(1 << b.index for b in algebra.blades if b.grade == k)) + "u" for k in range(len(algebra.basis) + 1)
+            hex(1 << k if algebra.sparse else sum(1 << b.index for b in algebra.blades if b.grade == k)) + "u"
+            for k in range(len(algebra.basis) + 1)
         ],
         "has_dual": expander.has_dual,
         "representation": algebra.representation,
@@ -352,11 +383,11 @@ def build(algebra: Algebra, kernels: list[Kernel], variant: str, banner: list[st
         "table_names": [f"{kind}_table" for kind in PRODUCTS] + ["dual_table", "undual_table", "left_complement_table",
                                                                 "right_complement_table", "reverse_signs",
                                                                 "involute_signs", "conjugate_signs"],
-        "tables": tables(algebra, expander),
-        "types": [named_type(t) for t in algebra.types],
+        "tables": sparse_tables(expander) if algebra.sparse else tables(algebra, expander),
+        "types": [named_type(t, algebra.sparse) for t in algebra.types],
         "aliases": [{"name": a, "target": "basic_" + t} for a, t in algebra.aliases.items()],
         "constants": [constant_view(algebra, expander, c) for c in algebra.constants],
-        "kernels": [kernel_view(k) for k in kernels],
+        "kernels": [kernel_view(algebra, k) for k in kernels],
         "spec_hash": algebra.spec_hash,
         "generator_version": VERSION,
         "recorded_functions": [{"name": f, "arity": n} for f, n in profile.RECORDED_ARITY.items()],

@@ -66,10 +66,19 @@ class DeclarationErrors(SpecErrorAssertions, unittest.TestCase):
         self.assertSpecError("algebra t\nbasis e1 e2 e1\n", 2, 13, "basis vector 'e1' declared twice")
 
     def test_too_many_basis_vectors(self):
-        self.assertSpecError("algebra t\nbasis a b c d e f\n", 2, 17, "at most 5 basis vectors")
+        names = " ".join(f"v{i}" for i in range(17))
+        self.assertSpecError(f"algebra t\nbasis {names}\n", 2, 61, "at most 16 basis vectors")
 
-    def test_five_basis_vectors_are_allowed(self):
-        self.assertEqual(load_text("algebra t\nbasis a b c d e\n").blade_count, 32)
+    def test_sixteen_basis_vectors_are_allowed(self):
+        names = " ".join(f"v{i}" for i in range(16))
+        algebra = load_text(f"algebra t\nbasis {names}\n")
+        self.assertEqual(algebra.blade_count, 1 << 16)
+        self.assertTrue(algebra.sparse)
+
+    def test_five_basis_vectors_are_dense(self):
+        algebra = load_text("algebra t\nbasis a b c d e\n")
+        self.assertEqual(algebra.blade_count, 32)
+        self.assertFalse(algebra.sparse)
 
     def test_missing_algebra_statement(self):
         self.assertSpecError("basis e1 e2\n", 1, 1, "missing 'algebra' statement", shows_source=False)

@@ -14,25 +14,25 @@ namespace e3ga {
 // neg(scalar) -> scalar
 template <class T>
 T neg(const basic_scalar<T>& a) {
-  return neg(basic_mv<T>(a)).c[0];
+  return gaphys::ga::scalar_part(neg(basic_mv<T>(a)));
 }
 
 // reverse(scalar) -> scalar
 template <class T>
 T reverse(const basic_scalar<T>& a) {
-  return reverse(basic_mv<T>(a)).c[0];
+  return gaphys::ga::scalar_part(reverse(basic_mv<T>(a)));
 }
 
 // involute(scalar) -> scalar
 template <class T>
 T involute(const basic_scalar<T>& a) {
-  return involute(basic_mv<T>(a)).c[0];
+  return gaphys::ga::scalar_part(involute(basic_mv<T>(a)));
 }
 
 // conjugate(scalar) -> scalar
 template <class T>
 T conjugate(const basic_scalar<T>& a) {
-  return conjugate(basic_mv<T>(a)).c[0];
+  return gaphys::ga::scalar_part(conjugate(basic_mv<T>(a)));
 }
 
 // norm2(scalar) -> scalar
@@ -44,7 +44,7 @@ T norm2(const basic_scalar<T>& a) {
 // inverse(scalar) -> scalar
 template <class T>
 T inverse(const basic_scalar<T>& a) {
-  return inverse(basic_mv<T>(a)).c[0];
+  return gaphys::ga::scalar_part(inverse(basic_mv<T>(a)));
 }
 
 // dual(scalar) -> trivector
@@ -62,19 +62,19 @@ basic_trivector<T> undual(const basic_scalar<T>& a) {
 // smul(scalar, scalar) -> scalar
 template <class T>
 T smul(T s, const basic_scalar<T>& a) {
-  return smul(s, basic_mv<T>(a)).c[0];
+  return gaphys::ga::scalar_part(smul(s, basic_mv<T>(a)));
 }
 
 // add(scalar, scalar) -> scalar
 template <class T>
 T add(const basic_scalar<T>& a, const basic_scalar<T>& b) {
-  return add(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(add(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // sub(scalar, scalar) -> scalar
 template <class T>
 T sub(const basic_scalar<T>& a, const basic_scalar<T>& b) {
-  return sub(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(sub(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // neg(vector) -> vector
@@ -248,13 +248,13 @@ basic_trivector<T> inverse(const basic_trivector<T>& a) {
 // dual(trivector) -> scalar
 template <class T>
 T dual(const basic_trivector<T>& a) {
-  return dual(basic_mv<T>(a)).c[0];
+  return gaphys::ga::scalar_part(dual(basic_mv<T>(a)));
 }
 
 // undual(trivector) -> scalar
 template <class T>
 T undual(const basic_trivector<T>& a) {
-  return undual(basic_mv<T>(a)).c[0];
+  return gaphys::ga::scalar_part(undual(basic_mv<T>(a)));
 }
 
 // smul(scalar, trivector) -> trivector
@@ -422,13 +422,13 @@ basic_vector<T> lc(const basic_vector<T>& a, const basic_bivector<T>& b) {
 // lc(vector, vector) -> scalar
 template <class T>
 T lc(const basic_vector<T>& a, const basic_vector<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(bivector, bivector) -> scalar
 template <class T>
 T lc(const basic_bivector<T>& a, const basic_bivector<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(bivector, vector) -> vector
@@ -500,7 +500,7 @@ basic_rotor<T> op(const basic_rotor<T>& a, const basic_rotor<T>& b) {
 // gp(scalar, scalar) -> scalar
 template <class T>
 T gp(const basic_scalar<T>& a, const basic_scalar<T>& b) {
-  return gp(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(gp(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // gp(scalar, vector) -> vector
@@ -572,7 +572,7 @@ basic_vector<T> gp(const basic_trivector<T>& a, const basic_bivector<T>& b) {
 // gp(trivector, trivector) -> scalar
 template <class T>
 T gp(const basic_trivector<T>& a, const basic_trivector<T>& b) {
-  return gp(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(gp(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // gp(trivector, rotor) -> mv
@@ -596,7 +596,7 @@ basic_mv<T> gp(const basic_rotor<T>& a, const basic_trivector<T>& b) {
 // op(scalar, scalar) -> scalar
 template <class T>
 T op(const basic_scalar<T>& a, const basic_scalar<T>& b) {
-  return op(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(op(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // op(scalar, vector) -> vector
@@ -686,7 +686,7 @@ basic_trivector<T> op(const basic_rotor<T>& a, const basic_trivector<T>& b) {
 // lc(scalar, scalar) -> scalar
 template <class T>
 T lc(const basic_scalar<T>& a, const basic_scalar<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(scalar, vector) -> vector
@@ -734,19 +734,19 @@ basic_vector<T> lc(const basic_bivector<T>& a, const basic_trivector<T>& b) {
 // lc(bivector, rotor) -> scalar
 template <class T>
 T lc(const basic_bivector<T>& a, const basic_rotor<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(trivector, trivector) -> scalar
 template <class T>
 T lc(const basic_trivector<T>& a, const basic_trivector<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(rotor, scalar) -> scalar
 template <class T>
 T lc(const basic_rotor<T>& a, const basic_scalar<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(rotor, vector) -> vector
@@ -770,13 +770,13 @@ basic_mv<T> lc(const basic_rotor<T>& a, const basic_trivector<T>& b) {
 // rc(scalar, scalar) -> scalar
 template <class T>
 T rc(const basic_scalar<T>& a, const basic_scalar<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(scalar, rotor) -> scalar
 template <class T>
 T rc(const basic_scalar<T>& a, const basic_rotor<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(vector, scalar) -> vector
@@ -788,7 +788,7 @@ basic_vector<T> rc(const basic_vector<T>& a, const basic_scalar<T>& b) {
 // rc(vector, vector) -> scalar
 template <class T>
 T rc(const basic_vector<T>& a, const basic_vector<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(vector, rotor) -> vector
@@ -806,7 +806,7 @@ basic_bivector<T> rc(const basic_bivector<T>& a, const basic_scalar<T>& b) {
 // rc(bivector, bivector) -> scalar
 template <class T>
 T rc(const basic_bivector<T>& a, const basic_bivector<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(bivector, rotor) -> rotor
@@ -836,7 +836,7 @@ basic_vector<T> rc(const basic_trivector<T>& a, const basic_bivector<T>& b) {
 // rc(trivector, trivector) -> scalar
 template <class T>
 T rc(const basic_trivector<T>& a, const basic_trivector<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(trivector, rotor) -> mv
@@ -860,7 +860,7 @@ basic_vector<T> rc(const basic_rotor<T>& a, const basic_vector<T>& b) {
 // rc(rotor, bivector) -> scalar
 template <class T>
 T rc(const basic_rotor<T>& a, const basic_bivector<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(rotor, rotor) -> rotor
@@ -908,13 +908,13 @@ T scp(const basic_rotor<T>& a, const basic_bivector<T>& b) {
 // meet(scalar, trivector) -> scalar
 template <class T>
 T meet(const basic_scalar<T>& a, const basic_trivector<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(vector, bivector) -> scalar
 template <class T>
 T meet(const basic_vector<T>& a, const basic_bivector<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(vector, trivector) -> vector
@@ -926,13 +926,13 @@ basic_vector<T> meet(const basic_vector<T>& a, const basic_trivector<T>& b) {
 // meet(vector, rotor) -> scalar
 template <class T>
 T meet(const basic_vector<T>& a, const basic_rotor<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(bivector, vector) -> scalar
 template <class T>
 T meet(const basic_bivector<T>& a, const basic_vector<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(bivector, trivector) -> bivector
@@ -950,7 +950,7 @@ basic_vector<T> meet(const basic_bivector<T>& a, const basic_rotor<T>& b) {
 // meet(trivector, scalar) -> scalar
 template <class T>
 T meet(const basic_trivector<T>& a, const basic_scalar<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(trivector, vector) -> vector
@@ -980,7 +980,7 @@ basic_rotor<T> meet(const basic_trivector<T>& a, const basic_rotor<T>& b) {
 // meet(rotor, vector) -> scalar
 template <class T>
 T meet(const basic_rotor<T>& a, const basic_vector<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(rotor, bivector) -> vector
@@ -1004,7 +1004,7 @@ basic_vector<T> meet(const basic_rotor<T>& a, const basic_rotor<T>& b) {
 // join(scalar, scalar) -> scalar
 template <class T>
 T join(const basic_scalar<T>& a, const basic_scalar<T>& b) {
-  return join(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(join(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // join(scalar, vector) -> vector
@@ -1118,7 +1118,7 @@ basic_rotor<T> join(const basic_rotor<T>& a, const basic_rotor<T>& b) {
 // apply(scalar, scalar) -> scalar
 template <class T>
 T apply(const basic_scalar<T>& a, const basic_scalar<T>& b) {
-  return apply(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(apply(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // apply(scalar, vector) -> vector
@@ -1148,7 +1148,7 @@ basic_rotor<T> apply(const basic_scalar<T>& a, const basic_rotor<T>& b) {
 // apply(vector, scalar) -> scalar
 template <class T>
 T apply(const basic_vector<T>& a, const basic_scalar<T>& b) {
-  return apply(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(apply(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // apply(vector, vector) -> vector
@@ -1178,7 +1178,7 @@ basic_rotor<T> apply(const basic_vector<T>& a, const basic_rotor<T>& b) {
 // apply(bivector, scalar) -> scalar
 template <class T>
 T apply(const basic_bivector<T>& a, const basic_scalar<T>& b) {
-  return apply(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(apply(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // apply(bivector, vector) -> vector
@@ -1208,7 +1208,7 @@ basic_rotor<T> apply(const basic_bivector<T>& a, const basic_rotor<T>& b) {
 // apply(trivector, scalar) -> scalar
 template <class T>
 T apply(const basic_trivector<T>& a, const basic_scalar<T>& b) {
-  return apply(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(apply(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // apply(trivector, vector) -> vector
@@ -1238,7 +1238,7 @@ basic_rotor<T> apply(const basic_trivector<T>& a, const basic_rotor<T>& b) {
 // apply(rotor, scalar) -> scalar
 template <class T>
 T apply(const basic_rotor<T>& a, const basic_scalar<T>& b) {
-  return apply(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(apply(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // apply(rotor, trivector) -> trivector

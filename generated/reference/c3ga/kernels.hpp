@@ -846,13 +846,13 @@ basic_pseudoscalar<T> inverse(const basic_pseudoscalar<T>& a) {
 // dual(pseudoscalar) -> scalar
 template <class T>
 T dual(const basic_pseudoscalar<T>& a) {
-  return dual(basic_mv<T>(a)).c[0];
+  return gaphys::ga::scalar_part(dual(basic_mv<T>(a)));
 }
 
 // undual(pseudoscalar) -> scalar
 template <class T>
 T undual(const basic_pseudoscalar<T>& a) {
-  return undual(basic_mv<T>(a)).c[0];
+  return gaphys::ga::scalar_part(undual(basic_mv<T>(a)));
 }
 
 // smul(scalar, pseudoscalar) -> pseudoscalar
@@ -1134,7 +1134,7 @@ T scp(const basic_normalized_point<T>& a, const basic_dual_sphere<T>& b) {
 // lc(normalized_point, dual_sphere) -> scalar
 template <class T>
 T lc(const basic_normalized_point<T>& a, const basic_dual_sphere<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // op(dual_sphere, dual_sphere) -> point_pair
@@ -1260,7 +1260,7 @@ basic_dual_line<T> log(const basic_motor<T>& a) {
 // lc(dual_sphere, dual_sphere) -> scalar
 template <class T>
 T lc(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // gp(point_pair, point_pair) -> mv
@@ -1272,7 +1272,7 @@ basic_mv<T> gp(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
 // lc(point_pair, point_pair) -> scalar
 template <class T>
 T lc(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // op(point_pair, point_pair) -> sphere
@@ -2514,7 +2514,7 @@ basic_dual_plane<T> gp(const basic_pseudoscalar<T>& a, const basic_plane<T>& b) 
 // gp(pseudoscalar, pseudoscalar) -> scalar
 template <class T>
 T gp(const basic_pseudoscalar<T>& a, const basic_pseudoscalar<T>& b) {
-  return gp(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(gp(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // gp(pseudoscalar, rotor) -> mv
@@ -3907,19 +3907,19 @@ basic_motor<T> op(const basic_motor<T>& a, const basic_translator<T>& b) {
 // lc(normalized_point, normalized_point) -> scalar
 template <class T>
 T lc(const basic_normalized_point<T>& a, const basic_normalized_point<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(normalized_point, dual_plane) -> scalar
 template <class T>
 T lc(const basic_normalized_point<T>& a, const basic_dual_plane<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(normalized_point, euclidean_vector) -> scalar
 template <class T>
 T lc(const basic_normalized_point<T>& a, const basic_euclidean_vector<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(normalized_point, flat_point) -> dual_sphere
@@ -3998,19 +3998,19 @@ basic_mv<T> lc(const basic_normalized_point<T>& a, const basic_motor<T>& b) {
 // lc(dual_sphere, normalized_point) -> scalar
 template <class T>
 T lc(const basic_dual_sphere<T>& a, const basic_normalized_point<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(dual_sphere, dual_plane) -> scalar
 template <class T>
 T lc(const basic_dual_sphere<T>& a, const basic_dual_plane<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(dual_sphere, euclidean_vector) -> scalar
 template <class T>
 T lc(const basic_dual_sphere<T>& a, const basic_euclidean_vector<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(dual_sphere, flat_point) -> dual_sphere
@@ -4088,25 +4088,25 @@ basic_mv<T> lc(const basic_dual_sphere<T>& a, const basic_motor<T>& b) {
 // lc(dual_plane, normalized_point) -> scalar
 template <class T>
 T lc(const basic_dual_plane<T>& a, const basic_normalized_point<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(dual_plane, dual_sphere) -> scalar
 template <class T>
 T lc(const basic_dual_plane<T>& a, const basic_dual_sphere<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(dual_plane, dual_plane) -> scalar
 template <class T>
 T lc(const basic_dual_plane<T>& a, const basic_dual_plane<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(dual_plane, euclidean_vector) -> scalar
 template <class T>
 T lc(const basic_dual_plane<T>& a, const basic_euclidean_vector<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(dual_plane, flat_point) -> dual_plane
@@ -4184,25 +4184,25 @@ basic_mv<T> lc(const basic_dual_plane<T>& a, const basic_motor<T>& b) {
 // lc(euclidean_vector, normalized_point) -> scalar
 template <class T>
 T lc(const basic_euclidean_vector<T>& a, const basic_normalized_point<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(euclidean_vector, dual_sphere) -> scalar
 template <class T>
 T lc(const basic_euclidean_vector<T>& a, const basic_dual_sphere<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(euclidean_vector, dual_plane) -> scalar
 template <class T>
 T lc(const basic_euclidean_vector<T>& a, const basic_dual_plane<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(euclidean_vector, euclidean_vector) -> scalar
 template <class T>
 T lc(const basic_euclidean_vector<T>& a, const basic_euclidean_vector<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(euclidean_vector, flat_point) -> dual_plane
@@ -4281,13 +4281,13 @@ basic_mv<T> lc(const basic_euclidean_vector<T>& a, const basic_motor<T>& b) {
 // lc(flat_point, flat_point) -> scalar
 template <class T>
 T lc(const basic_flat_point<T>& a, const basic_flat_point<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(flat_point, point_pair) -> scalar
 template <class T>
 T lc(const basic_flat_point<T>& a, const basic_point_pair<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(flat_point, line) -> dual_plane
@@ -4323,19 +4323,19 @@ basic_circle<T> lc(const basic_flat_point<T>& a, const basic_pseudoscalar<T>& b)
 // lc(euclidean_bivector, euclidean_bivector) -> scalar
 template <class T>
 T lc(const basic_euclidean_bivector<T>& a, const basic_euclidean_bivector<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(euclidean_bivector, point_pair) -> scalar
 template <class T>
 T lc(const basic_euclidean_bivector<T>& a, const basic_point_pair<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(euclidean_bivector, dual_line) -> scalar
 template <class T>
 T lc(const basic_euclidean_bivector<T>& a, const basic_dual_line<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(euclidean_bivector, line) -> dual_plane
@@ -4371,7 +4371,7 @@ basic_line<T> lc(const basic_euclidean_bivector<T>& a, const basic_pseudoscalar<
 // lc(euclidean_bivector, rotor) -> scalar
 template <class T>
 T lc(const basic_euclidean_bivector<T>& a, const basic_rotor<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(euclidean_bivector, motor) -> translator
@@ -4383,19 +4383,19 @@ basic_translator<T> lc(const basic_euclidean_bivector<T>& a, const basic_motor<T
 // lc(point_pair, flat_point) -> scalar
 template <class T>
 T lc(const basic_point_pair<T>& a, const basic_flat_point<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(point_pair, euclidean_bivector) -> scalar
 template <class T>
 T lc(const basic_point_pair<T>& a, const basic_euclidean_bivector<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(point_pair, dual_line) -> scalar
 template <class T>
 T lc(const basic_point_pair<T>& a, const basic_dual_line<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(point_pair, line) -> dual_sphere
@@ -4431,13 +4431,13 @@ basic_circle<T> lc(const basic_point_pair<T>& a, const basic_pseudoscalar<T>& b)
 // lc(point_pair, rotor) -> scalar
 template <class T>
 T lc(const basic_point_pair<T>& a, const basic_rotor<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(point_pair, translator) -> scalar
 template <class T>
 T lc(const basic_point_pair<T>& a, const basic_translator<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(point_pair, motor) -> motor
@@ -4449,19 +4449,19 @@ basic_motor<T> lc(const basic_point_pair<T>& a, const basic_motor<T>& b) {
 // lc(dual_line, euclidean_bivector) -> scalar
 template <class T>
 T lc(const basic_dual_line<T>& a, const basic_euclidean_bivector<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(dual_line, point_pair) -> scalar
 template <class T>
 T lc(const basic_dual_line<T>& a, const basic_point_pair<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(dual_line, dual_line) -> scalar
 template <class T>
 T lc(const basic_dual_line<T>& a, const basic_dual_line<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(dual_line, line) -> dual_plane
@@ -4497,7 +4497,7 @@ basic_line<T> lc(const basic_dual_line<T>& a, const basic_pseudoscalar<T>& b) {
 // lc(dual_line, rotor) -> scalar
 template <class T>
 T lc(const basic_dual_line<T>& a, const basic_rotor<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(dual_line, motor) -> translator
@@ -4509,13 +4509,13 @@ basic_translator<T> lc(const basic_dual_line<T>& a, const basic_motor<T>& b) {
 // lc(line, line) -> scalar
 template <class T>
 T lc(const basic_line<T>& a, const basic_line<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(line, circle) -> scalar
 template <class T>
 T lc(const basic_line<T>& a, const basic_circle<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(line, sphere) -> dual_plane
@@ -4539,13 +4539,13 @@ basic_dual_line<T> lc(const basic_line<T>& a, const basic_pseudoscalar<T>& b) {
 // lc(circle, line) -> scalar
 template <class T>
 T lc(const basic_circle<T>& a, const basic_line<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(circle, circle) -> scalar
 template <class T>
 T lc(const basic_circle<T>& a, const basic_circle<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(circle, sphere) -> dual_sphere
@@ -4575,13 +4575,13 @@ basic_dual_plane<T> lc(const basic_circle<T>& a, const basic_motor<T>& b) {
 // lc(sphere, sphere) -> scalar
 template <class T>
 T lc(const basic_sphere<T>& a, const basic_sphere<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(sphere, plane) -> scalar
 template <class T>
 T lc(const basic_sphere<T>& a, const basic_plane<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(sphere, pseudoscalar) -> dual_sphere
@@ -4593,19 +4593,19 @@ basic_dual_sphere<T> lc(const basic_sphere<T>& a, const basic_pseudoscalar<T>& b
 // lc(sphere, motor) -> scalar
 template <class T>
 T lc(const basic_sphere<T>& a, const basic_motor<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(plane, sphere) -> scalar
 template <class T>
 T lc(const basic_plane<T>& a, const basic_sphere<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(plane, plane) -> scalar
 template <class T>
 T lc(const basic_plane<T>& a, const basic_plane<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(plane, pseudoscalar) -> dual_plane
@@ -4617,7 +4617,7 @@ basic_dual_plane<T> lc(const basic_plane<T>& a, const basic_pseudoscalar<T>& b) 
 // lc(pseudoscalar, pseudoscalar) -> scalar
 template <class T>
 T lc(const basic_pseudoscalar<T>& a, const basic_pseudoscalar<T>& b) {
-  return lc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // lc(rotor, normalized_point) -> dual_sphere
@@ -4905,25 +4905,25 @@ basic_translator<T> lc(const basic_motor<T>& a, const basic_translator<T>& b) {
 // rc(normalized_point, normalized_point) -> scalar
 template <class T>
 T rc(const basic_normalized_point<T>& a, const basic_normalized_point<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(normalized_point, dual_sphere) -> scalar
 template <class T>
 T rc(const basic_normalized_point<T>& a, const basic_dual_sphere<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(normalized_point, dual_plane) -> scalar
 template <class T>
 T rc(const basic_normalized_point<T>& a, const basic_dual_plane<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(normalized_point, euclidean_vector) -> scalar
 template <class T>
 T rc(const basic_normalized_point<T>& a, const basic_euclidean_vector<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(normalized_point, rotor) -> dual_sphere
@@ -4947,25 +4947,25 @@ basic_dual_sphere<T> rc(const basic_normalized_point<T>& a, const basic_motor<T>
 // rc(dual_sphere, normalized_point) -> scalar
 template <class T>
 T rc(const basic_dual_sphere<T>& a, const basic_normalized_point<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(dual_sphere, dual_sphere) -> scalar
 template <class T>
 T rc(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(dual_sphere, dual_plane) -> scalar
 template <class T>
 T rc(const basic_dual_sphere<T>& a, const basic_dual_plane<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(dual_sphere, euclidean_vector) -> scalar
 template <class T>
 T rc(const basic_dual_sphere<T>& a, const basic_euclidean_vector<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(dual_sphere, rotor) -> dual_sphere
@@ -4989,25 +4989,25 @@ basic_dual_sphere<T> rc(const basic_dual_sphere<T>& a, const basic_motor<T>& b) 
 // rc(dual_plane, normalized_point) -> scalar
 template <class T>
 T rc(const basic_dual_plane<T>& a, const basic_normalized_point<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(dual_plane, dual_sphere) -> scalar
 template <class T>
 T rc(const basic_dual_plane<T>& a, const basic_dual_sphere<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(dual_plane, dual_plane) -> scalar
 template <class T>
 T rc(const basic_dual_plane<T>& a, const basic_dual_plane<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(dual_plane, euclidean_vector) -> scalar
 template <class T>
 T rc(const basic_dual_plane<T>& a, const basic_euclidean_vector<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(dual_plane, rotor) -> dual_plane
@@ -5031,25 +5031,25 @@ basic_dual_plane<T> rc(const basic_dual_plane<T>& a, const basic_motor<T>& b) {
 // rc(euclidean_vector, normalized_point) -> scalar
 template <class T>
 T rc(const basic_euclidean_vector<T>& a, const basic_normalized_point<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(euclidean_vector, dual_sphere) -> scalar
 template <class T>
 T rc(const basic_euclidean_vector<T>& a, const basic_dual_sphere<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(euclidean_vector, dual_plane) -> scalar
 template <class T>
 T rc(const basic_euclidean_vector<T>& a, const basic_dual_plane<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(euclidean_vector, euclidean_vector) -> scalar
 template <class T>
 T rc(const basic_euclidean_vector<T>& a, const basic_euclidean_vector<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(euclidean_vector, rotor) -> euclidean_vector
@@ -5097,13 +5097,13 @@ basic_dual_plane<T> rc(const basic_flat_point<T>& a, const basic_euclidean_vecto
 // rc(flat_point, flat_point) -> scalar
 template <class T>
 T rc(const basic_flat_point<T>& a, const basic_flat_point<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(flat_point, point_pair) -> scalar
 template <class T>
 T rc(const basic_flat_point<T>& a, const basic_point_pair<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(flat_point, rotor) -> flat_point
@@ -5153,19 +5153,19 @@ basic_euclidean_vector<T> rc(const basic_euclidean_bivector<T>& a,
 // rc(euclidean_bivector, euclidean_bivector) -> scalar
 template <class T>
 T rc(const basic_euclidean_bivector<T>& a, const basic_euclidean_bivector<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(euclidean_bivector, point_pair) -> scalar
 template <class T>
 T rc(const basic_euclidean_bivector<T>& a, const basic_point_pair<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(euclidean_bivector, dual_line) -> scalar
 template <class T>
 T rc(const basic_euclidean_bivector<T>& a, const basic_dual_line<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(euclidean_bivector, rotor) -> rotor
@@ -5213,25 +5213,25 @@ basic_dual_sphere<T> rc(const basic_point_pair<T>& a, const basic_euclidean_vect
 // rc(point_pair, flat_point) -> scalar
 template <class T>
 T rc(const basic_point_pair<T>& a, const basic_flat_point<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(point_pair, euclidean_bivector) -> scalar
 template <class T>
 T rc(const basic_point_pair<T>& a, const basic_euclidean_bivector<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(point_pair, point_pair) -> scalar
 template <class T>
 T rc(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(point_pair, dual_line) -> scalar
 template <class T>
 T rc(const basic_point_pair<T>& a, const basic_dual_line<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(point_pair, rotor) -> mv
@@ -5279,19 +5279,19 @@ basic_dual_plane<T> rc(const basic_dual_line<T>& a, const basic_euclidean_vector
 // rc(dual_line, euclidean_bivector) -> scalar
 template <class T>
 T rc(const basic_dual_line<T>& a, const basic_euclidean_bivector<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(dual_line, point_pair) -> scalar
 template <class T>
 T rc(const basic_dual_line<T>& a, const basic_point_pair<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(dual_line, dual_line) -> scalar
 template <class T>
 T rc(const basic_dual_line<T>& a, const basic_dual_line<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(dual_line, rotor) -> motor
@@ -5363,13 +5363,13 @@ basic_dual_plane<T> rc(const basic_line<T>& a, const basic_dual_line<T>& b) {
 // rc(line, line) -> scalar
 template <class T>
 T rc(const basic_line<T>& a, const basic_line<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(line, circle) -> scalar
 template <class T>
 T rc(const basic_line<T>& a, const basic_circle<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(line, rotor) -> mv
@@ -5441,13 +5441,13 @@ basic_dual_sphere<T> rc(const basic_circle<T>& a, const basic_dual_line<T>& b) {
 // rc(circle, line) -> scalar
 template <class T>
 T rc(const basic_circle<T>& a, const basic_line<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(circle, circle) -> scalar
 template <class T>
 T rc(const basic_circle<T>& a, const basic_circle<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(circle, rotor) -> mv
@@ -5531,13 +5531,13 @@ basic_dual_sphere<T> rc(const basic_sphere<T>& a, const basic_circle<T>& b) {
 // rc(sphere, sphere) -> scalar
 template <class T>
 T rc(const basic_sphere<T>& a, const basic_sphere<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(sphere, plane) -> scalar
 template <class T>
 T rc(const basic_sphere<T>& a, const basic_plane<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(sphere, rotor) -> mv
@@ -5621,13 +5621,13 @@ basic_dual_sphere<T> rc(const basic_plane<T>& a, const basic_circle<T>& b) {
 // rc(plane, sphere) -> scalar
 template <class T>
 T rc(const basic_plane<T>& a, const basic_sphere<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(plane, plane) -> scalar
 template <class T>
 T rc(const basic_plane<T>& a, const basic_plane<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(plane, rotor) -> mv
@@ -5723,7 +5723,7 @@ basic_dual_plane<T> rc(const basic_pseudoscalar<T>& a, const basic_plane<T>& b) 
 // rc(pseudoscalar, pseudoscalar) -> scalar
 template <class T>
 T rc(const basic_pseudoscalar<T>& a, const basic_pseudoscalar<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(pseudoscalar, rotor) -> mv
@@ -5771,19 +5771,19 @@ basic_euclidean_vector<T> rc(const basic_rotor<T>& a, const basic_euclidean_vect
 // rc(rotor, euclidean_bivector) -> scalar
 template <class T>
 T rc(const basic_rotor<T>& a, const basic_euclidean_bivector<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(rotor, point_pair) -> scalar
 template <class T>
 T rc(const basic_rotor<T>& a, const basic_point_pair<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(rotor, dual_line) -> scalar
 template <class T>
 T rc(const basic_rotor<T>& a, const basic_dual_line<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(rotor, rotor) -> rotor
@@ -5831,7 +5831,7 @@ basic_dual_plane<T> rc(const basic_translator<T>& a, const basic_euclidean_vecto
 // rc(translator, point_pair) -> scalar
 template <class T>
 T rc(const basic_translator<T>& a, const basic_point_pair<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(translator, rotor) -> translator
@@ -5903,7 +5903,7 @@ basic_dual_plane<T> rc(const basic_motor<T>& a, const basic_circle<T>& b) {
 // rc(motor, sphere) -> scalar
 template <class T>
 T rc(const basic_motor<T>& a, const basic_sphere<T>& b) {
-  return rc(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // rc(motor, rotor) -> motor
@@ -6269,13 +6269,13 @@ T scp(const basic_motor<T>& a, const basic_translator<T>& b) {
 // meet(normalized_point, sphere) -> scalar
 template <class T>
 T meet(const basic_normalized_point<T>& a, const basic_sphere<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(normalized_point, plane) -> scalar
 template <class T>
 T meet(const basic_normalized_point<T>& a, const basic_plane<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(normalized_point, pseudoscalar) -> dual_sphere
@@ -6287,19 +6287,19 @@ basic_dual_sphere<T> meet(const basic_normalized_point<T>& a, const basic_pseudo
 // meet(normalized_point, motor) -> scalar
 template <class T>
 T meet([[maybe_unused]] const basic_normalized_point<T>& a, const basic_motor<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(dual_sphere, sphere) -> scalar
 template <class T>
 T meet(const basic_dual_sphere<T>& a, const basic_sphere<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(dual_sphere, plane) -> scalar
 template <class T>
 T meet(const basic_dual_sphere<T>& a, const basic_plane<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(dual_sphere, pseudoscalar) -> dual_sphere
@@ -6311,19 +6311,19 @@ basic_dual_sphere<T> meet(const basic_dual_sphere<T>& a, const basic_pseudoscala
 // meet(dual_sphere, motor) -> scalar
 template <class T>
 T meet(const basic_dual_sphere<T>& a, const basic_motor<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(dual_plane, sphere) -> scalar
 template <class T>
 T meet(const basic_dual_plane<T>& a, const basic_sphere<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(dual_plane, plane) -> scalar
 template <class T>
 T meet(const basic_dual_plane<T>& a, const basic_plane<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(dual_plane, pseudoscalar) -> dual_plane
@@ -6335,13 +6335,13 @@ basic_dual_plane<T> meet(const basic_dual_plane<T>& a, const basic_pseudoscalar<
 // meet(euclidean_vector, sphere) -> scalar
 template <class T>
 T meet(const basic_euclidean_vector<T>& a, const basic_sphere<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(euclidean_vector, plane) -> scalar
 template <class T>
 T meet(const basic_euclidean_vector<T>& a, const basic_plane<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(euclidean_vector, pseudoscalar) -> euclidean_vector
@@ -6353,7 +6353,7 @@ basic_euclidean_vector<T> meet(const basic_euclidean_vector<T>& a, const basic_p
 // meet(flat_point, circle) -> scalar
 template <class T>
 T meet(const basic_flat_point<T>& a, const basic_circle<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(flat_point, sphere) -> dual_sphere
@@ -6383,13 +6383,13 @@ basic_dual_plane<T> meet(const basic_flat_point<T>& a, const basic_motor<T>& b) 
 // meet(euclidean_bivector, line) -> scalar
 template <class T>
 T meet(const basic_euclidean_bivector<T>& a, const basic_line<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(euclidean_bivector, circle) -> scalar
 template <class T>
 T meet(const basic_euclidean_bivector<T>& a, const basic_circle<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(euclidean_bivector, sphere) -> euclidean_vector
@@ -6414,13 +6414,13 @@ basic_euclidean_bivector<T> meet(const basic_euclidean_bivector<T>& a,
 // meet(point_pair, line) -> scalar
 template <class T>
 T meet(const basic_point_pair<T>& a, const basic_line<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(point_pair, circle) -> scalar
 template <class T>
 T meet(const basic_point_pair<T>& a, const basic_circle<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(point_pair, sphere) -> dual_sphere
@@ -6450,13 +6450,13 @@ basic_dual_plane<T> meet(const basic_point_pair<T>& a, const basic_motor<T>& b) 
 // meet(dual_line, line) -> scalar
 template <class T>
 T meet(const basic_dual_line<T>& a, const basic_line<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(dual_line, circle) -> scalar
 template <class T>
 T meet(const basic_dual_line<T>& a, const basic_circle<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(dual_line, sphere) -> dual_plane
@@ -6480,19 +6480,19 @@ basic_dual_line<T> meet(const basic_dual_line<T>& a, const basic_pseudoscalar<T>
 // meet(line, euclidean_bivector) -> scalar
 template <class T>
 T meet(const basic_line<T>& a, const basic_euclidean_bivector<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(line, point_pair) -> scalar
 template <class T>
 T meet(const basic_line<T>& a, const basic_point_pair<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(line, dual_line) -> scalar
 template <class T>
 T meet(const basic_line<T>& a, const basic_dual_line<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(line, line) -> dual_plane
@@ -6528,7 +6528,7 @@ basic_line<T> meet(const basic_line<T>& a, const basic_pseudoscalar<T>& b) {
 // meet(line, rotor) -> scalar
 template <class T>
 T meet(const basic_line<T>& a, const basic_rotor<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(line, motor) -> translator
@@ -6540,25 +6540,25 @@ basic_translator<T> meet(const basic_line<T>& a, const basic_motor<T>& b) {
 // meet(circle, flat_point) -> scalar
 template <class T>
 T meet(const basic_circle<T>& a, const basic_flat_point<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(circle, euclidean_bivector) -> scalar
 template <class T>
 T meet(const basic_circle<T>& a, const basic_euclidean_bivector<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(circle, point_pair) -> scalar
 template <class T>
 T meet(const basic_circle<T>& a, const basic_point_pair<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(circle, dual_line) -> scalar
 template <class T>
 T meet(const basic_circle<T>& a, const basic_dual_line<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(circle, line) -> dual_sphere
@@ -6594,13 +6594,13 @@ basic_circle<T> meet(const basic_circle<T>& a, const basic_pseudoscalar<T>& b) {
 // meet(circle, rotor) -> scalar
 template <class T>
 T meet(const basic_circle<T>& a, const basic_rotor<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(circle, translator) -> scalar
 template <class T>
 T meet(const basic_circle<T>& a, const basic_translator<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(circle, motor) -> motor
@@ -6612,25 +6612,25 @@ basic_motor<T> meet(const basic_circle<T>& a, const basic_motor<T>& b) {
 // meet(sphere, normalized_point) -> scalar
 template <class T>
 T meet(const basic_sphere<T>& a, const basic_normalized_point<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(sphere, dual_sphere) -> scalar
 template <class T>
 T meet(const basic_sphere<T>& a, const basic_dual_sphere<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(sphere, dual_plane) -> scalar
 template <class T>
 T meet(const basic_sphere<T>& a, const basic_dual_plane<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(sphere, euclidean_vector) -> scalar
 template <class T>
 T meet(const basic_sphere<T>& a, const basic_euclidean_vector<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(sphere, flat_point) -> dual_sphere
@@ -6696,25 +6696,25 @@ basic_mv<T> meet(const basic_sphere<T>& a, const basic_motor<T>& b) {
 // meet(plane, normalized_point) -> scalar
 template <class T>
 T meet(const basic_plane<T>& a, const basic_normalized_point<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(plane, dual_sphere) -> scalar
 template <class T>
 T meet(const basic_plane<T>& a, const basic_dual_sphere<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(plane, dual_plane) -> scalar
 template <class T>
 T meet(const basic_plane<T>& a, const basic_dual_plane<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(plane, euclidean_vector) -> scalar
 template <class T>
 T meet(const basic_plane<T>& a, const basic_euclidean_vector<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(plane, flat_point) -> dual_plane
@@ -6889,13 +6889,13 @@ basic_motor<T> meet(const basic_pseudoscalar<T>& a, const basic_motor<T>& b) {
 // meet(rotor, line) -> scalar
 template <class T>
 T meet(const basic_rotor<T>& a, const basic_line<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(rotor, circle) -> scalar
 template <class T>
 T meet(const basic_rotor<T>& a, const basic_circle<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(rotor, sphere) -> euclidean_vector
@@ -6919,7 +6919,7 @@ basic_rotor<T> meet(const basic_rotor<T>& a, const basic_pseudoscalar<T>& b) {
 // meet(translator, circle) -> scalar
 template <class T>
 T meet(const basic_translator<T>& a, const basic_circle<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(translator, sphere) -> dual_plane
@@ -6943,13 +6943,13 @@ basic_translator<T> meet(const basic_translator<T>& a, const basic_pseudoscalar<
 // meet(motor, normalized_point) -> scalar
 template <class T>
 T meet(const basic_motor<T>& a, [[maybe_unused]] const basic_normalized_point<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(motor, dual_sphere) -> scalar
 template <class T>
 T meet(const basic_motor<T>& a, const basic_dual_sphere<T>& b) {
-  return meet(basic_mv<T>(a), basic_mv<T>(b)).c[0];
+  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
 }
 
 // meet(motor, flat_point) -> dual_plane

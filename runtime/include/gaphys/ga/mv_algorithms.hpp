@@ -1,7 +1,11 @@
 // Algorithms on general multivectors that are not a single table lookup:
 // exp, log, the general inverse, printing. They are written once against the
 // generated `basic_mv` interface (c, bits, size, grade_mask, basis_blade,
-// blade_name) and the algebra's gp, found by argument-dependent lookup.
+// blade_name) and the algebra's gp, found by argument-dependent lookup. The
+// few primitives that read coefficients (max_abs, keep_grades,
+// linear_combination, scalar_part, ...) also take the sparse mv of an algebra
+// of more than 5 dimensions (sparse_mv.hpp), so everything above them works
+// on both.
 #pragma once
 
 #include <algorithm>
@@ -11,8 +15,11 @@
 #include <limits>
 #include <ostream>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "scalar_functions.hpp"
+#include "sparse_mv.hpp"
 
 namespace gaphys::ga {
 
@@ -55,40 +62,114 @@ std::uint32_t exact_bits(const MV& x) {
 template <class MV>
 typename MV::scalar_type max_abs(const MV& x) {
   typename MV::scalar_type m = 0;
-  for (int i = 0; i < MV::size; ++i) m = std::max(m, std::abs(x.c[i]));
+  if constexpr (is_sparse_v<MV>) {
+    for (const auto& t : x.terms) m = std::max(m, std::abs(t.value));
+  } else {
+    for (int i = 0; i < MV::size; ++i) m = std::max(m, std::abs(x.c[i]));
+  }
   return m;
+}
+
+// The scalar part <x>_0.
+template <class MV>
+typename MV::scalar_type scalar_part(const MV& x) {
+  if constexpr (is_sparse_v<MV>)
+    return sparse::coefficient(x, 0);
+  else
+    return x.c[0];
+}
+
+// How many coefficients x stores: a bound on how many are nonzero.
+template <class MV>
+int coefficient_count(const MV& x) {
+  if constexpr (is_sparse_v<MV>)
+    return int(x.terms.size());
+  else
+    return MV::size;
 }
 
 // Sum of c_i d_i over the coefficients (the blade basis's Euclidean product).
 template <class MV>
 typename MV::scalar_type coefficient_dot(const MV& x, const MV& y) {
   typename MV::scalar_type sum = 0;
-  for (int i = 0; i < MV::size; ++i) sum += x.c[i] * y.c[i];
+  if constexpr (is_sparse_v<MV>) {
+    for (const auto& t : x.terms) sum += t.value * sparse::coefficient(y, t.blade);
+  } else {
+    for (int i = 0; i < MV::size; ++i) sum += x.c[i] * y.c[i];
+  }
   return sum;
 }
 
 template <class MV>
 MV keep_grades(const MV& x, std::uint32_t mask) {
-  MV r = x;
-  for (int i = 0; i < MV::size; ++i)
-    if (!(mask >> i & 1)) r.c[i] = 0;
-  r.bits &= mask;
-  return r;
+  if constexpr (is_sparse_v<MV>) {
+    return sparse::keep_grades(x, mask);
+  } else {
+    MV r = x;
+    for (int i = 0; i < MV::size; ++i)
+      if (!(mask >> i & 1)) r.c[i] = 0;
+    r.bits &= mask;
+    return r;
+  }
 }
 
 template <class MV>
 MV linear_combination(typename MV::scalar_type a, const MV& x, typename MV::scalar_type b, const MV& y) {
-  MV r;
-  for (int i = 0; i < MV::size; ++i) r.c[i] = a * x.c[i] + b * y.c[i];
-  r.bits = x.bits | y.bits;
-  return r;
+  if constexpr (is_sparse_v<MV>) {
+    return sparse::linear_combination(a, x, b, y);
+  } else {
+    MV r;
+    for (int i = 0; i < MV::size; ++i) r.c[i] = a * x.c[i] + b * y.c[i];
+    r.bits = x.bits | y.bits;
+    return r;
+  }
 }
 
 template <class MV>
 MV plus_scalar(const MV& x, typename MV::scalar_type s) {
+  if constexpr (is_sparse_v<MV>) {
+    return sparse::plus_scalar(x, s);
+  } else {
+    MV r = x;
+    r.c[0] += s;
+    r.bits |= 1;
+    return r;
+  }
+}
+
+// s x, and -x (not -1 x: the same, except for the sign of zeros).
+template <class MV>
+MV scaled(const MV& x, typename MV::scalar_type s) {
   MV r = x;
-  r.c[0] += s;
-  r.bits |= 1;
+  if constexpr (is_sparse_v<MV>) {
+    for (auto& t : r.terms) t.value *= s;
+  } else {
+    for (auto& v : r.c) v *= s;
+  }
+  return r;
+}
+template <class MV>
+MV negated(const MV& x) {
+  MV r = x;
+  if constexpr (is_sparse_v<MV>) {
+    for (auto& t : r.terms) t.value = -t.value;
+  } else {
+    for (auto& v : r.c) v = -v;
+  }
+  return r;
+}
+
+// x with each blade's coefficient times its sign: `signs` is an array by
+// canonical index (dense mv) or a rule by grade (grade_signs, sparse mv).
+template <class MV, class Signs>
+MV with_signs(const MV& x, const Signs& signs) {
+  using T = typename MV::scalar_type;
+  MV r = x;
+  if constexpr (is_sparse_v<MV>) {
+    for (auto& t : r.terms) t.value *= T(signs(bitwise::grade(t.blade)));
+  } else {
+    for (int i = 0; i < MV::size; ++i) r.c[i] *= T(signs[i]);
+  }
   return r;
 }
 
@@ -124,7 +205,7 @@ template <class MV>
 MV exp_series(const MV& x) {
   using T = typename MV::scalar_type;
   int m = 0;
-  T scale = max_abs(x) * T(MV::size);
+  T scale = max_abs(x) * T(coefficient_count(x));
   while (scale > T(0.5)) {
     scale /= 2;
     ++m;
@@ -154,8 +235,8 @@ bool split_bivector(const MV& b, MV& b1, MV& b2, typename MV::scalar_type& l1, t
   using T = typename MV::scalar_type;
   const MV square = gp(b, b);
   const MV w = linear_combination(T(0.5), keep_grades(square, MV::grade_mask(4)), T(0), square);
-  const T s0 = square.c[0];
-  const T w2 = gp(w, w).c[0];
+  const T s0 = scalar_part(square);
+  const T w2 = scalar_part(gp(w, w));
   const T w_size = max_abs(w);
   // W is rounded to about eps times the products of B's coefficients that
   // reach it. Those pair a part that is not null (about sqrt|<B^2>_0|) with
@@ -200,24 +281,52 @@ MV exp_general(const MV& x) {
   // Taking x for simple errs by about <x^2>_4 (the product of two planes),
   // next to exp(x)'s scalar part of about 1: the tolerance of 1's rounding
   // (tolerance(), not relative_tolerance()) is the one that bounds that.
-  if (is_numerically_scalar(square, max_abs(square))) return exp_simple(x, square.c[0]);
+  if (is_numerically_scalar(square, max_abs(square))) return exp_simple(x, scalar_part(square));
   MV b1, b2;
   T l1, l2;
   if (!split_bivector(x, b1, b2, l1, l2)) return exp_series(x);
   return gp(exp_simple(b1, l1), exp_simple(b2, l2));
 }
 
-// A plane to rotate in when log meets -1 (rotation by 2 pi): the first basis
-// bivector among `planes` (a bitmap of canonical indices) that squares to -1.
+// The basis bivectors a log may turn in, in canonical order. Of a dense mv,
+// `planes` is a bitmap of canonical indices; of a sparse one, a bitmap of
+// grades (every bivector if it has grade_mask(2)), or a plane_list.
 template <class MV>
-MV log_fallback(std::uint32_t planes) {
-  using T = typename MV::scalar_type;
-  const std::uint32_t bivectors = MV::grade_mask(2) & planes;
-  for (int i = 0; i < MV::size; ++i) {
-    if (!(bivectors >> i & 1)) continue;
-    const MV e = MV::basis_blade(i);
-    if (gp(e, e).c[0] == T(-1)) return linear_combination(T(3.14159265358979323846), e, T(0), e);
+std::vector<MV> basis_planes(std::uint32_t planes) {
+  std::vector<MV> found;
+  if constexpr (is_sparse_v<MV>) {
+    if (!(planes & MV::grade_mask(2))) return found;
+    const int n = MV::algebra::dimension;
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j)
+        found.push_back(MV::from_blades({{(std::uint32_t(1) << i) | (std::uint32_t(1) << j), 1}}));
+  } else {
+    const std::uint32_t bivectors = MV::grade_mask(2) & planes;
+    for (int i = 0; i < MV::size; ++i)
+      if (bivectors >> i & 1) found.push_back(MV::basis_blade(i));
   }
+  return found;
+}
+
+// The bivector blades a named type of a sparse algebra holds.
+struct plane_list {
+  std::initializer_list<std::uint32_t> blades;
+};
+template <class MV>
+std::vector<MV> basis_planes(const plane_list& planes) {
+  std::vector<MV> found;
+  for (std::uint32_t blade : planes.blades)
+    if (bitwise::grade(blade) == 2) found.push_back(MV::from_blades({{blade, 1}}));
+  return found;
+}
+
+// A plane to rotate in when log meets -1 (rotation by 2 pi): the first basis
+// bivector among `planes` that squares to -1.
+template <class MV, class Planes>
+MV log_fallback(const Planes& planes) {
+  using T = typename MV::scalar_type;
+  for (const MV& e : basis_planes<MV>(planes))
+    if (scalar_part(gp(e, e)) == T(-1)) return linear_combination(T(3.14159265358979323846), e, T(0), e);
   throw std::domain_error("log: -1 is a rotation by 2 pi, and no bivector the result may hold squares to -1");
 }
 
@@ -230,14 +339,14 @@ MV log_fallback(std::uint32_t planes) {
 // bitmap of canonical indices: a named type's log passes its own blades) that
 // squares to -1; std::domain_error when there is none, and when r = -exp(B)
 // for a boost or null B (no logarithm in B's plane).
-template <class MV>
-MV log_general(const MV& r, std::uint32_t planes = ~std::uint32_t(0)) {
+template <class MV, class Planes = std::uint32_t>
+MV log_general(const MV& r, const Planes& planes = ~std::uint32_t(0)) {
   using T = typename MV::scalar_type;
   const T magnitude = max_abs(r);
   const std::uint32_t even = MV::grade_mask(0) | MV::grade_mask(2) | MV::grade_mask(4);
   if (max_abs(keep_grades(r, ~even)) > tolerance(magnitude))
     throw std::domain_error("log: argument is not an even versor (grades 0, 2, 4)");
-  const T c = r.c[0];
+  const T c = scalar_part(r);
   const MV b = keep_grades(r, MV::grade_mask(2));
   const MV q = keep_grades(r, MV::grade_mask(4));
   const MV square = gp(b, b);
@@ -251,7 +360,7 @@ MV log_general(const MV& r, std::uint32_t planes = ~std::uint32_t(0)) {
   // the test bounds that error, relative to the size of the log. (A bound on
   // part relative to r's size took, in float, a boost of rapidity 2 times a
   // rotation by 1e-4 for a plain boost, and doubled the rotation.)
-  const T s0 = square.c[0];
+  const T s0 = scalar_part(square);
   const T q_size = max_abs(q);
   const log_case where = log_case_of(s0, c, coefficient_dot(b, b));
   // c < 0 with b a boost, a translation or a rotation too small to resolve
@@ -319,10 +428,8 @@ MV log_general(const MV& r, std::uint32_t planes = ~std::uint32_t(0)) {
   return linear_combination(std::atan2(s, c) / s, rotation, T(1), b2);
 }
 
-// The inverse of any invertible multivector: solves x y = 1 for y by Gaussian
-// elimination on the matrix of left multiplication by x.
 template <class MV>
-MV general_inverse(const MV& x) {
+MV dense_general_inverse(const MV& x) {
   using T = typename MV::scalar_type;
   constexpr int n = MV::size;
   std::array<std::array<T, n + 1>, n> m{};
@@ -353,13 +460,32 @@ MV general_inverse(const MV& x) {
   return y;
 }
 
+// The inverse of any invertible multivector: solves x y = 1 for y by Gaussian
+// elimination on the matrix of left multiplication by x.
+template <class MV>
+MV general_inverse(const MV& x) {
+  if constexpr (is_sparse_v<MV>) {
+    return sparse::general_inverse(x, MV::algebra::gp_table);
+  } else {
+    return dense_general_inverse(x);
+  }
+}
+
 // Prints "1.5*e1 - 2*e1^e2", or "0".
 template <class MV>
 std::ostream& print(std::ostream& out, const MV& x) {
+  using T = typename MV::scalar_type;
+  std::vector<std::pair<int, T>> nonzero;  // (canonical index, value), in canonical order
+  if constexpr (is_sparse_v<MV>) {
+    for (const auto& t : x.terms)
+      if (t.value != T(0)) nonzero.push_back({canonical_index(MV::algebra::dimension, t.blade), t.value});
+    std::sort(nonzero.begin(), nonzero.end(), [](const auto& p, const auto& q) { return p.first < q.first; });
+  } else {
+    for (int i = 0; i < MV::size; ++i)
+      if (x.c[i] != T(0)) nonzero.push_back({i, x.c[i]});
+  }
   bool first = true;
-  for (int i = 0; i < MV::size; ++i) {
-    const auto v = x.c[i];
-    if (v == 0) continue;
+  for (const auto& [i, v] : nonzero) {
     if (!first) out << (v < 0 ? " - " : " + ");
     else if (v < 0) out << "-";
     out << std::abs(v);

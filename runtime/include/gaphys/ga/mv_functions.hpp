@@ -110,7 +110,7 @@ template <class MV, if_general_mv<MV> = 0>
 typename MV::scalar_type scp(const MV& a, const MV& b) {
   using A = algebra_of<MV>;
   typename MV::scalar_type r = 0;
-  if (!dispatch::specialized_scp(a, b, r)) r = gaphys::ga::table_product(A::scp_table, a, b).c[0];
+  if (!dispatch::specialized_scp(a, b, r)) r = gaphys::ga::scalar_part(gaphys::ga::table_product(A::scp_table, a, b));
   A::on_call(A::call::scp, r, a, b);
   return r;
 }
@@ -135,8 +135,7 @@ MV sub(const MV& a, const MV& b) {
 template <class MV, if_general_mv<MV> = 0>
 MV smul(typename MV::scalar_type s, const MV& a) {
   using A = algebra_of<MV>;
-  MV r = a;
-  for (auto& x : r.c) x *= s;
+  const MV r = gaphys::ga::scaled(a, s);
   A::on_call(A::call::smul, r, a);
   return r;
 }
@@ -145,8 +144,7 @@ MV neg(const MV& a) {
   using A = algebra_of<MV>;
   MV r(uninitialized);
   if (dispatch::specialized_neg(a, r)) return r;
-  r = a;
-  for (auto& x : r.c) x = -x;
+  r = gaphys::ga::negated(a);
   A::on_call(A::call::neg, r, a);
   return r;
 }
@@ -154,33 +152,27 @@ MV neg(const MV& a) {
 template <class MV, if_general_mv<MV> = 0>
 MV reverse(const MV& a) {
   using A = algebra_of<MV>;
-  using T = typename MV::scalar_type;
   MV r(uninitialized);
   if (dispatch::specialized_reverse(a, r)) return r;
-  r = a;
-  for (int i = 0; i < MV::size; ++i) r.c[i] *= T(A::reverse_signs[i]);
+  r = gaphys::ga::with_signs(a, A::reverse_signs);
   A::on_call(A::call::reverse, r, a);
   return r;
 }
 template <class MV, if_general_mv<MV> = 0>
 MV involute(const MV& a) {
   using A = algebra_of<MV>;
-  using T = typename MV::scalar_type;
   MV r(uninitialized);
   if (dispatch::specialized_involute(a, r)) return r;
-  r = a;
-  for (int i = 0; i < MV::size; ++i) r.c[i] *= T(A::involute_signs[i]);
+  r = gaphys::ga::with_signs(a, A::involute_signs);
   A::on_call(A::call::involute, r, a);
   return r;
 }
 template <class MV, if_general_mv<MV> = 0>
 MV conjugate(const MV& a) {
   using A = algebra_of<MV>;
-  using T = typename MV::scalar_type;
   MV r(uninitialized);
   if (dispatch::specialized_conjugate(a, r)) return r;
-  r = a;
-  for (int i = 0; i < MV::size; ++i) r.c[i] *= T(A::conjugate_signs[i]);
+  r = gaphys::ga::with_signs(a, A::conjugate_signs);
   A::on_call(A::call::conjugate, r, a);
   return r;
 }
@@ -240,8 +232,8 @@ MV exp(const MV& a) {
 }
 // log whose rotation by 2 pi (for a = -1) may only turn in the bivectors of
 // `planes`: a named type's log, whose result must stay in that type.
-template <class MV, if_general_mv<MV> = 0>
-MV log_within(const MV& a, std::uint32_t planes) {
+template <class MV, class Planes, if_general_mv<MV> = 0>
+MV log_within(const MV& a, const Planes& planes) {
   using A = algebra_of<MV>;
   const MV r = gaphys::ga::log_general(a, planes);
   A::on_call(A::call::log, r, a);

@@ -6,6 +6,7 @@
 #include "mv_dispatch.hpp"
 #include "mv_functions.hpp"
 #include "scalar_functions.hpp"
+#include "sparse_mv.hpp"
 #include "table_product.hpp"
 #include "uninitialized.hpp"
 #include "version.hpp"
