@@ -80,3 +80,47 @@ class Accessors(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+def load_text_spec(text: str, directory: str) -> str:
+    path = os.path.join(directory, "spec.ga")
+    with open(path, "w", encoding="utf-8") as handle:
+        handle.write(text)
+    return path
+
+
+class ClosedFormExp(unittest.TestCase):
+    def test_exp_into_mv_builds_its_coefficients(self):
+        # exp of a bivector type that no named type holds with the scalar
+        # returned basic_mv<T>(c, k a), a constructor no mv has (found by the
+        # ccga tests); in a dense and in a sparse algebra.
+        import tempfile
+        with tempfile.TemporaryDirectory() as directory:
+            for basis, metric in (("e1 e2 e3", "e1.e1 = 1, e2.e2 = 1, e3.e3 = 1"),
+                                  ("e1 e2 e3 e4 e5 e6", "e1.e1 = 1, e2.e2 = 1")):
+                path = load_text_spec(f"algebra t\nbasis {basis}\nmetric {metric}\ntype biv = e1^e2\n"
+                                      "function exp(biv)\n", directory)
+                kernels = rendered(path, "optimized")["kernels.hpp"]
+                exp = next(body for name, _, body in functions_of(kernels) if name == "exp")
+                self.assertIn("exp_of_square", exp)
+                self.assertNotIn("basic_mv<T>(", exp)
+                self.assertIn("from_blades" if len(basis.split()) > 5 else "r.c[", exp)
+
+
+class SparseAlgebras(unittest.TestCase):
+    def test_no_product_tables_above_five_dimensions(self):
+        tables = rendered(spec_path("ccga"), "optimized")["tables.hpp"]
+        self.assertIn("gaphys::ga::bitwise_product gp_table", tables)
+        self.assertNotIn("_offsets[] = {\n    0, ", tables.split("orthogonal_squares")[0])
+        self.assertNotIn("product_term", tables)
+        self.assertLess(len(tables), 20_000)
+
+    def test_no_recording_above_five_dimensions(self):
+        # Profiled mv kernels key on one bit per blade: 32 at most.
+        self.assertIn("on_call(call, const X&...) {}", rendered(spec_path("c4ga"), "instrumented")["recording.hpp"])
+
+    def test_a_profile_is_refused_above_five_dimensions(self):
+        from gaphys_gen.errors import UsageError
+        algebra = load(spec_path("c4ga"))
+        with self.assertRaisesRegex(UsageError, "at most 5"):
+            render.render(algebra, "optimized", "c4ga", "gaphys-gen ...", None, profile_path="c4ga.json")

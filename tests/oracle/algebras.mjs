@@ -137,8 +137,10 @@ export class OracleAlgebra {
     }
     Object.assign(this, sig);
     this.degenerate = sig.r > 0;
-    // Float64Array: ganja's default element type is Float32Array.
-    this.G = Algebra({ ...sig, baseType: Float64Array });
+    // Float64Array: ganja's default element type is Float32Array. Not graded:
+    // above 6 generators ganja's default is its graded implementation, whose
+    // elements are not flat coefficient arrays with a basis to read.
+    this.G = Algebra({ ...sig, baseType: Float64Array, graded: false });
     this.ganjaBlades = ganjaBlades(this.G);
     // ganja's generators in its order, and what each squares to.
     this.generators = [];
@@ -187,7 +189,7 @@ export class OracleAlgebra {
 
     // The Euclidean algebra on our basis: its generator i stands for our basis
     // vector i, so its blades are ours up to the parity of ganja's naming.
-    this.E = Algebra({ p: n, baseType: Float64Array });
+    this.E = Algebra({ p: n, baseType: Float64Array, graded: false });
     this.euclidBlades = ganjaBlades(this.E);
 
     // Our blade k (outer product of our vectors) in ganja's basis.
