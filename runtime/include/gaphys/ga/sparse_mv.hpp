@@ -46,9 +46,13 @@ struct blade_term {
 namespace bitwise {
 
 inline int grade(std::uint32_t blade) {
+#if defined(__GNUC__) || defined(__clang__)
+  return __builtin_popcount(blade);
+#else
   int k = 0;
   for (; blade != 0; blade &= blade - 1) ++k;
   return k;
+#endif
 }
 
 // The sign of a b for basis blades a, b of an orthogonal basis, before the
@@ -179,6 +183,14 @@ namespace sparse {
 template <class T>
 using terms = std::vector<blade_term<T>>;
 
+// Bit k set for each grade k that x has.
+template <class T>
+std::uint32_t grade_bits(const terms<T>& x) {
+  std::uint32_t bits = 0;
+  for (const auto& t : x) bits |= std::uint32_t(1) << bitwise::grade(t.blade);
+  return bits;
+}
+
 // Sorts by blade, adds repeats, drops exact zeros; returns the grade bits.
 template <class T>
 std::uint32_t normalize(terms<T>& x) {
@@ -191,9 +203,7 @@ std::uint32_t normalize(terms<T>& x) {
     if (sum != T(0)) x[out++] = {blade, sum};
   }
   x.resize(out);
-  std::uint32_t bits = 0;
-  for (const auto& t : x) bits |= std::uint32_t(1) << bitwise::grade(t.blade);
-  return bits;
+  return grade_bits(x);
 }
 
 template <class MV>
@@ -204,11 +214,62 @@ MV from_unsorted(terms<typename MV::scalar_type> x) {
   return r;
 }
 
+// Sums terms into a dense array over every blade, without sorting them
+// first: 2^n entries, zero between uses, and the list of those touched. One
+// per thread and scalar type, grown to the largest algebra used.
+template <class T>
+class accumulator {
+ public:
+  static accumulator& scratch(int dimension) {
+    thread_local accumulator instance;
+    const std::size_t size = std::size_t(1) << dimension;
+    if (instance.sums_.size() < size) {
+      instance.sums_.resize(size, T(0));
+      instance.seen_.resize(size, 0);
+    }
+    return instance;
+  }
+  void add(std::uint32_t blade, T value) {
+    if (!seen_[blade]) {
+      seen_[blade] = 1;
+      touched_.push_back(blade);
+    }
+    sums_[blade] += value;
+  }
+  // The sums, sorted by blade and without exact zeros; leaves the array zero.
+  terms<T> take() {
+    std::sort(touched_.begin(), touched_.end());
+    terms<T> out;
+    out.reserve(touched_.size());
+    for (std::uint32_t blade : touched_) {
+      if (sums_[blade] != T(0)) out.push_back({blade, sums_[blade]});
+      sums_[blade] = T(0);
+      seen_[blade] = 0;
+    }
+    touched_.clear();
+    return out;
+  }
+
+ private:
+  std::vector<T> sums_;
+  std::vector<unsigned char> seen_;
+  std::vector<std::uint32_t> touched_;
+};
+
+template <class MV>
+MV from_sorted(terms<typename MV::scalar_type> x) {
+  MV r;
+  r.bits = grade_bits(x);
+  r.terms = std::move(x);
+  return r;
+}
+
 // The image of x under the outermorphism of a vector map: each blade's
 // factors mapped and wedged in ascending order.
 template <class T>
-terms<T> outermorphism(const vector_map& map, const terms<T>& x) {
-  terms<T> out, image, next;
+terms<T> outermorphism(const vector_map& map, const terms<T>& x, int dimension) {
+  accumulator<T>& out = accumulator<T>::scratch(dimension);
+  terms<T> image, next;
   for (const auto& term : x) {
     image.assign(1, {0u, term.value});
     for (int i = 0; term.blade >> i != 0; ++i) {
@@ -223,10 +284,9 @@ terms<T> outermorphism(const vector_map& map, const terms<T>& x) {
         }
       image.swap(next);
     }
-    out.insert(out.end(), image.begin(), image.end());
+    for (const auto& part : image) out.add(part.blade, part.value);
   }
-  normalize(out);
-  return out;
+  return out.take();
 }
 
 inline bool kept(product_kind kind, std::uint32_t a, std::uint32_t b) {
@@ -261,14 +321,13 @@ inline double blade_factor(const sparse_orthogonal_basis& basis, product_kind ki
 template <class T>
 terms<T> product_terms(const sparse_orthogonal_basis& basis, product_kind kind, const terms<T>& a,
                        const terms<T>& b) {
-  terms<T> out;
-  out.reserve(a.size() * b.size());
+  accumulator<T>& out = accumulator<T>::scratch(basis.dimension);
   for (const auto& x : a)
     for (const auto& y : b) {
       const double f = blade_factor(basis, kind, x.blade, y.blade);
-      if (f != 0) out.push_back({x.blade ^ y.blade, T(f) * x.value * y.value});
+      if (f != 0) out.add(x.blade ^ y.blade, T(f) * x.value * y.value);
     }
-  return out;
+  return out.take();
 }
 
 // A bilinear product: in the orthogonal basis (one blade per pair of terms),
@@ -279,12 +338,12 @@ MV product(const bitwise_product& p, const MV& a, const MV& b) {
   const sparse_orthogonal_basis& basis = *p.basis;
   // The outer product reads no square (its blades share no factor).
   if (p.kind == product_kind::op || basis.identity)
-    return from_unsorted<MV>(product_terms(basis, p.kind, a.terms, b.terms));
-  const terms<T> x = outermorphism(basis.to_orthogonal, a.terms);
-  const terms<T> y = outermorphism(basis.to_orthogonal, b.terms);
-  terms<T> z = product_terms(basis, p.kind, x, y);
-  normalize(z);
-  return from_unsorted<MV>(outermorphism(basis.from_orthogonal, z));
+    return from_sorted<MV>(product_terms(basis, p.kind, a.terms, b.terms));
+  const int n = basis.dimension;
+  const terms<T> x = outermorphism(basis.to_orthogonal, a.terms, n);
+  const terms<T> y = outermorphism(basis.to_orthogonal, b.terms, n);
+  const terms<T> z = product_terms(basis, p.kind, x, y);
+  return from_sorted<MV>(outermorphism(basis.from_orthogonal, z, n));
 }
 
 // The metric-free complements: blade ^ (sign * complement) = I (right), or
