@@ -218,14 +218,59 @@ def dense_tables(algebra, canonical: dict) -> dict | None:
     return view
 
 
+def orthogonal_change(metric) -> tuple[list[list[Fraction]], list[list[Fraction]], list[Fraction]]:
+    """(to_orthogonal, from_orthogonal, squares), exact: to_orthogonal[i][k]
+    is f_k's part of e_i, from_orthogonal[k][i] e_i's part of f_k, and
+    squares[k] = f_k . f_k. What a sparse algebra's runtime multiplies in."""
+    f = orthogonalize(metric)
+    return _inverse(f), f, [_bilinear(metric, v, v) for v in f]
+
+
+# Which pairs of orthogonal blades x, y a product keeps: its grade filter.
+KEPT = {
+    "gp": lambda x, y: True,
+    "op": lambda x, y: not x & y,
+    "lc": lambda x, y: x & y == x,  # grade |y| - |x|: x's factors all in y
+    "rc": lambda x, y: x & y == y,
+    "scp": lambda x, y: x == y,
+}
+
+
+def bitwise_product(metric, kind: str, a: dict, b: dict) -> dict:
+    """The product of multivectors {bitmap: Fraction} as the sparse runtime
+    computes it (gaphys/ga/sparse_mv.hpp), exactly: both arguments to the
+    orthogonal basis, one blade per pair of terms, and back."""
+    from .blades import reorder_sign
+
+    to_orthogonal, from_orthogonal, squares = orthogonal_change(metric)
+
+    def outermorphism(columns, x):
+        out: dict[int, Fraction] = {}
+        for blade, value in x.items():
+            for b, v in _outermorphism(columns, blade).items():
+                out[b] = out.get(b, Fraction(0)) + value * v
+        return {b: v for b, v in out.items() if v}
+
+    product: dict[int, Fraction] = {}
+    for x, u in outermorphism(to_orthogonal, a).items():
+        for y, v in outermorphism(to_orthogonal, b).items():
+            if not KEPT[kind](x, y):
+                continue
+            factor = Fraction(reorder_sign(x, y))
+            for k in range(len(metric)):
+                if (x & y) >> k & 1:
+                    factor *= squares[k]
+            product[x ^ y] = product.get(x ^ y, Fraction(0)) + factor * u * v
+    return outermorphism(from_orthogonal, {b: v for b, v in product.items() if v})
+
+
 def sparse_basis(algebra) -> dict:
     """The view of a sparse algebra's orthogonal basis (gaphys::ga::
     sparse_orthogonal_basis): the changes between the spec's basis and an
     orthogonal one, vector by vector, and the squares of the orthogonal
     vectors. The runtime maps blades by their outermorphisms."""
-    f = orthogonalize(algebra.metric)
-    n = len(f)
-    to_orthogonal = _inverse(f)  # to_orthogonal[i][k]: f_k's part of e_i
+    to_orthogonal, from_orthogonal, squares = orthogonal_change(algebra.metric)
+    n = len(squares)
 
     def vector_map(columns):
         offsets, vectors, coefficients = [0], [], []
@@ -238,8 +283,8 @@ def sparse_basis(algebra) -> dict:
         return {"offsets": offsets, "vectors": vectors, "coefficients": coefficients}
 
     return {
-        "identity": all(f[k][i] == (1 if i == k else 0) for k in range(n) for i in range(n)),
-        "squares": [repr(float(_bilinear(algebra.metric, v, v))) for v in f],
+        "identity": all(from_orthogonal[k][i] == (1 if i == k else 0) for k in range(n) for i in range(n)),
+        "squares": [repr(float(x)) for x in squares],
         "to_orthogonal": vector_map(to_orthogonal),
-        "from_orthogonal": vector_map(f),
+        "from_orthogonal": vector_map(from_orthogonal),
     }
