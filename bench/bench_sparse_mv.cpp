@@ -39,10 +39,10 @@ c4ga::rotor random_c4ga_rotor(rng& g) {
 }
 
 c4ga::sphere random_c4ga_sphere(rng& g) {
-  return c4ga::sphere(c4ga::op(c4ga::op(c4ga::op(c4ga::op(random_c4ga_point(g), random_c4ga_point(g)),
-                                                 random_c4ga_point(g)),
-                                        random_c4ga_point(g)),
-                               random_c4ga_point(g)));
+  return c4ga::sphere(c4ga::op(
+      c4ga::op(c4ga::op(c4ga::op(random_c4ga_point(g), random_c4ga_point(g)), random_c4ga_point(g)),
+               random_c4ga_point(g)),
+      random_c4ga_point(g)));
 }
 
 c4ga::mv random_full_c4ga(rng& g) {
@@ -89,7 +89,8 @@ void register_all() {
                           [](const auto& a, const auto& b) { return apply(a, b); });
   register_both<c4ga::mv>("c4ga/meet_spheres", spheres, spheres,
                           [](const auto& a, const auto& b) { return meet(a, b); });
-  register_pair("c4ga/gp_full/mv", full, full, [](const auto& a, const auto& b) { return gp(a, b); });
+  register_pair("c4ga/gp_full/mv", full, full,
+                [](const auto& a, const auto& b) { return gp(a, b); });
   register_both<ccga::mv>("ccga/scp_point_conic", conic_points, conics,
                           [](const auto& a, const auto& b) { return scp(a, b); });
 }

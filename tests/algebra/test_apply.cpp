@@ -3,6 +3,7 @@
 // on points, dual spheres and dual planes.
 #include <c3ga/c3ga.hpp>
 #include <e3ga/e3ga.hpp>
+#include <stdexcept>
 
 #include "algebra_test_support.hpp"
 #include "c3ga_test_support.hpp"
@@ -192,6 +193,16 @@ TYPED_TEST(Apply, C3gaMotorMovesDualPlanes) {
     const auto expected = make_dual_plane<c3ga::basic_dual_plane<T>>(rn, d + dot(rn, t));
     EXPECT_TRUE(mv_near<c3mv<T>>(c3ga::apply(m, plane), expected, tolerance<T>()));
   }
+}
+
+// A null versor (ni: <ni ~ni>_0 = 0) has no inverse: apply on mv says so
+// instead of returning infinities.
+TYPED_TEST(Apply, ApplyOfANullVersorOnMvThrows) {
+  using T = TypeParam;
+  const c3mv<T> null_versor = c3ga::ni<T>();
+  const c3mv<T> point = c3ga::basic_normalized_point<T>(T(1), T(2), T(3), T(7));
+  EXPECT_THROW(c3ga::apply(null_versor, point), std::domain_error);
+  EXPECT_NO_THROW(c3ga::apply(c3mv<T>(c3ga::basic_rotor<T>(T(1), T(0), T(0), T(0))), point));
 }
 
 }  // namespace

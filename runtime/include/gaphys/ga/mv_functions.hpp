@@ -110,7 +110,8 @@ template <class MV, if_general_mv<MV> = 0>
 typename MV::scalar_type scp(const MV& a, const MV& b) {
   using A = algebra_of<MV>;
   typename MV::scalar_type r = 0;
-  if (!dispatch::specialized_scp(a, b, r)) r = gaphys::ga::scalar_part(gaphys::ga::table_product(A::scp_table, a, b));
+  if (!dispatch::specialized_scp(a, b, r))
+    r = gaphys::ga::scalar_part(gaphys::ga::table_product(A::scp_table, a, b));
   A::on_call(A::call::scp, r, a, b);
   return r;
 }
@@ -243,7 +244,8 @@ template <class MV, if_general_mv<MV> = 0>
 MV log(const MV& a) {
   return api::log_within(a, MV::grade_mask(2));
 }
-// v x v^-1 as v x ~v / <v ~v>_0, keeping the grades x has: a versor preserves grade.
+// v x v^-1 as v x ~v / <v ~v>_0, keeping the grades x has: a versor preserves
+// grade. Throws std::domain_error for a null v.
 template <class MV, if_general_mv<MV> = 0>
 MV apply(const MV& v, const MV& x) {
   using A = algebra_of<MV>;
@@ -254,7 +256,8 @@ MV apply(const MV& v, const MV& x) {
     for (int k = 0; k <= A::dimension; ++k)
       if (x.bits & MV::grade_mask(k)) mask |= MV::grade_mask(k);
     const MV rv = api::reverse(v);
-    r = api::smul(T(1) / api::scp(v, rv),
+    // A null v (<v ~v>_0 = 0) has no inverse: std::domain_error, not infinities.
+    r = api::smul(gaphys::ga::inverse_norm2<T>(api::scp(v, rv)),
                   gaphys::ga::keep_grades(api::gp(api::gp(v, x), rv), mask));
   }
   A::on_call(A::call::apply, r, v, x);

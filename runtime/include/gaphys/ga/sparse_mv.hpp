@@ -194,7 +194,8 @@ std::uint32_t grade_bits(const terms<T>& x) {
 // Sorts by blade, adds repeats, drops exact zeros; returns the grade bits.
 template <class T>
 std::uint32_t normalize(terms<T>& x) {
-  std::sort(x.begin(), x.end(), [](const blade_term<T>& p, const blade_term<T>& q) { return p.blade < q.blade; });
+  std::sort(x.begin(), x.end(),
+            [](const blade_term<T>& p, const blade_term<T>& q) { return p.blade < q.blade; });
   std::size_t out = 0;
   for (std::size_t i = 0; i < x.size();) {
     const std::uint32_t blade = x[i].blade;
@@ -407,7 +408,8 @@ MV keep_grades(const MV& x, std::uint32_t grades) {
 }
 
 template <class MV>
-MV linear_combination(typename MV::scalar_type a, const MV& x, typename MV::scalar_type b, const MV& y) {
+MV linear_combination(typename MV::scalar_type a, const MV& x, typename MV::scalar_type b,
+                      const MV& y) {
   MV r;
   r.terms.reserve(x.terms.size() + y.terms.size());
   std::size_t i = 0, j = 0;
@@ -444,7 +446,8 @@ MV general_inverse(const MV& x, const bitwise_product& gp) {
   using T = typename MV::scalar_type;
   const int dimension = gp.basis->dimension;
   if (dimension > 8)
-    throw std::domain_error("general_inverse: solved on a 2^n x 2^n matrix, so for at most 8 basis vectors");
+    throw std::domain_error(
+        "general_inverse: solved on a 2^n x 2^n matrix, so for at most 8 basis vectors");
   const int n = 1 << dimension;
   std::vector<T> m(std::size_t(n) * (n + 1), T(0));
   const auto at = [&](int i, int j) -> T& { return m[std::size_t(i) * (n + 1) + j]; };
