@@ -45,14 +45,14 @@ struct blade_term {
 
 namespace bitwise {
 
+// How many factors a blade has: sums of bit pairs, nibbles, then bytes,
+// inline on every target (__builtin_popcount without -mpopcnt is a library
+// call, which took 29% of a sparse product's time).
 inline int grade(std::uint32_t blade) {
-#if defined(__GNUC__) || defined(__clang__)
-  return __builtin_popcount(blade);
-#else
-  int k = 0;
-  for (; blade != 0; blade &= blade - 1) ++k;
-  return k;
-#endif
+  blade = blade - ((blade >> 1) & 0x55555555u);
+  blade = (blade & 0x33333333u) + ((blade >> 2) & 0x33333333u);
+  blade = (blade + (blade >> 4)) & 0x0f0f0f0fu;
+  return static_cast<int>((blade * 0x01010101u) >> 24);
 }
 
 // The sign of a b for basis blades a, b of an orthogonal basis, before the
@@ -61,6 +61,17 @@ inline int reorder_sign(std::uint32_t a, std::uint32_t b) {
   int swaps = 0;
   for (a >>= 1; a != 0; a >>= 1) swaps += grade(a & b);
   return swaps & 1 ? -1 : 1;
+}
+
+// The index of the lowest set bit of a nonzero bitmap.
+inline int lowest(std::uint32_t bits) {
+#if defined(__GNUC__) || defined(__clang__)
+  return __builtin_ctz(bits);
+#else
+  int i = 0;
+  while (!(bits >> i & 1)) ++i;
+  return i;
+#endif
 }
 
 inline long binomial(int n, int k) {
@@ -265,27 +276,72 @@ MV from_sorted(terms<typename MV::scalar_type> x) {
   return r;
 }
 
-// The image of x under the outermorphism of a vector map: each blade's
-// factors mapped and wedged in ascending order.
-template <class T>
-terms<T> outermorphism(const vector_map& map, const terms<T>& x, int dimension) {
-  accumulator<T>& out = accumulator<T>::scratch(dimension);
-  terms<T> image, next;
-  for (const auto& term : x) {
-    image.assign(1, {0u, term.value});
-    for (int i = 0; term.blade >> i != 0; ++i) {
-      if (!(term.blade >> i & 1)) continue;
+// The images of blades under the outermorphism of a vector map (each
+// blade's factors mapped and wedged in ascending order), made on first use
+// and kept: one cache per map and thread, so no locking, grown to the blades
+// met (at most 2^16).
+class blade_images {
+ public:
+  static blade_images& of(const vector_map& map, int dimension) {
+    thread_local std::vector<std::pair<const vector_map*, blade_images>> caches;
+    for (auto& [key, images] : caches)
+      if (key == &map) return images;
+    caches.emplace_back(&map, blade_images(map, dimension));
+    return caches.back().second;
+  }
+
+  // The image of `blade`: count terms from first.
+  struct span {
+    const blade_term<double>* first;
+    std::size_t count;
+  };
+  span image(std::uint32_t blade) {
+    if (begin_[blade] == unmade) make(blade);
+    return {terms_.data() + begin_[blade], std::size_t(end_[blade] - begin_[blade])};
+  }
+
+ private:
+  static constexpr std::uint32_t unmade = ~std::uint32_t(0);
+
+  blade_images(const vector_map& map, int dimension)
+      : map_(map),
+        begin_(std::size_t(1) << dimension, unmade),
+        end_(std::size_t(1) << dimension, 0) {}
+
+  void make(std::uint32_t blade) {
+    std::vector<blade_term<double>> image{{0u, 1.0}}, next;
+    for (int i = 0; blade >> i != 0; ++i) {
+      if (!(blade >> i & 1)) continue;
       next.clear();
       for (const auto& part : image)
-        for (int t = map.offsets[i]; t < map.offsets[i + 1]; ++t) {
-          const std::uint32_t bit = std::uint32_t(1) << map.vectors[t];
+        for (int t = map_.offsets[i]; t < map_.offsets[i + 1]; ++t) {
+          const std::uint32_t bit = std::uint32_t(1) << map_.vectors[t];
           if (part.blade & bit) continue;
-          const T sign = T(bitwise::reorder_sign(part.blade, bit));
-          next.push_back({part.blade | bit, sign * T(map.coefficients[t]) * part.value});
+          // Wedged on the right, the new factor passes those above it.
+          const double sign = bitwise::grade(part.blade & ~(2 * bit - 1)) & 1 ? -1.0 : 1.0;
+          next.push_back({part.blade | bit, sign * map_.coefficients[t] * part.value});
         }
       image.swap(next);
     }
-    for (const auto& part : image) out.add(part.blade, part.value);
+    begin_[blade] = std::uint32_t(terms_.size());
+    terms_.insert(terms_.end(), image.begin(), image.end());
+    end_[blade] = std::uint32_t(terms_.size());
+  }
+
+  const vector_map& map_;
+  std::vector<std::uint32_t> begin_, end_;
+  std::vector<blade_term<double>> terms_;
+};
+
+// The image of x under the outermorphism of a vector map.
+template <class T>
+terms<T> outermorphism(const vector_map& map, const terms<T>& x, int dimension) {
+  accumulator<T>& out = accumulator<T>::scratch(dimension);
+  blade_images& images = blade_images::of(map, dimension);
+  for (const auto& term : x) {
+    const blade_images::span image = images.image(term.blade);
+    for (std::size_t k = 0; k < image.count; ++k)
+      out.add(image.first[k].blade, T(image.first[k].value) * term.value);
   }
   return out.take();
 }
@@ -311,11 +367,8 @@ inline double blade_factor(const sparse_orthogonal_basis& basis, product_kind ki
                            std::uint32_t b) {
   if (!kept(kind, a, b)) return 0;
   double f = bitwise::reorder_sign(a, b);
-  for (std::uint32_t common = a & b; common != 0; common &= common - 1) {
-    int k = 0;
-    while (!(common >> k & 1)) ++k;
-    f *= basis.squares[k];
-  }
+  for (std::uint32_t common = a & b; common != 0; common &= common - 1)
+    f *= basis.squares[bitwise::lowest(common)];
   return f;
 }
 
