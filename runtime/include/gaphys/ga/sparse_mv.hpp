@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -283,11 +284,12 @@ MV from_sorted(terms<typename MV::scalar_type> x) {
 class blade_images {
  public:
   static blade_images& of(const vector_map& map, int dimension) {
-    thread_local std::vector<std::pair<const vector_map*, blade_images>> caches;
+    // unique_ptr: a reference handed out stays valid when the list grows.
+    thread_local std::vector<std::pair<const vector_map*, std::unique_ptr<blade_images>>> caches;
     for (auto& [key, images] : caches)
-      if (key == &map) return images;
-    caches.emplace_back(&map, blade_images(map, dimension));
-    return caches.back().second;
+      if (key == &map) return *images;
+    caches.emplace_back(&map, std::unique_ptr<blade_images>(new blade_images(map, dimension)));
+    return *caches.back().second;
   }
 
   // The image of `blade`: count terms from first.
