@@ -114,7 +114,8 @@ MV keep_grades(const MV& x, std::uint32_t mask) {
 }
 
 template <class MV>
-MV linear_combination(typename MV::scalar_type a, const MV& x, typename MV::scalar_type b, const MV& y) {
+MV linear_combination(typename MV::scalar_type a, const MV& x, typename MV::scalar_type b,
+                      const MV& y) {
   if constexpr (is_sparse_v<MV>) {
     return sparse::linear_combination(a, x, b, y);
   } else {
@@ -231,7 +232,8 @@ MV exp_series(const MV& x) {
 // with |W^2| = 5e-6 lost its small rotation to an absolute test, and exp(B)
 // its fifth digit in float).
 template <class MV>
-bool split_bivector(const MV& b, MV& b1, MV& b2, typename MV::scalar_type& l1, typename MV::scalar_type& l2) {
+bool split_bivector(const MV& b, MV& b1, MV& b2, typename MV::scalar_type& l1,
+                    typename MV::scalar_type& l2) {
   using T = typename MV::scalar_type;
   const MV square = gp(b, b);
   const MV w = linear_combination(T(0.5), keep_grades(square, MV::grade_mask(4)), T(0), square);
@@ -326,12 +328,67 @@ template <class MV, class Planes>
 MV log_fallback(const Planes& planes) {
   using T = typename MV::scalar_type;
   for (const MV& e : basis_planes<MV>(planes))
-    if (scalar_part(gp(e, e)) == T(-1)) return linear_combination(T(3.14159265358979323846), e, T(0), e);
-  throw std::domain_error("log: -1 is a rotation by 2 pi, and no bivector the result may hold squares to -1");
+    if (scalar_part(gp(e, e)) == T(-1))
+      return linear_combination(T(3.14159265358979323846), e, T(0), e);
+  throw std::domain_error(
+      "log: -1 is a rotation by 2 pi, and no bivector the result may hold squares to -1");
 }
 
-// log of an even versor of grades 0, 2 (and 4 for screw motions): the
-// bivector L with exp(L) = r. Rotation angles come out in [0, pi] per plane.
+// log of r = exp(B1) exp(B2), B1 and B2 commuting bivectors in orthogonal
+// planes that are not null (a double rotation of 4-D space; a boost times a
+// rotation): r = (c1 + P1)(c2 + P2), P_i = s_i u_i, u_i^2 = +-1, so
+//   <r>_0 = c1 c2,  <r>_2 = b = c2 P1 + c1 P2,  <r>_4 = q = P1 P2.
+// The invariant decomposition splits b into c2 P1 + c1 P2 with squares
+// l1 = c2^2 P1^2 and l2 = c1^2 P2^2; since P_i^2 = c_i^2 - 1 (cos^2 + sin^2
+// = 1, cosh^2 - sinh^2 = 1), c2^2 = c^2 - l1 and c1^2 = c^2 - l2. With
+// c2 >= 0 (the other sign gives the same r), P_i = part_i / c_j is read
+// from b where the cosine c_j is not small; where it is, from q = P1 P2
+// instead (P1 = q P2 / P2^2), and each P_i gets its simple logarithm.
+// std::domain_error when the parts do not fit (the planes are isoclinic, or
+// r is no such product).
+template <class MV>
+MV log_two_planes(const MV& r, const MV& b, const MV& q) {
+  using T = typename MV::scalar_type;
+  const char* const unsupported =
+      "log: only rotations, boosts, translations, screw motions and double rotations are supported";
+  MV part1, part2;
+  T l1, l2;
+  if (!split_bivector(b, part1, part2, l1, l2)) throw std::domain_error(unsupported);
+  const T c = scalar_part(r);
+  const T c2_squared = c * c - l1, c1_squared = c * c - l2;
+  if (!(c2_squared >= -tolerance(T(1)) && c1_squared >= -tolerance(T(1))))
+    throw std::domain_error(unsupported);
+  const T c2 = std::sqrt(std::max(c2_squared, T(0)));
+  const T c1 = std::sqrt(std::max(c1_squared, T(0))) * (c < 0 ? T(-1) : T(1));
+  // P1 P2 = q, and P_i^2 = c_i^2 - 1: P1 = q P2 / P2^2, P2 = P1 q / P1^2.
+  MV p1, p2;
+  if (std::min(c2, std::abs(c1)) >= T(0.25)) {  // both from b
+    p1 = linear_combination(T(1) / c2, part1, T(0), part1);
+    p2 = linear_combination(T(1) / c1, part2, T(0), part2);
+  } else if (c2 >= std::abs(c1)) {
+    p1 = linear_combination(T(1) / c2, part1, T(0), part1);
+    p2 = keep_grades(gp(p1, q), MV::grade_mask(2));
+    p2 = linear_combination(T(1) / (c1 * c1 - T(1)), p2, T(0), p2);
+  } else {
+    p2 = linear_combination(T(1) / c1, part2, T(0), part2);
+    p1 = keep_grades(gp(q, p2), MV::grade_mask(2));
+    p1 = linear_combination(T(1) / (c2 * c2 - T(1)), p1, T(0), p1);
+  }
+  const T f1 =
+      log_factor(c1 * c1 - T(1), c1, log_case_of(c1 * c1 - T(1), c1, coefficient_dot(p1, p1)));
+  const T f2 =
+      log_factor(c2 * c2 - T(1), c2, log_case_of(c2 * c2 - T(1), c2, coefficient_dot(p2, p2)));
+  const MV log = linear_combination(f1, p1, f2, p2);
+  // The decomposition assumed r is such a product: check that it is.
+  const MV back = exp_general(log);
+  if (max_abs(linear_combination(T(1), back, T(-1), r)) > T(1024) * tolerance(max_abs(r)))
+    throw std::domain_error(unsupported);
+  return log;
+}
+
+// log of an even versor of grades 0, 2 (and 4 for screw motions and double
+// rotations: log_two_planes): the bivector L with exp(L) = r. Rotation
+// angles come out in [0, pi] per plane.
 // For a screw r = exp(b1) exp(b2), b1 a rotation (b1^2 = -t^2), b2 null and
 // commuting with b1: <r>_0 = cos t, <r>_2 = sin t u1 + cos t b2 (u1 = b1/t),
 // <r>_4 = sin t u1 b2, hence b2 = cos t <r>_2,null - (sin t u1) <r>_4.
@@ -378,7 +435,8 @@ MV log_general(const MV& r, const Planes& planes = ~std::uint32_t(0)) {
       simple = part <= tolerance(magnitude);  // -1: a rotation by 2 pi
     }
   }
-  if (simple && max_abs(keep_grades(square, ~(MV::grade_mask(0) | MV::grade_mask(4)))) <= tolerance(max_abs(square))) {
+  if (simple && max_abs(keep_grades(square, ~(MV::grade_mask(0) | MV::grade_mask(4)))) <=
+                    tolerance(max_abs(square))) {
     if (where == log_case::minus_one) return log_fallback<MV>(planes);
     return linear_combination(log_factor(s0, c, where), b, T(0), b);
   }
@@ -399,11 +457,14 @@ MV log_general(const MV& r, const Planes& planes = ~std::uint32_t(0)) {
   // and an underflowed d has no direction.
   const MV d = keep_grades(gp(b, linear_combination(T(1) / q_size, q, T(0), q)), MV::grade_mask(2));
   const T d_size = max_abs(d);
-  if (!(q_size > 0) || !(d_size > 0)) throw std::domain_error("log: only rotations, boosts, translations and screw motions are supported");
+  if (!(q_size > 0) || !(d_size > 0))
+    throw std::domain_error(
+        "log: only rotations, boosts, translations, screw motions and double rotations are "
+        "supported");
   const MV u = linear_combination(T(1) / d_size, d, T(0), d);  // d / max|d|
   const T u_norm2 = coefficient_dot(u, u);
-  if (max_abs(gp(u, u)) > tolerance(u_norm2))  // b2 must be null: a translation
-    throw std::domain_error("log: only rotations, boosts, translations and screw motions are supported");
+  if (max_abs(gp(u, u)) > tolerance(u_norm2))  // b2 is not null: two planes that are not
+    return log_two_planes(r, b, q);            // a translation (a 4-D double rotation)
   // b2 = c (b . u) u / |u|^2 + s^2 b2 = (c (b . u) / |u|^2 - m max|d|) u
   const T length = c * coefficient_dot(b, u) / u_norm2 - q_size * d_size;
   const MV b2 = linear_combination(length, u, T(0), u);
@@ -424,7 +485,9 @@ MV log_general(const MV& r, const Planes& planes = ~std::uint32_t(0)) {
   else if (sin2 > -smallest && length < 0)
     s = std::sqrt(q_size) * std::sqrt(d_size / -length);
   if (!(s > 0))
-    throw std::domain_error("log: only rotations, boosts, translations and screw motions are supported");
+    throw std::domain_error(
+        "log: only rotations, boosts, translations, screw motions and double rotations are "
+        "supported");
   return linear_combination(std::atan2(s, c) / s, rotation, T(1), b2);
 }
 
@@ -478,16 +541,20 @@ std::ostream& print(std::ostream& out, const MV& x) {
   std::vector<std::pair<int, T>> nonzero;  // (canonical index, value), in canonical order
   if constexpr (is_sparse_v<MV>) {
     for (const auto& t : x.terms)
-      if (t.value != T(0)) nonzero.push_back({canonical_index(MV::algebra::dimension, t.blade), t.value});
-    std::sort(nonzero.begin(), nonzero.end(), [](const auto& p, const auto& q) { return p.first < q.first; });
+      if (t.value != T(0))
+        nonzero.push_back({canonical_index(MV::algebra::dimension, t.blade), t.value});
+    std::sort(nonzero.begin(), nonzero.end(),
+              [](const auto& p, const auto& q) { return p.first < q.first; });
   } else {
     for (int i = 0; i < MV::size; ++i)
       if (x.c[i] != T(0)) nonzero.push_back({i, x.c[i]});
   }
   bool first = true;
   for (const auto& [i, v] : nonzero) {
-    if (!first) out << (v < 0 ? " - " : " + ");
-    else if (v < 0) out << "-";
+    if (!first)
+      out << (v < 0 ? " - " : " + ");
+    else if (v < 0)
+      out << "-";
     out << std::abs(v);
     if (i != 0) out << "*" << MV::blade_name(i);
     first = false;
