@@ -491,46 +491,52 @@ MV log_general(const MV& r, const Planes& planes = ~std::uint32_t(0)) {
   return linear_combination(std::atan2(s, c) / s, rotation, T(1), b2);
 }
 
+// The inverse of any invertible multivector: solves x y = 1 for y by Gaussian
+// elimination on the matrix of left multiplication by x, 2^n x 2^n: for a
+// sparse mv, so only up to 8 basis vectors.
 template <class MV>
-MV dense_general_inverse(const MV& x) {
+MV general_inverse(const MV& x) {
   using T = typename MV::scalar_type;
   constexpr int n = MV::size;
-  std::array<std::array<T, n + 1>, n> m{};
+  if constexpr (is_sparse_v<MV>) {
+    if (MV::algebra::dimension > 8)
+      throw std::domain_error(
+          "general_inverse: solved on a 2^n x 2^n matrix, so for at most 8 basis vectors");
+  }
+  // m[i][j], row-major with the right-hand side as column n.
+  std::vector<T> m(std::size_t(n) * (n + 1), T(0));
+  const auto at = [&](int i, int j) -> T& { return m[std::size_t(i) * (n + 1) + j]; };
   for (int j = 0; j < n; ++j) {
     const MV column = gp(x, MV::basis_blade(j));
-    for (int i = 0; i < n; ++i) m[i][j] = column.c[i];
+    for (int i = 0; i < n; ++i) at(i, j) = column[i];
   }
-  m[0][n] = 1;
+  at(0, n) = 1;
   const T scale = max_abs(x);
   for (int col = 0; col < n; ++col) {
     int pivot = col;
     for (int i = col + 1; i < n; ++i)
-      if (std::abs(m[i][col]) > std::abs(m[pivot][col])) pivot = i;
-    if (!(std::abs(m[pivot][col]) > tolerance(scale) * scale))
+      if (std::abs(at(i, col)) > std::abs(at(pivot, col))) pivot = i;
+    if (!(std::abs(at(pivot, col)) > tolerance(scale) * scale))
       throw std::domain_error("general_inverse: the multivector is not invertible");
-    std::swap(m[pivot], m[col]);
+    for (int k = 0; k <= n; ++k) std::swap(at(pivot, k), at(col, k));
     for (int i = 0; i < n; ++i) {
-      if (i == col || m[i][col] == 0) continue;
-      const T f = m[i][col] / m[col][col];
-      for (int k = col; k <= n; ++k) m[i][k] -= f * m[col][k];
+      if (i == col || at(i, col) == 0) continue;
+      const T f = at(i, col) / at(col, col);
+      for (int k = col; k <= n; ++k) at(i, k) -= f * at(col, k);
     }
   }
-  MV y;
-  for (int i = 0; i < n; ++i) {
-    y.c[i] = m[i][n] / m[i][i];
-    if (y.c[i] != 0) y.bits |= std::uint32_t(1) << i;
-  }
-  return y;
-}
-
-// The inverse of any invertible multivector: solves x y = 1 for y by Gaussian
-// elimination on the matrix of left multiplication by x.
-template <class MV>
-MV general_inverse(const MV& x) {
   if constexpr (is_sparse_v<MV>) {
-    return sparse::general_inverse(x, MV::algebra::gp_table);
+    sparse::terms<T> y;
+    for (int i = 0; i < n; ++i)
+      y.push_back({blade_of_index(MV::algebra::dimension, i), at(i, n) / at(i, i)});
+    return sparse::from_unsorted<MV>(std::move(y));
   } else {
-    return dense_general_inverse(x);
+    MV y;
+    for (int i = 0; i < n; ++i) {
+      y.c[i] = at(i, n) / at(i, i);
+      if (y.c[i] != 0) y.bits |= std::uint32_t(1) << i;
+    }
+    return y;
   }
 }
 

@@ -203,9 +203,9 @@ std::uint32_t grade_bits(const terms<T>& x) {
   return bits;
 }
 
-// Sorts by blade, adds repeats, drops exact zeros; returns the grade bits.
+// Sorts by blade, adds repeats, drops exact zeros.
 template <class T>
-std::uint32_t normalize(terms<T>& x) {
+void normalize(terms<T>& x) {
   std::sort(x.begin(), x.end(),
             [](const blade_term<T>& p, const blade_term<T>& q) { return p.blade < q.blade; });
   std::size_t out = 0;
@@ -216,15 +216,6 @@ std::uint32_t normalize(terms<T>& x) {
     if (sum != T(0)) x[out++] = {blade, sum};
   }
   x.resize(out);
-  return grade_bits(x);
-}
-
-template <class MV>
-MV from_unsorted(terms<typename MV::scalar_type> x) {
-  MV r;
-  r.bits = normalize(x);
-  r.terms = std::move(x);
-  return r;
 }
 
 // Sums terms into a dense array over every blade, without sorting them
@@ -275,6 +266,12 @@ MV from_sorted(terms<typename MV::scalar_type> x) {
   r.bits = grade_bits(x);
   r.terms = std::move(x);
   return r;
+}
+
+template <class MV>
+MV from_unsorted(terms<typename MV::scalar_type> x) {
+  normalize(x);
+  return from_sorted<MV>(std::move(x));
 }
 
 // The images of blades under the outermorphism of a vector map (each
@@ -492,46 +489,6 @@ MV plus_scalar(const MV& x, typename MV::scalar_type s) {
   scalar.terms = {{0u, s}};
   scalar.bits = 1;
   return linear_combination(typename MV::scalar_type(1), x, typename MV::scalar_type(1), scalar);
-}
-
-// The inverse by Gaussian elimination on the matrix of left multiplication,
-// as for the dense mv: a 2^n x 2^n matrix, so only up to 8 dimensions.
-template <class MV>
-MV general_inverse(const MV& x, const bitwise_product& gp) {
-  using T = typename MV::scalar_type;
-  const int dimension = gp.basis->dimension;
-  if (dimension > 8)
-    throw std::domain_error(
-        "general_inverse: solved on a 2^n x 2^n matrix, so for at most 8 basis vectors");
-  const int n = 1 << dimension;
-  std::vector<T> m(std::size_t(n) * (n + 1), T(0));
-  const auto at = [&](int i, int j) -> T& { return m[std::size_t(i) * (n + 1) + j]; };
-  T scale = 0;
-  for (const auto& t : x.terms) scale = std::max(scale, std::abs(t.value));
-  for (int j = 0; j < n; ++j) {
-    MV e;
-    e.terms = {{std::uint32_t(j), T(1)}};
-    e.bits = std::uint32_t(1) << bitwise::grade(std::uint32_t(j));
-    for (const auto& t : product(gp, x, e).terms) at(int(t.blade), j) = t.value;
-  }
-  at(0, n) = 1;  // x y = 1: the scalar's row (blade 0)
-  const T tolerance = std::numeric_limits<T>::epsilon() * T(256) * std::max(T(1), scale) * scale;
-  for (int col = 0; col < n; ++col) {
-    int pivot = col;
-    for (int i = col + 1; i < n; ++i)
-      if (std::abs(at(i, col)) > std::abs(at(pivot, col))) pivot = i;
-    if (!(std::abs(at(pivot, col)) > tolerance))
-      throw std::domain_error("general_inverse: the multivector is not invertible");
-    for (int k = 0; k <= n; ++k) std::swap(at(pivot, k), at(col, k));
-    for (int i = 0; i < n; ++i) {
-      if (i == col || at(i, col) == 0) continue;
-      const T f = at(i, col) / at(col, col);
-      for (int k = col; k <= n; ++k) at(i, k) -= f * at(col, k);
-    }
-  }
-  terms<T> y;
-  for (int i = 0; i < n; ++i) y.push_back({std::uint32_t(i), at(i, n) / at(i, i)});
-  return from_unsorted<MV>(std::move(y));
 }
 
 }  // namespace sparse
