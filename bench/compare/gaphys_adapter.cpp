@@ -39,10 +39,13 @@ gaphys::shape with_surface(const gaphys::shape& shape, double restitution, doubl
 
 class gaphys_adapter final : public engine_adapter {
  public:
+  explicit gaphys_adapter(int threads) : threads_(threads) {}
+
   void build(const scene& s) override {
     gaphys::world_settings settings;  // defaults: 20 sweeps (+10 for turning contacts), threshold 0.5 m/s
     settings.gravity = to_gaphys(s.gravity);
     settings.sleeping = false;  // as Bullet and ODE run here: every body steps every step
+    settings.threads = threads_;
     world_.emplace(settings);
     for (const plane_description& p : s.planes) {
       gaphys::body_definition plane;
@@ -82,6 +85,7 @@ class gaphys_adapter final : public engine_adapter {
   }
 
  private:
+  int threads_;
   std::optional<gaphys::world> world_;
   std::size_t first_body_ = 0;
 };
@@ -104,7 +108,7 @@ std::string rule_name(gaphys::combine_rule rule) {
 
 }  // namespace
 
-engine gaphys_engine() {
+engine gaphys_engine(int threads) {
   const gaphys::world_settings defaults;
   return {
       "gaphys",
@@ -112,6 +116,8 @@ engine gaphys_engine() {
       "double",
       {{"world", "gaphys::world, default world_settings but sleeping off",
         "the engine as documented; no engine sleeps here"},
+       {"threads", threads == 0 ? std::string("every core") : std::to_string(threads),
+        "--gaphys-threads; the results are the same with any number, only the time changes"},
        {"solver sweeps", std::to_string(defaults.solver_iterations) + " (+" +
                              std::to_string(defaults.turning_iterations) + " for contacts that turn a body)",
         "default"},
@@ -136,7 +142,7 @@ engine gaphys_engine() {
         "the F scenes measure sliding friction only; set explicitly, as are friction and e"},
        {"damping", "0", "default"},
        {"attitude", "rotor, |q| = sqrt(R ~R)", "read as a quaternion for the harness"}},
-      [] { return std::make_unique<gaphys_adapter>(); }};
+      [threads] { return std::make_unique<gaphys_adapter>(threads); }};
 }
 
 }  // namespace gaphys_compare

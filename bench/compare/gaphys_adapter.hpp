@@ -5,6 +5,7 @@
 
 namespace gaphys_compare {
 
-engine gaphys_engine();
+// `threads`: world_settings::threads (0: every core).
+engine gaphys_engine(int threads);
 
 }  // namespace gaphys_compare

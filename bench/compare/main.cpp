@@ -26,7 +26,7 @@ bool selected(const std::vector<std::string>& wanted, const std::string& name) {
 
 int run(const options& o) {
   std::vector<engine> engines;
-  for (engine e : {gaphys_engine(), bullet_engine(), ode_engine(ode_stepper::quick),
+  for (engine e : {gaphys_engine(o.gaphys_threads), bullet_engine(), ode_engine(ode_stepper::quick),
                    ode_engine(ode_stepper::direct)}) {
     if (selected(o.engines, e.name)) engines.push_back(std::move(e));
   }

@@ -59,6 +59,7 @@ const char* usage() {
          "  --b5-steps N          B5 steps timed (360)\n"
          "  --box-budget S        skip a B3-B5 run (and larger B5 sizes) after S s of wall time\n"
          "                        or a step longer than --m6-step-budget (60)\n"
+         "  --gaphys-threads N    gaphys's solver and narrow-phase threads, 0: every core (1)\n"
          "  --out-dir DIR         results.csv, results.json, plots (compare-results)\n"
          "  --no-plots            do not run gnuplot\n"
          "The --m6-warmup, --m6-steps and --m6-*-budget flags time F5 too; F1-F4 (one\n"
@@ -111,6 +112,8 @@ options parse_options(int argc, char** argv) {
       o.b5_warmup = to_count(flag, value);
     } else if (flag == "--b5-steps") {
       o.b5_steps = to_count(flag, value);
+    } else if (flag == "--gaphys-threads") {
+      o.gaphys_threads = to_count(flag, value);
     } else if (flag == "--box-budget") {
       o.box_budget = to_number(flag, value);
     } else if (flag == "--out-dir") {

@@ -33,6 +33,9 @@ struct options {
   int b5_warmup = 360;  // 1.5 s
   int b5_steps = 360;   // 1.5 s
   double box_budget = 60;
+  // gaphys's world_settings::threads: 1, as Bullet and ODE run here (0:
+  // every core, gaphys's default).
+  int gaphys_threads = 1;
   std::string out_dir = "compare-results";
   bool plots = true;
   bool help = false;

@@ -59,7 +59,8 @@ void print_parameters(std::ostream& out, const std::vector<engine>& engines) {
       out << "  " << p.name << ": " << p.value << "  [" << p.why << "]\n";
     }
   }
-  out << "time step h = 1/" << number(1 / time_step) << " s, single thread, every engine\n";
+  out << "time step h = 1/" << number(1 / time_step)
+      << " s, every engine; Bullet and ODE on one thread, gaphys on its threads above\n";
 }
 
 void print_table(std::ostream& out, const std::vector<engine>& engines,

@@ -19,6 +19,7 @@
 #include "gaphys/body.hpp"
 #include "gaphys/contact.hpp"
 #include "gaphys/world.hpp"
+#include "contact_colouring.hpp"
 #include "impulse_row.hpp"
 #include "timed_impact.hpp"
 
@@ -117,9 +118,16 @@ class contact_solver {
     vector timed_impulse{};  // and was this impulse (N s); correct_positions moves the bodies by it
   };
 
-  void add_constraint(const world_settings& settings, const body& a, const body& b,
-                      const contact& c, const body_velocity& start_a,
-                      const body_velocity& start_b, real h);
+  // How many surface and resistance terms: a contact's own (0 or 1 each),
+  // or where its own go in surfaces_ and resistances_.
+  struct term_counts {
+    std::size_t surfaces = 0, resistances = 0;
+  };
+  static term_counts terms_of(const body& a, const body& b, const contact& c);
+  void build_constraint(const world_settings& settings, const body& a, const body& b,
+                        const contact& c, const body_velocity& start_a,
+                        const body_velocity& start_b, real h, std::size_t slot,
+                        const term_counts& at);
   static std::optional<timed_impact> time_impact(const body& a, const body& b, const contact& c,
                                                  const body_velocity& start_a,
                                                  const body_velocity& start_b, real h);
@@ -128,11 +136,31 @@ class contact_solver {
   bool impact(std::size_t index, real threshold, real h);
   void warm_start(const std::vector<body>& bodies, const std::vector<contact>& contacts,
                   const std::vector<contact>& previous);
+  // Which contacts a sweep solves, and which of its sweeps are plain.
+  struct sweep_kind {
+    bool turning_only;     // past solver_iterations: only contacts that turn a body
+    bool last_of_all;      // the last sweep of the contacts that do not turn a body
+    bool last_of_turning;  // the last sweep of those that do
+  };
+  // A sweep's largest speed change, and whether it solved any contact.
+  struct sweep_result {
+    real largest_change = 0;
+    bool any = false;
+  };
   void solve_contacts(const world_settings& settings);
+  void solve_runs(std::size_t first_run, std::size_t end_run, const sweep_kind& kind,
+                  sweep_result& result);
+  GAPHYS_ALWAYS_INLINE void solve_contact(constraint& k, const sweep_kind& kind,
+                                          sweep_result& result);
   void store_impulses(std::vector<contact>& contacts) const;
   void correct_turning(const world_settings& settings, std::vector<body>& bodies,
                        const std::vector<contact>& contacts, real h);
 
+  // In the sweeps' order (contact_colouring.hpp), not the contacts':
+  // contact i is constraints_[slot_[i]].
+  detail::contact_colouring colouring_;
+  std::vector<std::size_t> slot_;
+  std::vector<term_counts> terms_at_;  // per constraint: where its optional terms go
   std::vector<constraint> constraints_;
   std::vector<impact_terms> impacts_;        // one per constraint
   std::vector<surface_terms> surfaces_;      // for the constraints that have them
@@ -145,6 +173,7 @@ class contact_solver {
   std::vector<char> previous_used_;         // the last step's contacts already warm starting one
   std::vector<solver_body> pseudo_bodies_;  // correct_turning's pseudo velocities
   std::vector<real> pseudo_targets_, pseudo_accumulated_, pseudo_depths_;  // per contact
+  std::vector<sweep_result> thread_results_;  // one per thread of the contact phase
 };
 
 }  // namespace gaphys

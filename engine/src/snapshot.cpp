@@ -246,7 +246,10 @@ void write_settings(detail::byte_writer& out, const world_settings& s) {
   const auto& [gravity, linear_damping, angular_damping, solver_iterations, turning_iterations,
                solver_tolerance, solver_relaxation, restitution_threshold, impact_iterations,
                material_combine, position_correction, linear_slop, contact_margin, broad_phase,
-               sleeping, sleep_linear_speed, sleep_angular_speed, time_to_sleep] = s;
+               sleeping, sleep_linear_speed, sleep_angular_speed, time_to_sleep, threads] = s;
+  // Not written: how many threads step the world changes nothing it
+  // computes, and the state hash must not depend on it.
+  static_cast<void>(threads);
   const auto& [restitution_rule, friction_rule, rolling_rule, spinning_rule] = material_combine;
   out.numbers(gravity);
   out.number(linear_damping);
@@ -997,6 +1000,7 @@ void world::restore_snapshot(const std::vector<std::uint8_t>& bytes) {
   world restored = detail::snapshot_access::restore(bytes);
   // A later query must not take the old index for the new bodies.
   restored.geometry_version_ = geometry_version_ + 1;
+  restored.settings_.threads = settings_.threads;  // this machine's, not the snapshot's
   *this = std::move(restored);
 }
 

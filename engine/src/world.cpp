@@ -61,6 +61,9 @@ const world_settings& validated(const world_settings& s) {
   detail::require_non_negative(s.sleep_linear_speed, "sleep linear speed");
   detail::require_non_negative(s.sleep_angular_speed, "sleep angular speed");
   detail::require_non_negative(s.time_to_sleep, "time to sleep");
+  if (s.threads < 0 || s.threads > 1024) {
+    detail::reject("threads must be in [0, 1024], 0 for every core (got ", s.threads, ")");
+  }
   if (s.broad_phase != broad_phase_kind::uniform_grid &&
       s.broad_phase != broad_phase_kind::all_pairs) {
     detail::reject("broad phase must be uniform_grid or all_pairs");
@@ -317,6 +320,12 @@ void world::set_broad_phase(broad_phase_kind kind) {
   space_.set_broad_phase(kind);
 }
 
+void world::set_threads(int threads) {
+  world_settings changed = settings_;
+  changed.threads = threads;
+  settings_ = validated(changed);
+}
+
 void world::set_material_combine(const material_combine_rules& rules) {
   world_settings changed = settings_;
   changed.material_combine = rules;
@@ -367,7 +376,7 @@ void world::step(real h) {
   previous_contacts_.swap(contacts_);
   std::vector<sensor_overlap> sleeping_overlaps = unchanged_sensor_overlaps();
   space_.find_contacts(bodies_, pairs_, contacts_, h, settings_.material_combine,
-                       settings_.contact_margin, &sensor_overlaps_);
+                       settings_.contact_margin, &sensor_overlaps_, settings_.threads);
   merge_sensor_overlaps(sleeping_overlaps);
   const auto met = clock::now();
   if (!solver_) solver_ = std::make_unique<contact_solver>();  // a moved-from world

@@ -1,13 +1,39 @@
 // Determinism: the same scene stepped the same way reaches bit-identical
 // states, and the state hash tells states apart when a single bit differs.
 #include <cstring>
+#include <random>
 
+#include "box_helpers.hpp"
 #include "engine_test_support.hpp"
 
 namespace gaphys::testing {
 namespace {
 
-class determinism_test : public engine_test {};
+class determinism_test : public engine_test {
+ protected:
+  // Two layers of 12 x 12 boxes, turned at random, dropped together on a floor:
+  // well over a thousand contacts, enough for the solver and the narrow phase
+  // to split their work over 4 threads.
+  static world box_pile(int threads) {
+    world_settings settings;
+    settings.threads = threads;
+    settings.sleeping = false;
+    world w(settings);
+    add_floor(w, 0, 0, 0.5);
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<real> angle(-0.3, 0.3);
+    for (int layer = 0; layer < 2; ++layer) {
+      for (int i = 0; i < 12; ++i) {
+        for (int j = 0; j < 12; ++j) {
+          const rotor turn = e3ga::exp(bivector{angle(random), angle(random), angle(random)});
+          add_box(w, vector{real(0.52) * i, real(0.52) * j, real(0.27) + real(0.56) * layer},
+                  vector{0.25, 0.25, 0.25}, turn);
+        }
+      }
+    }
+    return w;
+  }
+};
 
 TEST_F(determinism_test, the_same_scene_twice_gives_bit_identical_states) {
   world first = scenes::falling_spheres_in_box(30, 7);
@@ -45,6 +71,44 @@ TEST_F(determinism_test, the_hash_sees_a_one_bit_change) {
   // Different seeds are different scenes.
   EXPECT_NE(scenes::falling_spheres_in_box(10, 5).state_hash(),
             scenes::falling_spheres_in_box(10, 6).state_hash());
+}
+
+TEST_F(determinism_test, every_number_of_threads_steps_to_the_same_bits) {
+  // The contact solver's colours and the narrow phase's shares make each
+  // thread compute what one thread would: the states are identical after
+  // every step, not only close.
+  world one = box_pile(1);
+  world two = box_pile(2);
+  world eight = box_pile(8);
+  std::size_t most_contacts = 0;
+  for (int i = 0; i < 60; ++i) {
+    one.step(h);
+    two.step(h);
+    eight.step(h);
+    ASSERT_EQ(one.state_hash(), two.state_hash()) << "step " << i + 1;
+    ASSERT_EQ(one.state_hash(), eight.state_hash()) << "step " << i + 1;
+    most_contacts = std::max(most_contacts, one.contacts().size());
+  }
+  EXPECT_GE(most_contacts, 1024u);  // the parallel paths did run
+}
+
+TEST_F(determinism_test, threads_are_a_setting_of_the_machine_not_of_the_state) {
+  EXPECT_EQ(world_settings{}.threads, 0);  // every core
+  world_settings negative;
+  negative.threads = -1;
+  EXPECT_THROW(world{negative}, invalid_input);
+  world w = box_pile(2);
+  EXPECT_THROW(w.set_threads(-2), invalid_input);
+  EXPECT_EQ(w.settings().threads, 2);
+  const std::uint64_t two = w.state_hash();
+  w.set_threads(1);
+  EXPECT_EQ(w.settings().threads, 1);
+  EXPECT_EQ(w.state_hash(), two);
+  // A restored world keeps its own threads.
+  world restored = box_pile(3);
+  restored.restore_snapshot(w.save_snapshot());
+  EXPECT_EQ(restored.settings().threads, 3);
+  EXPECT_EQ(restored.state_hash(), w.state_hash());
 }
 
 }  // namespace

@@ -47,11 +47,13 @@ class space {
   // shapes' by `rules`.
   // Shapes whose filters do not meet make none; a pair with a sensor makes
   // no contact but, when they overlap or touch, a sensor_overlap in
-  // `sensors` (cleared first; none kept when it is null).
+  // `sensors` (cleared first; none kept when it is null). With `threads`
+  // > 1 (0: every core) the pairs are met on that many threads at once; the
+  // contacts are the same, in the same order.
   void find_contacts(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
                      std::vector<contact>& contacts, real lookahead = 0,
                      const material_combine_rules& rules = {}, real margin = 0,
-                     std::vector<sensor_overlap>* sensors = nullptr);
+                     std::vector<sensor_overlap>* sensors = nullptr, int threads = 1);
 
   // Whether the shapes of bodies a and b make a contact (a speculative one
   // too) as find_contacts would meet them: a sleeping body wakes when one
@@ -67,6 +69,10 @@ class space {
                   real reach, contact_manifold& manifold);
   void all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs) const;
   void place_shapes(const std::vector<body>& bodies, const std::vector<body_pair>& pairs);
+  void meet_pairs(const std::vector<body>& bodies, const body_pair* first, const body_pair* end,
+                  std::vector<contact>& contacts, real lookahead,
+                  const material_combine_rules& rules, real margin,
+                  std::vector<sensor_overlap>* sensors) const;
 
   broad_phase_kind kind_;
   detail::uniform_grid grid_;
@@ -75,6 +81,9 @@ class space {
   std::vector<placed_shape> placed_;  // reused between steps
   std::vector<std::size_t> first_shape_;
   std::vector<unsigned char> in_pairs_;  // whether each body is in some pair
+  // Each thread's share of the contacts and sensor overlaps, in pair order.
+  std::vector<std::vector<contact>> thread_contacts_;
+  std::vector<std::vector<sensor_overlap>> thread_sensors_;
 };
 
 }  // namespace gaphys

@@ -57,6 +57,10 @@ struct world_settings {
   real sleep_linear_speed = 0.01;   // m/s, of the centre of mass
   real sleep_angular_speed = 0.01;  // rad/s
   real time_to_sleep = 0.5;         // s
+  // Threads the contact solver runs on; 0: every core. The step computes
+  // the same to the bit with any number (docs/engine.md, "Threads"), so
+  // snapshots do not keep it: a restored world keeps its own.
+  int threads = 0;
 };
 
 // Wall-clock seconds the last step spent in each phase, and how many candidate
@@ -113,6 +117,7 @@ class world {
   void set_material_combine(const material_combine_rules& rules);
   // Off wakes every body. (A new gravity wakes every body too.)
   void set_sleeping(bool sleeping);
+  void set_threads(int threads);
 
   // Advances by h seconds (finite, > 0; else invalid_input, nothing changes).
   void step(real h);

@@ -1,0 +1,59 @@
+// The order in which the contact phase's sweeps visit contacts: by colour.
+//
+// Contacts between the same two bodies (a manifold's points, consecutive in
+// the sorted contact list) form a run, solved together by one thread. Runs
+// are coloured greedily, in contact order, so that no two runs of a colour
+// share a body the solver changes, one with mass (static and kinematic
+// bodies are only read, so any number of runs of a colour may touch the
+// floor). The runs
+// of one colour can then be solved in any order, or at once on several
+// threads, with the same result to the bit; colours are solved one after
+// the other. The order depends on the contacts only, never on the number
+// of threads: a step is the same with 1, 2 or 8.
+//
+// Colours with few runs would cost a thread barrier each for little work:
+// runs that find no colour among the first `most_colours`, and the runs of
+// colours smaller than `fewest_runs` (both fixed, so the order stays
+// independent of the threads), go to a last, sequential group.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "gaphys/body.hpp"
+#include "gaphys/contact.hpp"
+
+namespace gaphys::detail {
+
+struct contact_colouring {
+  // The contacts (indices into the contact list) in solving order: colour
+  // by colour, runs kept whole and in contact order within a colour, the
+  // sequential group last.
+  std::vector<std::size_t> order;
+  // Run r is order[run_starts[r]] .. order[run_starts[r + 1] - 1].
+  std::vector<std::size_t> run_starts;
+  // Colour c is runs colour_starts[c] .. colour_starts[c + 1] - 1; the last
+  // group, runs colour_starts.back() .. the end, is solved in order by one
+  // thread (it may be empty).
+  std::vector<std::size_t> colour_starts;
+
+  std::size_t runs() const { return run_starts.size() - 1; }
+  std::size_t colours() const { return colour_starts.size() - 1; }
+
+  static constexpr int most_colours = 32;
+  static constexpr std::size_t fewest_runs = 32;
+
+  // Scratch, kept to reuse its memory from step to step.
+  std::vector<std::uint32_t> body_colours;  // bit c: the body has a run of colour c
+  std::vector<int> run_colours;             // per run in contact order
+  std::vector<std::size_t> run_begins;      // per run in contact order, and the end
+  std::vector<std::size_t> colour_counts;
+  std::vector<std::size_t> sorted_runs;
+};
+
+// `contacts` sorted by body pair, as the narrow phase makes them.
+void colour_contacts(const std::vector<body>& bodies, const std::vector<contact>& contacts,
+                     contact_colouring& out);
+
+}  // namespace gaphys::detail
