@@ -69,4 +69,83 @@ void colour_contacts(const std::vector<body>& bodies, const std::vector<contact>
   out.run_starts.push_back(out.order.size());
 }
 
+void split_colours(const std::vector<body>& bodies, const std::vector<contact>& contacts,
+                   int threads, contact_colouring& out) {
+  const std::size_t coloured_runs = out.colour_starts.back();
+  const auto position_of = [&](std::size_t run) {
+    const contact& c = contacts[out.order[out.run_starts[run]]];
+    const std::size_t moving = bodies[c.body_a].inverse_mass() > 0 ? c.body_a : c.body_b;
+    return bodies[moving].position();
+  };
+  // The axis along which the runs' bodies spread most.
+  vector low = coloured_runs > 0 ? position_of(0) : vector{};
+  vector high = low;
+  for (std::size_t run = 0; run < coloured_runs; ++run) {
+    const vector p = position_of(run);
+    low = vector{std::min(low.e1(), p.e1()), std::min(low.e2(), p.e2()), std::min(low.e3(), p.e3())};
+    high = vector{std::max(high.e1(), p.e1()), std::max(high.e2(), p.e2()), std::max(high.e3(), p.e3())};
+  }
+  const vector extent = high - low;
+  const int axis = extent.e1() >= extent.e2() && extent.e1() >= extent.e3() ? 0
+                   : extent.e2() >= extent.e3()                             ? 1
+                                                                            : 2;
+  const auto along = [axis](const vector& v) {
+    return axis == 0 ? v.e1() : axis == 1 ? v.e2() : v.e3();
+  };
+  // The contacts in each of `bins` slices of the axis, then each run's
+  // thread: the share its slice falls in.
+  constexpr std::size_t bins = 1024;
+  const real start = along(low), span = along(extent);
+  std::vector<std::size_t>& weight = out.bin_weights;
+  weight.assign(bins + 1, 0);
+  out.run_bins.resize(coloured_runs);
+  for (std::size_t run = 0; run < coloured_runs; ++run) {
+    std::size_t bin = 0;
+    if (span > 0) {
+      const real x = (along(position_of(run)) - start) / span * real(bins - 1);
+      bin = std::min(bins - 1, static_cast<std::size_t>(std::max(real(0), x)));
+    }
+    out.run_bins[run] = bin;
+    weight[bin + 1] += out.run_starts[run + 1] - out.run_starts[run];
+  }
+  for (std::size_t b = 1; b <= bins; ++b) weight[b] += weight[b - 1];
+  const std::size_t total = weight.back();
+  const auto thread_of = [&](std::size_t run) {
+    const std::size_t share = total == 0 ? 0 : weight[out.run_bins[run]] * threads / total;
+    return std::min<std::size_t>(share, threads - 1);
+  };
+
+  // Each colour's runs by thread (a stable counting sort), in contact order
+  // within a thread; the sequential group as it was.
+  out.run_threads.resize(coloured_runs);
+  for (std::size_t run = 0; run < coloured_runs; ++run) out.run_threads[run] = thread_of(run);
+  const std::size_t stride = static_cast<std::size_t>(threads) + 1;
+  out.thread_starts.assign(out.colours() * stride, 0);
+  out.sorted_runs.resize(coloured_runs);
+  for (std::size_t colour = 0; colour < out.colours(); ++colour) {
+    const std::size_t first = out.colour_starts[colour], end = out.colour_starts[colour + 1];
+    std::size_t* starts = &out.thread_starts[colour * stride];
+    for (std::size_t run = first; run < end; ++run) ++starts[out.run_threads[run] + 1];
+    starts[0] = first;
+    for (int t = 0; t < threads; ++t) starts[t + 1] += starts[t];
+    weight.assign(starts, starts + threads);  // each thread's next place
+    for (std::size_t run = first; run < end; ++run) {
+      out.sorted_runs[weight[out.run_threads[run]]++] = run;
+    }
+  }
+  out.split_order.clear();
+  out.split_run_starts.clear();
+  const auto append = [&](std::size_t run) {
+    out.split_run_starts.push_back(out.split_order.size());
+    for (std::size_t i = out.run_starts[run]; i < out.run_starts[run + 1]; ++i) {
+      out.split_order.push_back(out.order[i]);
+    }
+  };
+  for (std::size_t at = 0; at < coloured_runs; ++at) append(out.sorted_runs[at]);
+  for (std::size_t run = coloured_runs; run < out.runs(); ++run) append(run);
+  out.split_run_starts.push_back(out.split_order.size());
+  out.order.swap(out.split_order);
+  out.run_starts.swap(out.split_run_starts);
+}
+
 }  // namespace gaphys::detail

@@ -38,6 +38,11 @@ struct contact_colouring {
   // thread (it may be empty).
   std::vector<std::size_t> colour_starts;
 
+  // After split_colours for T threads: thread t solves runs
+  // thread_starts[c * (T + 1) + t] .. thread_starts[c * (T + 1) + t + 1] - 1
+  // of colour c.
+  std::vector<std::size_t> thread_starts;
+
   std::size_t runs() const { return run_starts.size() - 1; }
   std::size_t colours() const { return colour_starts.size() - 1; }
 
@@ -50,10 +55,25 @@ struct contact_colouring {
   std::vector<std::size_t> run_begins;      // per run in contact order, and the end
   std::vector<std::size_t> colour_counts;
   std::vector<std::size_t> sorted_runs;
+  std::vector<std::size_t> run_bins, run_threads, bin_weights, split_order, split_run_starts;
 };
 
 // `contacts` sorted by body pair, as the narrow phase makes them.
 void colour_contacts(const std::vector<body>& bodies, const std::vector<contact>& contacts,
                      contact_colouring& out);
+
+// Reorders the runs within each colour (which changes no result) so that
+// each of `threads` threads solves a contiguous block of them: the runs
+// whose moving body (for two, body_a) lies in its slab of space. The slabs
+// are cut across the axis along which those bodies spread most, into
+// shares of about equal numbers of contacts. A body then stays with one
+// thread from colour to colour and from sweep to sweep, its velocities in
+// that core's cache, but for bodies touching across a cut; and each thread
+// reads its contacts front to back. (Split by position in each colour's
+// list instead, bodies, whose indices say nothing of where they are,
+// changed cores at every colour: 10,000 spheres stepped slower on two
+// threads than on one.)
+void split_colours(const std::vector<body>& bodies, const std::vector<contact>& contacts,
+                   int threads, contact_colouring& colouring);
 
 }  // namespace gaphys::detail

@@ -403,8 +403,7 @@ void contact_solver::solve_contacts(const world_settings& settings) {
   const std::size_t colours = colouring_.colours();
   const std::size_t runs = colouring_.runs();
   const std::size_t sequential = colouring_.colour_starts.back();
-  // (A few hundred contacts per thread: fewer are not worth a barrier per colour.)
-  const int threads = detail::threads_for(settings.threads, constraints_.size(), 256);
+  const int threads = sweep_threads_;
   if (threads == 1) {
     for (int sweep = 0; sweep < sweeps; ++sweep) {
       sweep_result result;
@@ -417,6 +416,7 @@ void contact_solver::solve_contacts(const world_settings& settings) {
   // sweeps: a thread may write the next sweep's while another still reads
   // this one's.
   thread_results_.assign(2 * threads, sweep_result{});
+  const std::size_t stride = static_cast<std::size_t>(threads) + 1;
 #pragma omp parallel num_threads(threads)
   {
     const int thread = omp_get_thread_num();
@@ -424,12 +424,11 @@ void contact_solver::solve_contacts(const world_settings& settings) {
       const sweep_kind kind = kind_of(sweep);
       sweep_result mine;
       for (std::size_t colour = 0; colour < colours; ++colour) {
-        const auto first = static_cast<std::ptrdiff_t>(colouring_.colour_starts[colour]);
-        const auto end = static_cast<std::ptrdiff_t>(colouring_.colour_starts[colour + 1]);
-#pragma omp for schedule(static)
-        for (std::ptrdiff_t run = first; run < end; ++run) {
-          solve_runs(static_cast<std::size_t>(run), static_cast<std::size_t>(run) + 1, kind, mine);
-        }
+        // This thread's block of the colour (split_colours).
+        const std::size_t* starts = &colouring_.thread_starts[colour * stride];
+        solve_runs(starts[thread], starts[thread + 1], kind, mine);
+        // The next colour's runs may change the bodies this one's changed.
+#pragma omp barrier
       }
 #pragma omp single nowait
       solve_runs(sequential, runs, kind, mine);
@@ -458,7 +457,10 @@ void contact_solver::solve_runs(std::size_t first_run, std::size_t end_run, cons
 GAPHYS_ALWAYS_INLINE void contact_solver::solve_contact(constraint& k, const sweep_kind& kind,
                                                         sweep_result& result) {
   if (!(k.normal.mass_inverse > 0) || (k.waits && !k.struck)) return;
-  if (kind.turning_only && !k.normal.turns) return;
+  // The extra sweeps are for stacks, whose contacts push: one that turns a
+  // body but holds no impulse after solver_iterations sweeps (mostly a
+  // speculative contact a body does not reach in this step) keeps that.
+  if (kind.turning_only && (!k.normal.turns || !(k.accumulated > 0))) return;
   result.any = true;
   real& largest_change = result.largest_change;
   const bool last = k.normal.turns ? kind.last_of_turning : kind.last_of_all;
@@ -468,7 +470,8 @@ GAPHYS_ALWAYS_INLINE void contact_solver::solve_contact(constraint& k, const swe
   const real wanted = relaxation * (k.target_speed - k.normal.speed(a, b)) * k.normal_mass;
   const real total = std::max(k.accumulated + wanted, real(0));
   const real j = total - k.accumulated;
-  k.normal.apply(a, b, j);
+  // (Most speculative contacts hold no impulse and get none.)
+  if (j != 0) k.normal.apply(a, b, j);
   k.accumulated = total;
   largest_change = std::max(largest_change, std::fabs(j) * k.normal.mass_inverse);
   if (k.surface < 0) return;
@@ -492,8 +495,11 @@ GAPHYS_ALWAYS_INLINE void contact_solver::solve_contact(constraint& k, const swe
   }
 }
 
-void contact_solver::store_impulses(std::vector<contact>& contacts) const {
-  for (std::size_t i = 0; i < contacts.size(); ++i) {
+void contact_solver::store_impulses(std::vector<contact>& contacts, int threads) const {
+  const auto count = static_cast<std::ptrdiff_t>(contacts.size());
+#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
+  for (std::ptrdiff_t at = 0; at < count; ++at) {
+    const auto i = static_cast<std::size_t>(at);
     const constraint& k = constraints_[slot_[i]];
     contact_impulse& resting = contacts[i].resting;
     resting = contact_impulse{};
@@ -524,6 +530,9 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   // several threads for many contacts: a box's take about 0.2 µs).
   detail::colour_contacts(bodies, contacts, colouring_);
   const std::size_t count = contacts.size();
+  // (A few hundred contacts per thread: fewer are not worth a barrier per colour.)
+  sweep_threads_ = detail::threads_for(settings.threads, count, 256);
+  if (sweep_threads_ > 1) detail::split_colours(bodies, contacts, sweep_threads_, colouring_);
   slot_.resize(count);
   terms_at_.resize(count);
   term_counts total;
@@ -561,7 +570,7 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   resolve_impacts(settings, h);
   warm_start(bodies, contacts, previous);
   solve_contacts(settings);
-  store_impulses(contacts);
+  store_impulses(contacts, threads);
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     body& b = bodies[i];
     if (!b.is_dynamic()) continue;  // contacts never change a static or kinematic body

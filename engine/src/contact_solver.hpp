@@ -152,7 +152,7 @@ class contact_solver {
                   sweep_result& result);
   GAPHYS_ALWAYS_INLINE void solve_contact(constraint& k, const sweep_kind& kind,
                                           sweep_result& result);
-  void store_impulses(std::vector<contact>& contacts) const;
+  void store_impulses(std::vector<contact>& contacts, int threads) const;
   void correct_turning(const world_settings& settings, std::vector<body>& bodies,
                        const std::vector<contact>& contacts, real h);
 
@@ -174,6 +174,7 @@ class contact_solver {
   std::vector<solver_body> pseudo_bodies_;  // correct_turning's pseudo velocities
   std::vector<real> pseudo_targets_, pseudo_accumulated_, pseudo_depths_;  // per contact
   std::vector<sweep_result> thread_results_;  // one per thread of the contact phase
+  int sweep_threads_ = 1;  // the contact phase's threads in this step
 };
 
 }  // namespace gaphys

@@ -206,11 +206,11 @@ struct disk_block {
       const real both = 1 / (d0 * d1);
       const real i0 = d1 * both, i1 = d0 * both;
       l = {k[0] * w[0] * i0, k[1] * w[1] * i1};
+      // The Newton step (1/|λ| - 1/bound) / (d/dν 1/|λ|), with
+      // d/dν 1/|λ| = (l0² i0 + l1² i1) / |λ|³, written with one division.
       const real squared = l[0] * l[0] + l[1] * l[1];
-      const real inverse_length = 1 / std::sqrt(squared);
-      const real cubed = inverse_length * inverse_length * inverse_length;
-      const real slope = (l[0] * l[0] * i0 + l[1] * l[1] * i1) * cubed;
-      const real step = (inverse_length - inverse_bound) / slope;
+      const real length = std::sqrt(squared);
+      const real step = (bound - length) * squared / (bound * (l[0] * l[0] * i0 + l[1] * l[1] * i1));
       nu = std::max(nu - step, lowest);
       if (!(std::fabs(step) > real(1e-8) * (nu + k[0]))) break;
     }

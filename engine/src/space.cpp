@@ -8,10 +8,10 @@
 namespace gaphys {
 
 void space::candidate_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs,
-                            real lookahead, real margin) {
+                            real lookahead, real margin, int threads) {
   // The grid declines coordinates too far out for integer cells.
   if (kind_ == broad_phase_kind::uniform_grid &&
-      grid_.find_pairs(bodies, shaped_bodies_, lookahead, margin, pairs)) {
+      grid_.find_pairs(bodies, shaped_bodies_, lookahead, margin, pairs, threads)) {
     return;
   }
   all_pairs(bodies, pairs);

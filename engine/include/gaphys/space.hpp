@@ -35,9 +35,10 @@ class space {
   // kinematic or asleep, unless one moves and the other sleeps) and may touch within
   // `lookahead` seconds at their present velocities, or are within
   // `margin` metres: a superset of those that do. Pairs are (a, b) with
-  // a < b, in increasing order.
+  // a < b, in increasing order, the same with any `threads` (the grid's
+  // cells are paired on that many; 0: every core).
   void candidate_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs,
-                       real lookahead = 0, real margin = 0);
+                       real lookahead = 0, real margin = 0, int threads = 1);
 
   // Places the shapes of the pairs' bodies, then meets each pair's shapes. Shapes
   // whose gap their velocities close within lookahead seconds make

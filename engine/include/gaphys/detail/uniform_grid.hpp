@@ -39,8 +39,10 @@ class uniform_grid {
   // speculative contacts.
   // Returns false, adding nothing, when coordinates are too far out for
   // integer cells (|x| / cell > 2^50); the caller then uses all pairs.
+  // With `threads` > 1 (0: every core) the cells are paired on that many
+  // threads; the sorted pairs are the same.
   bool find_pairs(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped,
-                  real lookahead, real margin, std::vector<index_pair>& pairs);
+                  real lookahead, real margin, std::vector<index_pair>& pairs, int threads = 1);
 
  private:
   struct bound {  // a bounding sphere
@@ -68,7 +70,8 @@ class uniform_grid {
   void sort_hashed();
   std::size_t dense_index(std::int64_t x, std::int64_t y, std::int64_t z) const;
   run find_cell(std::int64_t x, std::int64_t y, std::int64_t z) const;
-  void pair_cells(std::vector<index_pair>& pairs) const;
+  void pair_cells(std::vector<index_pair>& pairs, int threads);
+  void pair_cell_range(std::size_t begin, std::size_t end, std::vector<index_pair>& pairs) const;
   void pair_large(std::vector<index_pair>& pairs) const;
   void pair_planes(const std::vector<body>& bodies, std::vector<index_pair>& pairs) const;
   void add_if_overlapping(const bound& a, const bound& b, std::vector<index_pair>& pairs) const;
@@ -85,6 +88,7 @@ class uniform_grid {
   std::vector<real> widths_;
   std::vector<std::size_t> starts_, fill_;
   std::vector<index_pair> sorted_;
+  std::vector<std::vector<index_pair>> thread_pairs_;  // each thread's share of pair_cells
   real cell_size_ = 1;
   real plane_margin_ = 0;  // the half of the contact margin bounds do not hold against planes
 };
