@@ -47,14 +47,20 @@ static real closing_reach(const body& a, const body& b, real lookahead, real mar
 
 // Only the bodies of some pair: with most bodies asleep, the others are not
 // placed at all.
-void space::place_shapes(const std::vector<body>& bodies, const std::vector<body_pair>& pairs) {
+void space::place_shapes(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
+                         int threads) {
   first_shape_.assign(bodies.size() + 1, 0);
   for (std::size_t index : shaped_bodies_) first_shape_[index + 1] = bodies[index].shapes().size();
   for (std::size_t i = 0; i < bodies.size(); ++i) first_shape_[i + 1] += first_shape_[i];
   placed_.resize(first_shape_.back());
   in_pairs_.assign(bodies.size(), 0);
   for (const auto& [a, b] : pairs) in_pairs_[a] = in_pairs_[b] = 1;
-  for (std::size_t index : shaped_bodies_) {
+  // Each body's shapes on their own: on the threads for many bodies.
+  const int shares = detail::threads_for(threads, shaped_bodies_.size(), 256);
+  const auto count = static_cast<std::ptrdiff_t>(shaped_bodies_.size());
+#pragma omp parallel for num_threads(shares) schedule(static) if (shares > 1)
+  for (std::ptrdiff_t at = 0; at < count; ++at) {
+    const std::size_t index = shaped_bodies_[static_cast<std::size_t>(at)];
     if (!in_pairs_[index]) continue;
     const body& b = bodies[index];
     placed_shape* out = &placed_[first_shape_[index]];
@@ -126,7 +132,7 @@ void space::find_contacts(const std::vector<body>& bodies, const std::vector<bod
                           std::vector<contact>& contacts, real lookahead,
                           const material_combine_rules& rules, real margin,
                           std::vector<sensor_overlap>* sensors, int threads) {
-  place_shapes(bodies, pairs);
+  place_shapes(bodies, pairs, threads);
   contacts.clear();
   if (sensors) sensors->clear();
   // (A few hundred pairs per thread: a box pair takes about a microsecond.)

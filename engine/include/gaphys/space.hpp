@@ -69,7 +69,8 @@ class space {
                   const placed_shape& shape_a, const placed_shape& shape_b, real lookahead,
                   real reach, contact_manifold& manifold);
   void all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs) const;
-  void place_shapes(const std::vector<body>& bodies, const std::vector<body_pair>& pairs);
+  void place_shapes(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
+                    int threads = 1);
   void meet_pairs(const std::vector<body>& bodies, const body_pair* first, const body_pair* end,
                   std::vector<contact>& contacts, real lookahead,
                   const material_combine_rules& rules, real margin,
