@@ -102,8 +102,14 @@ void split_colours(const std::vector<body>& bodies, const std::vector<contact>& 
   for (std::size_t run = 0; run < coloured_runs; ++run) {
     std::size_t bin = 0;
     if (span > 0) {
+      // (Written so that a NaN or an infinity, from a world that has blown
+      // up, lands in a bin instead of an undefined conversion.)
       const real x = (along(position_of(run)) - start) / span * real(bins - 1);
-      bin = std::min(bins - 1, static_cast<std::size_t>(std::max(real(0), x)));
+      if (!(x < real(bins - 1))) {
+        bin = x > 0 ? bins - 1 : 0;
+      } else if (x > 0) {
+        bin = static_cast<std::size_t>(x);
+      }
     }
     out.run_bins[run] = bin;
     weight[bin + 1] += out.run_starts[run + 1] - out.run_starts[run];

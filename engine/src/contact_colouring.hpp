@@ -5,11 +5,11 @@
 // are coloured greedily, in contact order, so that no two runs of a colour
 // share a body the solver changes, one with mass (static and kinematic
 // bodies are only read, so any number of runs of a colour may touch the
-// floor). The runs
-// of one colour can then be solved in any order, or at once on several
-// threads, with the same result to the bit; colours are solved one after
-// the other. The order depends on the contacts only, never on the number
-// of threads: a step is the same with 1, 2 or 8.
+// floor). The runs of one colour can then be solved in any order, or at
+// once on several threads, with the same result to the bit; colours are
+// solved one after the other. The colours depend on the contacts only,
+// never on the number of threads (split_colours only reorders runs within
+// a colour): a step is the same with 1, 2 or 8.
 //
 // Colours with few runs would cost a thread barrier each for little work:
 // runs that find no colour among the first `most_colours`, and the runs of
@@ -28,8 +28,9 @@ namespace gaphys::detail {
 
 struct contact_colouring {
   // The contacts (indices into the contact list) in solving order: colour
-  // by colour, runs kept whole and in contact order within a colour, the
-  // sequential group last.
+  // by colour, runs kept whole and in contact order within a colour (or
+  // within each thread's block of it, after split_colours), the sequential
+  // group last.
   std::vector<std::size_t> order;
   // Run r is order[run_starts[r]] .. order[run_starts[r + 1] - 1].
   std::vector<std::size_t> run_starts;
