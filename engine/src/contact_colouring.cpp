@@ -18,6 +18,10 @@ void colour_contacts(const std::vector<body>& bodies, const std::vector<contact>
   const std::size_t runs = begins.size();
   begins.push_back(contacts.size());
 
+  // Which bodies have mass, read in one pass (a body is a large object;
+  // the contacts visit them in no order).
+  out.moves.resize(bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i) out.moves[i] = bodies[i].inverse_mass() > 0;
   // Greedy colours: the lowest one neither dynamic body has yet.
   out.body_colours.assign(bodies.size(), 0);
   out.run_colours.resize(runs);
@@ -25,8 +29,7 @@ void colour_contacts(const std::vector<body>& bodies, const std::vector<contact>
   for (std::size_t r = 0; r < runs; ++r) {
     const contact& c = contacts[begins[r]];
     // The bodies the solver changes (impulse_row::apply): those with mass.
-    const bool moves_a = bodies[c.body_a].inverse_mass() > 0;
-    const bool moves_b = bodies[c.body_b].inverse_mass() > 0;
+    const bool moves_a = out.moves[c.body_a], moves_b = out.moves[c.body_b];
     const std::uint32_t taken = (moves_a ? out.body_colours[c.body_a] : 0) |
                                 (moves_b ? out.body_colours[c.body_b] : 0);
     int colour = sequential;
@@ -72,10 +75,12 @@ void colour_contacts(const std::vector<body>& bodies, const std::vector<contact>
 void split_colours(const std::vector<body>& bodies, const std::vector<contact>& contacts,
                    int threads, contact_colouring& out) {
   const std::size_t coloured_runs = out.colour_starts.back();
+  // Each run's moving body's position (colour_contacts left out.moves).
+  out.positions.resize(bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i) out.positions[i] = bodies[i].position();
   const auto position_of = [&](std::size_t run) {
     const contact& c = contacts[out.order[out.run_starts[run]]];
-    const std::size_t moving = bodies[c.body_a].inverse_mass() > 0 ? c.body_a : c.body_b;
-    return bodies[moving].position();
+    return out.positions[out.moves[c.body_a] ? c.body_a : c.body_b];
   };
   // The axis along which the runs' bodies spread most.
   vector low = coloured_runs > 0 ? position_of(0) : vector{};

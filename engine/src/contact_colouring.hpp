@@ -51,6 +51,8 @@ struct contact_colouring {
   static constexpr std::size_t fewest_runs = 32;
 
   // Scratch, kept to reuse its memory from step to step.
+  std::vector<char> moves;                   // per body: it has mass
+  std::vector<vector> positions;             // per body, for split_colours
   std::vector<std::uint32_t> body_colours;  // bit c: the body has a run of colour c
   std::vector<int> run_colours;             // per run in contact order
   std::vector<std::size_t> run_begins;      // per run in contact order, and the end

@@ -1,8 +1,11 @@
 #include "contact_events.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <optional>
 #include <utility>
+
+#include "thread_count.hpp"
 
 namespace gaphys::detail {
 
@@ -36,20 +39,16 @@ pair_summary summarize(const std::vector<contact>& contacts, std::size_t& i) {
   return s;
 }
 
-}  // namespace
-
-void find_events(const std::vector<contact>& previous, const std::vector<contact>& current,
-                 contact_events& events) {
-  events.began.clear();
-  events.persisted.clear();
-  events.ended.clear();
-  std::size_t i = 0, j = 0;
+// The merge of previous[i, i_end) and current[j, j_end), whole pairs.
+void merge_events(const std::vector<contact>& previous, std::size_t i, std::size_t i_end,
+                  const std::vector<contact>& current, std::size_t j, std::size_t j_end,
+                  contact_events& events) {
   std::optional<pair_summary> old, now;
-  const auto next = [](const std::vector<contact>& list, std::size_t& at) {
-    return at < list.size() ? std::optional<pair_summary>(summarize(list, at)) : std::nullopt;
+  const auto next = [](const std::vector<contact>& list, std::size_t& at, std::size_t end) {
+    return at < end ? std::optional<pair_summary>(summarize(list, at)) : std::nullopt;
   };
-  old = next(previous, i);
-  now = next(current, j);
+  old = next(previous, i, i_end);
+  now = next(current, j, j_end);
   // A merge of the two pair-sorted runs.
   while (old || now) {
     const bool take_old =
@@ -59,8 +58,53 @@ void find_events(const std::vector<contact>& previous, const std::vector<contact
     const bool touched = take_old && old->touches, touches = take_now && now->touches;
     if (touches) (touched ? events.persisted : events.began).push_back(now->event);
     if (touched && !touches) events.ended.push_back(old->event);
-    if (take_old) old = next(previous, i);
-    if (take_now) now = next(current, j);
+    if (take_old) old = next(previous, i, i_end);
+    if (take_now) now = next(current, j, j_end);
+  }
+}
+
+}  // namespace
+
+void find_events(const std::vector<contact>& previous, const std::vector<contact>& current,
+                 contact_events& events, int threads) {
+  events.began.clear();
+  events.persisted.clear();
+  events.ended.clear();
+  // (A few thousand contacts per share: a pair's summary is a few tens of ns.)
+  const int shares = threads_for(threads, previous.size() + current.size(), 4096);
+  if (shares == 1) {
+    merge_events(previous, 0, previous.size(), current, 0, current.size(), events);
+    return;
+  }
+  // Cut both lists before the same pairs: at even places of the current
+  // list, moved to the start of their pair, and where that pair would
+  // stand in the previous one.
+  const auto key = [](const contact& c) { return std::make_pair(c.body_a, c.body_b); };
+  std::vector<std::size_t> cuts_now(shares + 1, current.size()), cuts_old(shares + 1, previous.size());
+  cuts_now[0] = cuts_old[0] = 0;
+  for (int s = 1; s < shares; ++s) {
+    std::size_t at = current.size() * s / shares;
+    while (at > 0 && at < current.size() && key(current[at - 1]) == key(current[at])) --at;
+    at = std::max(at, cuts_now[s - 1]);
+    cuts_now[s] = at;
+    const auto cut_key = at < current.size() ? key(current[at])
+                                             : std::make_pair(~std::size_t{0}, ~std::size_t{0});
+    cuts_old[s] = static_cast<std::size_t>(
+        std::lower_bound(previous.begin(), previous.end(), cut_key,
+                         [&](const contact& c, const auto& k) { return key(c) < k; }) -
+        previous.begin());
+    cuts_old[s] = std::max(cuts_old[s], cuts_old[s - 1]);
+  }
+  std::vector<contact_events> parts(shares);
+#pragma omp parallel for num_threads(shares) schedule(static, 1)
+  for (int s = 0; s < shares; ++s) {
+    merge_events(previous, cuts_old[s], cuts_old[s + 1], current, cuts_now[s], cuts_now[s + 1],
+                 parts[s]);
+  }
+  for (const contact_events& part : parts) {
+    events.began.insert(events.began.end(), part.began.begin(), part.began.end());
+    events.persisted.insert(events.persisted.end(), part.persisted.begin(), part.persisted.end());
+    events.ended.insert(events.ended.end(), part.ended.begin(), part.ended.end());
   }
 }
 

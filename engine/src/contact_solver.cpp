@@ -225,9 +225,10 @@ void contact_solver::build_constraint(const world_settings& settings, const body
 // into a geometric approach.
 void contact_solver::set_relaxation(const world_settings& settings, const std::vector<body>& bodies) {
   contacts_per_body_.assign(bodies.size(), 0);
+  // (colour_contacts read which bodies have mass: the dynamic ones.)
   for (const constraint& k : constraints_) {
-    if (bodies[k.body_a].is_dynamic()) ++contacts_per_body_[k.body_a];
-    if (bodies[k.body_b].is_dynamic()) ++contacts_per_body_[k.body_b];
+    if (colouring_.moves[k.body_a]) ++contacts_per_body_[k.body_a];
+    if (colouring_.moves[k.body_b]) ++contacts_per_body_[k.body_b];
   }
   for (constraint& k : constraints_) {
     if (contacts_per_body_[k.body_a] > 1 || contacts_per_body_[k.body_b] > 1) {
@@ -535,12 +536,18 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   if (sweep_threads_ > 1) detail::split_colours(bodies, contacts, sweep_threads_, colouring_);
   slot_.resize(count);
   terms_at_.resize(count);
+  const int threads = detail::threads_for(settings.threads, count, 512);
+  // Each constraint's own terms (reading its shapes), then where they go.
+#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
+  for (std::ptrdiff_t s = 0; s < static_cast<std::ptrdiff_t>(count); ++s) {
+    const std::size_t i = colouring_.order[static_cast<std::size_t>(s)];
+    slot_[i] = static_cast<std::size_t>(s);
+    terms_at_[s] = terms_of(bodies[contacts[i].body_a], bodies[contacts[i].body_b], contacts[i]);
+  }
   term_counts total;
-  for (std::size_t s = 0; s < count; ++s) {
-    const contact& c = contacts[colouring_.order[s]];
-    slot_[colouring_.order[s]] = s;
-    terms_at_[s] = total;
-    const term_counts own = terms_of(bodies[c.body_a], bodies[c.body_b], c);
+  for (term_counts& at : terms_at_) {
+    const term_counts own = at;
+    at = total;
     total.surfaces += own.surfaces;
     total.resistances += own.resistances;
   }
@@ -549,7 +556,6 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   surfaces_.resize(total.surfaces);
   frames_.resize(total.surfaces);
   resistances_.resize(total.resistances);
-  const int threads = detail::threads_for(settings.threads, count, 512);
 #pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
   for (std::ptrdiff_t s = 0; s < static_cast<std::ptrdiff_t>(count); ++s) {
     const contact& c = contacts[colouring_.order[s]];
@@ -560,7 +566,11 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
 
   solver_bodies_.resize(bodies.size());
   impact_bodies_.resize(bodies.size());
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
+  const int body_threads = detail::threads_for(settings.threads, bodies.size(), 2048);
+  const auto body_count = static_cast<std::ptrdiff_t>(bodies.size());
+#pragma omp parallel for num_threads(body_threads) schedule(static) if (body_threads > 1)
+  for (std::ptrdiff_t at = 0; at < body_count; ++at) {
+    const auto i = static_cast<std::size_t>(at);
     const body& b = bodies[i];
     solver_bodies_[i] = {b.velocity_, b.angular_velocity_, b.inverse_mass_};
     impact_bodies_[i] = {start[i].linear, start[i].angular, b.inverse_mass_};
@@ -571,11 +581,12 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   warm_start(bodies, contacts, previous);
   solve_contacts(settings);
   store_impulses(contacts, threads);
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    body& b = bodies[i];
+#pragma omp parallel for num_threads(body_threads) schedule(static) if (body_threads > 1)
+  for (std::ptrdiff_t at = 0; at < body_count; ++at) {
+    body& b = bodies[static_cast<std::size_t>(at)];
     if (!b.is_dynamic()) continue;  // contacts never change a static or kinematic body
-    b.velocity_ = solver_bodies_[i].velocity;
-    b.angular_velocity_ = solver_bodies_[i].angular_velocity;
+    b.velocity_ = solver_bodies_[static_cast<std::size_t>(at)].velocity;
+    b.angular_velocity_ = solver_bodies_[static_cast<std::size_t>(at)].angular_velocity;
   }
 }
 

@@ -392,7 +392,7 @@ void world::step(real h) {
   if (!contacts_.empty()) solver_->correct_positions(settings_, bodies_, contacts_, h);
   const auto corrected = clock::now();
   // Events before the islands that fall asleep set their contacts aside.
-  detail::find_events(previous_contacts_, contacts_, events_);
+  detail::find_events(previous_contacts_, contacts_, events_, settings_.threads);
   // Contacts name bodies by index; the events and sensor overlaps by id.
   for (std::vector<contact_event>* list : {&events_.began, &events_.persisted, &events_.ended}) {
     for (contact_event& e : *list) e.body_a = id_of(e.body_a), e.body_b = id_of(e.body_b);
