@@ -497,10 +497,8 @@ GAPHYS_ALWAYS_INLINE void contact_solver::solve_contact(constraint& k, const swe
 }
 
 void contact_solver::store_impulses(std::vector<contact>& contacts, int threads) const {
-  const auto count = static_cast<std::ptrdiff_t>(contacts.size());
-#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
-  for (std::ptrdiff_t at = 0; at < count; ++at) {
-    const auto i = static_cast<std::size_t>(at);
+  // (On world_settings::threads, each contact on its own.)
+  detail::parallel_for(threads, contacts.size(), 512, [&](std::size_t i) {
     const constraint& k = constraints_[slot_[i]];
     contact_impulse& resting = contacts[i].resting;
     resting = contact_impulse{};
@@ -508,7 +506,7 @@ void contact_solver::store_impulses(std::vector<contact>& contacts, int threads)
     contact_impulse& total = contacts[i].impulse;
     total = resting;
     total.normal += impacts_[slot_[i]].normal;
-    if (k.surface < 0) continue;
+    if (k.surface < 0) return;
     const surface_terms& t = surfaces_[k.surface];
     const surface_frame& f = frames_[k.surface];
     resting.tangent = t.friction.accumulated[0] * f.frame[0] + t.friction.accumulated[1] * f.frame[1];
@@ -519,7 +517,7 @@ void contact_solver::store_impulses(std::vector<contact>& contacts, int threads)
     }
     total.tangent = resting.tangent + f.impact_tangent[0] * f.frame[0] + f.impact_tangent[1] * f.frame[1];
     total.angular = resting.angular;
-  }
+  });
 }
 
 void contact_solver::solve_velocities(const world_settings& settings, std::vector<body>& bodies,
@@ -536,14 +534,12 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   if (sweep_threads_ > 1) detail::split_colours(bodies, contacts, sweep_threads_, colouring_);
   slot_.resize(count);
   terms_at_.resize(count);
-  const int threads = detail::threads_for(settings.threads, count, 512);
   // Each constraint's own terms (reading its shapes), then where they go.
-#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
-  for (std::ptrdiff_t s = 0; s < static_cast<std::ptrdiff_t>(count); ++s) {
-    const std::size_t i = colouring_.order[static_cast<std::size_t>(s)];
-    slot_[i] = static_cast<std::size_t>(s);
+  detail::parallel_for(settings.threads, count, 512, [&](std::size_t s) {
+    const std::size_t i = colouring_.order[s];
+    slot_[i] = s;
     terms_at_[s] = terms_of(bodies[contacts[i].body_a], bodies[contacts[i].body_b], contacts[i]);
-  }
+  });
   term_counts total;
   for (term_counts& at : terms_at_) {
     const term_counts own = at;
@@ -556,38 +552,32 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   surfaces_.resize(total.surfaces);
   frames_.resize(total.surfaces);
   resistances_.resize(total.resistances);
-#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
-  for (std::ptrdiff_t s = 0; s < static_cast<std::ptrdiff_t>(count); ++s) {
+  detail::parallel_for(settings.threads, count, 512, [&](std::size_t s) {
     const contact& c = contacts[colouring_.order[s]];
     build_constraint(settings, bodies[c.body_a], bodies[c.body_b], c, start[c.body_a],
-                     start[c.body_b], h, static_cast<std::size_t>(s), terms_at_[s]);
-  }
+                     start[c.body_b], h, s, terms_at_[s]);
+  });
   set_relaxation(settings, bodies);
 
   solver_bodies_.resize(bodies.size());
   impact_bodies_.resize(bodies.size());
-  const int body_threads = detail::threads_for(settings.threads, bodies.size(), 2048);
-  const auto body_count = static_cast<std::ptrdiff_t>(bodies.size());
-#pragma omp parallel for num_threads(body_threads) schedule(static) if (body_threads > 1)
-  for (std::ptrdiff_t at = 0; at < body_count; ++at) {
-    const auto i = static_cast<std::size_t>(at);
+  detail::parallel_for(settings.threads, bodies.size(), 2048, [&](std::size_t i) {
     const body& b = bodies[i];
     solver_bodies_[i] = {b.velocity_, b.angular_velocity_, b.inverse_mass_};
     impact_bodies_[i] = {start[i].linear, start[i].angular, b.inverse_mass_};
-  }
+  });
   impacted_.assign(bodies.size(), 0);
 
   resolve_impacts(settings, h);
   warm_start(bodies, contacts, previous);
   solve_contacts(settings);
-  store_impulses(contacts, threads);
-#pragma omp parallel for num_threads(body_threads) schedule(static) if (body_threads > 1)
-  for (std::ptrdiff_t at = 0; at < body_count; ++at) {
-    body& b = bodies[static_cast<std::size_t>(at)];
-    if (!b.is_dynamic()) continue;  // contacts never change a static or kinematic body
-    b.velocity_ = solver_bodies_[static_cast<std::size_t>(at)].velocity;
-    b.angular_velocity_ = solver_bodies_[static_cast<std::size_t>(at)].angular_velocity;
-  }
+  store_impulses(contacts, settings.threads);
+  detail::parallel_for(settings.threads, bodies.size(), 2048, [&](std::size_t i) {
+    body& b = bodies[i];
+    if (!b.is_dynamic()) return;  // contacts never change a static or kinematic body
+    b.velocity_ = solver_bodies_[i].velocity;
+    b.angular_velocity_ = solver_bodies_[i].angular_velocity;
+  });
 }
 
 void contact_solver::correct_positions(const world_settings& settings, std::vector<body>& bodies,

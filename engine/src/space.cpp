@@ -56,16 +56,13 @@ void space::place_shapes(const std::vector<body>& bodies, const std::vector<body
   in_pairs_.assign(bodies.size(), 0);
   for (const auto& [a, b] : pairs) in_pairs_[a] = in_pairs_[b] = 1;
   // Each body's shapes on their own: on the threads for many bodies.
-  const int shares = detail::threads_for(threads, shaped_bodies_.size(), 256);
-  const auto count = static_cast<std::ptrdiff_t>(shaped_bodies_.size());
-#pragma omp parallel for num_threads(shares) schedule(static) if (shares > 1)
-  for (std::ptrdiff_t at = 0; at < count; ++at) {
-    const std::size_t index = shaped_bodies_[static_cast<std::size_t>(at)];
-    if (!in_pairs_[index]) continue;
+  detail::parallel_for(threads, shaped_bodies_.size(), 256, [&](std::size_t at) {
+    const std::size_t index = shaped_bodies_[at];
+    if (!in_pairs_[index]) return;
     const body& b = bodies[index];
     placed_shape* out = &placed_[first_shape_[index]];
     for (const attached_shape& s : b.shapes()) *out++ = placed(b, s);
-  }
+  });
 }
 
 placed_shape space::placed(const body& b, const attached_shape& s) {

@@ -19,4 +19,15 @@ inline int threads_for(int setting, std::size_t items, std::size_t per_thread) {
   return std::max(1, std::min(wanted, static_cast<int>(useful)));
 }
 
+// Calls visit(i) for every i in [0, count), on threads_for(setting, count,
+// per_thread) threads, each taking a contiguous block. For loops whose
+// iterations write nothing another iteration reads.
+template <class Visit>
+void parallel_for(int setting, std::size_t count, std::size_t per_thread, const Visit& visit) {
+  const int threads = threads_for(setting, count, per_thread);
+  const auto end = static_cast<std::ptrdiff_t>(count);
+#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
+  for (std::ptrdiff_t i = 0; i < end; ++i) visit(static_cast<std::size_t>(i));
+}
+
 }  // namespace gaphys::detail

@@ -515,13 +515,10 @@ void world::fall_asleep(real h) {
 // Each body on its own: on several threads for many bodies (a few
 // thousand per thread; a sphere's step is some tens of nanoseconds).
 void world::integrate_velocities(real h) {
-  const int threads = detail::threads_for(settings_.threads, bodies_.size(), 2048);
-  const auto count = static_cast<std::ptrdiff_t>(bodies_.size());
-#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
-  for (std::ptrdiff_t i = 0; i < count; ++i) {
-    body& b = bodies_[static_cast<std::size_t>(i)];
+  detail::parallel_for(settings_.threads, bodies_.size(), 2048, [&](std::size_t i) {
+    body& b = bodies_[i];
     if (!b.asleep_) integrate_velocity(b, h);
-  }
+  });
 }
 
 void world::integrate_velocity(body& b, real h) const {
@@ -551,18 +548,15 @@ void world::integrate_velocity(body& b, real h) const {
 void world::integrate_positions(real h) {
   constexpr int midpoint_sweeps = 4;
   // (Each body on its own, as integrate_velocities.)
-  const int threads = detail::threads_for(settings_.threads, bodies_.size(), 2048);
-  const auto count = static_cast<std::ptrdiff_t>(bodies_.size());
-#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
-  for (std::ptrdiff_t i = 0; i < count; ++i) {
-    body& b = bodies_[static_cast<std::size_t>(i)];
+  detail::parallel_for(settings_.threads, bodies_.size(), 2048, [&](std::size_t i) {
+    body& b = bodies_[i];
     // Sleeping bodies and kinematic ones at rest stay exactly where they are.
-    if (b.is_static_ || b.asleep_ || detail::motion_of(b) == detail::motion::fixed) continue;
+    if (b.is_static_ || b.asleep_ || detail::motion_of(b) == detail::motion::fixed) return;
     b.position_ = b.position_ + h * b.velocity_;
     if (b.is_kinematic_) {  // turns as it is told
       const rotor attitude = e3ga::gp(e3ga::exp((-h / 2) * b.angular_velocity_), b.attitude_);
       b.attitude_ = attitude / e3ga::norm(attitude);
-      continue;
+      return;
     }
     const bivector momentum = b.world_inertia(b.angular_velocity_);
     const rotor start = b.attitude_;
@@ -577,7 +571,7 @@ void world::integrate_positions(real h) {
     const rotor attitude = e3ga::gp(e3ga::exp((-h / 2) * omega), start);
     b.attitude_ = attitude / e3ga::norm(attitude);
     if (sweeps > 0) b.angular_velocity_ = b.world_inverse_inertia(momentum);
-  }
+  });
 }
 
 std::uint64_t world::state_hash() const {

@@ -11,16 +11,22 @@ namespace {
 
 class determinism_test : public engine_test {
  protected:
+  // A world on `threads` threads, awake throughout, with a floor of μ 0.5.
+  static world world_on(int threads, real floor_restitution) {
+    world_settings settings;
+    settings.threads = threads;
+    settings.sleeping = false;
+    world w(settings);
+    add_floor(w, 0, floor_restitution, 0.5);
+    return w;
+  }
+
   // Two layers of 12 x 12 boxes, turned at random, dropped together on a
   // floor (their corners overlapping from the first step): well over a
   // thousand contacts, enough for the solver and the narrow phase to split
   // their work over 4 threads.
   static world box_pile(int threads) {
-    world_settings settings;
-    settings.threads = threads;
-    settings.sleeping = false;
-    world w(settings);
-    add_floor(w, 0, 0, 0.5);
+    world w = world_on(threads, 0);
     std::mt19937_64 random(11);
     std::uniform_real_distribution<real> angle(-0.3, 0.3);
     for (int layer = 0; layer < 2; ++layer) {
@@ -40,11 +46,7 @@ class determinism_test : public engine_test {
   // every parallel part of a step (the grid, the shapes' placing, the
   // integration, the contact events) to take several threads.
   static world ball_layer(int threads) {
-    world_settings settings;
-    settings.threads = threads;
-    settings.sleeping = false;
-    world w(settings);
-    add_floor(w, 0, 0.5, 0.5);
+    world w = world_on(threads, 0.5);
     std::mt19937_64 random(5);
     std::uniform_real_distribution<real> speed(-0.5, 0.5);
     for (int i = 0; i < 70; ++i) {
