@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <optional>
 #include <utility>
 
 #include "thread_count.hpp"
@@ -11,55 +10,49 @@ namespace gaphys::detail {
 
 namespace {
 
-// One pair's run of contacts, summed up: whether it touches, its deepest
-// point, the total normal impulse.
-struct pair_summary {
-  body_id a, b;
-  bool touches = false;
-  contact_event event;
-};
+using pair_key = std::pair<std::size_t, std::size_t>;
 
-// The summary of the run of contacts from `i` sharing its pair; advances i past it.
-pair_summary summarize(const std::vector<contact>& contacts, std::size_t& i) {
-  const contact& first = contacts[i];
-  pair_summary s{
-      first.body_a, first.body_b, false,
-      contact_event{first.body_a, first.body_b, first.geometry.point, first.geometry.normal, 0}};
-  real deepest = first.geometry.depth;
-  for (; i < contacts.size() && contacts[i].body_a == s.a && contacts[i].body_b == s.b; ++i) {
-    const contact& c = contacts[i];
-    s.touches = s.touches || c.geometry.depth >= 0 || c.impulse.normal > 0;
-    s.event.impulse += c.impulse.normal;
-    if (c.geometry.depth > deepest) {
-      deepest = c.geometry.depth;
-      s.event.point = c.geometry.point;
-      s.event.normal = c.geometry.normal;
-    }
+pair_key key_of(const contact& c) { return {c.body_a, c.body_b}; }
+
+// Whether the run of contacts from `i` sharing its pair touches; advances i
+// past the run and leaves its first contact's index in `first`.
+bool run_touches(const std::vector<contact>& contacts, std::size_t& i, std::size_t end,
+                 std::size_t& first) {
+  first = i;
+  const contact& head = contacts[i];
+  bool touches = false;
+  for (; i < end && contacts[i].body_a == head.body_a && contacts[i].body_b == head.body_b; ++i) {
+    touches = touches || contacts[i].geometry.depth >= 0 || contacts[i].impulse.normal > 0;
   }
-  return s;
+  return touches;
 }
 
-// The merge of previous[i, i_end) and current[j, j_end), whole pairs.
+// The event of the run [first, end): its deepest point, its total normal impulse.
+contact_event event_of(const std::vector<contact>& contacts, std::size_t first, std::size_t end) {
+  const contact* deepest = &contacts[first];
+  real impulse = 0;
+  for (std::size_t k = first; k < end; ++k) {
+    impulse += contacts[k].impulse.normal;
+    if (contacts[k].geometry.depth > deepest->geometry.depth) deepest = &contacts[k];
+  }
+  return contact_event{contacts[first].body_a, contacts[first].body_b, deepest->geometry.point,
+                       deepest->geometry.normal, impulse};
+}
+
+// The merge of previous[i, i_end) and current[j, j_end), whole pairs. Only
+// the runs that make an event are summed up: most steps, most pairs persist.
 void merge_events(const std::vector<contact>& previous, std::size_t i, std::size_t i_end,
                   const std::vector<contact>& current, std::size_t j, std::size_t j_end,
                   contact_events& events) {
-  std::optional<pair_summary> old, now;
-  const auto next = [](const std::vector<contact>& list, std::size_t& at, std::size_t end) {
-    return at < end ? std::optional<pair_summary>(summarize(list, at)) : std::nullopt;
-  };
-  old = next(previous, i, i_end);
-  now = next(current, j, j_end);
-  // A merge of the two pair-sorted runs.
-  while (old || now) {
-    const bool take_old =
-        old && (!now || std::make_pair(old->a, old->b) <= std::make_pair(now->a, now->b));
-    const bool take_now =
-        now && (!old || std::make_pair(now->a, now->b) <= std::make_pair(old->a, old->b));
-    const bool touched = take_old && old->touches, touches = take_now && now->touches;
-    if (touches) (touched ? events.persisted : events.began).push_back(now->event);
-    if (touched && !touches) events.ended.push_back(old->event);
-    if (take_old) old = next(previous, i, i_end);
-    if (take_now) now = next(current, j, j_end);
+  constexpr pair_key past_the_end{~std::size_t{0}, ~std::size_t{0}};
+  while (i < i_end || j < j_end) {
+    const pair_key old_key = i < i_end ? key_of(previous[i]) : past_the_end;
+    const pair_key now_key = j < j_end ? key_of(current[j]) : past_the_end;
+    std::size_t old_first = i, now_first = j;
+    const bool touched = old_key <= now_key && run_touches(previous, i, i_end, old_first);
+    const bool touches = now_key <= old_key && run_touches(current, j, j_end, now_first);
+    if (touches) (touched ? events.persisted : events.began).push_back(event_of(current, now_first, j));
+    if (touched && !touches) events.ended.push_back(event_of(previous, old_first, i));
   }
 }
 
@@ -79,19 +72,18 @@ void find_events(const std::vector<contact>& previous, const std::vector<contact
   // Cut both lists before the same pairs: at even places of the current
   // list, moved to the start of their pair, and where that pair would
   // stand in the previous one.
-  const auto key = [](const contact& c) { return std::make_pair(c.body_a, c.body_b); };
   std::vector<std::size_t> cuts_now(shares + 1, current.size()), cuts_old(shares + 1, previous.size());
   cuts_now[0] = cuts_old[0] = 0;
   for (int s = 1; s < shares; ++s) {
     std::size_t at = current.size() * s / shares;
-    while (at > 0 && at < current.size() && key(current[at - 1]) == key(current[at])) --at;
+    while (at > 0 && at < current.size() && key_of(current[at - 1]) == key_of(current[at])) --at;
     at = std::max(at, cuts_now[s - 1]);
     cuts_now[s] = at;
-    const auto cut_key = at < current.size() ? key(current[at])
-                                             : std::make_pair(~std::size_t{0}, ~std::size_t{0});
+    const pair_key cut_key = at < current.size() ? key_of(current[at])
+                                                 : pair_key{~std::size_t{0}, ~std::size_t{0}};
     cuts_old[s] = static_cast<std::size_t>(
         std::lower_bound(previous.begin(), previous.end(), cut_key,
-                         [&](const contact& c, const auto& k) { return key(c) < k; }) -
+                         [](const contact& c, const pair_key& k) { return key_of(c) < k; }) -
         previous.begin());
     cuts_old[s] = std::max(cuts_old[s], cuts_old[s - 1]);
   }
