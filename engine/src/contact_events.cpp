@@ -15,10 +15,8 @@ using pair_key = std::pair<std::size_t, std::size_t>;
 pair_key key_of(const contact& c) { return {c.body_a, c.body_b}; }
 
 // Whether the run of contacts from `i` sharing its pair touches; advances i
-// past the run and leaves its first contact's index in `first`.
-bool run_touches(const std::vector<contact>& contacts, std::size_t& i, std::size_t end,
-                 std::size_t& first) {
-  first = i;
+// past the run.
+bool run_touches(const std::vector<contact>& contacts, std::size_t& i, std::size_t end) {
   const contact& head = contacts[i];
   bool touches = false;
   for (; i < end && contacts[i].body_a == head.body_a && contacts[i].body_b == head.body_b; ++i) {
@@ -48,10 +46,12 @@ void merge_events(const std::vector<contact>& previous, std::size_t i, std::size
   while (i < i_end || j < j_end) {
     const pair_key old_key = i < i_end ? key_of(previous[i]) : past_the_end;
     const pair_key now_key = j < j_end ? key_of(current[j]) : past_the_end;
-    std::size_t old_first = i, now_first = j;
-    const bool touched = old_key <= now_key && run_touches(previous, i, i_end, old_first);
-    const bool touches = now_key <= old_key && run_touches(current, j, j_end, now_first);
-    if (touches) (touched ? events.persisted : events.began).push_back(event_of(current, now_first, j));
+    const std::size_t old_first = i, now_first = j;
+    const bool touched = old_key <= now_key && run_touches(previous, i, i_end);
+    const bool touches = now_key <= old_key && run_touches(current, j, j_end);
+    if (touches) {
+      (touched ? events.persisted : events.began).push_back(event_of(current, now_first, j));
+    }
     if (touched && !touches) events.ended.push_back(event_of(previous, old_first, i));
   }
 }
