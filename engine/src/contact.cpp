@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "convex_contact.hpp"
 
@@ -37,9 +38,11 @@ bool is_round(shape_kind kind) {
 // Two spheres with the same centre and radius: their duals are equal, the
 // meet is zero and has no round to read. They overlap wholly; the normal is
 // arbitrary (e3), so the solver separates them deterministically.
-std::optional<contact_geometry> coincident_spheres(const placed_shape& a, const placed_shape& b) {
+// `duals_product` is scp(A*, B*).
+std::optional<contact_geometry> coincident_spheres(const placed_shape& a, const placed_shape& b,
+                                                   real duals_product) {
   if (a.kind != shape_kind::sphere || b.kind != shape_kind::sphere) return std::nullopt;
-  if (!(c3ga::scp(a.dual, b.dual) > 0)) return std::nullopt;
+  if (!(duals_product > 0)) return std::nullopt;
   const vector normal{0, 0, 1};
   const real depth = support_height(a, -normal) + support_height(b, normal);
   return contact_geometry{a.center, normal, depth, a.radius * a.radius};
@@ -83,25 +86,73 @@ placed_shape place(const shape& s, const vector& position, const rotor& attitude
   return placed;
 }
 
-std::optional<contact_geometry> find_contact(const placed_shape& a, const placed_shape& b,
-                                             real lookahead, const vector& velocity_a,
-                                             const vector& velocity_b) {
+namespace {
+
+// The Euclidean part (e1, e2, e3) of a c3ga value, named type or mv.
+template <class X>
+vector euclidean_part(const X& x) {
+  if constexpr (std::is_same_v<X, mv>) {
+    return to_e3ga(c3ga::euclidean_vector(x));
+  } else {
+    return {x.e1(), x.e2(), x.e3()};
+  }
+}
+
+// A sphere's and a plane's duals as their named c3ga types, the same numbers
+// place() stores in placed_shape::dual: the meet's products then run the
+// generated kernels of those types (straight-line code, no mv dispatch).
+c3ga::dual_sphere dual_sphere_of(const placed_shape& s) {
+  const real half_square = real(0.5) * e3ga::scp(s.center, s.center);
+  return {1, s.center.e1(), s.center.e2(), s.center.e3(),
+          half_square - real(0.5) * s.radius * s.radius};
+}
+
+c3ga::dual_plane dual_plane_of(const placed_shape& s) {
+  return -c3ga::dual_plane{s.normal.e1(), s.normal.e2(), s.normal.e3(), s.offset};
+}
+
+// Thesis eq. 4.10: reflecting infinity in the round C gives its centre, C ni C.
+template <class Round, class Weight>
+mv centre_of(const Round& meet, const Weight&) {
   const mv ni = c3ga::ni();
-  const mv no = c3ga::no();
+  return c3ga::gp(c3ga::gp(meet, ni), meet);
+}
+
+// The same for a circle, by grades: C ni C is a vector, the grade-1 part of
+// (C ⌊ ni) C + (C ∧ ni) C, that is (C ⌊ ni) ⌋ C + (C ∧ ni) ⌊ C. For a
+// trivector C ⌊ ni = ni ⌋ C (the weight), and (C ∧ ni) ⌊ C = -C ⌋ (C ∧ ni)
+// (reverse both sides: C~ = -C, (C ∧ ni)~ = C ∧ ni). Contractions of named
+// types, where the geometric products would pass through an mv of grades 2
+// and 4.
+c3ga::dual_sphere centre_of(const c3ga::circle& meet, const c3ga::point_pair& weight) {
+  return c3ga::lc(weight, meet) - c3ga::lc(meet, c3ga::op(meet, c3ga::ni()));
+}
+
+// The meet of two round shapes given their duals: named types where both are
+// spheres or planes, mv where a point takes part (its dual, the flat point's,
+// has no named type of its own).
+template <class DualA, class DualB>
+std::optional<contact_geometry> meet_rounds(const placed_shape& a, const DualA& dual_a,
+                                            const placed_shape& b, const DualB& dual_b,
+                                            real lookahead, const vector& velocity_a,
+                                            const vector& velocity_b) {
+  const auto ni = c3ga::ni();
+  const auto no = c3ga::no();
 
   // Thesis eq. 4.8 on dual shapes: C = A ∩ B = (A* ∧ B*)^-*. Two spheres, or a
   // sphere and a plane, meet in a circle; a sphere and a flat point in a round
   // point (a dual sphere centred on the point).
-  const mv meet = c3ga::undual(c3ga::op(a.dual, b.dual));
+  const auto meet = c3ga::undual(c3ga::op(dual_a, dual_b));
 
   // Thesis test t = C^2 (eq. 4.9), made independent of C's grade and weight:
   // the squared radius of a round is C Ĉ / (ni ⌋ C)^2 (Dorst et al. 2007,
   // table 14.1). > 0: interpenetrating, 0: touching, < 0: the surfaces do not
   // meet. A zero weight means no finite intersection (parallel planes, a
   // point and a plane) or no intersection to speak of (identical spheres).
-  const mv weight = c3ga::lc(ni, meet);
+  const auto weight = c3ga::lc(ni, meet);
   const real weight_square = c3ga::scp(weight, weight);
-  if (!(std::fabs(weight_square) > 0)) return coincident_spheres(a, b);
+  const real duals_product = c3ga::scp(dual_a, dual_b);
+  if (!(std::fabs(weight_square) > 0)) return coincident_spheres(a, b, duals_product);
   const real squared_radius = c3ga::scp(meet, c3ga::involute(meet)) / weight_square;
   // Surfaces that do not meet are apart, or one solid holds the other whole
   // (a sphere sunk below a plane, or inside a bigger sphere). The inner
@@ -109,15 +160,15 @@ std::optional<contact_geometry> find_contact(const placed_shape& a, const placed
   // d^2) / 2, below -rA rB when apart and above rA rB when nested; for a
   // sphere and a plane it is the centre's depth below the plane. Apart
   // shapes go on only when they may close the gap within the lookahead.
-  const bool apart = !(squared_radius >= 0) && !(c3ga::scp(a.dual, b.dual) > 0);
+  const bool apart = !(squared_radius >= 0) && !(duals_product > 0);
   if (apart && !(lookahead > 0)) return std::nullopt;
 
   // Thesis eq. 4.11: (-ni ⌋ C) ∧ ni = -weight ∧ ni is the direction of the
   // round's carrier, n ∧ ni; undualized and read out by no ⌋ it is a vector
   // along the normal, oriented from B to A. A round point has no carrier
   // direction: for a flat point the normal is the line of the two centres.
-  const mv direction = c3ga::lc(no, c3ga::undual(c3ga::op(weight, ni)));
-  vector normal = -to_e3ga(c3ga::euclidean_vector(direction));
+  const auto direction = c3ga::lc(no, c3ga::undual(c3ga::op(weight, ni)));
+  vector normal = -euclidean_part(direction);
   real length = e3ga::norm(normal);
   if (!(length > 1e-9 * std::sqrt(std::fabs(weight_square)))) {
     if (a.kind == shape_kind::plane || b.kind == shape_kind::plane) return std::nullopt;
@@ -135,11 +186,26 @@ std::optional<contact_geometry> find_contact(const placed_shape& a, const placed
                        std::max(e3ga::scp(normal, velocity_b), real(0));
   if (apart && !(-depth <= lookahead * closing)) return std::nullopt;
 
-  // Thesis eq. 4.10: reflecting infinity in the round gives its centre.
-  const mv centre = c3ga::gp(c3ga::gp(meet, ni), meet);
+  const auto centre = centre_of(meet, weight);
   const real centre_weight = -c3ga::scp(ni, centre);
-  const vector point = to_e3ga(c3ga::euclidean_vector(centre)) / centre_weight;
+  const vector point = euclidean_part(centre) / centre_weight;
   return contact_geometry{point, normal, depth, squared_radius};
+}
+
+}  // namespace
+
+std::optional<contact_geometry> find_contact(const placed_shape& a, const placed_shape& b,
+                                             real lookahead, const vector& velocity_a,
+                                             const vector& velocity_b) {
+  const auto with = [&](const auto& dual_a, const auto& dual_b) {
+    return meet_rounds(a, dual_a, b, dual_b, lookahead, velocity_a, velocity_b);
+  };
+  const bool sphere_a = a.kind == shape_kind::sphere, sphere_b = b.kind == shape_kind::sphere;
+  const bool plane_a = a.kind == shape_kind::plane, plane_b = b.kind == shape_kind::plane;
+  if (sphere_a && sphere_b) return with(dual_sphere_of(a), dual_sphere_of(b));
+  if (sphere_a && plane_b) return with(dual_sphere_of(a), dual_plane_of(b));
+  if (plane_a && sphere_b) return with(dual_plane_of(a), dual_sphere_of(b));
+  return with(a.dual, b.dual);
 }
 
 void find_contacts(const placed_shape& a, const placed_shape& b, real lookahead,
