@@ -49,6 +49,7 @@ def files_for(variant: str, sparse: bool = False) -> list[tuple[str, str]]:
         (f"kernels_{_KERNELS[variant]}.hpp.j2", "kernels.hpp"),
         (f"recording_{recording}.hpp.j2", "recording.hpp"),
         ("specialized.hpp.j2", "specialized.hpp"),
+        ("batch.hpp.j2", "batch.hpp"),
     ]
 
 

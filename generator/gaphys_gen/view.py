@@ -143,10 +143,12 @@ def kernel_view(algebra: Algebra, kernel: Kernel) -> dict:
     params = [("" if letter in read else "[[maybe_unused]] ") + f"const {type_cpp(a)}<T>& {letter}"
               for a, letter in zip(kernel.arguments, "ab")]
     mv_args = [f"basic_mv<T>({letter})" for letter in "ab"[: len(kernel.arguments)]]
+    args = list("ab"[: len(kernel.arguments)])
     shown = list(names)
     if kernel.function == "smul":
         params.insert(0, ("" if "s" in read else "[[maybe_unused]] ") + "T s")
         mv_args.insert(0, "s")
+        args.insert(0, "s")
         shown.insert(0, "scalar")
     rtype = return_type(kernel)
     call = f"{kernel.function}({', '.join(mv_args)})"
@@ -176,6 +178,7 @@ def kernel_view(algebra: Algebra, kernel: Kernel) -> dict:
         "comment": f"{kernel.function}({', '.join(shown)}) -> {result_name}{cost}{extra.get(kernel.form, '')}",
         "return_type": rtype,
         "params": ", ".join(params),
+        "args": ", ".join(args),
         "result_kind": kernel.result.kind,
         # The value each output returns: divided by the kernel's divisor when it has one.
         "outputs": [

@@ -14,9670 +14,16650 @@ namespace c3ga {
 // neg(normalized_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> neg(const basic_normalized_point<T>& a) {
-  return basic_dual_sphere<T>(neg(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return neg(x...); }, a);
+  } else {
+    return basic_dual_sphere<T>(neg(basic_mv<T>(a)));
+  }
 }
 
 // reverse(normalized_point) -> normalized_point
 template <class T>
 basic_normalized_point<T> reverse(const basic_normalized_point<T>& a) {
-  return basic_normalized_point<T>(reverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_normalized_point<T>>(
+        [](const auto&... x) { return reverse(x...); }, a);
+  } else {
+    return basic_normalized_point<T>(reverse(basic_mv<T>(a)));
+  }
 }
 
 // involute(normalized_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> involute(const basic_normalized_point<T>& a) {
-  return basic_dual_sphere<T>(involute(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return involute(x...); }, a);
+  } else {
+    return basic_dual_sphere<T>(involute(basic_mv<T>(a)));
+  }
 }
 
 // conjugate(normalized_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> conjugate(const basic_normalized_point<T>& a) {
-  return basic_dual_sphere<T>(conjugate(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return conjugate(x...); }, a);
+  } else {
+    return basic_dual_sphere<T>(conjugate(basic_mv<T>(a)));
+  }
 }
 
 // norm2(normalized_point) -> scalar
 template <class T>
 T norm2(const basic_normalized_point<T>& a) {
-  return norm2(basic_mv<T>(a));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return norm2(x...); }, a);
+  } else {
+    return norm2(basic_mv<T>(a));
+  }
 }
 
 // inverse(normalized_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> inverse(const basic_normalized_point<T>& a) {
-  return basic_dual_sphere<T>(inverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return inverse(x...); }, a);
+  } else {
+    return basic_dual_sphere<T>(inverse(basic_mv<T>(a)));
+  }
 }
 
 // dual(normalized_point) -> sphere
 template <class T>
 basic_sphere<T> dual(const basic_normalized_point<T>& a) {
-  return basic_sphere<T>(dual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return dual(x...); }, a);
+  } else {
+    return basic_sphere<T>(dual(basic_mv<T>(a)));
+  }
 }
 
 // undual(normalized_point) -> sphere
 template <class T>
 basic_sphere<T> undual(const basic_normalized_point<T>& a) {
-  return basic_sphere<T>(undual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return undual(x...); }, a);
+  } else {
+    return basic_sphere<T>(undual(basic_mv<T>(a)));
+  }
 }
 
 // smul(scalar, normalized_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> smul(T s, const basic_normalized_point<T>& a) {
-  return basic_dual_sphere<T>(smul(s, basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return smul(x...); }, s, a);
+  } else {
+    return basic_dual_sphere<T>(smul(s, basic_mv<T>(a)));
+  }
 }
 
 // add(normalized_point, normalized_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> add(const basic_normalized_point<T>& a, const basic_normalized_point<T>& b) {
-  return basic_dual_sphere<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return add(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // sub(normalized_point, normalized_point) -> dual_plane
 template <class T>
 basic_dual_plane<T> sub(const basic_normalized_point<T>& a, const basic_normalized_point<T>& b) {
-  return basic_dual_plane<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return sub(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // neg(dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> neg(const basic_dual_sphere<T>& a) {
-  return basic_dual_sphere<T>(neg(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return neg(x...); }, a);
+  } else {
+    return basic_dual_sphere<T>(neg(basic_mv<T>(a)));
+  }
 }
 
 // reverse(dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> reverse(const basic_dual_sphere<T>& a) {
-  return basic_dual_sphere<T>(reverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return reverse(x...); }, a);
+  } else {
+    return basic_dual_sphere<T>(reverse(basic_mv<T>(a)));
+  }
 }
 
 // involute(dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> involute(const basic_dual_sphere<T>& a) {
-  return basic_dual_sphere<T>(involute(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return involute(x...); }, a);
+  } else {
+    return basic_dual_sphere<T>(involute(basic_mv<T>(a)));
+  }
 }
 
 // conjugate(dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> conjugate(const basic_dual_sphere<T>& a) {
-  return basic_dual_sphere<T>(conjugate(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return conjugate(x...); }, a);
+  } else {
+    return basic_dual_sphere<T>(conjugate(basic_mv<T>(a)));
+  }
 }
 
 // norm2(dual_sphere) -> scalar
 template <class T>
 T norm2(const basic_dual_sphere<T>& a) {
-  return norm2(basic_mv<T>(a));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return norm2(x...); }, a);
+  } else {
+    return norm2(basic_mv<T>(a));
+  }
 }
 
 // inverse(dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> inverse(const basic_dual_sphere<T>& a) {
-  return basic_dual_sphere<T>(inverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return inverse(x...); }, a);
+  } else {
+    return basic_dual_sphere<T>(inverse(basic_mv<T>(a)));
+  }
 }
 
 // dual(dual_sphere) -> sphere
 template <class T>
 basic_sphere<T> dual(const basic_dual_sphere<T>& a) {
-  return basic_sphere<T>(dual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return dual(x...); }, a);
+  } else {
+    return basic_sphere<T>(dual(basic_mv<T>(a)));
+  }
 }
 
 // undual(dual_sphere) -> sphere
 template <class T>
 basic_sphere<T> undual(const basic_dual_sphere<T>& a) {
-  return basic_sphere<T>(undual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return undual(x...); }, a);
+  } else {
+    return basic_sphere<T>(undual(basic_mv<T>(a)));
+  }
 }
 
 // smul(scalar, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> smul(T s, const basic_dual_sphere<T>& a) {
-  return basic_dual_sphere<T>(smul(s, basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return smul(x...); }, s, a);
+  } else {
+    return basic_dual_sphere<T>(smul(s, basic_mv<T>(a)));
+  }
 }
 
 // add(dual_sphere, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> add(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return add(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // sub(dual_sphere, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> sub(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return sub(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // neg(dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> neg(const basic_dual_plane<T>& a) {
-  return basic_dual_plane<T>(neg(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return neg(x...); }, a);
+  } else {
+    return basic_dual_plane<T>(neg(basic_mv<T>(a)));
+  }
 }
 
 // reverse(dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> reverse(const basic_dual_plane<T>& a) {
-  return basic_dual_plane<T>(reverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return reverse(x...); }, a);
+  } else {
+    return basic_dual_plane<T>(reverse(basic_mv<T>(a)));
+  }
 }
 
 // involute(dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> involute(const basic_dual_plane<T>& a) {
-  return basic_dual_plane<T>(involute(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return involute(x...); }, a);
+  } else {
+    return basic_dual_plane<T>(involute(basic_mv<T>(a)));
+  }
 }
 
 // conjugate(dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> conjugate(const basic_dual_plane<T>& a) {
-  return basic_dual_plane<T>(conjugate(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return conjugate(x...); }, a);
+  } else {
+    return basic_dual_plane<T>(conjugate(basic_mv<T>(a)));
+  }
 }
 
 // norm2(dual_plane) -> scalar
 template <class T>
 T norm2(const basic_dual_plane<T>& a) {
-  return norm2(basic_mv<T>(a));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return norm2(x...); }, a);
+  } else {
+    return norm2(basic_mv<T>(a));
+  }
 }
 
 // inverse(dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> inverse(const basic_dual_plane<T>& a) {
-  return basic_dual_plane<T>(inverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return inverse(x...); }, a);
+  } else {
+    return basic_dual_plane<T>(inverse(basic_mv<T>(a)));
+  }
 }
 
 // dual(dual_plane) -> plane
 template <class T>
 basic_plane<T> dual(const basic_dual_plane<T>& a) {
-  return basic_plane<T>(dual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return dual(x...); }, a);
+  } else {
+    return basic_plane<T>(dual(basic_mv<T>(a)));
+  }
 }
 
 // undual(dual_plane) -> plane
 template <class T>
 basic_plane<T> undual(const basic_dual_plane<T>& a) {
-  return basic_plane<T>(undual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return undual(x...); }, a);
+  } else {
+    return basic_plane<T>(undual(basic_mv<T>(a)));
+  }
 }
 
 // smul(scalar, dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> smul(T s, const basic_dual_plane<T>& a) {
-  return basic_dual_plane<T>(smul(s, basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return smul(x...); }, s, a);
+  } else {
+    return basic_dual_plane<T>(smul(s, basic_mv<T>(a)));
+  }
 }
 
 // add(dual_plane, dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> add(const basic_dual_plane<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_plane<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return add(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // sub(dual_plane, dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> sub(const basic_dual_plane<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_plane<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return sub(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // neg(euclidean_vector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> neg(const basic_euclidean_vector<T>& a) {
-  return basic_euclidean_vector<T>(neg(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return neg(x...); }, a);
+  } else {
+    return basic_euclidean_vector<T>(neg(basic_mv<T>(a)));
+  }
 }
 
 // reverse(euclidean_vector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> reverse(const basic_euclidean_vector<T>& a) {
-  return basic_euclidean_vector<T>(reverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return reverse(x...); }, a);
+  } else {
+    return basic_euclidean_vector<T>(reverse(basic_mv<T>(a)));
+  }
 }
 
 // involute(euclidean_vector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> involute(const basic_euclidean_vector<T>& a) {
-  return basic_euclidean_vector<T>(involute(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return involute(x...); }, a);
+  } else {
+    return basic_euclidean_vector<T>(involute(basic_mv<T>(a)));
+  }
 }
 
 // conjugate(euclidean_vector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> conjugate(const basic_euclidean_vector<T>& a) {
-  return basic_euclidean_vector<T>(conjugate(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return conjugate(x...); }, a);
+  } else {
+    return basic_euclidean_vector<T>(conjugate(basic_mv<T>(a)));
+  }
 }
 
 // norm2(euclidean_vector) -> scalar
 template <class T>
 T norm2(const basic_euclidean_vector<T>& a) {
-  return norm2(basic_mv<T>(a));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return norm2(x...); }, a);
+  } else {
+    return norm2(basic_mv<T>(a));
+  }
 }
 
 // inverse(euclidean_vector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> inverse(const basic_euclidean_vector<T>& a) {
-  return basic_euclidean_vector<T>(inverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return inverse(x...); }, a);
+  } else {
+    return basic_euclidean_vector<T>(inverse(basic_mv<T>(a)));
+  }
 }
 
 // dual(euclidean_vector) -> plane
 template <class T>
 basic_plane<T> dual(const basic_euclidean_vector<T>& a) {
-  return basic_plane<T>(dual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return dual(x...); }, a);
+  } else {
+    return basic_plane<T>(dual(basic_mv<T>(a)));
+  }
 }
 
 // undual(euclidean_vector) -> plane
 template <class T>
 basic_plane<T> undual(const basic_euclidean_vector<T>& a) {
-  return basic_plane<T>(undual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return undual(x...); }, a);
+  } else {
+    return basic_plane<T>(undual(basic_mv<T>(a)));
+  }
 }
 
 // smul(scalar, euclidean_vector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> smul(T s, const basic_euclidean_vector<T>& a) {
-  return basic_euclidean_vector<T>(smul(s, basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return smul(x...); }, s, a);
+  } else {
+    return basic_euclidean_vector<T>(smul(s, basic_mv<T>(a)));
+  }
 }
 
 // add(euclidean_vector, euclidean_vector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> add(const basic_euclidean_vector<T>& a,
                               const basic_euclidean_vector<T>& b) {
-  return basic_euclidean_vector<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return add(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // sub(euclidean_vector, euclidean_vector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> sub(const basic_euclidean_vector<T>& a,
                               const basic_euclidean_vector<T>& b) {
-  return basic_euclidean_vector<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return sub(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // neg(flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> neg(const basic_flat_point<T>& a) {
-  return basic_flat_point<T>(neg(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return neg(x...); }, a);
+  } else {
+    return basic_flat_point<T>(neg(basic_mv<T>(a)));
+  }
 }
 
 // reverse(flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> reverse(const basic_flat_point<T>& a) {
-  return basic_flat_point<T>(reverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return reverse(x...); }, a);
+  } else {
+    return basic_flat_point<T>(reverse(basic_mv<T>(a)));
+  }
 }
 
 // involute(flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> involute(const basic_flat_point<T>& a) {
-  return basic_flat_point<T>(involute(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return involute(x...); }, a);
+  } else {
+    return basic_flat_point<T>(involute(basic_mv<T>(a)));
+  }
 }
 
 // conjugate(flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> conjugate(const basic_flat_point<T>& a) {
-  return basic_flat_point<T>(conjugate(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return conjugate(x...); }, a);
+  } else {
+    return basic_flat_point<T>(conjugate(basic_mv<T>(a)));
+  }
 }
 
 // norm2(flat_point) -> scalar
 template <class T>
 T norm2(const basic_flat_point<T>& a) {
-  return norm2(basic_mv<T>(a));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return norm2(x...); }, a);
+  } else {
+    return norm2(basic_mv<T>(a));
+  }
 }
 
 // inverse(flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> inverse(const basic_flat_point<T>& a) {
-  return basic_flat_point<T>(inverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return inverse(x...); }, a);
+  } else {
+    return basic_flat_point<T>(inverse(basic_mv<T>(a)));
+  }
 }
 
 // dual(flat_point) -> circle
 template <class T>
 basic_circle<T> dual(const basic_flat_point<T>& a) {
-  return basic_circle<T>(dual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return dual(x...); }, a);
+  } else {
+    return basic_circle<T>(dual(basic_mv<T>(a)));
+  }
 }
 
 // undual(flat_point) -> circle
 template <class T>
 basic_circle<T> undual(const basic_flat_point<T>& a) {
-  return basic_circle<T>(undual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return undual(x...); }, a);
+  } else {
+    return basic_circle<T>(undual(basic_mv<T>(a)));
+  }
 }
 
 // smul(scalar, flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> smul(T s, const basic_flat_point<T>& a) {
-  return basic_flat_point<T>(smul(s, basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return smul(x...); }, s, a);
+  } else {
+    return basic_flat_point<T>(smul(s, basic_mv<T>(a)));
+  }
 }
 
 // add(flat_point, flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> add(const basic_flat_point<T>& a, const basic_flat_point<T>& b) {
-  return basic_flat_point<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return add(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // sub(flat_point, flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> sub(const basic_flat_point<T>& a, const basic_flat_point<T>& b) {
-  return basic_flat_point<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return sub(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // neg(euclidean_bivector) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> neg(const basic_euclidean_bivector<T>& a) {
-  return basic_euclidean_bivector<T>(neg(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return neg(x...); }, a);
+  } else {
+    return basic_euclidean_bivector<T>(neg(basic_mv<T>(a)));
+  }
 }
 
 // reverse(euclidean_bivector) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> reverse(const basic_euclidean_bivector<T>& a) {
-  return basic_euclidean_bivector<T>(reverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return reverse(x...); }, a);
+  } else {
+    return basic_euclidean_bivector<T>(reverse(basic_mv<T>(a)));
+  }
 }
 
 // involute(euclidean_bivector) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> involute(const basic_euclidean_bivector<T>& a) {
-  return basic_euclidean_bivector<T>(involute(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return involute(x...); }, a);
+  } else {
+    return basic_euclidean_bivector<T>(involute(basic_mv<T>(a)));
+  }
 }
 
 // conjugate(euclidean_bivector) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> conjugate(const basic_euclidean_bivector<T>& a) {
-  return basic_euclidean_bivector<T>(conjugate(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return conjugate(x...); }, a);
+  } else {
+    return basic_euclidean_bivector<T>(conjugate(basic_mv<T>(a)));
+  }
 }
 
 // norm2(euclidean_bivector) -> scalar
 template <class T>
 T norm2(const basic_euclidean_bivector<T>& a) {
-  return norm2(basic_mv<T>(a));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return norm2(x...); }, a);
+  } else {
+    return norm2(basic_mv<T>(a));
+  }
 }
 
 // inverse(euclidean_bivector) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> inverse(const basic_euclidean_bivector<T>& a) {
-  return basic_euclidean_bivector<T>(inverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return inverse(x...); }, a);
+  } else {
+    return basic_euclidean_bivector<T>(inverse(basic_mv<T>(a)));
+  }
 }
 
 // dual(euclidean_bivector) -> line
 template <class T>
 basic_line<T> dual(const basic_euclidean_bivector<T>& a) {
-  return basic_line<T>(dual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return dual(x...); }, a);
+  } else {
+    return basic_line<T>(dual(basic_mv<T>(a)));
+  }
 }
 
 // undual(euclidean_bivector) -> line
 template <class T>
 basic_line<T> undual(const basic_euclidean_bivector<T>& a) {
-  return basic_line<T>(undual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return undual(x...); }, a);
+  } else {
+    return basic_line<T>(undual(basic_mv<T>(a)));
+  }
 }
 
 // smul(scalar, euclidean_bivector) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> smul(T s, const basic_euclidean_bivector<T>& a) {
-  return basic_euclidean_bivector<T>(smul(s, basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return smul(x...); }, s, a);
+  } else {
+    return basic_euclidean_bivector<T>(smul(s, basic_mv<T>(a)));
+  }
 }
 
 // add(euclidean_bivector, euclidean_bivector) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> add(const basic_euclidean_bivector<T>& a,
                                 const basic_euclidean_bivector<T>& b) {
-  return basic_euclidean_bivector<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return add(x...); }, a, b);
+  } else {
+    return basic_euclidean_bivector<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // sub(euclidean_bivector, euclidean_bivector) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> sub(const basic_euclidean_bivector<T>& a,
                                 const basic_euclidean_bivector<T>& b) {
-  return basic_euclidean_bivector<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return sub(x...); }, a, b);
+  } else {
+    return basic_euclidean_bivector<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // neg(point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> neg(const basic_point_pair<T>& a) {
-  return basic_point_pair<T>(neg(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return neg(x...); }, a);
+  } else {
+    return basic_point_pair<T>(neg(basic_mv<T>(a)));
+  }
 }
 
 // reverse(point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> reverse(const basic_point_pair<T>& a) {
-  return basic_point_pair<T>(reverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return reverse(x...); }, a);
+  } else {
+    return basic_point_pair<T>(reverse(basic_mv<T>(a)));
+  }
 }
 
 // involute(point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> involute(const basic_point_pair<T>& a) {
-  return basic_point_pair<T>(involute(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return involute(x...); }, a);
+  } else {
+    return basic_point_pair<T>(involute(basic_mv<T>(a)));
+  }
 }
 
 // conjugate(point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> conjugate(const basic_point_pair<T>& a) {
-  return basic_point_pair<T>(conjugate(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return conjugate(x...); }, a);
+  } else {
+    return basic_point_pair<T>(conjugate(basic_mv<T>(a)));
+  }
 }
 
 // norm2(point_pair) -> scalar
 template <class T>
 T norm2(const basic_point_pair<T>& a) {
-  return norm2(basic_mv<T>(a));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return norm2(x...); }, a);
+  } else {
+    return norm2(basic_mv<T>(a));
+  }
 }
 
 // inverse(point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> inverse(const basic_point_pair<T>& a) {
-  return basic_point_pair<T>(inverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return inverse(x...); }, a);
+  } else {
+    return basic_point_pair<T>(inverse(basic_mv<T>(a)));
+  }
 }
 
 // dual(point_pair) -> circle
 template <class T>
 basic_circle<T> dual(const basic_point_pair<T>& a) {
-  return basic_circle<T>(dual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return dual(x...); }, a);
+  } else {
+    return basic_circle<T>(dual(basic_mv<T>(a)));
+  }
 }
 
 // undual(point_pair) -> circle
 template <class T>
 basic_circle<T> undual(const basic_point_pair<T>& a) {
-  return basic_circle<T>(undual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return undual(x...); }, a);
+  } else {
+    return basic_circle<T>(undual(basic_mv<T>(a)));
+  }
 }
 
 // smul(scalar, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> smul(T s, const basic_point_pair<T>& a) {
-  return basic_point_pair<T>(smul(s, basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return smul(x...); }, s, a);
+  } else {
+    return basic_point_pair<T>(smul(s, basic_mv<T>(a)));
+  }
 }
 
 // add(point_pair, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> add(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
-  return basic_point_pair<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return add(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // sub(point_pair, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> sub(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
-  return basic_point_pair<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return sub(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // neg(dual_line) -> dual_line
 template <class T>
 basic_dual_line<T> neg(const basic_dual_line<T>& a) {
-  return basic_dual_line<T>(neg(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return neg(x...); }, a);
+  } else {
+    return basic_dual_line<T>(neg(basic_mv<T>(a)));
+  }
 }
 
 // reverse(dual_line) -> dual_line
 template <class T>
 basic_dual_line<T> reverse(const basic_dual_line<T>& a) {
-  return basic_dual_line<T>(reverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return reverse(x...); }, a);
+  } else {
+    return basic_dual_line<T>(reverse(basic_mv<T>(a)));
+  }
 }
 
 // involute(dual_line) -> dual_line
 template <class T>
 basic_dual_line<T> involute(const basic_dual_line<T>& a) {
-  return basic_dual_line<T>(involute(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return involute(x...); }, a);
+  } else {
+    return basic_dual_line<T>(involute(basic_mv<T>(a)));
+  }
 }
 
 // conjugate(dual_line) -> dual_line
 template <class T>
 basic_dual_line<T> conjugate(const basic_dual_line<T>& a) {
-  return basic_dual_line<T>(conjugate(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return conjugate(x...); }, a);
+  } else {
+    return basic_dual_line<T>(conjugate(basic_mv<T>(a)));
+  }
 }
 
 // norm2(dual_line) -> scalar
 template <class T>
 T norm2(const basic_dual_line<T>& a) {
-  return norm2(basic_mv<T>(a));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return norm2(x...); }, a);
+  } else {
+    return norm2(basic_mv<T>(a));
+  }
 }
 
 // inverse(dual_line) -> dual_line
 template <class T>
 basic_dual_line<T> inverse(const basic_dual_line<T>& a) {
-  return basic_dual_line<T>(inverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return inverse(x...); }, a);
+  } else {
+    return basic_dual_line<T>(inverse(basic_mv<T>(a)));
+  }
 }
 
 // dual(dual_line) -> line
 template <class T>
 basic_line<T> dual(const basic_dual_line<T>& a) {
-  return basic_line<T>(dual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return dual(x...); }, a);
+  } else {
+    return basic_line<T>(dual(basic_mv<T>(a)));
+  }
 }
 
 // undual(dual_line) -> line
 template <class T>
 basic_line<T> undual(const basic_dual_line<T>& a) {
-  return basic_line<T>(undual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return undual(x...); }, a);
+  } else {
+    return basic_line<T>(undual(basic_mv<T>(a)));
+  }
 }
 
 // smul(scalar, dual_line) -> dual_line
 template <class T>
 basic_dual_line<T> smul(T s, const basic_dual_line<T>& a) {
-  return basic_dual_line<T>(smul(s, basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return smul(x...); }, s, a);
+  } else {
+    return basic_dual_line<T>(smul(s, basic_mv<T>(a)));
+  }
 }
 
 // add(dual_line, dual_line) -> dual_line
 template <class T>
 basic_dual_line<T> add(const basic_dual_line<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_line<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return add(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // sub(dual_line, dual_line) -> dual_line
 template <class T>
 basic_dual_line<T> sub(const basic_dual_line<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_line<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return sub(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // neg(line) -> line
 template <class T>
 basic_line<T> neg(const basic_line<T>& a) {
-  return basic_line<T>(neg(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return neg(x...); }, a);
+  } else {
+    return basic_line<T>(neg(basic_mv<T>(a)));
+  }
 }
 
 // reverse(line) -> line
 template <class T>
 basic_line<T> reverse(const basic_line<T>& a) {
-  return basic_line<T>(reverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return reverse(x...); }, a);
+  } else {
+    return basic_line<T>(reverse(basic_mv<T>(a)));
+  }
 }
 
 // involute(line) -> line
 template <class T>
 basic_line<T> involute(const basic_line<T>& a) {
-  return basic_line<T>(involute(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return involute(x...); }, a);
+  } else {
+    return basic_line<T>(involute(basic_mv<T>(a)));
+  }
 }
 
 // conjugate(line) -> line
 template <class T>
 basic_line<T> conjugate(const basic_line<T>& a) {
-  return basic_line<T>(conjugate(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return conjugate(x...); }, a);
+  } else {
+    return basic_line<T>(conjugate(basic_mv<T>(a)));
+  }
 }
 
 // norm2(line) -> scalar
 template <class T>
 T norm2(const basic_line<T>& a) {
-  return norm2(basic_mv<T>(a));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return norm2(x...); }, a);
+  } else {
+    return norm2(basic_mv<T>(a));
+  }
 }
 
 // inverse(line) -> line
 template <class T>
 basic_line<T> inverse(const basic_line<T>& a) {
-  return basic_line<T>(inverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return inverse(x...); }, a);
+  } else {
+    return basic_line<T>(inverse(basic_mv<T>(a)));
+  }
 }
 
 // dual(line) -> dual_line
 template <class T>
 basic_dual_line<T> dual(const basic_line<T>& a) {
-  return basic_dual_line<T>(dual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return dual(x...); }, a);
+  } else {
+    return basic_dual_line<T>(dual(basic_mv<T>(a)));
+  }
 }
 
 // undual(line) -> dual_line
 template <class T>
 basic_dual_line<T> undual(const basic_line<T>& a) {
-  return basic_dual_line<T>(undual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return undual(x...); }, a);
+  } else {
+    return basic_dual_line<T>(undual(basic_mv<T>(a)));
+  }
 }
 
 // smul(scalar, line) -> line
 template <class T>
 basic_line<T> smul(T s, const basic_line<T>& a) {
-  return basic_line<T>(smul(s, basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return smul(x...); }, s, a);
+  } else {
+    return basic_line<T>(smul(s, basic_mv<T>(a)));
+  }
 }
 
 // add(line, line) -> line
 template <class T>
 basic_line<T> add(const basic_line<T>& a, const basic_line<T>& b) {
-  return basic_line<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return add(x...); }, a, b);
+  } else {
+    return basic_line<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // sub(line, line) -> line
 template <class T>
 basic_line<T> sub(const basic_line<T>& a, const basic_line<T>& b) {
-  return basic_line<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return sub(x...); }, a, b);
+  } else {
+    return basic_line<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // neg(circle) -> circle
 template <class T>
 basic_circle<T> neg(const basic_circle<T>& a) {
-  return basic_circle<T>(neg(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return neg(x...); }, a);
+  } else {
+    return basic_circle<T>(neg(basic_mv<T>(a)));
+  }
 }
 
 // reverse(circle) -> circle
 template <class T>
 basic_circle<T> reverse(const basic_circle<T>& a) {
-  return basic_circle<T>(reverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return reverse(x...); }, a);
+  } else {
+    return basic_circle<T>(reverse(basic_mv<T>(a)));
+  }
 }
 
 // involute(circle) -> circle
 template <class T>
 basic_circle<T> involute(const basic_circle<T>& a) {
-  return basic_circle<T>(involute(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return involute(x...); }, a);
+  } else {
+    return basic_circle<T>(involute(basic_mv<T>(a)));
+  }
 }
 
 // conjugate(circle) -> circle
 template <class T>
 basic_circle<T> conjugate(const basic_circle<T>& a) {
-  return basic_circle<T>(conjugate(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return conjugate(x...); }, a);
+  } else {
+    return basic_circle<T>(conjugate(basic_mv<T>(a)));
+  }
 }
 
 // norm2(circle) -> scalar
 template <class T>
 T norm2(const basic_circle<T>& a) {
-  return norm2(basic_mv<T>(a));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return norm2(x...); }, a);
+  } else {
+    return norm2(basic_mv<T>(a));
+  }
 }
 
 // inverse(circle) -> circle
 template <class T>
 basic_circle<T> inverse(const basic_circle<T>& a) {
-  return basic_circle<T>(inverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return inverse(x...); }, a);
+  } else {
+    return basic_circle<T>(inverse(basic_mv<T>(a)));
+  }
 }
 
 // dual(circle) -> point_pair
 template <class T>
 basic_point_pair<T> dual(const basic_circle<T>& a) {
-  return basic_point_pair<T>(dual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return dual(x...); }, a);
+  } else {
+    return basic_point_pair<T>(dual(basic_mv<T>(a)));
+  }
 }
 
 // undual(circle) -> point_pair
 template <class T>
 basic_point_pair<T> undual(const basic_circle<T>& a) {
-  return basic_point_pair<T>(undual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return undual(x...); }, a);
+  } else {
+    return basic_point_pair<T>(undual(basic_mv<T>(a)));
+  }
 }
 
 // smul(scalar, circle) -> circle
 template <class T>
 basic_circle<T> smul(T s, const basic_circle<T>& a) {
-  return basic_circle<T>(smul(s, basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return smul(x...); }, s, a);
+  } else {
+    return basic_circle<T>(smul(s, basic_mv<T>(a)));
+  }
 }
 
 // add(circle, circle) -> circle
 template <class T>
 basic_circle<T> add(const basic_circle<T>& a, const basic_circle<T>& b) {
-  return basic_circle<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return add(x...); }, a, b);
+  } else {
+    return basic_circle<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // sub(circle, circle) -> circle
 template <class T>
 basic_circle<T> sub(const basic_circle<T>& a, const basic_circle<T>& b) {
-  return basic_circle<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return sub(x...); }, a, b);
+  } else {
+    return basic_circle<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // neg(sphere) -> sphere
 template <class T>
 basic_sphere<T> neg(const basic_sphere<T>& a) {
-  return basic_sphere<T>(neg(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return neg(x...); }, a);
+  } else {
+    return basic_sphere<T>(neg(basic_mv<T>(a)));
+  }
 }
 
 // reverse(sphere) -> sphere
 template <class T>
 basic_sphere<T> reverse(const basic_sphere<T>& a) {
-  return basic_sphere<T>(reverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return reverse(x...); }, a);
+  } else {
+    return basic_sphere<T>(reverse(basic_mv<T>(a)));
+  }
 }
 
 // involute(sphere) -> sphere
 template <class T>
 basic_sphere<T> involute(const basic_sphere<T>& a) {
-  return basic_sphere<T>(involute(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return involute(x...); }, a);
+  } else {
+    return basic_sphere<T>(involute(basic_mv<T>(a)));
+  }
 }
 
 // conjugate(sphere) -> sphere
 template <class T>
 basic_sphere<T> conjugate(const basic_sphere<T>& a) {
-  return basic_sphere<T>(conjugate(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return conjugate(x...); }, a);
+  } else {
+    return basic_sphere<T>(conjugate(basic_mv<T>(a)));
+  }
 }
 
 // norm2(sphere) -> scalar
 template <class T>
 T norm2(const basic_sphere<T>& a) {
-  return norm2(basic_mv<T>(a));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return norm2(x...); }, a);
+  } else {
+    return norm2(basic_mv<T>(a));
+  }
 }
 
 // inverse(sphere) -> sphere
 template <class T>
 basic_sphere<T> inverse(const basic_sphere<T>& a) {
-  return basic_sphere<T>(inverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return inverse(x...); }, a);
+  } else {
+    return basic_sphere<T>(inverse(basic_mv<T>(a)));
+  }
 }
 
 // dual(sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> dual(const basic_sphere<T>& a) {
-  return basic_dual_sphere<T>(dual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return dual(x...); }, a);
+  } else {
+    return basic_dual_sphere<T>(dual(basic_mv<T>(a)));
+  }
 }
 
 // undual(sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> undual(const basic_sphere<T>& a) {
-  return basic_dual_sphere<T>(undual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return undual(x...); }, a);
+  } else {
+    return basic_dual_sphere<T>(undual(basic_mv<T>(a)));
+  }
 }
 
 // smul(scalar, sphere) -> sphere
 template <class T>
 basic_sphere<T> smul(T s, const basic_sphere<T>& a) {
-  return basic_sphere<T>(smul(s, basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return smul(x...); }, s, a);
+  } else {
+    return basic_sphere<T>(smul(s, basic_mv<T>(a)));
+  }
 }
 
 // add(sphere, sphere) -> sphere
 template <class T>
 basic_sphere<T> add(const basic_sphere<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return add(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // sub(sphere, sphere) -> sphere
 template <class T>
 basic_sphere<T> sub(const basic_sphere<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return sub(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // neg(plane) -> plane
 template <class T>
 basic_plane<T> neg(const basic_plane<T>& a) {
-  return basic_plane<T>(neg(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return neg(x...); }, a);
+  } else {
+    return basic_plane<T>(neg(basic_mv<T>(a)));
+  }
 }
 
 // reverse(plane) -> plane
 template <class T>
 basic_plane<T> reverse(const basic_plane<T>& a) {
-  return basic_plane<T>(reverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return reverse(x...); }, a);
+  } else {
+    return basic_plane<T>(reverse(basic_mv<T>(a)));
+  }
 }
 
 // involute(plane) -> plane
 template <class T>
 basic_plane<T> involute(const basic_plane<T>& a) {
-  return basic_plane<T>(involute(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return involute(x...); }, a);
+  } else {
+    return basic_plane<T>(involute(basic_mv<T>(a)));
+  }
 }
 
 // conjugate(plane) -> plane
 template <class T>
 basic_plane<T> conjugate(const basic_plane<T>& a) {
-  return basic_plane<T>(conjugate(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return conjugate(x...); }, a);
+  } else {
+    return basic_plane<T>(conjugate(basic_mv<T>(a)));
+  }
 }
 
 // norm2(plane) -> scalar
 template <class T>
 T norm2(const basic_plane<T>& a) {
-  return norm2(basic_mv<T>(a));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return norm2(x...); }, a);
+  } else {
+    return norm2(basic_mv<T>(a));
+  }
 }
 
 // inverse(plane) -> plane
 template <class T>
 basic_plane<T> inverse(const basic_plane<T>& a) {
-  return basic_plane<T>(inverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return inverse(x...); }, a);
+  } else {
+    return basic_plane<T>(inverse(basic_mv<T>(a)));
+  }
 }
 
 // dual(plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> dual(const basic_plane<T>& a) {
-  return basic_dual_plane<T>(dual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return dual(x...); }, a);
+  } else {
+    return basic_dual_plane<T>(dual(basic_mv<T>(a)));
+  }
 }
 
 // undual(plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> undual(const basic_plane<T>& a) {
-  return basic_dual_plane<T>(undual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return undual(x...); }, a);
+  } else {
+    return basic_dual_plane<T>(undual(basic_mv<T>(a)));
+  }
 }
 
 // smul(scalar, plane) -> plane
 template <class T>
 basic_plane<T> smul(T s, const basic_plane<T>& a) {
-  return basic_plane<T>(smul(s, basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return smul(x...); }, s, a);
+  } else {
+    return basic_plane<T>(smul(s, basic_mv<T>(a)));
+  }
 }
 
 // add(plane, plane) -> plane
 template <class T>
 basic_plane<T> add(const basic_plane<T>& a, const basic_plane<T>& b) {
-  return basic_plane<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return add(x...); }, a, b);
+  } else {
+    return basic_plane<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // sub(plane, plane) -> plane
 template <class T>
 basic_plane<T> sub(const basic_plane<T>& a, const basic_plane<T>& b) {
-  return basic_plane<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return sub(x...); }, a, b);
+  } else {
+    return basic_plane<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // neg(pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> neg(const basic_pseudoscalar<T>& a) {
-  return basic_pseudoscalar<T>(neg(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return neg(x...); }, a);
+  } else {
+    return basic_pseudoscalar<T>(neg(basic_mv<T>(a)));
+  }
 }
 
 // reverse(pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> reverse(const basic_pseudoscalar<T>& a) {
-  return basic_pseudoscalar<T>(reverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return reverse(x...); }, a);
+  } else {
+    return basic_pseudoscalar<T>(reverse(basic_mv<T>(a)));
+  }
 }
 
 // involute(pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> involute(const basic_pseudoscalar<T>& a) {
-  return basic_pseudoscalar<T>(involute(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return involute(x...); }, a);
+  } else {
+    return basic_pseudoscalar<T>(involute(basic_mv<T>(a)));
+  }
 }
 
 // conjugate(pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> conjugate(const basic_pseudoscalar<T>& a) {
-  return basic_pseudoscalar<T>(conjugate(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return conjugate(x...); }, a);
+  } else {
+    return basic_pseudoscalar<T>(conjugate(basic_mv<T>(a)));
+  }
 }
 
 // norm2(pseudoscalar) -> scalar
 template <class T>
 T norm2(const basic_pseudoscalar<T>& a) {
-  return norm2(basic_mv<T>(a));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return norm2(x...); }, a);
+  } else {
+    return norm2(basic_mv<T>(a));
+  }
 }
 
 // inverse(pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> inverse(const basic_pseudoscalar<T>& a) {
-  return basic_pseudoscalar<T>(inverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return inverse(x...); }, a);
+  } else {
+    return basic_pseudoscalar<T>(inverse(basic_mv<T>(a)));
+  }
 }
 
 // dual(pseudoscalar) -> scalar
 template <class T>
 T dual(const basic_pseudoscalar<T>& a) {
-  return gaphys::ga::scalar_part(dual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return dual(x...); }, a);
+  } else {
+    return gaphys::ga::scalar_part(dual(basic_mv<T>(a)));
+  }
 }
 
 // undual(pseudoscalar) -> scalar
 template <class T>
 T undual(const basic_pseudoscalar<T>& a) {
-  return gaphys::ga::scalar_part(undual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return undual(x...); }, a);
+  } else {
+    return gaphys::ga::scalar_part(undual(basic_mv<T>(a)));
+  }
 }
 
 // smul(scalar, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> smul(T s, const basic_pseudoscalar<T>& a) {
-  return basic_pseudoscalar<T>(smul(s, basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return smul(x...); }, s, a);
+  } else {
+    return basic_pseudoscalar<T>(smul(s, basic_mv<T>(a)));
+  }
 }
 
 // add(pseudoscalar, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> add(const basic_pseudoscalar<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return add(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // sub(pseudoscalar, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> sub(const basic_pseudoscalar<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return sub(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // neg(rotor) -> rotor
 template <class T>
 basic_rotor<T> neg(const basic_rotor<T>& a) {
-  return basic_rotor<T>(neg(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return neg(x...); }, a);
+  } else {
+    return basic_rotor<T>(neg(basic_mv<T>(a)));
+  }
 }
 
 // reverse(rotor) -> rotor
 template <class T>
 basic_rotor<T> reverse(const basic_rotor<T>& a) {
-  return basic_rotor<T>(reverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return reverse(x...); }, a);
+  } else {
+    return basic_rotor<T>(reverse(basic_mv<T>(a)));
+  }
 }
 
 // involute(rotor) -> rotor
 template <class T>
 basic_rotor<T> involute(const basic_rotor<T>& a) {
-  return basic_rotor<T>(involute(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return involute(x...); }, a);
+  } else {
+    return basic_rotor<T>(involute(basic_mv<T>(a)));
+  }
 }
 
 // conjugate(rotor) -> rotor
 template <class T>
 basic_rotor<T> conjugate(const basic_rotor<T>& a) {
-  return basic_rotor<T>(conjugate(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return conjugate(x...); }, a);
+  } else {
+    return basic_rotor<T>(conjugate(basic_mv<T>(a)));
+  }
 }
 
 // norm2(rotor) -> scalar
 template <class T>
 T norm2(const basic_rotor<T>& a) {
-  return norm2(basic_mv<T>(a));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return norm2(x...); }, a);
+  } else {
+    return norm2(basic_mv<T>(a));
+  }
 }
 
 // inverse(rotor) -> rotor
 template <class T>
 basic_rotor<T> inverse(const basic_rotor<T>& a) {
-  return basic_rotor<T>(inverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return inverse(x...); }, a);
+  } else {
+    return basic_rotor<T>(inverse(basic_mv<T>(a)));
+  }
 }
 
 // dual(rotor) -> mv
 template <class T>
 basic_mv<T> dual(const basic_rotor<T>& a) {
+  static_assert(!gaphys::ga::is_batch_v<T>, "dual(rotor) -> mv: an mv result has no batch form");
   return dual(basic_mv<T>(a));
 }
 
 // undual(rotor) -> mv
 template <class T>
 basic_mv<T> undual(const basic_rotor<T>& a) {
+  static_assert(!gaphys::ga::is_batch_v<T>, "undual(rotor) -> mv: an mv result has no batch form");
   return undual(basic_mv<T>(a));
 }
 
 // smul(scalar, rotor) -> rotor
 template <class T>
 basic_rotor<T> smul(T s, const basic_rotor<T>& a) {
-  return basic_rotor<T>(smul(s, basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return smul(x...); }, s, a);
+  } else {
+    return basic_rotor<T>(smul(s, basic_mv<T>(a)));
+  }
 }
 
 // add(rotor, rotor) -> rotor
 template <class T>
 basic_rotor<T> add(const basic_rotor<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return add(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // sub(rotor, rotor) -> rotor
 template <class T>
 basic_rotor<T> sub(const basic_rotor<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return sub(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // neg(translator) -> translator
 template <class T>
 basic_translator<T> neg(const basic_translator<T>& a) {
-  return basic_translator<T>(neg(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return neg(x...); }, a);
+  } else {
+    return basic_translator<T>(neg(basic_mv<T>(a)));
+  }
 }
 
 // reverse(translator) -> translator
 template <class T>
 basic_translator<T> reverse(const basic_translator<T>& a) {
-  return basic_translator<T>(reverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return reverse(x...); }, a);
+  } else {
+    return basic_translator<T>(reverse(basic_mv<T>(a)));
+  }
 }
 
 // involute(translator) -> translator
 template <class T>
 basic_translator<T> involute(const basic_translator<T>& a) {
-  return basic_translator<T>(involute(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return involute(x...); }, a);
+  } else {
+    return basic_translator<T>(involute(basic_mv<T>(a)));
+  }
 }
 
 // conjugate(translator) -> translator
 template <class T>
 basic_translator<T> conjugate(const basic_translator<T>& a) {
-  return basic_translator<T>(conjugate(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return conjugate(x...); }, a);
+  } else {
+    return basic_translator<T>(conjugate(basic_mv<T>(a)));
+  }
 }
 
 // norm2(translator) -> scalar
 template <class T>
 T norm2(const basic_translator<T>& a) {
-  return norm2(basic_mv<T>(a));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return norm2(x...); }, a);
+  } else {
+    return norm2(basic_mv<T>(a));
+  }
 }
 
 // inverse(translator) -> translator
 template <class T>
 basic_translator<T> inverse(const basic_translator<T>& a) {
-  return basic_translator<T>(inverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return inverse(x...); }, a);
+  } else {
+    return basic_translator<T>(inverse(basic_mv<T>(a)));
+  }
 }
 
 // dual(translator) -> mv
 template <class T>
 basic_mv<T> dual(const basic_translator<T>& a) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "dual(translator) -> mv: an mv result has no batch form");
   return dual(basic_mv<T>(a));
 }
 
 // undual(translator) -> mv
 template <class T>
 basic_mv<T> undual(const basic_translator<T>& a) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "undual(translator) -> mv: an mv result has no batch form");
   return undual(basic_mv<T>(a));
 }
 
 // smul(scalar, translator) -> translator
 template <class T>
 basic_translator<T> smul(T s, const basic_translator<T>& a) {
-  return basic_translator<T>(smul(s, basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return smul(x...); }, s, a);
+  } else {
+    return basic_translator<T>(smul(s, basic_mv<T>(a)));
+  }
 }
 
 // add(translator, translator) -> translator
 template <class T>
 basic_translator<T> add(const basic_translator<T>& a, const basic_translator<T>& b) {
-  return basic_translator<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return add(x...); }, a, b);
+  } else {
+    return basic_translator<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // sub(translator, translator) -> translator
 template <class T>
 basic_translator<T> sub(const basic_translator<T>& a, const basic_translator<T>& b) {
-  return basic_translator<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return sub(x...); }, a, b);
+  } else {
+    return basic_translator<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // neg(motor) -> motor
 template <class T>
 basic_motor<T> neg(const basic_motor<T>& a) {
-  return basic_motor<T>(neg(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return neg(x...); }, a);
+  } else {
+    return basic_motor<T>(neg(basic_mv<T>(a)));
+  }
 }
 
 // reverse(motor) -> motor
 template <class T>
 basic_motor<T> reverse(const basic_motor<T>& a) {
-  return basic_motor<T>(reverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return reverse(x...); }, a);
+  } else {
+    return basic_motor<T>(reverse(basic_mv<T>(a)));
+  }
 }
 
 // involute(motor) -> motor
 template <class T>
 basic_motor<T> involute(const basic_motor<T>& a) {
-  return basic_motor<T>(involute(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return involute(x...); }, a);
+  } else {
+    return basic_motor<T>(involute(basic_mv<T>(a)));
+  }
 }
 
 // conjugate(motor) -> motor
 template <class T>
 basic_motor<T> conjugate(const basic_motor<T>& a) {
-  return basic_motor<T>(conjugate(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return conjugate(x...); }, a);
+  } else {
+    return basic_motor<T>(conjugate(basic_mv<T>(a)));
+  }
 }
 
 // norm2(motor) -> scalar
 template <class T>
 T norm2(const basic_motor<T>& a) {
-  return norm2(basic_mv<T>(a));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return norm2(x...); }, a);
+  } else {
+    return norm2(basic_mv<T>(a));
+  }
 }
 
 // inverse(motor) -> motor
 template <class T>
 basic_motor<T> inverse(const basic_motor<T>& a) {
-  return basic_motor<T>(inverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return inverse(x...); }, a);
+  } else {
+    return basic_motor<T>(inverse(basic_mv<T>(a)));
+  }
 }
 
 // dual(motor) -> mv
 template <class T>
 basic_mv<T> dual(const basic_motor<T>& a) {
+  static_assert(!gaphys::ga::is_batch_v<T>, "dual(motor) -> mv: an mv result has no batch form");
   return dual(basic_mv<T>(a));
 }
 
 // undual(motor) -> mv
 template <class T>
 basic_mv<T> undual(const basic_motor<T>& a) {
+  static_assert(!gaphys::ga::is_batch_v<T>, "undual(motor) -> mv: an mv result has no batch form");
   return undual(basic_mv<T>(a));
 }
 
 // smul(scalar, motor) -> motor
 template <class T>
 basic_motor<T> smul(T s, const basic_motor<T>& a) {
-  return basic_motor<T>(smul(s, basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return smul(x...); }, s, a);
+  } else {
+    return basic_motor<T>(smul(s, basic_mv<T>(a)));
+  }
 }
 
 // add(motor, motor) -> motor
 template <class T>
 basic_motor<T> add(const basic_motor<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return add(x...); }, a, b);
+  } else {
+    return basic_motor<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // sub(motor, motor) -> motor
 template <class T>
 basic_motor<T> sub(const basic_motor<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return sub(x...); }, a, b);
+  } else {
+    return basic_motor<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(normalized_point, normalized_point) -> point_pair
 template <class T>
 basic_point_pair<T> op(const basic_normalized_point<T>& a, const basic_normalized_point<T>& b) {
-  return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(line, normalized_point) -> plane
 template <class T>
 basic_plane<T> op(const basic_line<T>& a, const basic_normalized_point<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(flat_point, normalized_point) -> line
 template <class T>
 basic_line<T> op(const basic_flat_point<T>& a, const basic_normalized_point<T>& b) {
-  return basic_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(point_pair, normalized_point) -> circle
 template <class T>
 basic_circle<T> op(const basic_point_pair<T>& a, const basic_normalized_point<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(circle, normalized_point) -> sphere
 template <class T>
 basic_sphere<T> op(const basic_circle<T>& a, const basic_normalized_point<T>& b) {
-  return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(normalized_point, dual_plane) -> point_pair
 template <class T>
 basic_point_pair<T> op(const basic_normalized_point<T>& a, const basic_dual_plane<T>& b) {
-  return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(dual_sphere, dual_sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, dual_sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // scp(normalized_point, normalized_point) -> scalar
 template <class T>
 T scp(const basic_normalized_point<T>& a, const basic_normalized_point<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(dual_sphere, dual_sphere) -> scalar
 template <class T>
 T scp(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(normalized_point, dual_sphere) -> scalar
 template <class T>
 T scp(const basic_normalized_point<T>& a, const basic_dual_sphere<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // lc(normalized_point, dual_sphere) -> scalar
 template <class T>
 T lc(const basic_normalized_point<T>& a, const basic_dual_sphere<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_sphere, dual_sphere) -> point_pair
 template <class T>
 basic_point_pair<T> op(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_sphere, dual_plane) -> point_pair
 template <class T>
 basic_point_pair<T> op(const basic_dual_sphere<T>& a, const basic_dual_plane<T>& b) {
-  return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(sphere, sphere) -> circle
 template <class T>
 basic_circle<T> meet(const basic_sphere<T>& a, const basic_sphere<T>& b) {
-  return basic_circle<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_circle<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(sphere, plane) -> circle
 template <class T>
 basic_circle<T> meet(const basic_sphere<T>& a, const basic_plane<T>& b) {
-  return basic_circle<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_circle<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(circle, circle) -> mv
 template <class T>
 basic_mv<T> gp(const basic_circle<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, circle) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(rotor, rotor) -> rotor
 template <class T>
 basic_rotor<T> gp(const basic_rotor<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(translator, translator) -> translator
 template <class T>
 basic_translator<T> gp(const basic_translator<T>& a, const basic_translator<T>& b) {
-  return basic_translator<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_translator<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(rotor, translator) -> motor
 template <class T>
 basic_motor<T> gp(const basic_rotor<T>& a, const basic_translator<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(translator, rotor) -> motor
 template <class T>
 basic_motor<T> gp(const basic_translator<T>& a, const basic_rotor<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(motor, motor) -> motor
 template <class T>
 basic_motor<T> gp(const basic_motor<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(motor, normalized_point) -> normalized_point
 template <class T>
 basic_normalized_point<T> apply(const basic_motor<T>& a, const basic_normalized_point<T>& b) {
-  return basic_normalized_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_normalized_point<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_normalized_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(motor, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_motor<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(rotor, normalized_point) -> normalized_point
 template <class T>
 basic_normalized_point<T> apply(const basic_rotor<T>& a, const basic_normalized_point<T>& b) {
-  return basic_normalized_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_normalized_point<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_normalized_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(translator, normalized_point) -> normalized_point
 template <class T>
 basic_normalized_point<T> apply(const basic_translator<T>& a, const basic_normalized_point<T>& b) {
-  return basic_normalized_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_normalized_point<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_normalized_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(motor, dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> apply(const basic_motor<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // exp(euclidean_bivector) -> rotor
 template <class T>
 basic_rotor<T> exp(const basic_euclidean_bivector<T>& a) {
-  return basic_rotor<T>(exp(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return exp(x...); }, a);
+  } else {
+    return basic_rotor<T>(exp(basic_mv<T>(a)));
+  }
 }
 
 // exp(dual_line) -> motor
 template <class T>
 basic_motor<T> exp(const basic_dual_line<T>& a) {
-  return basic_motor<T>(exp(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return exp(x...); }, a);
+  } else {
+    return basic_motor<T>(exp(basic_mv<T>(a)));
+  }
 }
 
 // log(rotor) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> log(const basic_rotor<T>& a) {
-  return basic_euclidean_bivector<T>(detail::log_within(basic_mv<T>(a), 0x2c00u));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return log(x...); }, a);
+  } else {
+    return basic_euclidean_bivector<T>(detail::log_within(basic_mv<T>(a), 0x2c00u));
+  }
 }
 
 // log(translator) -> flat_point
 template <class T>
 basic_flat_point<T> log(const basic_translator<T>& a) {
-  return basic_flat_point<T>(detail::log_within(basic_mv<T>(a), 0xd200u));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return log(x...); }, a);
+  } else {
+    return basic_flat_point<T>(detail::log_within(basic_mv<T>(a), 0xd200u));
+  }
 }
 
 // log(motor) -> dual_line
 template <class T>
 basic_dual_line<T> log(const basic_motor<T>& a) {
-  return basic_dual_line<T>(detail::log_within(basic_mv<T>(a), 0xfc00u));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return log(x...); }, a);
+  } else {
+    return basic_dual_line<T>(detail::log_within(basic_mv<T>(a), 0xfc00u));
+  }
 }
 
 // lc(dual_sphere, dual_sphere) -> scalar
 template <class T>
 T lc(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(point_pair, point_pair) -> mv
 template <class T>
 basic_mv<T> gp(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, point_pair) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(point_pair, point_pair) -> scalar
 template <class T>
 T lc(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(point_pair, point_pair) -> sphere
 template <class T>
 basic_sphere<T> op(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
-  return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // scp(point_pair, point_pair) -> scalar
 template <class T>
 T scp(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // lc(motor, motor) -> motor
 template <class T>
 basic_motor<T> lc(const basic_motor<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_motor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(motor, motor) -> motor
 template <class T>
 basic_motor<T> op(const basic_motor<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // scp(motor, motor) -> scalar
 template <class T>
 T scp(const basic_motor<T>& a, const basic_motor<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // gp(normalized_point, normalized_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, normalized_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(normalized_point, dual_sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, dual_sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(normalized_point, dual_plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, dual_plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(normalized_point, euclidean_vector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, euclidean_vector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(normalized_point, flat_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, flat_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(normalized_point, euclidean_bivector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_euclidean_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, euclidean_bivector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(normalized_point, point_pair) -> mv
 template <class T>
 basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, point_pair) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(normalized_point, dual_line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_dual_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, dual_line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(normalized_point, line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(normalized_point, circle) -> mv
 template <class T>
 basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, circle) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(normalized_point, sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(normalized_point, plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(normalized_point, pseudoscalar) -> sphere
 template <class T>
 basic_sphere<T> gp(const basic_normalized_point<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_sphere<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(normalized_point, rotor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, rotor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(normalized_point, translator) -> mv
 template <class T>
 basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, translator) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(normalized_point, motor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, motor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_sphere, normalized_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, normalized_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_sphere, dual_plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, dual_plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_sphere, euclidean_vector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, euclidean_vector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_sphere, flat_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, flat_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_sphere, euclidean_bivector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_euclidean_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, euclidean_bivector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_sphere, point_pair) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, point_pair) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_sphere, dual_line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_dual_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, dual_line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_sphere, line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_sphere, circle) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, circle) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_sphere, sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_sphere, plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_sphere, pseudoscalar) -> sphere
 template <class T>
 basic_sphere<T> gp(const basic_dual_sphere<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_sphere<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(dual_sphere, rotor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, rotor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_sphere, translator) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, translator) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_sphere, motor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, motor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_plane, normalized_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, normalized_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_plane, dual_sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, dual_sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_plane, dual_plane) -> motor
 template <class T>
 basic_motor<T> gp(const basic_dual_plane<T>& a, const basic_dual_plane<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(dual_plane, euclidean_vector) -> motor
 template <class T>
 basic_motor<T> gp(const basic_dual_plane<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(dual_plane, flat_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, flat_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_plane, euclidean_bivector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_euclidean_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, euclidean_bivector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_plane, point_pair) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, point_pair) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_plane, dual_line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_dual_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, dual_line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_plane, line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_plane, circle) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, circle) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_plane, sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_plane, plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_plane, pseudoscalar) -> plane
 template <class T>
 basic_plane<T> gp(const basic_dual_plane<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_plane<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_plane<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(dual_plane, rotor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, rotor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_plane, translator) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, translator) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_plane, motor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, motor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_vector, normalized_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, normalized_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_vector, dual_sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, dual_sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_vector, dual_plane) -> motor
 template <class T>
 basic_motor<T> gp(const basic_euclidean_vector<T>& a, const basic_dual_plane<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(euclidean_vector, euclidean_vector) -> rotor
 template <class T>
 basic_rotor<T> gp(const basic_euclidean_vector<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(euclidean_vector, flat_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, flat_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_vector, euclidean_bivector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_euclidean_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, euclidean_bivector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_vector, point_pair) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, point_pair) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_vector, dual_line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_dual_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, dual_line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_vector, line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_vector, circle) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, circle) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_vector, sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_vector, plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_vector, pseudoscalar) -> plane
 template <class T>
 basic_plane<T> gp(const basic_euclidean_vector<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_plane<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_plane<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(euclidean_vector, rotor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, rotor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_vector, translator) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, translator) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_vector, motor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, motor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(flat_point, normalized_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_flat_point<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, normalized_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(flat_point, dual_sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_flat_point<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, dual_sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(flat_point, dual_plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_flat_point<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, dual_plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(flat_point, euclidean_vector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_flat_point<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, euclidean_vector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(flat_point, flat_point) -> translator
 template <class T>
 basic_translator<T> gp(const basic_flat_point<T>& a, const basic_flat_point<T>& b) {
-  return basic_translator<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_translator<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(flat_point, euclidean_bivector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_flat_point<T>& a, const basic_euclidean_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, euclidean_bivector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(flat_point, point_pair) -> mv
 template <class T>
 basic_mv<T> gp(const basic_flat_point<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, point_pair) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(flat_point, dual_line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_flat_point<T>& a, const basic_dual_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, dual_line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(flat_point, line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_flat_point<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(flat_point, circle) -> mv
 template <class T>
 basic_mv<T> gp(const basic_flat_point<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, circle) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(flat_point, sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_flat_point<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(flat_point, plane) -> motor
 template <class T>
 basic_motor<T> gp(const basic_flat_point<T>& a, const basic_plane<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(flat_point, pseudoscalar) -> circle
 template <class T>
 basic_circle<T> gp(const basic_flat_point<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_circle<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_circle<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(flat_point, rotor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_flat_point<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, rotor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(flat_point, translator) -> flat_point
 template <class T>
 basic_flat_point<T> gp(const basic_flat_point<T>& a, const basic_translator<T>& b) {
-  return basic_flat_point<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(flat_point, motor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_flat_point<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, motor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_bivector, normalized_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_bivector<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_bivector, normalized_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_bivector, dual_sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_bivector<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_bivector, dual_sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_bivector, dual_plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_bivector<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_bivector, dual_plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_bivector, euclidean_vector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_bivector<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_bivector, euclidean_vector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_bivector, flat_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_bivector<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_bivector, flat_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_bivector, euclidean_bivector) -> rotor
 template <class T>
 basic_rotor<T> gp(const basic_euclidean_bivector<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(euclidean_bivector, point_pair) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_bivector<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_bivector, point_pair) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_bivector, dual_line) -> motor
 template <class T>
 basic_motor<T> gp(const basic_euclidean_bivector<T>& a, const basic_dual_line<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(euclidean_bivector, line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_bivector<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_bivector, line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_bivector, circle) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_bivector<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_bivector, circle) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_bivector, sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_bivector<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_bivector, sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_bivector, plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_euclidean_bivector<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_bivector, plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(euclidean_bivector, pseudoscalar) -> line
 template <class T>
 basic_line<T> gp(const basic_euclidean_bivector<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_line<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_line<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(euclidean_bivector, rotor) -> rotor
 template <class T>
 basic_rotor<T> gp(const basic_euclidean_bivector<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(euclidean_bivector, translator) -> motor
 template <class T>
 basic_motor<T> gp(const basic_euclidean_bivector<T>& a, const basic_translator<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(euclidean_bivector, motor) -> motor
 template <class T>
 basic_motor<T> gp(const basic_euclidean_bivector<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(point_pair, normalized_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_point_pair<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, normalized_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(point_pair, dual_sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_point_pair<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, dual_sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(point_pair, dual_plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_point_pair<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, dual_plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(point_pair, euclidean_vector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_point_pair<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, euclidean_vector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(point_pair, flat_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_point_pair<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, flat_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(point_pair, euclidean_bivector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_point_pair<T>& a, const basic_euclidean_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, euclidean_bivector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(point_pair, dual_line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_point_pair<T>& a, const basic_dual_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, dual_line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(point_pair, line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_point_pair<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(point_pair, circle) -> mv
 template <class T>
 basic_mv<T> gp(const basic_point_pair<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, circle) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(point_pair, sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_point_pair<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(point_pair, plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_point_pair<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(point_pair, pseudoscalar) -> circle
 template <class T>
 basic_circle<T> gp(const basic_point_pair<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_circle<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_circle<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(point_pair, rotor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_point_pair<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, rotor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(point_pair, translator) -> mv
 template <class T>
 basic_mv<T> gp(const basic_point_pair<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, translator) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(point_pair, motor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_point_pair<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, motor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_line, normalized_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_line<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_line, normalized_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_line, dual_sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_line<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_line, dual_sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_line, dual_plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_line<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_line, dual_plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_line, euclidean_vector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_line<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_line, euclidean_vector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_line, flat_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_line<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_line, flat_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_line, euclidean_bivector) -> motor
 template <class T>
 basic_motor<T> gp(const basic_dual_line<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(dual_line, point_pair) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_line<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_line, point_pair) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_line, dual_line) -> motor
 template <class T>
 basic_motor<T> gp(const basic_dual_line<T>& a, const basic_dual_line<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(dual_line, line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_line<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_line, line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_line, circle) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_line<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_line, circle) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_line, sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_line<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_line, sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_line, plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_dual_line<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_line, plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(dual_line, pseudoscalar) -> line
 template <class T>
 basic_line<T> gp(const basic_dual_line<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_line<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_line<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(dual_line, rotor) -> motor
 template <class T>
 basic_motor<T> gp(const basic_dual_line<T>& a, const basic_rotor<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(dual_line, translator) -> motor
 template <class T>
 basic_motor<T> gp(const basic_dual_line<T>& a, const basic_translator<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(dual_line, motor) -> motor
 template <class T>
 basic_motor<T> gp(const basic_dual_line<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(line, normalized_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_line<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, normalized_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(line, dual_sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_line<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, dual_sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(line, dual_plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_line<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, dual_plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(line, euclidean_vector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_line<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, euclidean_vector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(line, flat_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_line<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, flat_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(line, euclidean_bivector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_line<T>& a, const basic_euclidean_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, euclidean_bivector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(line, point_pair) -> mv
 template <class T>
 basic_mv<T> gp(const basic_line<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, point_pair) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(line, dual_line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_line<T>& a, const basic_dual_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, dual_line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(line, line) -> motor
 template <class T>
 basic_motor<T> gp(const basic_line<T>& a, const basic_line<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(line, circle) -> mv
 template <class T>
 basic_mv<T> gp(const basic_line<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, circle) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(line, sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_line<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(line, plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_line<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(line, pseudoscalar) -> dual_line
 template <class T>
 basic_dual_line<T> gp(const basic_line<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_dual_line<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(line, rotor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_line<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, rotor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(line, translator) -> mv
 template <class T>
 basic_mv<T> gp(const basic_line<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, translator) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(line, motor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_line<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, motor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(circle, normalized_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_circle<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, normalized_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(circle, dual_sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_circle<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, dual_sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(circle, dual_plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_circle<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, dual_plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(circle, euclidean_vector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_circle<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, euclidean_vector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(circle, flat_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_circle<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, flat_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(circle, euclidean_bivector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_circle<T>& a, const basic_euclidean_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, euclidean_bivector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(circle, point_pair) -> mv
 template <class T>
 basic_mv<T> gp(const basic_circle<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, point_pair) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(circle, dual_line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_circle<T>& a, const basic_dual_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, dual_line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(circle, line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_circle<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(circle, sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_circle<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(circle, plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_circle<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(circle, pseudoscalar) -> point_pair
 template <class T>
 basic_point_pair<T> gp(const basic_circle<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_point_pair<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(circle, rotor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_circle<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, rotor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(circle, translator) -> mv
 template <class T>
 basic_mv<T> gp(const basic_circle<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, translator) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(circle, motor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_circle<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, motor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(sphere, normalized_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_sphere<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, normalized_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(sphere, dual_sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_sphere<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, dual_sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(sphere, dual_plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_sphere<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, dual_plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(sphere, euclidean_vector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_sphere<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, euclidean_vector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(sphere, flat_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_sphere<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, flat_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(sphere, euclidean_bivector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_sphere<T>& a, const basic_euclidean_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, euclidean_bivector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(sphere, point_pair) -> mv
 template <class T>
 basic_mv<T> gp(const basic_sphere<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, point_pair) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(sphere, dual_line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_sphere<T>& a, const basic_dual_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, dual_line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(sphere, line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_sphere<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(sphere, circle) -> mv
 template <class T>
 basic_mv<T> gp(const basic_sphere<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, circle) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(sphere, sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_sphere<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(sphere, plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_sphere<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(sphere, pseudoscalar) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> gp(const basic_sphere<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_dual_sphere<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(sphere, rotor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_sphere<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, rotor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(sphere, translator) -> mv
 template <class T>
 basic_mv<T> gp(const basic_sphere<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, translator) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(sphere, motor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_sphere<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, motor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(plane, normalized_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_plane<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, normalized_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(plane, dual_sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_plane<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, dual_sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(plane, dual_plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_plane<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, dual_plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(plane, euclidean_vector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_plane<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, euclidean_vector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(plane, flat_point) -> motor
 template <class T>
 basic_motor<T> gp(const basic_plane<T>& a, const basic_flat_point<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(plane, euclidean_bivector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_plane<T>& a, const basic_euclidean_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, euclidean_bivector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(plane, point_pair) -> mv
 template <class T>
 basic_mv<T> gp(const basic_plane<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, point_pair) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(plane, dual_line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_plane<T>& a, const basic_dual_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, dual_line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(plane, line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_plane<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(plane, circle) -> mv
 template <class T>
 basic_mv<T> gp(const basic_plane<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, circle) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(plane, sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_plane<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(plane, plane) -> motor
 template <class T>
 basic_motor<T> gp(const basic_plane<T>& a, const basic_plane<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(plane, pseudoscalar) -> dual_plane
 template <class T>
 basic_dual_plane<T> gp(const basic_plane<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_dual_plane<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(plane, rotor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_plane<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, rotor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(plane, translator) -> mv
 template <class T>
 basic_mv<T> gp(const basic_plane<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, translator) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(plane, motor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_plane<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, motor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(pseudoscalar, normalized_point) -> sphere
 template <class T>
 basic_sphere<T> gp(const basic_pseudoscalar<T>& a, const basic_normalized_point<T>& b) {
-  return basic_sphere<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(pseudoscalar, dual_sphere) -> sphere
 template <class T>
 basic_sphere<T> gp(const basic_pseudoscalar<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_sphere<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(pseudoscalar, dual_plane) -> plane
 template <class T>
 basic_plane<T> gp(const basic_pseudoscalar<T>& a, const basic_dual_plane<T>& b) {
-  return basic_plane<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_plane<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(pseudoscalar, euclidean_vector) -> plane
 template <class T>
 basic_plane<T> gp(const basic_pseudoscalar<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_plane<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_plane<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(pseudoscalar, flat_point) -> circle
 template <class T>
 basic_circle<T> gp(const basic_pseudoscalar<T>& a, const basic_flat_point<T>& b) {
-  return basic_circle<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_circle<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(pseudoscalar, euclidean_bivector) -> line
 template <class T>
 basic_line<T> gp(const basic_pseudoscalar<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_line<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_line<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(pseudoscalar, point_pair) -> circle
 template <class T>
 basic_circle<T> gp(const basic_pseudoscalar<T>& a, const basic_point_pair<T>& b) {
-  return basic_circle<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_circle<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(pseudoscalar, dual_line) -> line
 template <class T>
 basic_line<T> gp(const basic_pseudoscalar<T>& a, const basic_dual_line<T>& b) {
-  return basic_line<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_line<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(pseudoscalar, line) -> dual_line
 template <class T>
 basic_dual_line<T> gp(const basic_pseudoscalar<T>& a, const basic_line<T>& b) {
-  return basic_dual_line<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(pseudoscalar, circle) -> point_pair
 template <class T>
 basic_point_pair<T> gp(const basic_pseudoscalar<T>& a, const basic_circle<T>& b) {
-  return basic_point_pair<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(pseudoscalar, sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> gp(const basic_pseudoscalar<T>& a, const basic_sphere<T>& b) {
-  return basic_dual_sphere<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(pseudoscalar, plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> gp(const basic_pseudoscalar<T>& a, const basic_plane<T>& b) {
-  return basic_dual_plane<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(pseudoscalar, pseudoscalar) -> scalar
 template <class T>
 T gp(const basic_pseudoscalar<T>& a, const basic_pseudoscalar<T>& b) {
-  return gaphys::ga::scalar_part(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(pseudoscalar, rotor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_pseudoscalar<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(pseudoscalar, rotor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(pseudoscalar, translator) -> mv
 template <class T>
 basic_mv<T> gp(const basic_pseudoscalar<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(pseudoscalar, translator) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(pseudoscalar, motor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_pseudoscalar<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(pseudoscalar, motor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(rotor, normalized_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_rotor<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, normalized_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(rotor, dual_sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_rotor<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, dual_sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(rotor, dual_plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_rotor<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, dual_plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(rotor, euclidean_vector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_rotor<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, euclidean_vector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(rotor, flat_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_rotor<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, flat_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(rotor, euclidean_bivector) -> rotor
 template <class T>
 basic_rotor<T> gp(const basic_rotor<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(rotor, point_pair) -> mv
 template <class T>
 basic_mv<T> gp(const basic_rotor<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, point_pair) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(rotor, dual_line) -> motor
 template <class T>
 basic_motor<T> gp(const basic_rotor<T>& a, const basic_dual_line<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(rotor, line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_rotor<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(rotor, circle) -> mv
 template <class T>
 basic_mv<T> gp(const basic_rotor<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, circle) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(rotor, sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_rotor<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(rotor, plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_rotor<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(rotor, pseudoscalar) -> mv
 template <class T>
 basic_mv<T> gp(const basic_rotor<T>& a, const basic_pseudoscalar<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, pseudoscalar) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(rotor, motor) -> motor
 template <class T>
 basic_motor<T> gp(const basic_rotor<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(translator, normalized_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_translator<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(translator, normalized_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(translator, dual_sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_translator<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(translator, dual_sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(translator, dual_plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_translator<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(translator, dual_plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(translator, euclidean_vector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_translator<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(translator, euclidean_vector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(translator, flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> gp(const basic_translator<T>& a, const basic_flat_point<T>& b) {
-  return basic_flat_point<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(translator, euclidean_bivector) -> motor
 template <class T>
 basic_motor<T> gp(const basic_translator<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(translator, point_pair) -> mv
 template <class T>
 basic_mv<T> gp(const basic_translator<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(translator, point_pair) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(translator, dual_line) -> motor
 template <class T>
 basic_motor<T> gp(const basic_translator<T>& a, const basic_dual_line<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(translator, line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_translator<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(translator, line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(translator, circle) -> mv
 template <class T>
 basic_mv<T> gp(const basic_translator<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(translator, circle) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(translator, sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_translator<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(translator, sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(translator, plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_translator<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(translator, plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(translator, pseudoscalar) -> mv
 template <class T>
 basic_mv<T> gp(const basic_translator<T>& a, const basic_pseudoscalar<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(translator, pseudoscalar) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(translator, motor) -> motor
 template <class T>
 basic_motor<T> gp(const basic_translator<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(motor, normalized_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_motor<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, normalized_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(motor, dual_sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_motor<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, dual_sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(motor, dual_plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_motor<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, dual_plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(motor, euclidean_vector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_motor<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, euclidean_vector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(motor, flat_point) -> mv
 template <class T>
 basic_mv<T> gp(const basic_motor<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, flat_point) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(motor, euclidean_bivector) -> motor
 template <class T>
 basic_motor<T> gp(const basic_motor<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(motor, point_pair) -> mv
 template <class T>
 basic_mv<T> gp(const basic_motor<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, point_pair) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(motor, dual_line) -> motor
 template <class T>
 basic_motor<T> gp(const basic_motor<T>& a, const basic_dual_line<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(motor, line) -> mv
 template <class T>
 basic_mv<T> gp(const basic_motor<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, line) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(motor, circle) -> mv
 template <class T>
 basic_mv<T> gp(const basic_motor<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, circle) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(motor, sphere) -> mv
 template <class T>
 basic_mv<T> gp(const basic_motor<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, sphere) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(motor, plane) -> mv
 template <class T>
 basic_mv<T> gp(const basic_motor<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, plane) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(motor, pseudoscalar) -> mv
 template <class T>
 basic_mv<T> gp(const basic_motor<T>& a, const basic_pseudoscalar<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, pseudoscalar) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(motor, rotor) -> motor
 template <class T>
 basic_motor<T> gp(const basic_motor<T>& a, const basic_rotor<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(motor, translator) -> motor
 template <class T>
 basic_motor<T> gp(const basic_motor<T>& a, const basic_translator<T>& b) {
-  return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_motor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(normalized_point, dual_sphere) -> point_pair
 template <class T>
 basic_point_pair<T> op(const basic_normalized_point<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(normalized_point, euclidean_vector) -> point_pair
 template <class T>
 basic_point_pair<T> op(const basic_normalized_point<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(normalized_point, flat_point) -> line
 template <class T>
 basic_line<T> op(const basic_normalized_point<T>& a, const basic_flat_point<T>& b) {
-  return basic_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(normalized_point, euclidean_bivector) -> circle
 template <class T>
 basic_circle<T> op(const basic_normalized_point<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(normalized_point, point_pair) -> circle
 template <class T>
 basic_circle<T> op(const basic_normalized_point<T>& a, const basic_point_pair<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(normalized_point, dual_line) -> circle
 template <class T>
 basic_circle<T> op(const basic_normalized_point<T>& a, const basic_dual_line<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(normalized_point, line) -> plane
 template <class T>
 basic_plane<T> op(const basic_normalized_point<T>& a, const basic_line<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(normalized_point, circle) -> sphere
 template <class T>
 basic_sphere<T> op(const basic_normalized_point<T>& a, const basic_circle<T>& b) {
-  return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(normalized_point, sphere) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_normalized_point<T>& a, const basic_sphere<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(normalized_point, plane) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_normalized_point<T>& a, const basic_plane<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(normalized_point, rotor) -> mv
 template <class T>
 basic_mv<T> op(const basic_normalized_point<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(normalized_point, rotor) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(normalized_point, translator) -> mv
 template <class T>
 basic_mv<T> op(const basic_normalized_point<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(normalized_point, translator) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(normalized_point, motor) -> mv
 template <class T>
 basic_mv<T> op(const basic_normalized_point<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(normalized_point, motor) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(dual_sphere, normalized_point) -> point_pair
 template <class T>
 basic_point_pair<T> op(const basic_dual_sphere<T>& a, const basic_normalized_point<T>& b) {
-  return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_sphere, euclidean_vector) -> point_pair
 template <class T>
 basic_point_pair<T> op(const basic_dual_sphere<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_sphere, flat_point) -> line
 template <class T>
 basic_line<T> op(const basic_dual_sphere<T>& a, const basic_flat_point<T>& b) {
-  return basic_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_sphere, euclidean_bivector) -> circle
 template <class T>
 basic_circle<T> op(const basic_dual_sphere<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_sphere, point_pair) -> circle
 template <class T>
 basic_circle<T> op(const basic_dual_sphere<T>& a, const basic_point_pair<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_sphere, dual_line) -> circle
 template <class T>
 basic_circle<T> op(const basic_dual_sphere<T>& a, const basic_dual_line<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_sphere, line) -> plane
 template <class T>
 basic_plane<T> op(const basic_dual_sphere<T>& a, const basic_line<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_sphere, circle) -> sphere
 template <class T>
 basic_sphere<T> op(const basic_dual_sphere<T>& a, const basic_circle<T>& b) {
-  return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_sphere, sphere) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_dual_sphere<T>& a, const basic_sphere<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_sphere, plane) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_dual_sphere<T>& a, const basic_plane<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_sphere, rotor) -> mv
 template <class T>
 basic_mv<T> op(const basic_dual_sphere<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(dual_sphere, rotor) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(dual_sphere, translator) -> mv
 template <class T>
 basic_mv<T> op(const basic_dual_sphere<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(dual_sphere, translator) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(dual_sphere, motor) -> mv
 template <class T>
 basic_mv<T> op(const basic_dual_sphere<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(dual_sphere, motor) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(dual_plane, normalized_point) -> point_pair
 template <class T>
 basic_point_pair<T> op(const basic_dual_plane<T>& a, const basic_normalized_point<T>& b) {
-  return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_plane, dual_sphere) -> point_pair
 template <class T>
 basic_point_pair<T> op(const basic_dual_plane<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_plane, dual_plane) -> dual_line
 template <class T>
 basic_dual_line<T> op(const basic_dual_plane<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_plane, euclidean_vector) -> dual_line
 template <class T>
 basic_dual_line<T> op(const basic_dual_plane<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_dual_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_plane, flat_point) -> line
 template <class T>
 basic_line<T> op(const basic_dual_plane<T>& a, const basic_flat_point<T>& b) {
-  return basic_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_plane, euclidean_bivector) -> circle
 template <class T>
 basic_circle<T> op(const basic_dual_plane<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_plane, point_pair) -> circle
 template <class T>
 basic_circle<T> op(const basic_dual_plane<T>& a, const basic_point_pair<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_plane, dual_line) -> circle
 template <class T>
 basic_circle<T> op(const basic_dual_plane<T>& a, const basic_dual_line<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_plane, line) -> plane
 template <class T>
 basic_plane<T> op(const basic_dual_plane<T>& a, const basic_line<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_plane, circle) -> sphere
 template <class T>
 basic_sphere<T> op(const basic_dual_plane<T>& a, const basic_circle<T>& b) {
-  return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_plane, sphere) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_dual_plane<T>& a, const basic_sphere<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_plane, plane) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_dual_plane<T>& a, const basic_plane<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_plane, rotor) -> mv
 template <class T>
 basic_mv<T> op(const basic_dual_plane<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(dual_plane, rotor) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(dual_plane, translator) -> mv
 template <class T>
 basic_mv<T> op(const basic_dual_plane<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(dual_plane, translator) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(dual_plane, motor) -> mv
 template <class T>
 basic_mv<T> op(const basic_dual_plane<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(dual_plane, motor) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(euclidean_vector, normalized_point) -> point_pair
 template <class T>
 basic_point_pair<T> op(const basic_euclidean_vector<T>& a, const basic_normalized_point<T>& b) {
-  return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_vector, dual_sphere) -> point_pair
 template <class T>
 basic_point_pair<T> op(const basic_euclidean_vector<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_vector, dual_plane) -> dual_line
 template <class T>
 basic_dual_line<T> op(const basic_euclidean_vector<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_vector, euclidean_vector) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> op(const basic_euclidean_vector<T>& a,
                                const basic_euclidean_vector<T>& b) {
-  return basic_euclidean_bivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_euclidean_bivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_vector, flat_point) -> line
 template <class T>
 basic_line<T> op(const basic_euclidean_vector<T>& a, const basic_flat_point<T>& b) {
-  return basic_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_vector, euclidean_bivector) -> circle
 template <class T>
 basic_circle<T> op(const basic_euclidean_vector<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_vector, point_pair) -> circle
 template <class T>
 basic_circle<T> op(const basic_euclidean_vector<T>& a, const basic_point_pair<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_vector, dual_line) -> circle
 template <class T>
 basic_circle<T> op(const basic_euclidean_vector<T>& a, const basic_dual_line<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_vector, line) -> plane
 template <class T>
 basic_plane<T> op(const basic_euclidean_vector<T>& a, const basic_line<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_vector, circle) -> sphere
 template <class T>
 basic_sphere<T> op(const basic_euclidean_vector<T>& a, const basic_circle<T>& b) {
-  return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_vector, sphere) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_euclidean_vector<T>& a, const basic_sphere<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_vector, plane) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_euclidean_vector<T>& a, const basic_plane<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_vector, rotor) -> mv
 template <class T>
 basic_mv<T> op(const basic_euclidean_vector<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(euclidean_vector, rotor) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(euclidean_vector, translator) -> mv
 template <class T>
 basic_mv<T> op(const basic_euclidean_vector<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(euclidean_vector, translator) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(euclidean_vector, motor) -> mv
 template <class T>
 basic_mv<T> op(const basic_euclidean_vector<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(euclidean_vector, motor) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(flat_point, dual_sphere) -> line
 template <class T>
 basic_line<T> op(const basic_flat_point<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(flat_point, dual_plane) -> line
 template <class T>
 basic_line<T> op(const basic_flat_point<T>& a, const basic_dual_plane<T>& b) {
-  return basic_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(flat_point, euclidean_vector) -> line
 template <class T>
 basic_line<T> op(const basic_flat_point<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(flat_point, euclidean_bivector) -> plane
 template <class T>
 basic_plane<T> op(const basic_flat_point<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(flat_point, point_pair) -> plane
 template <class T>
 basic_plane<T> op(const basic_flat_point<T>& a, const basic_point_pair<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(flat_point, dual_line) -> plane
 template <class T>
 basic_plane<T> op(const basic_flat_point<T>& a, const basic_dual_line<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(flat_point, circle) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_flat_point<T>& a, const basic_circle<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(flat_point, rotor) -> mv
 template <class T>
 basic_mv<T> op(const basic_flat_point<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(flat_point, rotor) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(flat_point, translator) -> flat_point
 template <class T>
 basic_flat_point<T> op(const basic_flat_point<T>& a, const basic_translator<T>& b) {
-  return basic_flat_point<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(flat_point, motor) -> mv
 template <class T>
 basic_mv<T> op(const basic_flat_point<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(flat_point, motor) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(euclidean_bivector, normalized_point) -> circle
 template <class T>
 basic_circle<T> op(const basic_euclidean_bivector<T>& a, const basic_normalized_point<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_bivector, dual_sphere) -> circle
 template <class T>
 basic_circle<T> op(const basic_euclidean_bivector<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_bivector, dual_plane) -> circle
 template <class T>
 basic_circle<T> op(const basic_euclidean_bivector<T>& a, const basic_dual_plane<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_bivector, euclidean_vector) -> circle
 template <class T>
 basic_circle<T> op(const basic_euclidean_bivector<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_bivector, flat_point) -> plane
 template <class T>
 basic_plane<T> op(const basic_euclidean_bivector<T>& a, const basic_flat_point<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_bivector, point_pair) -> sphere
 template <class T>
 basic_sphere<T> op(const basic_euclidean_bivector<T>& a, const basic_point_pair<T>& b) {
-  return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_bivector, dual_line) -> plane
 template <class T>
 basic_plane<T> op(const basic_euclidean_bivector<T>& a, const basic_dual_line<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_bivector, line) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_euclidean_bivector<T>& a, const basic_line<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_bivector, circle) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_euclidean_bivector<T>& a, const basic_circle<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_bivector, rotor) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> op(const basic_euclidean_bivector<T>& a, const basic_rotor<T>& b) {
-  return basic_euclidean_bivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_euclidean_bivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_bivector, translator) -> motor
 template <class T>
 basic_motor<T> op(const basic_euclidean_bivector<T>& a, const basic_translator<T>& b) {
-  return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(euclidean_bivector, motor) -> motor
 template <class T>
 basic_motor<T> op(const basic_euclidean_bivector<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(point_pair, dual_sphere) -> circle
 template <class T>
 basic_circle<T> op(const basic_point_pair<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(point_pair, dual_plane) -> circle
 template <class T>
 basic_circle<T> op(const basic_point_pair<T>& a, const basic_dual_plane<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(point_pair, euclidean_vector) -> circle
 template <class T>
 basic_circle<T> op(const basic_point_pair<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(point_pair, flat_point) -> plane
 template <class T>
 basic_plane<T> op(const basic_point_pair<T>& a, const basic_flat_point<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(point_pair, euclidean_bivector) -> sphere
 template <class T>
 basic_sphere<T> op(const basic_point_pair<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(point_pair, dual_line) -> sphere
 template <class T>
 basic_sphere<T> op(const basic_point_pair<T>& a, const basic_dual_line<T>& b) {
-  return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(point_pair, line) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_point_pair<T>& a, const basic_line<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(point_pair, circle) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_point_pair<T>& a, const basic_circle<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(point_pair, rotor) -> mv
 template <class T>
 basic_mv<T> op(const basic_point_pair<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(point_pair, rotor) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(point_pair, translator) -> mv
 template <class T>
 basic_mv<T> op(const basic_point_pair<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(point_pair, translator) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(point_pair, motor) -> mv
 template <class T>
 basic_mv<T> op(const basic_point_pair<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(point_pair, motor) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(dual_line, normalized_point) -> circle
 template <class T>
 basic_circle<T> op(const basic_dual_line<T>& a, const basic_normalized_point<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_line, dual_sphere) -> circle
 template <class T>
 basic_circle<T> op(const basic_dual_line<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_line, dual_plane) -> circle
 template <class T>
 basic_circle<T> op(const basic_dual_line<T>& a, const basic_dual_plane<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_line, euclidean_vector) -> circle
 template <class T>
 basic_circle<T> op(const basic_dual_line<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_circle<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_line, flat_point) -> plane
 template <class T>
 basic_plane<T> op(const basic_dual_line<T>& a, const basic_flat_point<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_line, euclidean_bivector) -> plane
 template <class T>
 basic_plane<T> op(const basic_dual_line<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_line, point_pair) -> sphere
 template <class T>
 basic_sphere<T> op(const basic_dual_line<T>& a, const basic_point_pair<T>& b) {
-  return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_line, dual_line) -> plane
 template <class T>
 basic_plane<T> op(const basic_dual_line<T>& a, const basic_dual_line<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_line, line) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_dual_line<T>& a, const basic_line<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_line, circle) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_dual_line<T>& a, const basic_circle<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_line, rotor) -> motor
 template <class T>
 basic_motor<T> op(const basic_dual_line<T>& a, const basic_rotor<T>& b) {
-  return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_line, translator) -> motor
 template <class T>
 basic_motor<T> op(const basic_dual_line<T>& a, const basic_translator<T>& b) {
-  return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(dual_line, motor) -> motor
 template <class T>
 basic_motor<T> op(const basic_dual_line<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(line, dual_sphere) -> plane
 template <class T>
 basic_plane<T> op(const basic_line<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(line, dual_plane) -> plane
 template <class T>
 basic_plane<T> op(const basic_line<T>& a, const basic_dual_plane<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(line, euclidean_vector) -> plane
 template <class T>
 basic_plane<T> op(const basic_line<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(line, euclidean_bivector) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_line<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(line, point_pair) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_line<T>& a, const basic_point_pair<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(line, dual_line) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_line<T>& a, const basic_dual_line<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(line, rotor) -> mv
 template <class T>
 basic_mv<T> op(const basic_line<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(line, rotor) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(line, translator) -> line
 template <class T>
 basic_line<T> op(const basic_line<T>& a, const basic_translator<T>& b) {
-  return basic_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(line, motor) -> mv
 template <class T>
 basic_mv<T> op(const basic_line<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(line, motor) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(circle, dual_sphere) -> sphere
 template <class T>
 basic_sphere<T> op(const basic_circle<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(circle, dual_plane) -> sphere
 template <class T>
 basic_sphere<T> op(const basic_circle<T>& a, const basic_dual_plane<T>& b) {
-  return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(circle, euclidean_vector) -> sphere
 template <class T>
 basic_sphere<T> op(const basic_circle<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(circle, flat_point) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_circle<T>& a, const basic_flat_point<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(circle, euclidean_bivector) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_circle<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(circle, point_pair) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_circle<T>& a, const basic_point_pair<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(circle, dual_line) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_circle<T>& a, const basic_dual_line<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(circle, rotor) -> mv
 template <class T>
 basic_mv<T> op(const basic_circle<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(circle, rotor) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(circle, translator) -> mv
 template <class T>
 basic_mv<T> op(const basic_circle<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(circle, translator) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(circle, motor) -> mv
 template <class T>
 basic_mv<T> op(const basic_circle<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(circle, motor) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(sphere, normalized_point) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_sphere<T>& a, const basic_normalized_point<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(sphere, dual_sphere) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_sphere<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(sphere, dual_plane) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_sphere<T>& a, const basic_dual_plane<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(sphere, euclidean_vector) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_sphere<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(sphere, rotor) -> sphere
 template <class T>
 basic_sphere<T> op(const basic_sphere<T>& a, const basic_rotor<T>& b) {
-  return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(sphere, translator) -> sphere
 template <class T>
 basic_sphere<T> op(const basic_sphere<T>& a, const basic_translator<T>& b) {
-  return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(sphere, motor) -> sphere
 template <class T>
 basic_sphere<T> op(const basic_sphere<T>& a, const basic_motor<T>& b) {
-  return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(plane, normalized_point) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_plane<T>& a, const basic_normalized_point<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(plane, dual_sphere) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_plane<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(plane, dual_plane) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_plane<T>& a, const basic_dual_plane<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(plane, euclidean_vector) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_plane<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(plane, rotor) -> plane
 template <class T>
 basic_plane<T> op(const basic_plane<T>& a, const basic_rotor<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(plane, translator) -> plane
 template <class T>
 basic_plane<T> op(const basic_plane<T>& a, const basic_translator<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(plane, motor) -> plane
 template <class T>
 basic_plane<T> op(const basic_plane<T>& a, const basic_motor<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(pseudoscalar, rotor) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_pseudoscalar<T>& a, const basic_rotor<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(pseudoscalar, translator) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_pseudoscalar<T>& a, const basic_translator<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(pseudoscalar, motor) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_pseudoscalar<T>& a, const basic_motor<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(rotor, normalized_point) -> mv
 template <class T>
 basic_mv<T> op(const basic_rotor<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(rotor, normalized_point) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(rotor, dual_sphere) -> mv
 template <class T>
 basic_mv<T> op(const basic_rotor<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(rotor, dual_sphere) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(rotor, dual_plane) -> mv
 template <class T>
 basic_mv<T> op(const basic_rotor<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(rotor, dual_plane) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(rotor, euclidean_vector) -> mv
 template <class T>
 basic_mv<T> op(const basic_rotor<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(rotor, euclidean_vector) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(rotor, flat_point) -> mv
 template <class T>
 basic_mv<T> op(const basic_rotor<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(rotor, flat_point) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(rotor, euclidean_bivector) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> op(const basic_rotor<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_euclidean_bivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_euclidean_bivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(rotor, point_pair) -> mv
 template <class T>
 basic_mv<T> op(const basic_rotor<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(rotor, point_pair) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(rotor, dual_line) -> motor
 template <class T>
 basic_motor<T> op(const basic_rotor<T>& a, const basic_dual_line<T>& b) {
-  return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(rotor, line) -> mv
 template <class T>
 basic_mv<T> op(const basic_rotor<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(rotor, line) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(rotor, circle) -> mv
 template <class T>
 basic_mv<T> op(const basic_rotor<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(rotor, circle) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(rotor, sphere) -> sphere
 template <class T>
 basic_sphere<T> op(const basic_rotor<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(rotor, plane) -> plane
 template <class T>
 basic_plane<T> op(const basic_rotor<T>& a, const basic_plane<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(rotor, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_rotor<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(rotor, rotor) -> rotor
 template <class T>
 basic_rotor<T> op(const basic_rotor<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(rotor, translator) -> motor
 template <class T>
 basic_motor<T> op(const basic_rotor<T>& a, const basic_translator<T>& b) {
-  return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(rotor, motor) -> motor
 template <class T>
 basic_motor<T> op(const basic_rotor<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(translator, normalized_point) -> mv
 template <class T>
 basic_mv<T> op(const basic_translator<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(translator, normalized_point) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(translator, dual_sphere) -> mv
 template <class T>
 basic_mv<T> op(const basic_translator<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(translator, dual_sphere) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(translator, dual_plane) -> mv
 template <class T>
 basic_mv<T> op(const basic_translator<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(translator, dual_plane) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(translator, euclidean_vector) -> mv
 template <class T>
 basic_mv<T> op(const basic_translator<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(translator, euclidean_vector) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(translator, flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> op(const basic_translator<T>& a, const basic_flat_point<T>& b) {
-  return basic_flat_point<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(translator, euclidean_bivector) -> motor
 template <class T>
 basic_motor<T> op(const basic_translator<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(translator, point_pair) -> mv
 template <class T>
 basic_mv<T> op(const basic_translator<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(translator, point_pair) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(translator, dual_line) -> motor
 template <class T>
 basic_motor<T> op(const basic_translator<T>& a, const basic_dual_line<T>& b) {
-  return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(translator, line) -> line
 template <class T>
 basic_line<T> op(const basic_translator<T>& a, const basic_line<T>& b) {
-  return basic_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_line<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(translator, circle) -> mv
 template <class T>
 basic_mv<T> op(const basic_translator<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(translator, circle) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(translator, sphere) -> sphere
 template <class T>
 basic_sphere<T> op(const basic_translator<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(translator, plane) -> plane
 template <class T>
 basic_plane<T> op(const basic_translator<T>& a, const basic_plane<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(translator, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_translator<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(translator, rotor) -> motor
 template <class T>
 basic_motor<T> op(const basic_translator<T>& a, const basic_rotor<T>& b) {
-  return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(translator, translator) -> translator
 template <class T>
 basic_translator<T> op(const basic_translator<T>& a, const basic_translator<T>& b) {
-  return basic_translator<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_translator<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(translator, motor) -> motor
 template <class T>
 basic_motor<T> op(const basic_translator<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(motor, normalized_point) -> mv
 template <class T>
 basic_mv<T> op(const basic_motor<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(motor, normalized_point) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(motor, dual_sphere) -> mv
 template <class T>
 basic_mv<T> op(const basic_motor<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(motor, dual_sphere) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(motor, dual_plane) -> mv
 template <class T>
 basic_mv<T> op(const basic_motor<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(motor, dual_plane) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(motor, euclidean_vector) -> mv
 template <class T>
 basic_mv<T> op(const basic_motor<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(motor, euclidean_vector) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(motor, flat_point) -> mv
 template <class T>
 basic_mv<T> op(const basic_motor<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(motor, flat_point) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(motor, euclidean_bivector) -> motor
 template <class T>
 basic_motor<T> op(const basic_motor<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(motor, point_pair) -> mv
 template <class T>
 basic_mv<T> op(const basic_motor<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(motor, point_pair) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(motor, dual_line) -> motor
 template <class T>
 basic_motor<T> op(const basic_motor<T>& a, const basic_dual_line<T>& b) {
-  return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(motor, line) -> mv
 template <class T>
 basic_mv<T> op(const basic_motor<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(motor, line) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(motor, circle) -> mv
 template <class T>
 basic_mv<T> op(const basic_motor<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(motor, circle) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(motor, sphere) -> sphere
 template <class T>
 basic_sphere<T> op(const basic_motor<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(motor, plane) -> plane
 template <class T>
 basic_plane<T> op(const basic_motor<T>& a, const basic_plane<T>& b) {
-  return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_plane<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(motor, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> op(const basic_motor<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(motor, rotor) -> motor
 template <class T>
 basic_motor<T> op(const basic_motor<T>& a, const basic_rotor<T>& b) {
-  return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(motor, translator) -> motor
 template <class T>
 basic_motor<T> op(const basic_motor<T>& a, const basic_translator<T>& b) {
-  return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_motor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(normalized_point, normalized_point) -> scalar
 template <class T>
 T lc(const basic_normalized_point<T>& a, const basic_normalized_point<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(normalized_point, dual_plane) -> scalar
 template <class T>
 T lc(const basic_normalized_point<T>& a, const basic_dual_plane<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(normalized_point, euclidean_vector) -> scalar
 template <class T>
 T lc(const basic_normalized_point<T>& a, const basic_euclidean_vector<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(normalized_point, flat_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> lc(const basic_normalized_point<T>& a, const basic_flat_point<T>& b) {
-  return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(normalized_point, euclidean_bivector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> lc(const basic_normalized_point<T>& a,
                              const basic_euclidean_bivector<T>& b) {
-  return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(normalized_point, point_pair) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> lc(const basic_normalized_point<T>& a, const basic_point_pair<T>& b) {
-  return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(normalized_point, dual_line) -> dual_plane
 template <class T>
 basic_dual_plane<T> lc(const basic_normalized_point<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(normalized_point, line) -> point_pair
 template <class T>
 basic_point_pair<T> lc(const basic_normalized_point<T>& a, const basic_line<T>& b) {
-  return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(normalized_point, circle) -> point_pair
 template <class T>
 basic_point_pair<T> lc(const basic_normalized_point<T>& a, const basic_circle<T>& b) {
-  return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(normalized_point, sphere) -> circle
 template <class T>
 basic_circle<T> lc(const basic_normalized_point<T>& a, const basic_sphere<T>& b) {
-  return basic_circle<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_circle<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(normalized_point, plane) -> circle
 template <class T>
 basic_circle<T> lc(const basic_normalized_point<T>& a, const basic_plane<T>& b) {
-  return basic_circle<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_circle<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(normalized_point, pseudoscalar) -> sphere
 template <class T>
 basic_sphere<T> lc(const basic_normalized_point<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(normalized_point, rotor) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> lc(const basic_normalized_point<T>& a, const basic_rotor<T>& b) {
-  return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(normalized_point, translator) -> dual_plane
 template <class T>
 basic_dual_plane<T> lc(const basic_normalized_point<T>& a, const basic_translator<T>& b) {
-  return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(normalized_point, motor) -> mv
 template <class T>
 basic_mv<T> lc(const basic_normalized_point<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(normalized_point, motor) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(dual_sphere, normalized_point) -> scalar
 template <class T>
 T lc(const basic_dual_sphere<T>& a, const basic_normalized_point<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_sphere, dual_plane) -> scalar
 template <class T>
 T lc(const basic_dual_sphere<T>& a, const basic_dual_plane<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_sphere, euclidean_vector) -> scalar
 template <class T>
 T lc(const basic_dual_sphere<T>& a, const basic_euclidean_vector<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_sphere, flat_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> lc(const basic_dual_sphere<T>& a, const basic_flat_point<T>& b) {
-  return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_sphere, euclidean_bivector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> lc(const basic_dual_sphere<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_sphere, point_pair) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> lc(const basic_dual_sphere<T>& a, const basic_point_pair<T>& b) {
-  return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_sphere, dual_line) -> dual_plane
 template <class T>
 basic_dual_plane<T> lc(const basic_dual_sphere<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_sphere, line) -> point_pair
 template <class T>
 basic_point_pair<T> lc(const basic_dual_sphere<T>& a, const basic_line<T>& b) {
-  return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_sphere, circle) -> point_pair
 template <class T>
 basic_point_pair<T> lc(const basic_dual_sphere<T>& a, const basic_circle<T>& b) {
-  return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_sphere, sphere) -> circle
 template <class T>
 basic_circle<T> lc(const basic_dual_sphere<T>& a, const basic_sphere<T>& b) {
-  return basic_circle<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_circle<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_sphere, plane) -> circle
 template <class T>
 basic_circle<T> lc(const basic_dual_sphere<T>& a, const basic_plane<T>& b) {
-  return basic_circle<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_circle<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_sphere, pseudoscalar) -> sphere
 template <class T>
 basic_sphere<T> lc(const basic_dual_sphere<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_sphere, rotor) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> lc(const basic_dual_sphere<T>& a, const basic_rotor<T>& b) {
-  return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_sphere, translator) -> dual_plane
 template <class T>
 basic_dual_plane<T> lc(const basic_dual_sphere<T>& a, const basic_translator<T>& b) {
-  return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_sphere, motor) -> mv
 template <class T>
 basic_mv<T> lc(const basic_dual_sphere<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(dual_sphere, motor) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(dual_plane, normalized_point) -> scalar
 template <class T>
 T lc(const basic_dual_plane<T>& a, const basic_normalized_point<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_plane, dual_sphere) -> scalar
 template <class T>
 T lc(const basic_dual_plane<T>& a, const basic_dual_sphere<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_plane, dual_plane) -> scalar
 template <class T>
 T lc(const basic_dual_plane<T>& a, const basic_dual_plane<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_plane, euclidean_vector) -> scalar
 template <class T>
 T lc(const basic_dual_plane<T>& a, const basic_euclidean_vector<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_plane, flat_point) -> dual_plane
 template <class T>
 basic_dual_plane<T> lc(const basic_dual_plane<T>& a, const basic_flat_point<T>& b) {
-  return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_plane, euclidean_bivector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> lc(const basic_dual_plane<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_plane, point_pair) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> lc(const basic_dual_plane<T>& a, const basic_point_pair<T>& b) {
-  return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_plane, dual_line) -> dual_plane
 template <class T>
 basic_dual_plane<T> lc(const basic_dual_plane<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_plane, line) -> flat_point
 template <class T>
 basic_flat_point<T> lc(const basic_dual_plane<T>& a, const basic_line<T>& b) {
-  return basic_flat_point<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_plane, circle) -> point_pair
 template <class T>
 basic_point_pair<T> lc(const basic_dual_plane<T>& a, const basic_circle<T>& b) {
-  return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_plane, sphere) -> circle
 template <class T>
 basic_circle<T> lc(const basic_dual_plane<T>& a, const basic_sphere<T>& b) {
-  return basic_circle<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_circle<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_plane, plane) -> line
 template <class T>
 basic_line<T> lc(const basic_dual_plane<T>& a, const basic_plane<T>& b) {
-  return basic_line<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_line<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_plane, pseudoscalar) -> plane
 template <class T>
 basic_plane<T> lc(const basic_dual_plane<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_plane, rotor) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> lc(const basic_dual_plane<T>& a, const basic_rotor<T>& b) {
-  return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_plane, translator) -> dual_plane
 template <class T>
 basic_dual_plane<T> lc(const basic_dual_plane<T>& a, const basic_translator<T>& b) {
-  return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_plane, motor) -> mv
 template <class T>
 basic_mv<T> lc(const basic_dual_plane<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(dual_plane, motor) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(euclidean_vector, normalized_point) -> scalar
 template <class T>
 T lc(const basic_euclidean_vector<T>& a, const basic_normalized_point<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_vector, dual_sphere) -> scalar
 template <class T>
 T lc(const basic_euclidean_vector<T>& a, const basic_dual_sphere<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_vector, dual_plane) -> scalar
 template <class T>
 T lc(const basic_euclidean_vector<T>& a, const basic_dual_plane<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_vector, euclidean_vector) -> scalar
 template <class T>
 T lc(const basic_euclidean_vector<T>& a, const basic_euclidean_vector<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_vector, flat_point) -> dual_plane
 template <class T>
 basic_dual_plane<T> lc(const basic_euclidean_vector<T>& a, const basic_flat_point<T>& b) {
-  return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_vector, euclidean_bivector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> lc(const basic_euclidean_vector<T>& a,
                              const basic_euclidean_bivector<T>& b) {
-  return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_vector, point_pair) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> lc(const basic_euclidean_vector<T>& a, const basic_point_pair<T>& b) {
-  return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_vector, dual_line) -> dual_plane
 template <class T>
 basic_dual_plane<T> lc(const basic_euclidean_vector<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_vector, line) -> flat_point
 template <class T>
 basic_flat_point<T> lc(const basic_euclidean_vector<T>& a, const basic_line<T>& b) {
-  return basic_flat_point<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_vector, circle) -> point_pair
 template <class T>
 basic_point_pair<T> lc(const basic_euclidean_vector<T>& a, const basic_circle<T>& b) {
-  return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_vector, sphere) -> circle
 template <class T>
 basic_circle<T> lc(const basic_euclidean_vector<T>& a, const basic_sphere<T>& b) {
-  return basic_circle<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_circle<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_vector, plane) -> line
 template <class T>
 basic_line<T> lc(const basic_euclidean_vector<T>& a, const basic_plane<T>& b) {
-  return basic_line<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_line<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_vector, pseudoscalar) -> plane
 template <class T>
 basic_plane<T> lc(const basic_euclidean_vector<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_vector, rotor) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> lc(const basic_euclidean_vector<T>& a, const basic_rotor<T>& b) {
-  return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_vector, translator) -> dual_plane
 template <class T>
 basic_dual_plane<T> lc(const basic_euclidean_vector<T>& a, const basic_translator<T>& b) {
-  return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_vector, motor) -> mv
 template <class T>
 basic_mv<T> lc(const basic_euclidean_vector<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(euclidean_vector, motor) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(flat_point, flat_point) -> scalar
 template <class T>
 T lc(const basic_flat_point<T>& a, const basic_flat_point<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(flat_point, point_pair) -> scalar
 template <class T>
 T lc(const basic_flat_point<T>& a, const basic_point_pair<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(flat_point, line) -> dual_plane
 template <class T>
 basic_dual_plane<T> lc(const basic_flat_point<T>& a, const basic_line<T>& b) {
-  return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(flat_point, circle) -> dual_plane
 template <class T>
 basic_dual_plane<T> lc(const basic_flat_point<T>& a, const basic_circle<T>& b) {
-  return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(flat_point, sphere) -> dual_line
 template <class T>
 basic_dual_line<T> lc(const basic_flat_point<T>& a, const basic_sphere<T>& b) {
-  return basic_dual_line<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(flat_point, plane) -> dual_line
 template <class T>
 basic_dual_line<T> lc(const basic_flat_point<T>& a, const basic_plane<T>& b) {
-  return basic_dual_line<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(flat_point, pseudoscalar) -> circle
 template <class T>
 basic_circle<T> lc(const basic_flat_point<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_circle<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_circle<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_bivector, euclidean_bivector) -> scalar
 template <class T>
 T lc(const basic_euclidean_bivector<T>& a, const basic_euclidean_bivector<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_bivector, point_pair) -> scalar
 template <class T>
 T lc(const basic_euclidean_bivector<T>& a, const basic_point_pair<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_bivector, dual_line) -> scalar
 template <class T>
 T lc(const basic_euclidean_bivector<T>& a, const basic_dual_line<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_bivector, line) -> dual_plane
 template <class T>
 basic_dual_plane<T> lc(const basic_euclidean_bivector<T>& a, const basic_line<T>& b) {
-  return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_bivector, circle) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> lc(const basic_euclidean_bivector<T>& a, const basic_circle<T>& b) {
-  return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_bivector, sphere) -> point_pair
 template <class T>
 basic_point_pair<T> lc(const basic_euclidean_bivector<T>& a, const basic_sphere<T>& b) {
-  return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_bivector, plane) -> flat_point
 template <class T>
 basic_flat_point<T> lc(const basic_euclidean_bivector<T>& a, const basic_plane<T>& b) {
-  return basic_flat_point<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_bivector, pseudoscalar) -> line
 template <class T>
 basic_line<T> lc(const basic_euclidean_bivector<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_line<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_line<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_bivector, rotor) -> scalar
 template <class T>
 T lc(const basic_euclidean_bivector<T>& a, const basic_rotor<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(euclidean_bivector, motor) -> translator
 template <class T>
 basic_translator<T> lc(const basic_euclidean_bivector<T>& a, const basic_motor<T>& b) {
-  return basic_translator<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_translator<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(point_pair, flat_point) -> scalar
 template <class T>
 T lc(const basic_point_pair<T>& a, const basic_flat_point<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(point_pair, euclidean_bivector) -> scalar
 template <class T>
 T lc(const basic_point_pair<T>& a, const basic_euclidean_bivector<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(point_pair, dual_line) -> scalar
 template <class T>
 T lc(const basic_point_pair<T>& a, const basic_dual_line<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(point_pair, line) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> lc(const basic_point_pair<T>& a, const basic_line<T>& b) {
-  return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(point_pair, circle) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> lc(const basic_point_pair<T>& a, const basic_circle<T>& b) {
-  return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(point_pair, sphere) -> point_pair
 template <class T>
 basic_point_pair<T> lc(const basic_point_pair<T>& a, const basic_sphere<T>& b) {
-  return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(point_pair, plane) -> point_pair
 template <class T>
 basic_point_pair<T> lc(const basic_point_pair<T>& a, const basic_plane<T>& b) {
-  return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(point_pair, pseudoscalar) -> circle
 template <class T>
 basic_circle<T> lc(const basic_point_pair<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_circle<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_circle<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(point_pair, rotor) -> scalar
 template <class T>
 T lc(const basic_point_pair<T>& a, const basic_rotor<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(point_pair, translator) -> scalar
 template <class T>
 T lc(const basic_point_pair<T>& a, const basic_translator<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(point_pair, motor) -> motor
 template <class T>
 basic_motor<T> lc(const basic_point_pair<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_motor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_line, euclidean_bivector) -> scalar
 template <class T>
 T lc(const basic_dual_line<T>& a, const basic_euclidean_bivector<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_line, point_pair) -> scalar
 template <class T>
 T lc(const basic_dual_line<T>& a, const basic_point_pair<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_line, dual_line) -> scalar
 template <class T>
 T lc(const basic_dual_line<T>& a, const basic_dual_line<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_line, line) -> dual_plane
 template <class T>
 basic_dual_plane<T> lc(const basic_dual_line<T>& a, const basic_line<T>& b) {
-  return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_line, circle) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> lc(const basic_dual_line<T>& a, const basic_circle<T>& b) {
-  return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_line, sphere) -> point_pair
 template <class T>
 basic_point_pair<T> lc(const basic_dual_line<T>& a, const basic_sphere<T>& b) {
-  return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_line, plane) -> flat_point
 template <class T>
 basic_flat_point<T> lc(const basic_dual_line<T>& a, const basic_plane<T>& b) {
-  return basic_flat_point<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_line, pseudoscalar) -> line
 template <class T>
 basic_line<T> lc(const basic_dual_line<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_line<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_line<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_line, rotor) -> scalar
 template <class T>
 T lc(const basic_dual_line<T>& a, const basic_rotor<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(dual_line, motor) -> translator
 template <class T>
 basic_translator<T> lc(const basic_dual_line<T>& a, const basic_motor<T>& b) {
-  return basic_translator<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_translator<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(line, line) -> scalar
 template <class T>
 T lc(const basic_line<T>& a, const basic_line<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(line, circle) -> scalar
 template <class T>
 T lc(const basic_line<T>& a, const basic_circle<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(line, sphere) -> dual_plane
 template <class T>
 basic_dual_plane<T> lc(const basic_line<T>& a, const basic_sphere<T>& b) {
-  return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(line, plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> lc(const basic_line<T>& a, const basic_plane<T>& b) {
-  return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(line, pseudoscalar) -> dual_line
 template <class T>
 basic_dual_line<T> lc(const basic_line<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_dual_line<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(circle, line) -> scalar
 template <class T>
 T lc(const basic_circle<T>& a, const basic_line<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(circle, circle) -> scalar
 template <class T>
 T lc(const basic_circle<T>& a, const basic_circle<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(circle, sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> lc(const basic_circle<T>& a, const basic_sphere<T>& b) {
-  return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(circle, plane) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> lc(const basic_circle<T>& a, const basic_plane<T>& b) {
-  return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(circle, pseudoscalar) -> point_pair
 template <class T>
 basic_point_pair<T> lc(const basic_circle<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(circle, motor) -> dual_plane
 template <class T>
 basic_dual_plane<T> lc(const basic_circle<T>& a, const basic_motor<T>& b) {
-  return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(sphere, sphere) -> scalar
 template <class T>
 T lc(const basic_sphere<T>& a, const basic_sphere<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(sphere, plane) -> scalar
 template <class T>
 T lc(const basic_sphere<T>& a, const basic_plane<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(sphere, pseudoscalar) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> lc(const basic_sphere<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(sphere, motor) -> scalar
 template <class T>
 T lc(const basic_sphere<T>& a, const basic_motor<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(plane, sphere) -> scalar
 template <class T>
 T lc(const basic_plane<T>& a, const basic_sphere<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(plane, plane) -> scalar
 template <class T>
 T lc(const basic_plane<T>& a, const basic_plane<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(plane, pseudoscalar) -> dual_plane
 template <class T>
 basic_dual_plane<T> lc(const basic_plane<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(pseudoscalar, pseudoscalar) -> scalar
 template <class T>
 T lc(const basic_pseudoscalar<T>& a, const basic_pseudoscalar<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(rotor, normalized_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> lc(const basic_rotor<T>& a, const basic_normalized_point<T>& b) {
-  return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(rotor, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> lc(const basic_rotor<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(rotor, dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> lc(const basic_rotor<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(rotor, euclidean_vector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> lc(const basic_rotor<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(rotor, flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> lc(const basic_rotor<T>& a, const basic_flat_point<T>& b) {
-  return basic_flat_point<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(rotor, euclidean_bivector) -> rotor
 template <class T>
 basic_rotor<T> lc(const basic_rotor<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_rotor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(rotor, point_pair) -> mv
 template <class T>
 basic_mv<T> lc(const basic_rotor<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(rotor, point_pair) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(rotor, dual_line) -> motor
 template <class T>
 basic_motor<T> lc(const basic_rotor<T>& a, const basic_dual_line<T>& b) {
-  return basic_motor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_motor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(rotor, line) -> mv
 template <class T>
 basic_mv<T> lc(const basic_rotor<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(rotor, line) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(rotor, circle) -> mv
 template <class T>
 basic_mv<T> lc(const basic_rotor<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(rotor, circle) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(rotor, sphere) -> mv
 template <class T>
 basic_mv<T> lc(const basic_rotor<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(rotor, sphere) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(rotor, plane) -> mv
 template <class T>
 basic_mv<T> lc(const basic_rotor<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(rotor, plane) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(rotor, pseudoscalar) -> mv
 template <class T>
 basic_mv<T> lc(const basic_rotor<T>& a, const basic_pseudoscalar<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(rotor, pseudoscalar) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(rotor, rotor) -> rotor
 template <class T>
 basic_rotor<T> lc(const basic_rotor<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(rotor, translator) -> translator
 template <class T>
 basic_translator<T> lc(const basic_rotor<T>& a, const basic_translator<T>& b) {
-  return basic_translator<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_translator<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(rotor, motor) -> motor
 template <class T>
 basic_motor<T> lc(const basic_rotor<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_motor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(translator, normalized_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> lc(const basic_translator<T>& a, const basic_normalized_point<T>& b) {
-  return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(translator, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> lc(const basic_translator<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(translator, dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> lc(const basic_translator<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(translator, euclidean_vector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> lc(const basic_translator<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(translator, flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> lc(const basic_translator<T>& a, const basic_flat_point<T>& b) {
-  return basic_flat_point<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(translator, euclidean_bivector) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> lc(const basic_translator<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_euclidean_bivector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_euclidean_bivector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(translator, point_pair) -> mv
 template <class T>
 basic_mv<T> lc(const basic_translator<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(translator, point_pair) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(translator, dual_line) -> dual_line
 template <class T>
 basic_dual_line<T> lc(const basic_translator<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_line<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(translator, line) -> mv
 template <class T>
 basic_mv<T> lc(const basic_translator<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(translator, line) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(translator, circle) -> mv
 template <class T>
 basic_mv<T> lc(const basic_translator<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(translator, circle) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(translator, sphere) -> mv
 template <class T>
 basic_mv<T> lc(const basic_translator<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(translator, sphere) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(translator, plane) -> mv
 template <class T>
 basic_mv<T> lc(const basic_translator<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(translator, plane) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(translator, pseudoscalar) -> mv
 template <class T>
 basic_mv<T> lc(const basic_translator<T>& a, const basic_pseudoscalar<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(translator, pseudoscalar) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(translator, rotor) -> rotor
 template <class T>
 basic_rotor<T> lc(const basic_translator<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(translator, translator) -> translator
 template <class T>
 basic_translator<T> lc(const basic_translator<T>& a, const basic_translator<T>& b) {
-  return basic_translator<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_translator<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(translator, motor) -> motor
 template <class T>
 basic_motor<T> lc(const basic_translator<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_motor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(motor, normalized_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> lc(const basic_motor<T>& a, const basic_normalized_point<T>& b) {
-  return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(motor, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> lc(const basic_motor<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(motor, dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> lc(const basic_motor<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(motor, euclidean_vector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> lc(const basic_motor<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(motor, flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> lc(const basic_motor<T>& a, const basic_flat_point<T>& b) {
-  return basic_flat_point<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(motor, euclidean_bivector) -> rotor
 template <class T>
 basic_rotor<T> lc(const basic_motor<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_rotor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(motor, point_pair) -> mv
 template <class T>
 basic_mv<T> lc(const basic_motor<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(motor, point_pair) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(motor, dual_line) -> motor
 template <class T>
 basic_motor<T> lc(const basic_motor<T>& a, const basic_dual_line<T>& b) {
-  return basic_motor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_motor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(motor, line) -> mv
 template <class T>
 basic_mv<T> lc(const basic_motor<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(motor, line) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(motor, circle) -> mv
 template <class T>
 basic_mv<T> lc(const basic_motor<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(motor, circle) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(motor, sphere) -> mv
 template <class T>
 basic_mv<T> lc(const basic_motor<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(motor, sphere) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(motor, plane) -> mv
 template <class T>
 basic_mv<T> lc(const basic_motor<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(motor, plane) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(motor, pseudoscalar) -> mv
 template <class T>
 basic_mv<T> lc(const basic_motor<T>& a, const basic_pseudoscalar<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(motor, pseudoscalar) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // lc(motor, rotor) -> rotor
 template <class T>
 basic_rotor<T> lc(const basic_motor<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(motor, translator) -> translator
 template <class T>
 basic_translator<T> lc(const basic_motor<T>& a, const basic_translator<T>& b) {
-  return basic_translator<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_translator<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(normalized_point, normalized_point) -> scalar
 template <class T>
 T rc(const basic_normalized_point<T>& a, const basic_normalized_point<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(normalized_point, dual_sphere) -> scalar
 template <class T>
 T rc(const basic_normalized_point<T>& a, const basic_dual_sphere<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(normalized_point, dual_plane) -> scalar
 template <class T>
 T rc(const basic_normalized_point<T>& a, const basic_dual_plane<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(normalized_point, euclidean_vector) -> scalar
 template <class T>
 T rc(const basic_normalized_point<T>& a, const basic_euclidean_vector<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(normalized_point, rotor) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> rc(const basic_normalized_point<T>& a, const basic_rotor<T>& b) {
-  return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(normalized_point, translator) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> rc(const basic_normalized_point<T>& a, const basic_translator<T>& b) {
-  return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(normalized_point, motor) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> rc(const basic_normalized_point<T>& a, const basic_motor<T>& b) {
-  return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_sphere, normalized_point) -> scalar
 template <class T>
 T rc(const basic_dual_sphere<T>& a, const basic_normalized_point<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_sphere, dual_sphere) -> scalar
 template <class T>
 T rc(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_sphere, dual_plane) -> scalar
 template <class T>
 T rc(const basic_dual_sphere<T>& a, const basic_dual_plane<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_sphere, euclidean_vector) -> scalar
 template <class T>
 T rc(const basic_dual_sphere<T>& a, const basic_euclidean_vector<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_sphere, rotor) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> rc(const basic_dual_sphere<T>& a, const basic_rotor<T>& b) {
-  return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_sphere, translator) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> rc(const basic_dual_sphere<T>& a, const basic_translator<T>& b) {
-  return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_sphere, motor) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> rc(const basic_dual_sphere<T>& a, const basic_motor<T>& b) {
-  return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_plane, normalized_point) -> scalar
 template <class T>
 T rc(const basic_dual_plane<T>& a, const basic_normalized_point<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_plane, dual_sphere) -> scalar
 template <class T>
 T rc(const basic_dual_plane<T>& a, const basic_dual_sphere<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_plane, dual_plane) -> scalar
 template <class T>
 T rc(const basic_dual_plane<T>& a, const basic_dual_plane<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_plane, euclidean_vector) -> scalar
 template <class T>
 T rc(const basic_dual_plane<T>& a, const basic_euclidean_vector<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_plane, rotor) -> dual_plane
 template <class T>
 basic_dual_plane<T> rc(const basic_dual_plane<T>& a, const basic_rotor<T>& b) {
-  return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_plane, translator) -> dual_plane
 template <class T>
 basic_dual_plane<T> rc(const basic_dual_plane<T>& a, const basic_translator<T>& b) {
-  return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_plane, motor) -> dual_plane
 template <class T>
 basic_dual_plane<T> rc(const basic_dual_plane<T>& a, const basic_motor<T>& b) {
-  return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(euclidean_vector, normalized_point) -> scalar
 template <class T>
 T rc(const basic_euclidean_vector<T>& a, const basic_normalized_point<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(euclidean_vector, dual_sphere) -> scalar
 template <class T>
 T rc(const basic_euclidean_vector<T>& a, const basic_dual_sphere<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(euclidean_vector, dual_plane) -> scalar
 template <class T>
 T rc(const basic_euclidean_vector<T>& a, const basic_dual_plane<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(euclidean_vector, euclidean_vector) -> scalar
 template <class T>
 T rc(const basic_euclidean_vector<T>& a, const basic_euclidean_vector<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(euclidean_vector, rotor) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> rc(const basic_euclidean_vector<T>& a, const basic_rotor<T>& b) {
-  return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(euclidean_vector, translator) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> rc(const basic_euclidean_vector<T>& a, const basic_translator<T>& b) {
-  return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(euclidean_vector, motor) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> rc(const basic_euclidean_vector<T>& a, const basic_motor<T>& b) {
-  return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(flat_point, normalized_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> rc(const basic_flat_point<T>& a, const basic_normalized_point<T>& b) {
-  return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(flat_point, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> rc(const basic_flat_point<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(flat_point, dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> rc(const basic_flat_point<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(flat_point, euclidean_vector) -> dual_plane
 template <class T>
 basic_dual_plane<T> rc(const basic_flat_point<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(flat_point, flat_point) -> scalar
 template <class T>
 T rc(const basic_flat_point<T>& a, const basic_flat_point<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(flat_point, point_pair) -> scalar
 template <class T>
 T rc(const basic_flat_point<T>& a, const basic_point_pair<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(flat_point, rotor) -> flat_point
 template <class T>
 basic_flat_point<T> rc(const basic_flat_point<T>& a, const basic_rotor<T>& b) {
-  return basic_flat_point<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(flat_point, translator) -> flat_point
 template <class T>
 basic_flat_point<T> rc(const basic_flat_point<T>& a, const basic_translator<T>& b) {
-  return basic_flat_point<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(flat_point, motor) -> flat_point
 template <class T>
 basic_flat_point<T> rc(const basic_flat_point<T>& a, const basic_motor<T>& b) {
-  return basic_flat_point<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(euclidean_bivector, normalized_point) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> rc(const basic_euclidean_bivector<T>& a,
                              const basic_normalized_point<T>& b) {
-  return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(euclidean_bivector, dual_sphere) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> rc(const basic_euclidean_bivector<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(euclidean_bivector, dual_plane) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> rc(const basic_euclidean_bivector<T>& a, const basic_dual_plane<T>& b) {
-  return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(euclidean_bivector, euclidean_vector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> rc(const basic_euclidean_bivector<T>& a,
                              const basic_euclidean_vector<T>& b) {
-  return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(euclidean_bivector, euclidean_bivector) -> scalar
 template <class T>
 T rc(const basic_euclidean_bivector<T>& a, const basic_euclidean_bivector<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(euclidean_bivector, point_pair) -> scalar
 template <class T>
 T rc(const basic_euclidean_bivector<T>& a, const basic_point_pair<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(euclidean_bivector, dual_line) -> scalar
 template <class T>
 T rc(const basic_euclidean_bivector<T>& a, const basic_dual_line<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(euclidean_bivector, rotor) -> rotor
 template <class T>
 basic_rotor<T> rc(const basic_euclidean_bivector<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(euclidean_bivector, translator) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> rc(const basic_euclidean_bivector<T>& a, const basic_translator<T>& b) {
-  return basic_euclidean_bivector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_euclidean_bivector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(euclidean_bivector, motor) -> rotor
 template <class T>
 basic_rotor<T> rc(const basic_euclidean_bivector<T>& a, const basic_motor<T>& b) {
-  return basic_rotor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(point_pair, normalized_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> rc(const basic_point_pair<T>& a, const basic_normalized_point<T>& b) {
-  return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(point_pair, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> rc(const basic_point_pair<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(point_pair, dual_plane) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> rc(const basic_point_pair<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(point_pair, euclidean_vector) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> rc(const basic_point_pair<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(point_pair, flat_point) -> scalar
 template <class T>
 T rc(const basic_point_pair<T>& a, const basic_flat_point<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(point_pair, euclidean_bivector) -> scalar
 template <class T>
 T rc(const basic_point_pair<T>& a, const basic_euclidean_bivector<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(point_pair, point_pair) -> scalar
 template <class T>
 T rc(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(point_pair, dual_line) -> scalar
 template <class T>
 T rc(const basic_point_pair<T>& a, const basic_dual_line<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(point_pair, rotor) -> mv
 template <class T>
 basic_mv<T> rc(const basic_point_pair<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(point_pair, rotor) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(point_pair, translator) -> mv
 template <class T>
 basic_mv<T> rc(const basic_point_pair<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(point_pair, translator) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(point_pair, motor) -> mv
 template <class T>
 basic_mv<T> rc(const basic_point_pair<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(point_pair, motor) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(dual_line, normalized_point) -> dual_plane
 template <class T>
 basic_dual_plane<T> rc(const basic_dual_line<T>& a, const basic_normalized_point<T>& b) {
-  return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_line, dual_sphere) -> dual_plane
 template <class T>
 basic_dual_plane<T> rc(const basic_dual_line<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_line, dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> rc(const basic_dual_line<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_line, euclidean_vector) -> dual_plane
 template <class T>
 basic_dual_plane<T> rc(const basic_dual_line<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_line, euclidean_bivector) -> scalar
 template <class T>
 T rc(const basic_dual_line<T>& a, const basic_euclidean_bivector<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_line, point_pair) -> scalar
 template <class T>
 T rc(const basic_dual_line<T>& a, const basic_point_pair<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_line, dual_line) -> scalar
 template <class T>
 T rc(const basic_dual_line<T>& a, const basic_dual_line<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_line, rotor) -> motor
 template <class T>
 basic_motor<T> rc(const basic_dual_line<T>& a, const basic_rotor<T>& b) {
-  return basic_motor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_motor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_line, translator) -> dual_line
 template <class T>
 basic_dual_line<T> rc(const basic_dual_line<T>& a, const basic_translator<T>& b) {
-  return basic_dual_line<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(dual_line, motor) -> motor
 template <class T>
 basic_motor<T> rc(const basic_dual_line<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_motor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(line, normalized_point) -> point_pair
 template <class T>
 basic_point_pair<T> rc(const basic_line<T>& a, const basic_normalized_point<T>& b) {
-  return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(line, dual_sphere) -> point_pair
 template <class T>
 basic_point_pair<T> rc(const basic_line<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(line, dual_plane) -> flat_point
 template <class T>
 basic_flat_point<T> rc(const basic_line<T>& a, const basic_dual_plane<T>& b) {
-  return basic_flat_point<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(line, euclidean_vector) -> flat_point
 template <class T>
 basic_flat_point<T> rc(const basic_line<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_flat_point<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(line, flat_point) -> dual_plane
 template <class T>
 basic_dual_plane<T> rc(const basic_line<T>& a, const basic_flat_point<T>& b) {
-  return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(line, euclidean_bivector) -> dual_plane
 template <class T>
 basic_dual_plane<T> rc(const basic_line<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(line, point_pair) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> rc(const basic_line<T>& a, const basic_point_pair<T>& b) {
-  return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(line, dual_line) -> dual_plane
 template <class T>
 basic_dual_plane<T> rc(const basic_line<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(line, line) -> scalar
 template <class T>
 T rc(const basic_line<T>& a, const basic_line<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(line, circle) -> scalar
 template <class T>
 T rc(const basic_line<T>& a, const basic_circle<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(line, rotor) -> mv
 template <class T>
 basic_mv<T> rc(const basic_line<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(line, rotor) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(line, translator) -> mv
 template <class T>
 basic_mv<T> rc(const basic_line<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(line, translator) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(line, motor) -> mv
 template <class T>
 basic_mv<T> rc(const basic_line<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(line, motor) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(circle, normalized_point) -> point_pair
 template <class T>
 basic_point_pair<T> rc(const basic_circle<T>& a, const basic_normalized_point<T>& b) {
-  return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(circle, dual_sphere) -> point_pair
 template <class T>
 basic_point_pair<T> rc(const basic_circle<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(circle, dual_plane) -> point_pair
 template <class T>
 basic_point_pair<T> rc(const basic_circle<T>& a, const basic_dual_plane<T>& b) {
-  return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(circle, euclidean_vector) -> point_pair
 template <class T>
 basic_point_pair<T> rc(const basic_circle<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(circle, flat_point) -> dual_plane
 template <class T>
 basic_dual_plane<T> rc(const basic_circle<T>& a, const basic_flat_point<T>& b) {
-  return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(circle, euclidean_bivector) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> rc(const basic_circle<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(circle, point_pair) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> rc(const basic_circle<T>& a, const basic_point_pair<T>& b) {
-  return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(circle, dual_line) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> rc(const basic_circle<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(circle, line) -> scalar
 template <class T>
 T rc(const basic_circle<T>& a, const basic_line<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(circle, circle) -> scalar
 template <class T>
 T rc(const basic_circle<T>& a, const basic_circle<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(circle, rotor) -> mv
 template <class T>
 basic_mv<T> rc(const basic_circle<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(circle, rotor) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(circle, translator) -> mv
 template <class T>
 basic_mv<T> rc(const basic_circle<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(circle, translator) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(circle, motor) -> mv
 template <class T>
 basic_mv<T> rc(const basic_circle<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(circle, motor) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(sphere, normalized_point) -> circle
 template <class T>
 basic_circle<T> rc(const basic_sphere<T>& a, const basic_normalized_point<T>& b) {
-  return basic_circle<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_circle<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(sphere, dual_sphere) -> circle
 template <class T>
 basic_circle<T> rc(const basic_sphere<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_circle<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_circle<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(sphere, dual_plane) -> circle
 template <class T>
 basic_circle<T> rc(const basic_sphere<T>& a, const basic_dual_plane<T>& b) {
-  return basic_circle<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_circle<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(sphere, euclidean_vector) -> circle
 template <class T>
 basic_circle<T> rc(const basic_sphere<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_circle<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_circle<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(sphere, flat_point) -> dual_line
 template <class T>
 basic_dual_line<T> rc(const basic_sphere<T>& a, const basic_flat_point<T>& b) {
-  return basic_dual_line<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(sphere, euclidean_bivector) -> point_pair
 template <class T>
 basic_point_pair<T> rc(const basic_sphere<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(sphere, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> rc(const basic_sphere<T>& a, const basic_point_pair<T>& b) {
-  return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(sphere, dual_line) -> point_pair
 template <class T>
 basic_point_pair<T> rc(const basic_sphere<T>& a, const basic_dual_line<T>& b) {
-  return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(sphere, line) -> dual_plane
 template <class T>
 basic_dual_plane<T> rc(const basic_sphere<T>& a, const basic_line<T>& b) {
-  return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(sphere, circle) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> rc(const basic_sphere<T>& a, const basic_circle<T>& b) {
-  return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(sphere, sphere) -> scalar
 template <class T>
 T rc(const basic_sphere<T>& a, const basic_sphere<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(sphere, plane) -> scalar
 template <class T>
 T rc(const basic_sphere<T>& a, const basic_plane<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(sphere, rotor) -> mv
 template <class T>
 basic_mv<T> rc(const basic_sphere<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(sphere, rotor) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(sphere, translator) -> mv
 template <class T>
 basic_mv<T> rc(const basic_sphere<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(sphere, translator) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(sphere, motor) -> mv
 template <class T>
 basic_mv<T> rc(const basic_sphere<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(sphere, motor) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(plane, normalized_point) -> circle
 template <class T>
 basic_circle<T> rc(const basic_plane<T>& a, const basic_normalized_point<T>& b) {
-  return basic_circle<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_circle<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(plane, dual_sphere) -> circle
 template <class T>
 basic_circle<T> rc(const basic_plane<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_circle<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_circle<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(plane, dual_plane) -> line
 template <class T>
 basic_line<T> rc(const basic_plane<T>& a, const basic_dual_plane<T>& b) {
-  return basic_line<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_line<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(plane, euclidean_vector) -> line
 template <class T>
 basic_line<T> rc(const basic_plane<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_line<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_line<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(plane, flat_point) -> dual_line
 template <class T>
 basic_dual_line<T> rc(const basic_plane<T>& a, const basic_flat_point<T>& b) {
-  return basic_dual_line<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(plane, euclidean_bivector) -> flat_point
 template <class T>
 basic_flat_point<T> rc(const basic_plane<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_flat_point<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(plane, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> rc(const basic_plane<T>& a, const basic_point_pair<T>& b) {
-  return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(plane, dual_line) -> flat_point
 template <class T>
 basic_flat_point<T> rc(const basic_plane<T>& a, const basic_dual_line<T>& b) {
-  return basic_flat_point<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(plane, line) -> dual_plane
 template <class T>
 basic_dual_plane<T> rc(const basic_plane<T>& a, const basic_line<T>& b) {
-  return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(plane, circle) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> rc(const basic_plane<T>& a, const basic_circle<T>& b) {
-  return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(plane, sphere) -> scalar
 template <class T>
 T rc(const basic_plane<T>& a, const basic_sphere<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(plane, plane) -> scalar
 template <class T>
 T rc(const basic_plane<T>& a, const basic_plane<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(plane, rotor) -> mv
 template <class T>
 basic_mv<T> rc(const basic_plane<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(plane, rotor) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(plane, translator) -> mv
 template <class T>
 basic_mv<T> rc(const basic_plane<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(plane, translator) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(plane, motor) -> mv
 template <class T>
 basic_mv<T> rc(const basic_plane<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(plane, motor) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(pseudoscalar, normalized_point) -> sphere
 template <class T>
 basic_sphere<T> rc(const basic_pseudoscalar<T>& a, const basic_normalized_point<T>& b) {
-  return basic_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(pseudoscalar, dual_sphere) -> sphere
 template <class T>
 basic_sphere<T> rc(const basic_pseudoscalar<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(pseudoscalar, dual_plane) -> plane
 template <class T>
 basic_plane<T> rc(const basic_pseudoscalar<T>& a, const basic_dual_plane<T>& b) {
-  return basic_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(pseudoscalar, euclidean_vector) -> plane
 template <class T>
 basic_plane<T> rc(const basic_pseudoscalar<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(pseudoscalar, flat_point) -> circle
 template <class T>
 basic_circle<T> rc(const basic_pseudoscalar<T>& a, const basic_flat_point<T>& b) {
-  return basic_circle<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_circle<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(pseudoscalar, euclidean_bivector) -> line
 template <class T>
 basic_line<T> rc(const basic_pseudoscalar<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_line<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_line<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(pseudoscalar, point_pair) -> circle
 template <class T>
 basic_circle<T> rc(const basic_pseudoscalar<T>& a, const basic_point_pair<T>& b) {
-  return basic_circle<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_circle<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(pseudoscalar, dual_line) -> line
 template <class T>
 basic_line<T> rc(const basic_pseudoscalar<T>& a, const basic_dual_line<T>& b) {
-  return basic_line<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_line<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(pseudoscalar, line) -> dual_line
 template <class T>
 basic_dual_line<T> rc(const basic_pseudoscalar<T>& a, const basic_line<T>& b) {
-  return basic_dual_line<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(pseudoscalar, circle) -> point_pair
 template <class T>
 basic_point_pair<T> rc(const basic_pseudoscalar<T>& a, const basic_circle<T>& b) {
-  return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(pseudoscalar, sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> rc(const basic_pseudoscalar<T>& a, const basic_sphere<T>& b) {
-  return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(pseudoscalar, plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> rc(const basic_pseudoscalar<T>& a, const basic_plane<T>& b) {
-  return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(pseudoscalar, pseudoscalar) -> scalar
 template <class T>
 T rc(const basic_pseudoscalar<T>& a, const basic_pseudoscalar<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(pseudoscalar, rotor) -> mv
 template <class T>
 basic_mv<T> rc(const basic_pseudoscalar<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(pseudoscalar, rotor) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(pseudoscalar, translator) -> mv
 template <class T>
 basic_mv<T> rc(const basic_pseudoscalar<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(pseudoscalar, translator) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(pseudoscalar, motor) -> mv
 template <class T>
 basic_mv<T> rc(const basic_pseudoscalar<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(pseudoscalar, motor) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(rotor, normalized_point) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> rc(const basic_rotor<T>& a, const basic_normalized_point<T>& b) {
-  return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(rotor, dual_sphere) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> rc(const basic_rotor<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(rotor, dual_plane) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> rc(const basic_rotor<T>& a, const basic_dual_plane<T>& b) {
-  return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(rotor, euclidean_vector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> rc(const basic_rotor<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(rotor, euclidean_bivector) -> scalar
 template <class T>
 T rc(const basic_rotor<T>& a, const basic_euclidean_bivector<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(rotor, point_pair) -> scalar
 template <class T>
 T rc(const basic_rotor<T>& a, const basic_point_pair<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(rotor, dual_line) -> scalar
 template <class T>
 T rc(const basic_rotor<T>& a, const basic_dual_line<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(rotor, rotor) -> rotor
 template <class T>
 basic_rotor<T> rc(const basic_rotor<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(rotor, translator) -> rotor
 template <class T>
 basic_rotor<T> rc(const basic_rotor<T>& a, const basic_translator<T>& b) {
-  return basic_rotor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(rotor, motor) -> rotor
 template <class T>
 basic_rotor<T> rc(const basic_rotor<T>& a, const basic_motor<T>& b) {
-  return basic_rotor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(translator, normalized_point) -> dual_plane
 template <class T>
 basic_dual_plane<T> rc(const basic_translator<T>& a, const basic_normalized_point<T>& b) {
-  return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(translator, dual_sphere) -> dual_plane
 template <class T>
 basic_dual_plane<T> rc(const basic_translator<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(translator, dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> rc(const basic_translator<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(translator, euclidean_vector) -> dual_plane
 template <class T>
 basic_dual_plane<T> rc(const basic_translator<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(translator, point_pair) -> scalar
 template <class T>
 T rc(const basic_translator<T>& a, const basic_point_pair<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(translator, rotor) -> translator
 template <class T>
 basic_translator<T> rc(const basic_translator<T>& a, const basic_rotor<T>& b) {
-  return basic_translator<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_translator<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(translator, translator) -> translator
 template <class T>
 basic_translator<T> rc(const basic_translator<T>& a, const basic_translator<T>& b) {
-  return basic_translator<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_translator<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(translator, motor) -> translator
 template <class T>
 basic_translator<T> rc(const basic_translator<T>& a, const basic_motor<T>& b) {
-  return basic_translator<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_translator<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(motor, normalized_point) -> mv
 template <class T>
 basic_mv<T> rc(const basic_motor<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(motor, normalized_point) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(motor, dual_sphere) -> mv
 template <class T>
 basic_mv<T> rc(const basic_motor<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(motor, dual_sphere) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(motor, dual_plane) -> mv
 template <class T>
 basic_mv<T> rc(const basic_motor<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(motor, dual_plane) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(motor, euclidean_vector) -> mv
 template <class T>
 basic_mv<T> rc(const basic_motor<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(motor, euclidean_vector) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(motor, euclidean_bivector) -> translator
 template <class T>
 basic_translator<T> rc(const basic_motor<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_translator<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_translator<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(motor, point_pair) -> motor
 template <class T>
 basic_motor<T> rc(const basic_motor<T>& a, const basic_point_pair<T>& b) {
-  return basic_motor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_motor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(motor, dual_line) -> translator
 template <class T>
 basic_translator<T> rc(const basic_motor<T>& a, const basic_dual_line<T>& b) {
-  return basic_translator<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_translator<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(motor, circle) -> dual_plane
 template <class T>
 basic_dual_plane<T> rc(const basic_motor<T>& a, const basic_circle<T>& b) {
-  return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(motor, sphere) -> scalar
 template <class T>
 T rc(const basic_motor<T>& a, const basic_sphere<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(motor, rotor) -> motor
 template <class T>
 basic_motor<T> rc(const basic_motor<T>& a, const basic_rotor<T>& b) {
-  return basic_motor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_motor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(motor, translator) -> motor
 template <class T>
 basic_motor<T> rc(const basic_motor<T>& a, const basic_translator<T>& b) {
-  return basic_motor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_motor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(motor, motor) -> motor
 template <class T>
 basic_motor<T> rc(const basic_motor<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_motor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // scp(normalized_point, dual_plane) -> scalar
 template <class T>
 T scp(const basic_normalized_point<T>& a, const basic_dual_plane<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(normalized_point, euclidean_vector) -> scalar
 template <class T>
 T scp(const basic_normalized_point<T>& a, const basic_euclidean_vector<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(dual_sphere, normalized_point) -> scalar
 template <class T>
 T scp(const basic_dual_sphere<T>& a, const basic_normalized_point<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(dual_sphere, dual_plane) -> scalar
 template <class T>
 T scp(const basic_dual_sphere<T>& a, const basic_dual_plane<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(dual_sphere, euclidean_vector) -> scalar
 template <class T>
 T scp(const basic_dual_sphere<T>& a, const basic_euclidean_vector<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(dual_plane, normalized_point) -> scalar
 template <class T>
 T scp(const basic_dual_plane<T>& a, const basic_normalized_point<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(dual_plane, dual_sphere) -> scalar
 template <class T>
 T scp(const basic_dual_plane<T>& a, const basic_dual_sphere<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(dual_plane, dual_plane) -> scalar
 template <class T>
 T scp(const basic_dual_plane<T>& a, const basic_dual_plane<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(dual_plane, euclidean_vector) -> scalar
 template <class T>
 T scp(const basic_dual_plane<T>& a, const basic_euclidean_vector<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(euclidean_vector, normalized_point) -> scalar
 template <class T>
 T scp(const basic_euclidean_vector<T>& a, const basic_normalized_point<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(euclidean_vector, dual_sphere) -> scalar
 template <class T>
 T scp(const basic_euclidean_vector<T>& a, const basic_dual_sphere<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(euclidean_vector, dual_plane) -> scalar
 template <class T>
 T scp(const basic_euclidean_vector<T>& a, const basic_dual_plane<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(euclidean_vector, euclidean_vector) -> scalar
 template <class T>
 T scp(const basic_euclidean_vector<T>& a, const basic_euclidean_vector<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(flat_point, flat_point) -> scalar
 template <class T>
 T scp(const basic_flat_point<T>& a, const basic_flat_point<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(flat_point, point_pair) -> scalar
 template <class T>
 T scp(const basic_flat_point<T>& a, const basic_point_pair<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(euclidean_bivector, euclidean_bivector) -> scalar
 template <class T>
 T scp(const basic_euclidean_bivector<T>& a, const basic_euclidean_bivector<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(euclidean_bivector, point_pair) -> scalar
 template <class T>
 T scp(const basic_euclidean_bivector<T>& a, const basic_point_pair<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(euclidean_bivector, dual_line) -> scalar
 template <class T>
 T scp(const basic_euclidean_bivector<T>& a, const basic_dual_line<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(euclidean_bivector, rotor) -> scalar
 template <class T>
 T scp(const basic_euclidean_bivector<T>& a, const basic_rotor<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(euclidean_bivector, motor) -> scalar
 template <class T>
 T scp(const basic_euclidean_bivector<T>& a, const basic_motor<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(point_pair, flat_point) -> scalar
 template <class T>
 T scp(const basic_point_pair<T>& a, const basic_flat_point<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(point_pair, euclidean_bivector) -> scalar
 template <class T>
 T scp(const basic_point_pair<T>& a, const basic_euclidean_bivector<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(point_pair, dual_line) -> scalar
 template <class T>
 T scp(const basic_point_pair<T>& a, const basic_dual_line<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(point_pair, rotor) -> scalar
 template <class T>
 T scp(const basic_point_pair<T>& a, const basic_rotor<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(point_pair, translator) -> scalar
 template <class T>
 T scp(const basic_point_pair<T>& a, const basic_translator<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(point_pair, motor) -> scalar
 template <class T>
 T scp(const basic_point_pair<T>& a, const basic_motor<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(dual_line, euclidean_bivector) -> scalar
 template <class T>
 T scp(const basic_dual_line<T>& a, const basic_euclidean_bivector<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(dual_line, point_pair) -> scalar
 template <class T>
 T scp(const basic_dual_line<T>& a, const basic_point_pair<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(dual_line, dual_line) -> scalar
 template <class T>
 T scp(const basic_dual_line<T>& a, const basic_dual_line<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(dual_line, rotor) -> scalar
 template <class T>
 T scp(const basic_dual_line<T>& a, const basic_rotor<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(dual_line, motor) -> scalar
 template <class T>
 T scp(const basic_dual_line<T>& a, const basic_motor<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(line, line) -> scalar
 template <class T>
 T scp(const basic_line<T>& a, const basic_line<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(line, circle) -> scalar
 template <class T>
 T scp(const basic_line<T>& a, const basic_circle<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(circle, line) -> scalar
 template <class T>
 T scp(const basic_circle<T>& a, const basic_line<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(circle, circle) -> scalar
 template <class T>
 T scp(const basic_circle<T>& a, const basic_circle<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(sphere, sphere) -> scalar
 template <class T>
 T scp(const basic_sphere<T>& a, const basic_sphere<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(sphere, plane) -> scalar
 template <class T>
 T scp(const basic_sphere<T>& a, const basic_plane<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(sphere, motor) -> scalar
 template <class T>
 T scp(const basic_sphere<T>& a, const basic_motor<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(plane, sphere) -> scalar
 template <class T>
 T scp(const basic_plane<T>& a, const basic_sphere<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(plane, plane) -> scalar
 template <class T>
 T scp(const basic_plane<T>& a, const basic_plane<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(pseudoscalar, pseudoscalar) -> scalar
 template <class T>
 T scp(const basic_pseudoscalar<T>& a, const basic_pseudoscalar<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(rotor, euclidean_bivector) -> scalar
 template <class T>
 T scp(const basic_rotor<T>& a, const basic_euclidean_bivector<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(rotor, point_pair) -> scalar
 template <class T>
 T scp(const basic_rotor<T>& a, const basic_point_pair<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(rotor, dual_line) -> scalar
 template <class T>
 T scp(const basic_rotor<T>& a, const basic_dual_line<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(rotor, rotor) -> scalar
 template <class T>
 T scp(const basic_rotor<T>& a, const basic_rotor<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(rotor, translator) -> scalar
 template <class T>
 T scp(const basic_rotor<T>& a, const basic_translator<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(rotor, motor) -> scalar
 template <class T>
 T scp(const basic_rotor<T>& a, const basic_motor<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(translator, point_pair) -> scalar
 template <class T>
 T scp(const basic_translator<T>& a, const basic_point_pair<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(translator, rotor) -> scalar
 template <class T>
 T scp(const basic_translator<T>& a, const basic_rotor<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(translator, translator) -> scalar
 template <class T>
 T scp(const basic_translator<T>& a, const basic_translator<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(translator, motor) -> scalar
 template <class T>
 T scp(const basic_translator<T>& a, const basic_motor<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(motor, euclidean_bivector) -> scalar
 template <class T>
 T scp(const basic_motor<T>& a, const basic_euclidean_bivector<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(motor, point_pair) -> scalar
 template <class T>
 T scp(const basic_motor<T>& a, const basic_point_pair<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(motor, dual_line) -> scalar
 template <class T>
 T scp(const basic_motor<T>& a, const basic_dual_line<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(motor, sphere) -> scalar
 template <class T>
 T scp(const basic_motor<T>& a, const basic_sphere<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(motor, rotor) -> scalar
 template <class T>
 T scp(const basic_motor<T>& a, const basic_rotor<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(motor, translator) -> scalar
 template <class T>
 T scp(const basic_motor<T>& a, const basic_translator<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // meet(normalized_point, sphere) -> scalar
 template <class T>
 T meet(const basic_normalized_point<T>& a, const basic_sphere<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(normalized_point, plane) -> scalar
 template <class T>
 T meet(const basic_normalized_point<T>& a, const basic_plane<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(normalized_point, pseudoscalar) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> meet(const basic_normalized_point<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(normalized_point, motor) -> scalar
 template <class T>
 T meet([[maybe_unused]] const basic_normalized_point<T>& a, const basic_motor<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(dual_sphere, sphere) -> scalar
 template <class T>
 T meet(const basic_dual_sphere<T>& a, const basic_sphere<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(dual_sphere, plane) -> scalar
 template <class T>
 T meet(const basic_dual_sphere<T>& a, const basic_plane<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(dual_sphere, pseudoscalar) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> meet(const basic_dual_sphere<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(dual_sphere, motor) -> scalar
 template <class T>
 T meet(const basic_dual_sphere<T>& a, const basic_motor<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(dual_plane, sphere) -> scalar
 template <class T>
 T meet(const basic_dual_plane<T>& a, const basic_sphere<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(dual_plane, plane) -> scalar
 template <class T>
 T meet(const basic_dual_plane<T>& a, const basic_plane<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(dual_plane, pseudoscalar) -> dual_plane
 template <class T>
 basic_dual_plane<T> meet(const basic_dual_plane<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(euclidean_vector, sphere) -> scalar
 template <class T>
 T meet(const basic_euclidean_vector<T>& a, const basic_sphere<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(euclidean_vector, plane) -> scalar
 template <class T>
 T meet(const basic_euclidean_vector<T>& a, const basic_plane<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(euclidean_vector, pseudoscalar) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> meet(const basic_euclidean_vector<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_euclidean_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(flat_point, circle) -> scalar
 template <class T>
 T meet(const basic_flat_point<T>& a, const basic_circle<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(flat_point, sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> meet(const basic_flat_point<T>& a, const basic_sphere<T>& b) {
-  return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(flat_point, plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> meet(const basic_flat_point<T>& a, const basic_plane<T>& b) {
-  return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(flat_point, pseudoscalar) -> flat_point
 template <class T>
 basic_flat_point<T> meet(const basic_flat_point<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_flat_point<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(flat_point, motor) -> dual_plane
 template <class T>
 basic_dual_plane<T> meet(const basic_flat_point<T>& a, const basic_motor<T>& b) {
-  return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(euclidean_bivector, line) -> scalar
 template <class T>
 T meet(const basic_euclidean_bivector<T>& a, const basic_line<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(euclidean_bivector, circle) -> scalar
 template <class T>
 T meet(const basic_euclidean_bivector<T>& a, const basic_circle<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(euclidean_bivector, sphere) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> meet(const basic_euclidean_bivector<T>& a, const basic_sphere<T>& b) {
-  return basic_euclidean_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(euclidean_bivector, plane) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> meet(const basic_euclidean_bivector<T>& a, const basic_plane<T>& b) {
-  return basic_euclidean_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(euclidean_bivector, pseudoscalar) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> meet(const basic_euclidean_bivector<T>& a,
                                  const basic_pseudoscalar<T>& b) {
-  return basic_euclidean_bivector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_euclidean_bivector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(point_pair, line) -> scalar
 template <class T>
 T meet(const basic_point_pair<T>& a, const basic_line<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(point_pair, circle) -> scalar
 template <class T>
 T meet(const basic_point_pair<T>& a, const basic_circle<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(point_pair, sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> meet(const basic_point_pair<T>& a, const basic_sphere<T>& b) {
-  return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(point_pair, plane) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> meet(const basic_point_pair<T>& a, const basic_plane<T>& b) {
-  return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(point_pair, pseudoscalar) -> point_pair
 template <class T>
 basic_point_pair<T> meet(const basic_point_pair<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_point_pair<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(point_pair, motor) -> dual_plane
 template <class T>
 basic_dual_plane<T> meet(const basic_point_pair<T>& a, const basic_motor<T>& b) {
-  return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(dual_line, line) -> scalar
 template <class T>
 T meet(const basic_dual_line<T>& a, const basic_line<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(dual_line, circle) -> scalar
 template <class T>
 T meet(const basic_dual_line<T>& a, const basic_circle<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(dual_line, sphere) -> dual_plane
 template <class T>
 basic_dual_plane<T> meet(const basic_dual_line<T>& a, const basic_sphere<T>& b) {
-  return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(dual_line, plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> meet(const basic_dual_line<T>& a, const basic_plane<T>& b) {
-  return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(dual_line, pseudoscalar) -> dual_line
 template <class T>
 basic_dual_line<T> meet(const basic_dual_line<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_dual_line<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(line, euclidean_bivector) -> scalar
 template <class T>
 T meet(const basic_line<T>& a, const basic_euclidean_bivector<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(line, point_pair) -> scalar
 template <class T>
 T meet(const basic_line<T>& a, const basic_point_pair<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(line, dual_line) -> scalar
 template <class T>
 T meet(const basic_line<T>& a, const basic_dual_line<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(line, line) -> dual_plane
 template <class T>
 basic_dual_plane<T> meet(const basic_line<T>& a, const basic_line<T>& b) {
-  return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(line, circle) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> meet(const basic_line<T>& a, const basic_circle<T>& b) {
-  return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(line, sphere) -> point_pair
 template <class T>
 basic_point_pair<T> meet(const basic_line<T>& a, const basic_sphere<T>& b) {
-  return basic_point_pair<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(line, plane) -> flat_point
 template <class T>
 basic_flat_point<T> meet(const basic_line<T>& a, const basic_plane<T>& b) {
-  return basic_flat_point<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(line, pseudoscalar) -> line
 template <class T>
 basic_line<T> meet(const basic_line<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_line<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_line<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(line, rotor) -> scalar
 template <class T>
 T meet(const basic_line<T>& a, const basic_rotor<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(line, motor) -> translator
 template <class T>
 basic_translator<T> meet(const basic_line<T>& a, const basic_motor<T>& b) {
-  return basic_translator<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_translator<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(circle, flat_point) -> scalar
 template <class T>
 T meet(const basic_circle<T>& a, const basic_flat_point<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(circle, euclidean_bivector) -> scalar
 template <class T>
 T meet(const basic_circle<T>& a, const basic_euclidean_bivector<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(circle, point_pair) -> scalar
 template <class T>
 T meet(const basic_circle<T>& a, const basic_point_pair<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(circle, dual_line) -> scalar
 template <class T>
 T meet(const basic_circle<T>& a, const basic_dual_line<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(circle, line) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> meet(const basic_circle<T>& a, const basic_line<T>& b) {
-  return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(circle, circle) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> meet(const basic_circle<T>& a, const basic_circle<T>& b) {
-  return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(circle, sphere) -> point_pair
 template <class T>
 basic_point_pair<T> meet(const basic_circle<T>& a, const basic_sphere<T>& b) {
-  return basic_point_pair<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(circle, plane) -> point_pair
 template <class T>
 basic_point_pair<T> meet(const basic_circle<T>& a, const basic_plane<T>& b) {
-  return basic_point_pair<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(circle, pseudoscalar) -> circle
 template <class T>
 basic_circle<T> meet(const basic_circle<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_circle<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_circle<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(circle, rotor) -> scalar
 template <class T>
 T meet(const basic_circle<T>& a, const basic_rotor<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(circle, translator) -> scalar
 template <class T>
 T meet(const basic_circle<T>& a, const basic_translator<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(circle, motor) -> motor
 template <class T>
 basic_motor<T> meet(const basic_circle<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_motor<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(sphere, normalized_point) -> scalar
 template <class T>
 T meet(const basic_sphere<T>& a, const basic_normalized_point<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(sphere, dual_sphere) -> scalar
 template <class T>
 T meet(const basic_sphere<T>& a, const basic_dual_sphere<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(sphere, dual_plane) -> scalar
 template <class T>
 T meet(const basic_sphere<T>& a, const basic_dual_plane<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(sphere, euclidean_vector) -> scalar
 template <class T>
 T meet(const basic_sphere<T>& a, const basic_euclidean_vector<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(sphere, flat_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> meet(const basic_sphere<T>& a, const basic_flat_point<T>& b) {
-  return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(sphere, euclidean_bivector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> meet(const basic_sphere<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_euclidean_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(sphere, point_pair) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> meet(const basic_sphere<T>& a, const basic_point_pair<T>& b) {
-  return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(sphere, dual_line) -> dual_plane
 template <class T>
 basic_dual_plane<T> meet(const basic_sphere<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(sphere, line) -> point_pair
 template <class T>
 basic_point_pair<T> meet(const basic_sphere<T>& a, const basic_line<T>& b) {
-  return basic_point_pair<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(sphere, circle) -> point_pair
 template <class T>
 basic_point_pair<T> meet(const basic_sphere<T>& a, const basic_circle<T>& b) {
-  return basic_point_pair<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(sphere, pseudoscalar) -> sphere
 template <class T>
 basic_sphere<T> meet(const basic_sphere<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(sphere, rotor) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> meet(const basic_sphere<T>& a, const basic_rotor<T>& b) {
-  return basic_euclidean_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(sphere, translator) -> dual_plane
 template <class T>
 basic_dual_plane<T> meet(const basic_sphere<T>& a, const basic_translator<T>& b) {
-  return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(sphere, motor) -> mv
 template <class T>
 basic_mv<T> meet(const basic_sphere<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "meet(sphere, motor) -> mv: an mv result has no batch form");
   return meet(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // meet(plane, normalized_point) -> scalar
 template <class T>
 T meet(const basic_plane<T>& a, const basic_normalized_point<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(plane, dual_sphere) -> scalar
 template <class T>
 T meet(const basic_plane<T>& a, const basic_dual_sphere<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(plane, dual_plane) -> scalar
 template <class T>
 T meet(const basic_plane<T>& a, const basic_dual_plane<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(plane, euclidean_vector) -> scalar
 template <class T>
 T meet(const basic_plane<T>& a, const basic_euclidean_vector<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(plane, flat_point) -> dual_plane
 template <class T>
 basic_dual_plane<T> meet(const basic_plane<T>& a, const basic_flat_point<T>& b) {
-  return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(plane, euclidean_bivector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> meet(const basic_plane<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_euclidean_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(plane, point_pair) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> meet(const basic_plane<T>& a, const basic_point_pair<T>& b) {
-  return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(plane, dual_line) -> dual_plane
 template <class T>
 basic_dual_plane<T> meet(const basic_plane<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(plane, line) -> flat_point
 template <class T>
 basic_flat_point<T> meet(const basic_plane<T>& a, const basic_line<T>& b) {
-  return basic_flat_point<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(plane, circle) -> point_pair
 template <class T>
 basic_point_pair<T> meet(const basic_plane<T>& a, const basic_circle<T>& b) {
-  return basic_point_pair<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(plane, sphere) -> circle
 template <class T>
 basic_circle<T> meet(const basic_plane<T>& a, const basic_sphere<T>& b) {
-  return basic_circle<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_circle<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(plane, plane) -> line
 template <class T>
 basic_line<T> meet(const basic_plane<T>& a, const basic_plane<T>& b) {
-  return basic_line<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_line<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(plane, pseudoscalar) -> plane
 template <class T>
 basic_plane<T> meet(const basic_plane<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(plane, rotor) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> meet(const basic_plane<T>& a, const basic_rotor<T>& b) {
-  return basic_euclidean_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(plane, translator) -> dual_plane
 template <class T>
 basic_dual_plane<T> meet(const basic_plane<T>& a, const basic_translator<T>& b) {
-  return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(plane, motor) -> mv
 template <class T>
 basic_mv<T> meet(const basic_plane<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "meet(plane, motor) -> mv: an mv result has no batch form");
   return meet(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // meet(pseudoscalar, normalized_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> meet(const basic_pseudoscalar<T>& a, const basic_normalized_point<T>& b) {
-  return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(pseudoscalar, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> meet(const basic_pseudoscalar<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(pseudoscalar, dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> meet(const basic_pseudoscalar<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(pseudoscalar, euclidean_vector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> meet(const basic_pseudoscalar<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_euclidean_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(pseudoscalar, flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> meet(const basic_pseudoscalar<T>& a, const basic_flat_point<T>& b) {
-  return basic_flat_point<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(pseudoscalar, euclidean_bivector) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> meet(const basic_pseudoscalar<T>& a,
                                  const basic_euclidean_bivector<T>& b) {
-  return basic_euclidean_bivector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_euclidean_bivector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(pseudoscalar, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> meet(const basic_pseudoscalar<T>& a, const basic_point_pair<T>& b) {
-  return basic_point_pair<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(pseudoscalar, dual_line) -> dual_line
 template <class T>
 basic_dual_line<T> meet(const basic_pseudoscalar<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_line<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(pseudoscalar, line) -> line
 template <class T>
 basic_line<T> meet(const basic_pseudoscalar<T>& a, const basic_line<T>& b) {
-  return basic_line<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_line<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(pseudoscalar, circle) -> circle
 template <class T>
 basic_circle<T> meet(const basic_pseudoscalar<T>& a, const basic_circle<T>& b) {
-  return basic_circle<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_circle<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(pseudoscalar, sphere) -> sphere
 template <class T>
 basic_sphere<T> meet(const basic_pseudoscalar<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(pseudoscalar, plane) -> plane
 template <class T>
 basic_plane<T> meet(const basic_pseudoscalar<T>& a, const basic_plane<T>& b) {
-  return basic_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(pseudoscalar, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> meet(const basic_pseudoscalar<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(pseudoscalar, rotor) -> rotor
 template <class T>
 basic_rotor<T> meet(const basic_pseudoscalar<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(pseudoscalar, translator) -> translator
 template <class T>
 basic_translator<T> meet(const basic_pseudoscalar<T>& a, const basic_translator<T>& b) {
-  return basic_translator<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_translator<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(pseudoscalar, motor) -> motor
 template <class T>
 basic_motor<T> meet(const basic_pseudoscalar<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_motor<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(rotor, line) -> scalar
 template <class T>
 T meet(const basic_rotor<T>& a, const basic_line<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(rotor, circle) -> scalar
 template <class T>
 T meet(const basic_rotor<T>& a, const basic_circle<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(rotor, sphere) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> meet(const basic_rotor<T>& a, const basic_sphere<T>& b) {
-  return basic_euclidean_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(rotor, plane) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> meet(const basic_rotor<T>& a, const basic_plane<T>& b) {
-  return basic_euclidean_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(rotor, pseudoscalar) -> rotor
 template <class T>
 basic_rotor<T> meet(const basic_rotor<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_rotor<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(translator, circle) -> scalar
 template <class T>
 T meet(const basic_translator<T>& a, const basic_circle<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(translator, sphere) -> dual_plane
 template <class T>
 basic_dual_plane<T> meet(const basic_translator<T>& a, const basic_sphere<T>& b) {
-  return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(translator, plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> meet(const basic_translator<T>& a, const basic_plane<T>& b) {
-  return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(translator, pseudoscalar) -> translator
 template <class T>
 basic_translator<T> meet(const basic_translator<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_translator<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_translator<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(motor, normalized_point) -> scalar
 template <class T>
 T meet(const basic_motor<T>& a, [[maybe_unused]] const basic_normalized_point<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(motor, dual_sphere) -> scalar
 template <class T>
 T meet(const basic_motor<T>& a, const basic_dual_sphere<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(motor, flat_point) -> dual_plane
 template <class T>
 basic_dual_plane<T> meet(const basic_motor<T>& a, const basic_flat_point<T>& b) {
-  return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(motor, point_pair) -> dual_plane
 template <class T>
 basic_dual_plane<T> meet(const basic_motor<T>& a, const basic_point_pair<T>& b) {
-  return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(motor, line) -> translator
 template <class T>
 basic_translator<T> meet(const basic_motor<T>& a, const basic_line<T>& b) {
-  return basic_translator<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_translator<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(motor, circle) -> motor
 template <class T>
 basic_motor<T> meet(const basic_motor<T>& a, const basic_circle<T>& b) {
-  return basic_motor<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_motor<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(motor, sphere) -> mv
 template <class T>
 basic_mv<T> meet(const basic_motor<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "meet(motor, sphere) -> mv: an mv result has no batch form");
   return meet(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // meet(motor, plane) -> mv
 template <class T>
 basic_mv<T> meet(const basic_motor<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "meet(motor, plane) -> mv: an mv result has no batch form");
   return meet(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // meet(motor, pseudoscalar) -> motor
 template <class T>
 basic_motor<T> meet(const basic_motor<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_motor<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_motor<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(normalized_point, normalized_point) -> point_pair
 template <class T>
 basic_point_pair<T> join(const basic_normalized_point<T>& a, const basic_normalized_point<T>& b) {
-  return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(normalized_point, dual_sphere) -> point_pair
 template <class T>
 basic_point_pair<T> join(const basic_normalized_point<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(normalized_point, dual_plane) -> point_pair
 template <class T>
 basic_point_pair<T> join(const basic_normalized_point<T>& a, const basic_dual_plane<T>& b) {
-  return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(normalized_point, euclidean_vector) -> point_pair
 template <class T>
 basic_point_pair<T> join(const basic_normalized_point<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(normalized_point, flat_point) -> line
 template <class T>
 basic_line<T> join(const basic_normalized_point<T>& a, const basic_flat_point<T>& b) {
-  return basic_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(normalized_point, euclidean_bivector) -> circle
 template <class T>
 basic_circle<T> join(const basic_normalized_point<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(normalized_point, point_pair) -> circle
 template <class T>
 basic_circle<T> join(const basic_normalized_point<T>& a, const basic_point_pair<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(normalized_point, dual_line) -> circle
 template <class T>
 basic_circle<T> join(const basic_normalized_point<T>& a, const basic_dual_line<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(normalized_point, line) -> plane
 template <class T>
 basic_plane<T> join(const basic_normalized_point<T>& a, const basic_line<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(normalized_point, circle) -> sphere
 template <class T>
 basic_sphere<T> join(const basic_normalized_point<T>& a, const basic_circle<T>& b) {
-  return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(normalized_point, sphere) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_normalized_point<T>& a, const basic_sphere<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(normalized_point, plane) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_normalized_point<T>& a, const basic_plane<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(normalized_point, rotor) -> mv
 template <class T>
 basic_mv<T> join(const basic_normalized_point<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(normalized_point, rotor) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(normalized_point, translator) -> mv
 template <class T>
 basic_mv<T> join(const basic_normalized_point<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(normalized_point, translator) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(normalized_point, motor) -> mv
 template <class T>
 basic_mv<T> join(const basic_normalized_point<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(normalized_point, motor) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(dual_sphere, normalized_point) -> point_pair
 template <class T>
 basic_point_pair<T> join(const basic_dual_sphere<T>& a, const basic_normalized_point<T>& b) {
-  return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_sphere, dual_sphere) -> point_pair
 template <class T>
 basic_point_pair<T> join(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_sphere, dual_plane) -> point_pair
 template <class T>
 basic_point_pair<T> join(const basic_dual_sphere<T>& a, const basic_dual_plane<T>& b) {
-  return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_sphere, euclidean_vector) -> point_pair
 template <class T>
 basic_point_pair<T> join(const basic_dual_sphere<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_sphere, flat_point) -> line
 template <class T>
 basic_line<T> join(const basic_dual_sphere<T>& a, const basic_flat_point<T>& b) {
-  return basic_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_sphere, euclidean_bivector) -> circle
 template <class T>
 basic_circle<T> join(const basic_dual_sphere<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_sphere, point_pair) -> circle
 template <class T>
 basic_circle<T> join(const basic_dual_sphere<T>& a, const basic_point_pair<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_sphere, dual_line) -> circle
 template <class T>
 basic_circle<T> join(const basic_dual_sphere<T>& a, const basic_dual_line<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_sphere, line) -> plane
 template <class T>
 basic_plane<T> join(const basic_dual_sphere<T>& a, const basic_line<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_sphere, circle) -> sphere
 template <class T>
 basic_sphere<T> join(const basic_dual_sphere<T>& a, const basic_circle<T>& b) {
-  return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_sphere, sphere) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_dual_sphere<T>& a, const basic_sphere<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_sphere, plane) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_dual_sphere<T>& a, const basic_plane<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_sphere, rotor) -> mv
 template <class T>
 basic_mv<T> join(const basic_dual_sphere<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(dual_sphere, rotor) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(dual_sphere, translator) -> mv
 template <class T>
 basic_mv<T> join(const basic_dual_sphere<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(dual_sphere, translator) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(dual_sphere, motor) -> mv
 template <class T>
 basic_mv<T> join(const basic_dual_sphere<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(dual_sphere, motor) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(dual_plane, normalized_point) -> point_pair
 template <class T>
 basic_point_pair<T> join(const basic_dual_plane<T>& a, const basic_normalized_point<T>& b) {
-  return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_plane, dual_sphere) -> point_pair
 template <class T>
 basic_point_pair<T> join(const basic_dual_plane<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_plane, dual_plane) -> dual_line
 template <class T>
 basic_dual_line<T> join(const basic_dual_plane<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_plane, euclidean_vector) -> dual_line
 template <class T>
 basic_dual_line<T> join(const basic_dual_plane<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_dual_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_plane, flat_point) -> line
 template <class T>
 basic_line<T> join(const basic_dual_plane<T>& a, const basic_flat_point<T>& b) {
-  return basic_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_plane, euclidean_bivector) -> circle
 template <class T>
 basic_circle<T> join(const basic_dual_plane<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_plane, point_pair) -> circle
 template <class T>
 basic_circle<T> join(const basic_dual_plane<T>& a, const basic_point_pair<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_plane, dual_line) -> circle
 template <class T>
 basic_circle<T> join(const basic_dual_plane<T>& a, const basic_dual_line<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_plane, line) -> plane
 template <class T>
 basic_plane<T> join(const basic_dual_plane<T>& a, const basic_line<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_plane, circle) -> sphere
 template <class T>
 basic_sphere<T> join(const basic_dual_plane<T>& a, const basic_circle<T>& b) {
-  return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_plane, sphere) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_dual_plane<T>& a, const basic_sphere<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_plane, plane) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_dual_plane<T>& a, const basic_plane<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_plane, rotor) -> mv
 template <class T>
 basic_mv<T> join(const basic_dual_plane<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(dual_plane, rotor) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(dual_plane, translator) -> mv
 template <class T>
 basic_mv<T> join(const basic_dual_plane<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(dual_plane, translator) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(dual_plane, motor) -> mv
 template <class T>
 basic_mv<T> join(const basic_dual_plane<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(dual_plane, motor) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(euclidean_vector, normalized_point) -> point_pair
 template <class T>
 basic_point_pair<T> join(const basic_euclidean_vector<T>& a, const basic_normalized_point<T>& b) {
-  return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_vector, dual_sphere) -> point_pair
 template <class T>
 basic_point_pair<T> join(const basic_euclidean_vector<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_vector, dual_plane) -> dual_line
 template <class T>
 basic_dual_line<T> join(const basic_euclidean_vector<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_vector, euclidean_vector) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> join(const basic_euclidean_vector<T>& a,
                                  const basic_euclidean_vector<T>& b) {
-  return basic_euclidean_bivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_euclidean_bivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_vector, flat_point) -> line
 template <class T>
 basic_line<T> join(const basic_euclidean_vector<T>& a, const basic_flat_point<T>& b) {
-  return basic_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_vector, euclidean_bivector) -> circle
 template <class T>
 basic_circle<T> join(const basic_euclidean_vector<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_vector, point_pair) -> circle
 template <class T>
 basic_circle<T> join(const basic_euclidean_vector<T>& a, const basic_point_pair<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_vector, dual_line) -> circle
 template <class T>
 basic_circle<T> join(const basic_euclidean_vector<T>& a, const basic_dual_line<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_vector, line) -> plane
 template <class T>
 basic_plane<T> join(const basic_euclidean_vector<T>& a, const basic_line<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_vector, circle) -> sphere
 template <class T>
 basic_sphere<T> join(const basic_euclidean_vector<T>& a, const basic_circle<T>& b) {
-  return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_vector, sphere) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_euclidean_vector<T>& a, const basic_sphere<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_vector, plane) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_euclidean_vector<T>& a, const basic_plane<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_vector, rotor) -> mv
 template <class T>
 basic_mv<T> join(const basic_euclidean_vector<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(euclidean_vector, rotor) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(euclidean_vector, translator) -> mv
 template <class T>
 basic_mv<T> join(const basic_euclidean_vector<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(euclidean_vector, translator) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(euclidean_vector, motor) -> mv
 template <class T>
 basic_mv<T> join(const basic_euclidean_vector<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(euclidean_vector, motor) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(flat_point, normalized_point) -> line
 template <class T>
 basic_line<T> join(const basic_flat_point<T>& a, const basic_normalized_point<T>& b) {
-  return basic_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(flat_point, dual_sphere) -> line
 template <class T>
 basic_line<T> join(const basic_flat_point<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(flat_point, dual_plane) -> line
 template <class T>
 basic_line<T> join(const basic_flat_point<T>& a, const basic_dual_plane<T>& b) {
-  return basic_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(flat_point, euclidean_vector) -> line
 template <class T>
 basic_line<T> join(const basic_flat_point<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(flat_point, euclidean_bivector) -> plane
 template <class T>
 basic_plane<T> join(const basic_flat_point<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(flat_point, point_pair) -> plane
 template <class T>
 basic_plane<T> join(const basic_flat_point<T>& a, const basic_point_pair<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(flat_point, dual_line) -> plane
 template <class T>
 basic_plane<T> join(const basic_flat_point<T>& a, const basic_dual_line<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(flat_point, circle) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_flat_point<T>& a, const basic_circle<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(flat_point, rotor) -> mv
 template <class T>
 basic_mv<T> join(const basic_flat_point<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(flat_point, rotor) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(flat_point, translator) -> flat_point
 template <class T>
 basic_flat_point<T> join(const basic_flat_point<T>& a, const basic_translator<T>& b) {
-  return basic_flat_point<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(flat_point, motor) -> mv
 template <class T>
 basic_mv<T> join(const basic_flat_point<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(flat_point, motor) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(euclidean_bivector, normalized_point) -> circle
 template <class T>
 basic_circle<T> join(const basic_euclidean_bivector<T>& a, const basic_normalized_point<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_bivector, dual_sphere) -> circle
 template <class T>
 basic_circle<T> join(const basic_euclidean_bivector<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_bivector, dual_plane) -> circle
 template <class T>
 basic_circle<T> join(const basic_euclidean_bivector<T>& a, const basic_dual_plane<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_bivector, euclidean_vector) -> circle
 template <class T>
 basic_circle<T> join(const basic_euclidean_bivector<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_bivector, flat_point) -> plane
 template <class T>
 basic_plane<T> join(const basic_euclidean_bivector<T>& a, const basic_flat_point<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_bivector, point_pair) -> sphere
 template <class T>
 basic_sphere<T> join(const basic_euclidean_bivector<T>& a, const basic_point_pair<T>& b) {
-  return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_bivector, dual_line) -> plane
 template <class T>
 basic_plane<T> join(const basic_euclidean_bivector<T>& a, const basic_dual_line<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_bivector, line) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_euclidean_bivector<T>& a, const basic_line<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_bivector, circle) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_euclidean_bivector<T>& a, const basic_circle<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_bivector, rotor) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> join(const basic_euclidean_bivector<T>& a, const basic_rotor<T>& b) {
-  return basic_euclidean_bivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_euclidean_bivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_bivector, translator) -> motor
 template <class T>
 basic_motor<T> join(const basic_euclidean_bivector<T>& a, const basic_translator<T>& b) {
-  return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(euclidean_bivector, motor) -> motor
 template <class T>
 basic_motor<T> join(const basic_euclidean_bivector<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(point_pair, normalized_point) -> circle
 template <class T>
 basic_circle<T> join(const basic_point_pair<T>& a, const basic_normalized_point<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(point_pair, dual_sphere) -> circle
 template <class T>
 basic_circle<T> join(const basic_point_pair<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(point_pair, dual_plane) -> circle
 template <class T>
 basic_circle<T> join(const basic_point_pair<T>& a, const basic_dual_plane<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(point_pair, euclidean_vector) -> circle
 template <class T>
 basic_circle<T> join(const basic_point_pair<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(point_pair, flat_point) -> plane
 template <class T>
 basic_plane<T> join(const basic_point_pair<T>& a, const basic_flat_point<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(point_pair, euclidean_bivector) -> sphere
 template <class T>
 basic_sphere<T> join(const basic_point_pair<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(point_pair, point_pair) -> sphere
 template <class T>
 basic_sphere<T> join(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
-  return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(point_pair, dual_line) -> sphere
 template <class T>
 basic_sphere<T> join(const basic_point_pair<T>& a, const basic_dual_line<T>& b) {
-  return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(point_pair, line) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_point_pair<T>& a, const basic_line<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(point_pair, circle) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_point_pair<T>& a, const basic_circle<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(point_pair, rotor) -> mv
 template <class T>
 basic_mv<T> join(const basic_point_pair<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(point_pair, rotor) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(point_pair, translator) -> mv
 template <class T>
 basic_mv<T> join(const basic_point_pair<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(point_pair, translator) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(point_pair, motor) -> mv
 template <class T>
 basic_mv<T> join(const basic_point_pair<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(point_pair, motor) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(dual_line, normalized_point) -> circle
 template <class T>
 basic_circle<T> join(const basic_dual_line<T>& a, const basic_normalized_point<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_line, dual_sphere) -> circle
 template <class T>
 basic_circle<T> join(const basic_dual_line<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_line, dual_plane) -> circle
 template <class T>
 basic_circle<T> join(const basic_dual_line<T>& a, const basic_dual_plane<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_line, euclidean_vector) -> circle
 template <class T>
 basic_circle<T> join(const basic_dual_line<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_circle<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_line, flat_point) -> plane
 template <class T>
 basic_plane<T> join(const basic_dual_line<T>& a, const basic_flat_point<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_line, euclidean_bivector) -> plane
 template <class T>
 basic_plane<T> join(const basic_dual_line<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_line, point_pair) -> sphere
 template <class T>
 basic_sphere<T> join(const basic_dual_line<T>& a, const basic_point_pair<T>& b) {
-  return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_line, dual_line) -> plane
 template <class T>
 basic_plane<T> join(const basic_dual_line<T>& a, const basic_dual_line<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_line, line) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_dual_line<T>& a, const basic_line<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_line, circle) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_dual_line<T>& a, const basic_circle<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_line, rotor) -> motor
 template <class T>
 basic_motor<T> join(const basic_dual_line<T>& a, const basic_rotor<T>& b) {
-  return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_line, translator) -> motor
 template <class T>
 basic_motor<T> join(const basic_dual_line<T>& a, const basic_translator<T>& b) {
-  return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(dual_line, motor) -> motor
 template <class T>
 basic_motor<T> join(const basic_dual_line<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(line, normalized_point) -> plane
 template <class T>
 basic_plane<T> join(const basic_line<T>& a, const basic_normalized_point<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(line, dual_sphere) -> plane
 template <class T>
 basic_plane<T> join(const basic_line<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(line, dual_plane) -> plane
 template <class T>
 basic_plane<T> join(const basic_line<T>& a, const basic_dual_plane<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(line, euclidean_vector) -> plane
 template <class T>
 basic_plane<T> join(const basic_line<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(line, euclidean_bivector) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_line<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(line, point_pair) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_line<T>& a, const basic_point_pair<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(line, dual_line) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_line<T>& a, const basic_dual_line<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(line, rotor) -> mv
 template <class T>
 basic_mv<T> join(const basic_line<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(line, rotor) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(line, translator) -> line
 template <class T>
 basic_line<T> join(const basic_line<T>& a, const basic_translator<T>& b) {
-  return basic_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(line, motor) -> mv
 template <class T>
 basic_mv<T> join(const basic_line<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(line, motor) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(circle, normalized_point) -> sphere
 template <class T>
 basic_sphere<T> join(const basic_circle<T>& a, const basic_normalized_point<T>& b) {
-  return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(circle, dual_sphere) -> sphere
 template <class T>
 basic_sphere<T> join(const basic_circle<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(circle, dual_plane) -> sphere
 template <class T>
 basic_sphere<T> join(const basic_circle<T>& a, const basic_dual_plane<T>& b) {
-  return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(circle, euclidean_vector) -> sphere
 template <class T>
 basic_sphere<T> join(const basic_circle<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(circle, flat_point) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_circle<T>& a, const basic_flat_point<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(circle, euclidean_bivector) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_circle<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(circle, point_pair) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_circle<T>& a, const basic_point_pair<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(circle, dual_line) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_circle<T>& a, const basic_dual_line<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(circle, rotor) -> mv
 template <class T>
 basic_mv<T> join(const basic_circle<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(circle, rotor) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(circle, translator) -> mv
 template <class T>
 basic_mv<T> join(const basic_circle<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(circle, translator) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(circle, motor) -> mv
 template <class T>
 basic_mv<T> join(const basic_circle<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(circle, motor) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(sphere, normalized_point) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_sphere<T>& a, const basic_normalized_point<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(sphere, dual_sphere) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_sphere<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(sphere, dual_plane) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_sphere<T>& a, const basic_dual_plane<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(sphere, euclidean_vector) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_sphere<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(sphere, rotor) -> sphere
 template <class T>
 basic_sphere<T> join(const basic_sphere<T>& a, const basic_rotor<T>& b) {
-  return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(sphere, translator) -> sphere
 template <class T>
 basic_sphere<T> join(const basic_sphere<T>& a, const basic_translator<T>& b) {
-  return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(sphere, motor) -> sphere
 template <class T>
 basic_sphere<T> join(const basic_sphere<T>& a, const basic_motor<T>& b) {
-  return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(plane, normalized_point) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_plane<T>& a, const basic_normalized_point<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(plane, dual_sphere) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_plane<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(plane, dual_plane) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_plane<T>& a, const basic_dual_plane<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(plane, euclidean_vector) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_plane<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(plane, rotor) -> plane
 template <class T>
 basic_plane<T> join(const basic_plane<T>& a, const basic_rotor<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(plane, translator) -> plane
 template <class T>
 basic_plane<T> join(const basic_plane<T>& a, const basic_translator<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(plane, motor) -> plane
 template <class T>
 basic_plane<T> join(const basic_plane<T>& a, const basic_motor<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(pseudoscalar, rotor) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_pseudoscalar<T>& a, const basic_rotor<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(pseudoscalar, translator) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_pseudoscalar<T>& a, const basic_translator<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(pseudoscalar, motor) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_pseudoscalar<T>& a, const basic_motor<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(rotor, normalized_point) -> mv
 template <class T>
 basic_mv<T> join(const basic_rotor<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(rotor, normalized_point) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(rotor, dual_sphere) -> mv
 template <class T>
 basic_mv<T> join(const basic_rotor<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(rotor, dual_sphere) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(rotor, dual_plane) -> mv
 template <class T>
 basic_mv<T> join(const basic_rotor<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(rotor, dual_plane) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(rotor, euclidean_vector) -> mv
 template <class T>
 basic_mv<T> join(const basic_rotor<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(rotor, euclidean_vector) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(rotor, flat_point) -> mv
 template <class T>
 basic_mv<T> join(const basic_rotor<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(rotor, flat_point) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(rotor, euclidean_bivector) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> join(const basic_rotor<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_euclidean_bivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_euclidean_bivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(rotor, point_pair) -> mv
 template <class T>
 basic_mv<T> join(const basic_rotor<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(rotor, point_pair) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(rotor, dual_line) -> motor
 template <class T>
 basic_motor<T> join(const basic_rotor<T>& a, const basic_dual_line<T>& b) {
-  return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(rotor, line) -> mv
 template <class T>
 basic_mv<T> join(const basic_rotor<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(rotor, line) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(rotor, circle) -> mv
 template <class T>
 basic_mv<T> join(const basic_rotor<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(rotor, circle) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(rotor, sphere) -> sphere
 template <class T>
 basic_sphere<T> join(const basic_rotor<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(rotor, plane) -> plane
 template <class T>
 basic_plane<T> join(const basic_rotor<T>& a, const basic_plane<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(rotor, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_rotor<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(rotor, rotor) -> rotor
 template <class T>
 basic_rotor<T> join(const basic_rotor<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(rotor, translator) -> motor
 template <class T>
 basic_motor<T> join(const basic_rotor<T>& a, const basic_translator<T>& b) {
-  return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(rotor, motor) -> motor
 template <class T>
 basic_motor<T> join(const basic_rotor<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(translator, normalized_point) -> mv
 template <class T>
 basic_mv<T> join(const basic_translator<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(translator, normalized_point) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(translator, dual_sphere) -> mv
 template <class T>
 basic_mv<T> join(const basic_translator<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(translator, dual_sphere) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(translator, dual_plane) -> mv
 template <class T>
 basic_mv<T> join(const basic_translator<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(translator, dual_plane) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(translator, euclidean_vector) -> mv
 template <class T>
 basic_mv<T> join(const basic_translator<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(translator, euclidean_vector) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(translator, flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> join(const basic_translator<T>& a, const basic_flat_point<T>& b) {
-  return basic_flat_point<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(translator, euclidean_bivector) -> motor
 template <class T>
 basic_motor<T> join(const basic_translator<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(translator, point_pair) -> mv
 template <class T>
 basic_mv<T> join(const basic_translator<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(translator, point_pair) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(translator, dual_line) -> motor
 template <class T>
 basic_motor<T> join(const basic_translator<T>& a, const basic_dual_line<T>& b) {
-  return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(translator, line) -> line
 template <class T>
 basic_line<T> join(const basic_translator<T>& a, const basic_line<T>& b) {
-  return basic_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_line<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(translator, circle) -> mv
 template <class T>
 basic_mv<T> join(const basic_translator<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(translator, circle) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(translator, sphere) -> sphere
 template <class T>
 basic_sphere<T> join(const basic_translator<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(translator, plane) -> plane
 template <class T>
 basic_plane<T> join(const basic_translator<T>& a, const basic_plane<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(translator, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_translator<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(translator, rotor) -> motor
 template <class T>
 basic_motor<T> join(const basic_translator<T>& a, const basic_rotor<T>& b) {
-  return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(translator, translator) -> translator
 template <class T>
 basic_translator<T> join(const basic_translator<T>& a, const basic_translator<T>& b) {
-  return basic_translator<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_translator<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(translator, motor) -> motor
 template <class T>
 basic_motor<T> join(const basic_translator<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(motor, normalized_point) -> mv
 template <class T>
 basic_mv<T> join(const basic_motor<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(motor, normalized_point) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(motor, dual_sphere) -> mv
 template <class T>
 basic_mv<T> join(const basic_motor<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(motor, dual_sphere) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(motor, dual_plane) -> mv
 template <class T>
 basic_mv<T> join(const basic_motor<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(motor, dual_plane) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(motor, euclidean_vector) -> mv
 template <class T>
 basic_mv<T> join(const basic_motor<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(motor, euclidean_vector) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(motor, flat_point) -> mv
 template <class T>
 basic_mv<T> join(const basic_motor<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(motor, flat_point) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(motor, euclidean_bivector) -> motor
 template <class T>
 basic_motor<T> join(const basic_motor<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(motor, point_pair) -> mv
 template <class T>
 basic_mv<T> join(const basic_motor<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(motor, point_pair) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(motor, dual_line) -> motor
 template <class T>
 basic_motor<T> join(const basic_motor<T>& a, const basic_dual_line<T>& b) {
-  return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(motor, line) -> mv
 template <class T>
 basic_mv<T> join(const basic_motor<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(motor, line) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(motor, circle) -> mv
 template <class T>
 basic_mv<T> join(const basic_motor<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(motor, circle) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(motor, sphere) -> sphere
 template <class T>
 basic_sphere<T> join(const basic_motor<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(motor, plane) -> plane
 template <class T>
 basic_plane<T> join(const basic_motor<T>& a, const basic_plane<T>& b) {
-  return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_plane<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(motor, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> join(const basic_motor<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(motor, rotor) -> motor
 template <class T>
 basic_motor<T> join(const basic_motor<T>& a, const basic_rotor<T>& b) {
-  return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(motor, translator) -> motor
 template <class T>
 basic_motor<T> join(const basic_motor<T>& a, const basic_translator<T>& b) {
-  return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(motor, motor) -> motor
 template <class T>
 basic_motor<T> join(const basic_motor<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_motor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(normalized_point, normalized_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_normalized_point<T>& a, const basic_normalized_point<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(normalized_point, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_normalized_point<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(normalized_point, dual_plane) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_normalized_point<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(normalized_point, euclidean_vector) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_normalized_point<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(normalized_point, flat_point) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_normalized_point<T>& a, const basic_flat_point<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(normalized_point, euclidean_bivector) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_normalized_point<T>& a,
                           const basic_euclidean_bivector<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(normalized_point, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_normalized_point<T>& a, const basic_point_pair<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(normalized_point, dual_line) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_normalized_point<T>& a, const basic_dual_line<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(normalized_point, line) -> circle
 template <class T>
 basic_circle<T> apply(const basic_normalized_point<T>& a, const basic_line<T>& b) {
-  return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(normalized_point, circle) -> circle
 template <class T>
 basic_circle<T> apply(const basic_normalized_point<T>& a, const basic_circle<T>& b) {
-  return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(normalized_point, sphere) -> sphere
 template <class T>
 basic_sphere<T> apply(const basic_normalized_point<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(normalized_point, plane) -> sphere
 template <class T>
 basic_sphere<T> apply(const basic_normalized_point<T>& a, const basic_plane<T>& b) {
-  return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(normalized_point, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> apply(const basic_normalized_point<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(normalized_point, rotor) -> mv
 template <class T>
 basic_mv<T> apply(const basic_normalized_point<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(normalized_point, rotor) -> mv: an mv result has no batch form");
   return apply(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // apply(normalized_point, translator) -> mv
 template <class T>
 basic_mv<T> apply(const basic_normalized_point<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(normalized_point, translator) -> mv: an mv result has no batch form");
   return apply(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // apply(normalized_point, motor) -> mv
 template <class T>
 basic_mv<T> apply(const basic_normalized_point<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(normalized_point, motor) -> mv: an mv result has no batch form");
   return apply(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // apply(dual_sphere, normalized_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_dual_sphere<T>& a, const basic_normalized_point<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_sphere, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_sphere, dual_plane) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_dual_sphere<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_sphere, euclidean_vector) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_dual_sphere<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_sphere, flat_point) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_dual_sphere<T>& a, const basic_flat_point<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_sphere, euclidean_bivector) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_dual_sphere<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_sphere, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_dual_sphere<T>& a, const basic_point_pair<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_sphere, dual_line) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_dual_sphere<T>& a, const basic_dual_line<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_sphere, line) -> circle
 template <class T>
 basic_circle<T> apply(const basic_dual_sphere<T>& a, const basic_line<T>& b) {
-  return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_sphere, circle) -> circle
 template <class T>
 basic_circle<T> apply(const basic_dual_sphere<T>& a, const basic_circle<T>& b) {
-  return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_sphere, sphere) -> sphere
 template <class T>
 basic_sphere<T> apply(const basic_dual_sphere<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_sphere, plane) -> sphere
 template <class T>
 basic_sphere<T> apply(const basic_dual_sphere<T>& a, const basic_plane<T>& b) {
-  return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_sphere, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> apply(const basic_dual_sphere<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_sphere, rotor) -> mv
 template <class T>
 basic_mv<T> apply(const basic_dual_sphere<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(dual_sphere, rotor) -> mv: an mv result has no batch form");
   return apply(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // apply(dual_sphere, translator) -> mv
 template <class T>
 basic_mv<T> apply(const basic_dual_sphere<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(dual_sphere, translator) -> mv: an mv result has no batch form");
   return apply(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // apply(dual_sphere, motor) -> mv
 template <class T>
 basic_mv<T> apply(const basic_dual_sphere<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(dual_sphere, motor) -> mv: an mv result has no batch form");
   return apply(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // apply(dual_plane, normalized_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_dual_plane<T>& a, const basic_normalized_point<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_plane, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_dual_plane<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_plane, dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> apply(const basic_dual_plane<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_plane, euclidean_vector) -> dual_plane
 template <class T>
 basic_dual_plane<T> apply(const basic_dual_plane<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_plane, flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> apply(const basic_dual_plane<T>& a, const basic_flat_point<T>& b) {
-  return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_plane, euclidean_bivector) -> dual_line
 template <class T>
 basic_dual_line<T> apply(const basic_dual_plane<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_plane, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_dual_plane<T>& a, const basic_point_pair<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_plane, dual_line) -> dual_line
 template <class T>
 basic_dual_line<T> apply(const basic_dual_plane<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_plane, line) -> line
 template <class T>
 basic_line<T> apply(const basic_dual_plane<T>& a, const basic_line<T>& b) {
-  return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_plane, circle) -> circle
 template <class T>
 basic_circle<T> apply(const basic_dual_plane<T>& a, const basic_circle<T>& b) {
-  return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_plane, sphere) -> sphere
 template <class T>
 basic_sphere<T> apply(const basic_dual_plane<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_plane, plane) -> plane
 template <class T>
 basic_plane<T> apply(const basic_dual_plane<T>& a, const basic_plane<T>& b) {
-  return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_plane, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> apply(const basic_dual_plane<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_plane, rotor) -> motor
 template <class T>
 basic_motor<T> apply(const basic_dual_plane<T>& a, const basic_rotor<T>& b) {
-  return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_plane, translator) -> translator
 template <class T>
 basic_translator<T> apply(const basic_dual_plane<T>& a, const basic_translator<T>& b) {
-  return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_plane, motor) -> motor
 template <class T>
 basic_motor<T> apply(const basic_dual_plane<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_vector, normalized_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_euclidean_vector<T>& a, const basic_normalized_point<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_vector, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_euclidean_vector<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_vector, dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> apply(const basic_euclidean_vector<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_vector, euclidean_vector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> apply(const basic_euclidean_vector<T>& a,
                                 const basic_euclidean_vector<T>& b) {
-  return basic_euclidean_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_vector, flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> apply(const basic_euclidean_vector<T>& a, const basic_flat_point<T>& b) {
-  return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_vector, euclidean_bivector) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> apply(const basic_euclidean_vector<T>& a,
                                   const basic_euclidean_bivector<T>& b) {
-  return basic_euclidean_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_euclidean_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_vector, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_euclidean_vector<T>& a, const basic_point_pair<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_vector, dual_line) -> dual_line
 template <class T>
 basic_dual_line<T> apply(const basic_euclidean_vector<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_vector, line) -> line
 template <class T>
 basic_line<T> apply(const basic_euclidean_vector<T>& a, const basic_line<T>& b) {
-  return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_vector, circle) -> circle
 template <class T>
 basic_circle<T> apply(const basic_euclidean_vector<T>& a, const basic_circle<T>& b) {
-  return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_vector, sphere) -> sphere
 template <class T>
 basic_sphere<T> apply(const basic_euclidean_vector<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_vector, plane) -> plane
 template <class T>
 basic_plane<T> apply(const basic_euclidean_vector<T>& a, const basic_plane<T>& b) {
-  return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_vector, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> apply(const basic_euclidean_vector<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_vector, rotor) -> rotor
 template <class T>
 basic_rotor<T> apply(const basic_euclidean_vector<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_vector, translator) -> translator
 template <class T>
 basic_translator<T> apply(const basic_euclidean_vector<T>& a, const basic_translator<T>& b) {
-  return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_vector, motor) -> motor
 template <class T>
 basic_motor<T> apply(const basic_euclidean_vector<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(flat_point, normalized_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_flat_point<T>& a, const basic_normalized_point<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(flat_point, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_flat_point<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(flat_point, dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> apply(const basic_flat_point<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(flat_point, euclidean_vector) -> dual_plane
 template <class T>
 basic_dual_plane<T> apply(const basic_flat_point<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(flat_point, flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> apply(const basic_flat_point<T>& a, const basic_flat_point<T>& b) {
-  return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(flat_point, euclidean_bivector) -> dual_line
 template <class T>
 basic_dual_line<T> apply(const basic_flat_point<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(flat_point, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_flat_point<T>& a, const basic_point_pair<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(flat_point, dual_line) -> dual_line
 template <class T>
 basic_dual_line<T> apply(const basic_flat_point<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(flat_point, line) -> line
 template <class T>
 basic_line<T> apply(const basic_flat_point<T>& a, const basic_line<T>& b) {
-  return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(flat_point, circle) -> circle
 template <class T>
 basic_circle<T> apply(const basic_flat_point<T>& a, const basic_circle<T>& b) {
-  return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(flat_point, sphere) -> sphere
 template <class T>
 basic_sphere<T> apply(const basic_flat_point<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(flat_point, plane) -> plane
 template <class T>
 basic_plane<T> apply(const basic_flat_point<T>& a, const basic_plane<T>& b) {
-  return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(flat_point, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> apply(const basic_flat_point<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(flat_point, rotor) -> motor
 template <class T>
 basic_motor<T> apply(const basic_flat_point<T>& a, const basic_rotor<T>& b) {
-  return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(flat_point, translator) -> translator
 template <class T>
 basic_translator<T> apply(const basic_flat_point<T>& a, const basic_translator<T>& b) {
-  return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(flat_point, motor) -> motor
 template <class T>
 basic_motor<T> apply(const basic_flat_point<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_bivector, normalized_point) -> normalized_point
 template <class T>
 basic_normalized_point<T> apply(const basic_euclidean_bivector<T>& a,
                                 const basic_normalized_point<T>& b) {
-  return basic_normalized_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_normalized_point<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_normalized_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_bivector, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_euclidean_bivector<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_bivector, dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> apply(const basic_euclidean_bivector<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_bivector, euclidean_vector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> apply(const basic_euclidean_bivector<T>& a,
                                 const basic_euclidean_vector<T>& b) {
-  return basic_euclidean_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_bivector, flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> apply(const basic_euclidean_bivector<T>& a, const basic_flat_point<T>& b) {
-  return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_bivector, euclidean_bivector) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> apply(const basic_euclidean_bivector<T>& a,
                                   const basic_euclidean_bivector<T>& b) {
-  return basic_euclidean_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_euclidean_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_bivector, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_euclidean_bivector<T>& a, const basic_point_pair<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_bivector, dual_line) -> dual_line
 template <class T>
 basic_dual_line<T> apply(const basic_euclidean_bivector<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_bivector, line) -> line
 template <class T>
 basic_line<T> apply(const basic_euclidean_bivector<T>& a, const basic_line<T>& b) {
-  return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_bivector, circle) -> circle
 template <class T>
 basic_circle<T> apply(const basic_euclidean_bivector<T>& a, const basic_circle<T>& b) {
-  return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_bivector, sphere) -> sphere
 template <class T>
 basic_sphere<T> apply(const basic_euclidean_bivector<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_bivector, plane) -> plane
 template <class T>
 basic_plane<T> apply(const basic_euclidean_bivector<T>& a, const basic_plane<T>& b) {
-  return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_bivector, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> apply(const basic_euclidean_bivector<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_bivector, rotor) -> rotor
 template <class T>
 basic_rotor<T> apply(const basic_euclidean_bivector<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_bivector, translator) -> translator
 template <class T>
 basic_translator<T> apply(const basic_euclidean_bivector<T>& a, const basic_translator<T>& b) {
-  return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(euclidean_bivector, motor) -> motor
 template <class T>
 basic_motor<T> apply(const basic_euclidean_bivector<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(point_pair, normalized_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_point_pair<T>& a, const basic_normalized_point<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(point_pair, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_point_pair<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(point_pair, dual_plane) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_point_pair<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(point_pair, euclidean_vector) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_point_pair<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(point_pair, flat_point) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_point_pair<T>& a, const basic_flat_point<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(point_pair, euclidean_bivector) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_point_pair<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(point_pair, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(point_pair, dual_line) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_point_pair<T>& a, const basic_dual_line<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(point_pair, line) -> circle
 template <class T>
 basic_circle<T> apply(const basic_point_pair<T>& a, const basic_line<T>& b) {
-  return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(point_pair, circle) -> circle
 template <class T>
 basic_circle<T> apply(const basic_point_pair<T>& a, const basic_circle<T>& b) {
-  return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(point_pair, sphere) -> sphere
 template <class T>
 basic_sphere<T> apply(const basic_point_pair<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(point_pair, plane) -> sphere
 template <class T>
 basic_sphere<T> apply(const basic_point_pair<T>& a, const basic_plane<T>& b) {
-  return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(point_pair, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> apply(const basic_point_pair<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(point_pair, rotor) -> mv
 template <class T>
 basic_mv<T> apply(const basic_point_pair<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(point_pair, rotor) -> mv: an mv result has no batch form");
   return apply(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // apply(point_pair, translator) -> mv
 template <class T>
 basic_mv<T> apply(const basic_point_pair<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(point_pair, translator) -> mv: an mv result has no batch form");
   return apply(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // apply(point_pair, motor) -> mv
 template <class T>
 basic_mv<T> apply(const basic_point_pair<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(point_pair, motor) -> mv: an mv result has no batch form");
   return apply(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // apply(dual_line, normalized_point) -> normalized_point
 template <class T>
 basic_normalized_point<T> apply(const basic_dual_line<T>& a, const basic_normalized_point<T>& b) {
-  return basic_normalized_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_normalized_point<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_normalized_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_line, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_dual_line<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_line, dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> apply(const basic_dual_line<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_line, euclidean_vector) -> dual_plane
 template <class T>
 basic_dual_plane<T> apply(const basic_dual_line<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_line, flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> apply(const basic_dual_line<T>& a, const basic_flat_point<T>& b) {
-  return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_line, euclidean_bivector) -> dual_line
 template <class T>
 basic_dual_line<T> apply(const basic_dual_line<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_line, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_dual_line<T>& a, const basic_point_pair<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_line, dual_line) -> dual_line
 template <class T>
 basic_dual_line<T> apply(const basic_dual_line<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_line, line) -> line
 template <class T>
 basic_line<T> apply(const basic_dual_line<T>& a, const basic_line<T>& b) {
-  return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_line, circle) -> circle
 template <class T>
 basic_circle<T> apply(const basic_dual_line<T>& a, const basic_circle<T>& b) {
-  return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_line, sphere) -> sphere
 template <class T>
 basic_sphere<T> apply(const basic_dual_line<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_line, plane) -> plane
 template <class T>
 basic_plane<T> apply(const basic_dual_line<T>& a, const basic_plane<T>& b) {
-  return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_line, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> apply(const basic_dual_line<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_line, rotor) -> motor
 template <class T>
 basic_motor<T> apply(const basic_dual_line<T>& a, const basic_rotor<T>& b) {
-  return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_line, translator) -> translator
 template <class T>
 basic_translator<T> apply(const basic_dual_line<T>& a, const basic_translator<T>& b) {
-  return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(dual_line, motor) -> motor
 template <class T>
 basic_motor<T> apply(const basic_dual_line<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(line, normalized_point) -> normalized_point
 template <class T>
 basic_normalized_point<T> apply(const basic_line<T>& a, const basic_normalized_point<T>& b) {
-  return basic_normalized_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_normalized_point<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_normalized_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(line, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_line<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(line, dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> apply(const basic_line<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(line, euclidean_vector) -> dual_plane
 template <class T>
 basic_dual_plane<T> apply(const basic_line<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(line, flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> apply(const basic_line<T>& a, const basic_flat_point<T>& b) {
-  return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(line, euclidean_bivector) -> dual_line
 template <class T>
 basic_dual_line<T> apply(const basic_line<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(line, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_line<T>& a, const basic_point_pair<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(line, dual_line) -> dual_line
 template <class T>
 basic_dual_line<T> apply(const basic_line<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(line, line) -> line
 template <class T>
 basic_line<T> apply(const basic_line<T>& a, const basic_line<T>& b) {
-  return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(line, circle) -> circle
 template <class T>
 basic_circle<T> apply(const basic_line<T>& a, const basic_circle<T>& b) {
-  return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(line, sphere) -> sphere
 template <class T>
 basic_sphere<T> apply(const basic_line<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(line, plane) -> plane
 template <class T>
 basic_plane<T> apply(const basic_line<T>& a, const basic_plane<T>& b) {
-  return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(line, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> apply(const basic_line<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(line, rotor) -> motor
 template <class T>
 basic_motor<T> apply(const basic_line<T>& a, const basic_rotor<T>& b) {
-  return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(line, translator) -> translator
 template <class T>
 basic_translator<T> apply(const basic_line<T>& a, const basic_translator<T>& b) {
-  return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(line, motor) -> motor
 template <class T>
 basic_motor<T> apply(const basic_line<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(circle, normalized_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_circle<T>& a, const basic_normalized_point<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(circle, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_circle<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(circle, dual_plane) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_circle<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(circle, euclidean_vector) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_circle<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(circle, flat_point) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_circle<T>& a, const basic_flat_point<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(circle, euclidean_bivector) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_circle<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(circle, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_circle<T>& a, const basic_point_pair<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(circle, dual_line) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_circle<T>& a, const basic_dual_line<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(circle, line) -> circle
 template <class T>
 basic_circle<T> apply(const basic_circle<T>& a, const basic_line<T>& b) {
-  return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(circle, circle) -> circle
 template <class T>
 basic_circle<T> apply(const basic_circle<T>& a, const basic_circle<T>& b) {
-  return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(circle, sphere) -> sphere
 template <class T>
 basic_sphere<T> apply(const basic_circle<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(circle, plane) -> sphere
 template <class T>
 basic_sphere<T> apply(const basic_circle<T>& a, const basic_plane<T>& b) {
-  return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(circle, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> apply(const basic_circle<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(circle, rotor) -> mv
 template <class T>
 basic_mv<T> apply(const basic_circle<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(circle, rotor) -> mv: an mv result has no batch form");
   return apply(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // apply(circle, translator) -> mv
 template <class T>
 basic_mv<T> apply(const basic_circle<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(circle, translator) -> mv: an mv result has no batch form");
   return apply(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // apply(circle, motor) -> mv
 template <class T>
 basic_mv<T> apply(const basic_circle<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(circle, motor) -> mv: an mv result has no batch form");
   return apply(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // apply(sphere, normalized_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_sphere<T>& a, const basic_normalized_point<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(sphere, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_sphere<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(sphere, dual_plane) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_sphere<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(sphere, euclidean_vector) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_sphere<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(sphere, flat_point) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_sphere<T>& a, const basic_flat_point<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(sphere, euclidean_bivector) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_sphere<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(sphere, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_sphere<T>& a, const basic_point_pair<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(sphere, dual_line) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_sphere<T>& a, const basic_dual_line<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(sphere, line) -> circle
 template <class T>
 basic_circle<T> apply(const basic_sphere<T>& a, const basic_line<T>& b) {
-  return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(sphere, circle) -> circle
 template <class T>
 basic_circle<T> apply(const basic_sphere<T>& a, const basic_circle<T>& b) {
-  return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(sphere, sphere) -> sphere
 template <class T>
 basic_sphere<T> apply(const basic_sphere<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(sphere, plane) -> sphere
 template <class T>
 basic_sphere<T> apply(const basic_sphere<T>& a, const basic_plane<T>& b) {
-  return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(sphere, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> apply(const basic_sphere<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(sphere, rotor) -> mv
 template <class T>
 basic_mv<T> apply(const basic_sphere<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(sphere, rotor) -> mv: an mv result has no batch form");
   return apply(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // apply(sphere, translator) -> mv
 template <class T>
 basic_mv<T> apply(const basic_sphere<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(sphere, translator) -> mv: an mv result has no batch form");
   return apply(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // apply(sphere, motor) -> mv
 template <class T>
 basic_mv<T> apply(const basic_sphere<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(sphere, motor) -> mv: an mv result has no batch form");
   return apply(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // apply(plane, normalized_point) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_plane<T>& a, const basic_normalized_point<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(plane, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_plane<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(plane, dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> apply(const basic_plane<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(plane, euclidean_vector) -> dual_plane
 template <class T>
 basic_dual_plane<T> apply(const basic_plane<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(plane, flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> apply(const basic_plane<T>& a, const basic_flat_point<T>& b) {
-  return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(plane, euclidean_bivector) -> dual_line
 template <class T>
 basic_dual_line<T> apply(const basic_plane<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(plane, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_plane<T>& a, const basic_point_pair<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(plane, dual_line) -> dual_line
 template <class T>
 basic_dual_line<T> apply(const basic_plane<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(plane, line) -> line
 template <class T>
 basic_line<T> apply(const basic_plane<T>& a, const basic_line<T>& b) {
-  return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(plane, circle) -> circle
 template <class T>
 basic_circle<T> apply(const basic_plane<T>& a, const basic_circle<T>& b) {
-  return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(plane, sphere) -> sphere
 template <class T>
 basic_sphere<T> apply(const basic_plane<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(plane, plane) -> plane
 template <class T>
 basic_plane<T> apply(const basic_plane<T>& a, const basic_plane<T>& b) {
-  return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(plane, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> apply(const basic_plane<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(plane, rotor) -> motor
 template <class T>
 basic_motor<T> apply(const basic_plane<T>& a, const basic_rotor<T>& b) {
-  return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(plane, translator) -> translator
 template <class T>
 basic_translator<T> apply(const basic_plane<T>& a, const basic_translator<T>& b) {
-  return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(plane, motor) -> motor
 template <class T>
 basic_motor<T> apply(const basic_plane<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(pseudoscalar, normalized_point) -> normalized_point
 template <class T>
 basic_normalized_point<T> apply(const basic_pseudoscalar<T>& a,
                                 const basic_normalized_point<T>& b) {
-  return basic_normalized_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_normalized_point<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_normalized_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(pseudoscalar, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_pseudoscalar<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(pseudoscalar, dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> apply(const basic_pseudoscalar<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(pseudoscalar, euclidean_vector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> apply(const basic_pseudoscalar<T>& a,
                                 const basic_euclidean_vector<T>& b) {
-  return basic_euclidean_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(pseudoscalar, flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> apply(const basic_pseudoscalar<T>& a, const basic_flat_point<T>& b) {
-  return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(pseudoscalar, euclidean_bivector) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> apply(const basic_pseudoscalar<T>& a,
                                   const basic_euclidean_bivector<T>& b) {
-  return basic_euclidean_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_euclidean_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(pseudoscalar, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_pseudoscalar<T>& a, const basic_point_pair<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(pseudoscalar, dual_line) -> dual_line
 template <class T>
 basic_dual_line<T> apply(const basic_pseudoscalar<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(pseudoscalar, line) -> line
 template <class T>
 basic_line<T> apply(const basic_pseudoscalar<T>& a, const basic_line<T>& b) {
-  return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(pseudoscalar, circle) -> circle
 template <class T>
 basic_circle<T> apply(const basic_pseudoscalar<T>& a, const basic_circle<T>& b) {
-  return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(pseudoscalar, sphere) -> sphere
 template <class T>
 basic_sphere<T> apply(const basic_pseudoscalar<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(pseudoscalar, plane) -> plane
 template <class T>
 basic_plane<T> apply(const basic_pseudoscalar<T>& a, const basic_plane<T>& b) {
-  return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(pseudoscalar, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> apply(const basic_pseudoscalar<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(pseudoscalar, rotor) -> rotor
 template <class T>
 basic_rotor<T> apply(const basic_pseudoscalar<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(pseudoscalar, translator) -> translator
 template <class T>
 basic_translator<T> apply(const basic_pseudoscalar<T>& a, const basic_translator<T>& b) {
-  return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(pseudoscalar, motor) -> motor
 template <class T>
 basic_motor<T> apply(const basic_pseudoscalar<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(rotor, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_rotor<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(rotor, dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> apply(const basic_rotor<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(rotor, euclidean_vector) -> euclidean_vector
 template <class T>
 basic_euclidean_vector<T> apply(const basic_rotor<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_euclidean_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_vector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_euclidean_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(rotor, flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> apply(const basic_rotor<T>& a, const basic_flat_point<T>& b) {
-  return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(rotor, euclidean_bivector) -> euclidean_bivector
 template <class T>
 basic_euclidean_bivector<T> apply(const basic_rotor<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_euclidean_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_euclidean_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(rotor, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_rotor<T>& a, const basic_point_pair<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(rotor, dual_line) -> dual_line
 template <class T>
 basic_dual_line<T> apply(const basic_rotor<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(rotor, line) -> line
 template <class T>
 basic_line<T> apply(const basic_rotor<T>& a, const basic_line<T>& b) {
-  return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(rotor, circle) -> circle
 template <class T>
 basic_circle<T> apply(const basic_rotor<T>& a, const basic_circle<T>& b) {
-  return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(rotor, sphere) -> sphere
 template <class T>
 basic_sphere<T> apply(const basic_rotor<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(rotor, plane) -> plane
 template <class T>
 basic_plane<T> apply(const basic_rotor<T>& a, const basic_plane<T>& b) {
-  return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(rotor, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> apply(const basic_rotor<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(rotor, rotor) -> rotor
 template <class T>
 basic_rotor<T> apply(const basic_rotor<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(rotor, translator) -> translator
 template <class T>
 basic_translator<T> apply(const basic_rotor<T>& a, const basic_translator<T>& b) {
-  return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(rotor, motor) -> motor
 template <class T>
 basic_motor<T> apply(const basic_rotor<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(translator, dual_sphere) -> dual_sphere
 template <class T>
 basic_dual_sphere<T> apply(const basic_translator<T>& a, const basic_dual_sphere<T>& b) {
-  return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(translator, dual_plane) -> dual_plane
 template <class T>
 basic_dual_plane<T> apply(const basic_translator<T>& a, const basic_dual_plane<T>& b) {
-  return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(translator, euclidean_vector) -> dual_plane
 template <class T>
 basic_dual_plane<T> apply(const basic_translator<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(translator, flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> apply(const basic_translator<T>& a, const basic_flat_point<T>& b) {
-  return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(translator, euclidean_bivector) -> dual_line
 template <class T>
 basic_dual_line<T> apply(const basic_translator<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(translator, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_translator<T>& a, const basic_point_pair<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(translator, dual_line) -> dual_line
 template <class T>
 basic_dual_line<T> apply(const basic_translator<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(translator, line) -> line
 template <class T>
 basic_line<T> apply(const basic_translator<T>& a, const basic_line<T>& b) {
-  return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(translator, circle) -> circle
 template <class T>
 basic_circle<T> apply(const basic_translator<T>& a, const basic_circle<T>& b) {
-  return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(translator, sphere) -> sphere
 template <class T>
 basic_sphere<T> apply(const basic_translator<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(translator, plane) -> plane
 template <class T>
 basic_plane<T> apply(const basic_translator<T>& a, const basic_plane<T>& b) {
-  return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(translator, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> apply(const basic_translator<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(translator, rotor) -> motor
 template <class T>
 basic_motor<T> apply(const basic_translator<T>& a, const basic_rotor<T>& b) {
-  return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(translator, translator) -> translator
 template <class T>
 basic_translator<T> apply(const basic_translator<T>& a, const basic_translator<T>& b) {
-  return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(translator, motor) -> motor
 template <class T>
 basic_motor<T> apply(const basic_translator<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(motor, euclidean_vector) -> dual_plane
 template <class T>
 basic_dual_plane<T> apply(const basic_motor<T>& a, const basic_euclidean_vector<T>& b) {
-  return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(motor, flat_point) -> flat_point
 template <class T>
 basic_flat_point<T> apply(const basic_motor<T>& a, const basic_flat_point<T>& b) {
-  return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_flat_point<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(motor, euclidean_bivector) -> dual_line
 template <class T>
 basic_dual_line<T> apply(const basic_motor<T>& a, const basic_euclidean_bivector<T>& b) {
-  return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(motor, point_pair) -> point_pair
 template <class T>
 basic_point_pair<T> apply(const basic_motor<T>& a, const basic_point_pair<T>& b) {
-  return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_point_pair<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_point_pair<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(motor, dual_line) -> dual_line
 template <class T>
 basic_dual_line<T> apply(const basic_motor<T>& a, const basic_dual_line<T>& b) {
-  return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_dual_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(motor, line) -> line
 template <class T>
 basic_line<T> apply(const basic_motor<T>& a, const basic_line<T>& b) {
-  return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_line<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_line<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(motor, circle) -> circle
 template <class T>
 basic_circle<T> apply(const basic_motor<T>& a, const basic_circle<T>& b) {
-  return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_circle<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_circle<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(motor, sphere) -> sphere
 template <class T>
 basic_sphere<T> apply(const basic_motor<T>& a, const basic_sphere<T>& b) {
-  return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_sphere<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_sphere<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(motor, plane) -> plane
 template <class T>
 basic_plane<T> apply(const basic_motor<T>& a, const basic_plane<T>& b) {
-  return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_plane<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_plane<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(motor, pseudoscalar) -> pseudoscalar
 template <class T>
 basic_pseudoscalar<T> apply(const basic_motor<T>& a, const basic_pseudoscalar<T>& b) {
-  return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_pseudoscalar<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_pseudoscalar<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(motor, rotor) -> motor
 template <class T>
 basic_motor<T> apply(const basic_motor<T>& a, const basic_rotor<T>& b) {
-  return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(motor, translator) -> translator
 template <class T>
 basic_translator<T> apply(const basic_motor<T>& a, const basic_translator<T>& b) {
-  return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_translator<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_translator<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(motor, motor) -> motor
 template <class T>
 basic_motor<T> apply(const basic_motor<T>& a, const basic_motor<T>& b) {
-  return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_motor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 }  // namespace c3ga

@@ -14,1243 +14,2234 @@ namespace e3ga {
 // neg(scalar) -> scalar
 template <class T>
 T neg(const basic_scalar<T>& a) {
-  return gaphys::ga::scalar_part(neg(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return neg(x...); }, a);
+  } else {
+    return gaphys::ga::scalar_part(neg(basic_mv<T>(a)));
+  }
 }
 
 // reverse(scalar) -> scalar
 template <class T>
 T reverse(const basic_scalar<T>& a) {
-  return gaphys::ga::scalar_part(reverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return reverse(x...); }, a);
+  } else {
+    return gaphys::ga::scalar_part(reverse(basic_mv<T>(a)));
+  }
 }
 
 // involute(scalar) -> scalar
 template <class T>
 T involute(const basic_scalar<T>& a) {
-  return gaphys::ga::scalar_part(involute(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return involute(x...); }, a);
+  } else {
+    return gaphys::ga::scalar_part(involute(basic_mv<T>(a)));
+  }
 }
 
 // conjugate(scalar) -> scalar
 template <class T>
 T conjugate(const basic_scalar<T>& a) {
-  return gaphys::ga::scalar_part(conjugate(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return conjugate(x...); }, a);
+  } else {
+    return gaphys::ga::scalar_part(conjugate(basic_mv<T>(a)));
+  }
 }
 
 // norm2(scalar) -> scalar
 template <class T>
 T norm2(const basic_scalar<T>& a) {
-  return norm2(basic_mv<T>(a));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return norm2(x...); }, a);
+  } else {
+    return norm2(basic_mv<T>(a));
+  }
 }
 
 // inverse(scalar) -> scalar
 template <class T>
 T inverse(const basic_scalar<T>& a) {
-  return gaphys::ga::scalar_part(inverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return inverse(x...); }, a);
+  } else {
+    return gaphys::ga::scalar_part(inverse(basic_mv<T>(a)));
+  }
 }
 
 // dual(scalar) -> trivector
 template <class T>
 basic_trivector<T> dual(const basic_scalar<T>& a) {
-  return basic_trivector<T>(dual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return dual(x...); }, a);
+  } else {
+    return basic_trivector<T>(dual(basic_mv<T>(a)));
+  }
 }
 
 // undual(scalar) -> trivector
 template <class T>
 basic_trivector<T> undual(const basic_scalar<T>& a) {
-  return basic_trivector<T>(undual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return undual(x...); }, a);
+  } else {
+    return basic_trivector<T>(undual(basic_mv<T>(a)));
+  }
 }
 
 // smul(scalar, scalar) -> scalar
 template <class T>
 T smul(T s, const basic_scalar<T>& a) {
-  return gaphys::ga::scalar_part(smul(s, basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return smul(x...); }, s, a);
+  } else {
+    return gaphys::ga::scalar_part(smul(s, basic_mv<T>(a)));
+  }
 }
 
 // add(scalar, scalar) -> scalar
 template <class T>
 T add(const basic_scalar<T>& a, const basic_scalar<T>& b) {
-  return gaphys::ga::scalar_part(add(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return add(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(add(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // sub(scalar, scalar) -> scalar
 template <class T>
 T sub(const basic_scalar<T>& a, const basic_scalar<T>& b) {
-  return gaphys::ga::scalar_part(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return sub(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // neg(vector) -> vector
 template <class T>
 basic_vector<T> neg(const basic_vector<T>& a) {
-  return basic_vector<T>(neg(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return neg(x...); }, a);
+  } else {
+    return basic_vector<T>(neg(basic_mv<T>(a)));
+  }
 }
 
 // reverse(vector) -> vector
 template <class T>
 basic_vector<T> reverse(const basic_vector<T>& a) {
-  return basic_vector<T>(reverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return reverse(x...); }, a);
+  } else {
+    return basic_vector<T>(reverse(basic_mv<T>(a)));
+  }
 }
 
 // involute(vector) -> vector
 template <class T>
 basic_vector<T> involute(const basic_vector<T>& a) {
-  return basic_vector<T>(involute(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return involute(x...); }, a);
+  } else {
+    return basic_vector<T>(involute(basic_mv<T>(a)));
+  }
 }
 
 // conjugate(vector) -> vector
 template <class T>
 basic_vector<T> conjugate(const basic_vector<T>& a) {
-  return basic_vector<T>(conjugate(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return conjugate(x...); }, a);
+  } else {
+    return basic_vector<T>(conjugate(basic_mv<T>(a)));
+  }
 }
 
 // norm2(vector) -> scalar
 template <class T>
 T norm2(const basic_vector<T>& a) {
-  return norm2(basic_mv<T>(a));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return norm2(x...); }, a);
+  } else {
+    return norm2(basic_mv<T>(a));
+  }
 }
 
 // inverse(vector) -> vector
 template <class T>
 basic_vector<T> inverse(const basic_vector<T>& a) {
-  return basic_vector<T>(inverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return inverse(x...); }, a);
+  } else {
+    return basic_vector<T>(inverse(basic_mv<T>(a)));
+  }
 }
 
 // dual(vector) -> bivector
 template <class T>
 basic_bivector<T> dual(const basic_vector<T>& a) {
-  return basic_bivector<T>(dual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return dual(x...); }, a);
+  } else {
+    return basic_bivector<T>(dual(basic_mv<T>(a)));
+  }
 }
 
 // undual(vector) -> bivector
 template <class T>
 basic_bivector<T> undual(const basic_vector<T>& a) {
-  return basic_bivector<T>(undual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return undual(x...); }, a);
+  } else {
+    return basic_bivector<T>(undual(basic_mv<T>(a)));
+  }
 }
 
 // smul(scalar, vector) -> vector
 template <class T>
 basic_vector<T> smul(T s, const basic_vector<T>& a) {
-  return basic_vector<T>(smul(s, basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return smul(x...); }, s, a);
+  } else {
+    return basic_vector<T>(smul(s, basic_mv<T>(a)));
+  }
 }
 
 // add(vector, vector) -> vector
 template <class T>
 basic_vector<T> add(const basic_vector<T>& a, const basic_vector<T>& b) {
-  return basic_vector<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return add(x...); }, a, b);
+  } else {
+    return basic_vector<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // sub(vector, vector) -> vector
 template <class T>
 basic_vector<T> sub(const basic_vector<T>& a, const basic_vector<T>& b) {
-  return basic_vector<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return sub(x...); }, a, b);
+  } else {
+    return basic_vector<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // neg(bivector) -> bivector
 template <class T>
 basic_bivector<T> neg(const basic_bivector<T>& a) {
-  return basic_bivector<T>(neg(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return neg(x...); }, a);
+  } else {
+    return basic_bivector<T>(neg(basic_mv<T>(a)));
+  }
 }
 
 // reverse(bivector) -> bivector
 template <class T>
 basic_bivector<T> reverse(const basic_bivector<T>& a) {
-  return basic_bivector<T>(reverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return reverse(x...); }, a);
+  } else {
+    return basic_bivector<T>(reverse(basic_mv<T>(a)));
+  }
 }
 
 // involute(bivector) -> bivector
 template <class T>
 basic_bivector<T> involute(const basic_bivector<T>& a) {
-  return basic_bivector<T>(involute(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return involute(x...); }, a);
+  } else {
+    return basic_bivector<T>(involute(basic_mv<T>(a)));
+  }
 }
 
 // conjugate(bivector) -> bivector
 template <class T>
 basic_bivector<T> conjugate(const basic_bivector<T>& a) {
-  return basic_bivector<T>(conjugate(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return conjugate(x...); }, a);
+  } else {
+    return basic_bivector<T>(conjugate(basic_mv<T>(a)));
+  }
 }
 
 // norm2(bivector) -> scalar
 template <class T>
 T norm2(const basic_bivector<T>& a) {
-  return norm2(basic_mv<T>(a));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return norm2(x...); }, a);
+  } else {
+    return norm2(basic_mv<T>(a));
+  }
 }
 
 // inverse(bivector) -> bivector
 template <class T>
 basic_bivector<T> inverse(const basic_bivector<T>& a) {
-  return basic_bivector<T>(inverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return inverse(x...); }, a);
+  } else {
+    return basic_bivector<T>(inverse(basic_mv<T>(a)));
+  }
 }
 
 // dual(bivector) -> vector
 template <class T>
 basic_vector<T> dual(const basic_bivector<T>& a) {
-  return basic_vector<T>(dual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return dual(x...); }, a);
+  } else {
+    return basic_vector<T>(dual(basic_mv<T>(a)));
+  }
 }
 
 // undual(bivector) -> vector
 template <class T>
 basic_vector<T> undual(const basic_bivector<T>& a) {
-  return basic_vector<T>(undual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return undual(x...); }, a);
+  } else {
+    return basic_vector<T>(undual(basic_mv<T>(a)));
+  }
 }
 
 // smul(scalar, bivector) -> bivector
 template <class T>
 basic_bivector<T> smul(T s, const basic_bivector<T>& a) {
-  return basic_bivector<T>(smul(s, basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return smul(x...); }, s, a);
+  } else {
+    return basic_bivector<T>(smul(s, basic_mv<T>(a)));
+  }
 }
 
 // add(bivector, bivector) -> bivector
 template <class T>
 basic_bivector<T> add(const basic_bivector<T>& a, const basic_bivector<T>& b) {
-  return basic_bivector<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return add(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // sub(bivector, bivector) -> bivector
 template <class T>
 basic_bivector<T> sub(const basic_bivector<T>& a, const basic_bivector<T>& b) {
-  return basic_bivector<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return sub(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // neg(trivector) -> trivector
 template <class T>
 basic_trivector<T> neg(const basic_trivector<T>& a) {
-  return basic_trivector<T>(neg(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return neg(x...); }, a);
+  } else {
+    return basic_trivector<T>(neg(basic_mv<T>(a)));
+  }
 }
 
 // reverse(trivector) -> trivector
 template <class T>
 basic_trivector<T> reverse(const basic_trivector<T>& a) {
-  return basic_trivector<T>(reverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return reverse(x...); }, a);
+  } else {
+    return basic_trivector<T>(reverse(basic_mv<T>(a)));
+  }
 }
 
 // involute(trivector) -> trivector
 template <class T>
 basic_trivector<T> involute(const basic_trivector<T>& a) {
-  return basic_trivector<T>(involute(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return involute(x...); }, a);
+  } else {
+    return basic_trivector<T>(involute(basic_mv<T>(a)));
+  }
 }
 
 // conjugate(trivector) -> trivector
 template <class T>
 basic_trivector<T> conjugate(const basic_trivector<T>& a) {
-  return basic_trivector<T>(conjugate(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return conjugate(x...); }, a);
+  } else {
+    return basic_trivector<T>(conjugate(basic_mv<T>(a)));
+  }
 }
 
 // norm2(trivector) -> scalar
 template <class T>
 T norm2(const basic_trivector<T>& a) {
-  return norm2(basic_mv<T>(a));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return norm2(x...); }, a);
+  } else {
+    return norm2(basic_mv<T>(a));
+  }
 }
 
 // inverse(trivector) -> trivector
 template <class T>
 basic_trivector<T> inverse(const basic_trivector<T>& a) {
-  return basic_trivector<T>(inverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return inverse(x...); }, a);
+  } else {
+    return basic_trivector<T>(inverse(basic_mv<T>(a)));
+  }
 }
 
 // dual(trivector) -> scalar
 template <class T>
 T dual(const basic_trivector<T>& a) {
-  return gaphys::ga::scalar_part(dual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return dual(x...); }, a);
+  } else {
+    return gaphys::ga::scalar_part(dual(basic_mv<T>(a)));
+  }
 }
 
 // undual(trivector) -> scalar
 template <class T>
 T undual(const basic_trivector<T>& a) {
-  return gaphys::ga::scalar_part(undual(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return undual(x...); }, a);
+  } else {
+    return gaphys::ga::scalar_part(undual(basic_mv<T>(a)));
+  }
 }
 
 // smul(scalar, trivector) -> trivector
 template <class T>
 basic_trivector<T> smul(T s, const basic_trivector<T>& a) {
-  return basic_trivector<T>(smul(s, basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return smul(x...); }, s, a);
+  } else {
+    return basic_trivector<T>(smul(s, basic_mv<T>(a)));
+  }
 }
 
 // add(trivector, trivector) -> trivector
 template <class T>
 basic_trivector<T> add(const basic_trivector<T>& a, const basic_trivector<T>& b) {
-  return basic_trivector<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return add(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // sub(trivector, trivector) -> trivector
 template <class T>
 basic_trivector<T> sub(const basic_trivector<T>& a, const basic_trivector<T>& b) {
-  return basic_trivector<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return sub(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // neg(rotor) -> rotor
 template <class T>
 basic_rotor<T> neg(const basic_rotor<T>& a) {
-  return basic_rotor<T>(neg(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return neg(x...); }, a);
+  } else {
+    return basic_rotor<T>(neg(basic_mv<T>(a)));
+  }
 }
 
 // reverse(rotor) -> rotor
 template <class T>
 basic_rotor<T> reverse(const basic_rotor<T>& a) {
-  return basic_rotor<T>(reverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return reverse(x...); }, a);
+  } else {
+    return basic_rotor<T>(reverse(basic_mv<T>(a)));
+  }
 }
 
 // involute(rotor) -> rotor
 template <class T>
 basic_rotor<T> involute(const basic_rotor<T>& a) {
-  return basic_rotor<T>(involute(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return involute(x...); }, a);
+  } else {
+    return basic_rotor<T>(involute(basic_mv<T>(a)));
+  }
 }
 
 // conjugate(rotor) -> rotor
 template <class T>
 basic_rotor<T> conjugate(const basic_rotor<T>& a) {
-  return basic_rotor<T>(conjugate(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return conjugate(x...); }, a);
+  } else {
+    return basic_rotor<T>(conjugate(basic_mv<T>(a)));
+  }
 }
 
 // norm2(rotor) -> scalar
 template <class T>
 T norm2(const basic_rotor<T>& a) {
-  return norm2(basic_mv<T>(a));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return norm2(x...); }, a);
+  } else {
+    return norm2(basic_mv<T>(a));
+  }
 }
 
 // inverse(rotor) -> rotor
 template <class T>
 basic_rotor<T> inverse(const basic_rotor<T>& a) {
-  return basic_rotor<T>(inverse(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return inverse(x...); }, a);
+  } else {
+    return basic_rotor<T>(inverse(basic_mv<T>(a)));
+  }
 }
 
 // dual(rotor) -> mv
 template <class T>
 basic_mv<T> dual(const basic_rotor<T>& a) {
+  static_assert(!gaphys::ga::is_batch_v<T>, "dual(rotor) -> mv: an mv result has no batch form");
   return dual(basic_mv<T>(a));
 }
 
 // undual(rotor) -> mv
 template <class T>
 basic_mv<T> undual(const basic_rotor<T>& a) {
+  static_assert(!gaphys::ga::is_batch_v<T>, "undual(rotor) -> mv: an mv result has no batch form");
   return undual(basic_mv<T>(a));
 }
 
 // smul(scalar, rotor) -> rotor
 template <class T>
 basic_rotor<T> smul(T s, const basic_rotor<T>& a) {
-  return basic_rotor<T>(smul(s, basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return smul(x...); }, s, a);
+  } else {
+    return basic_rotor<T>(smul(s, basic_mv<T>(a)));
+  }
 }
 
 // add(rotor, rotor) -> rotor
 template <class T>
 basic_rotor<T> add(const basic_rotor<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return add(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(add(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // sub(rotor, rotor) -> rotor
 template <class T>
 basic_rotor<T> sub(const basic_rotor<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return sub(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(sub(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(vector, vector) -> rotor
 template <class T>
 basic_rotor<T> gp(const basic_vector<T>& a, const basic_vector<T>& b) {
-  return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(rotor, rotor) -> rotor
 template <class T>
 basic_rotor<T> gp(const basic_rotor<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(rotor, vector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_rotor<T>& a, const basic_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, vector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(vector, rotor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_vector<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(vector, rotor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(bivector, bivector) -> rotor
 template <class T>
 basic_rotor<T> gp(const basic_bivector<T>& a, const basic_bivector<T>& b) {
-  return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(rotor, bivector) -> rotor
 template <class T>
 basic_rotor<T> gp(const basic_rotor<T>& a, const basic_bivector<T>& b) {
-  return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(bivector, rotor) -> rotor
 template <class T>
 basic_rotor<T> gp(const basic_bivector<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(bivector, vector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_bivector<T>& a, const basic_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(bivector, vector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(vector, bivector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_vector<T>& a, const basic_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(vector, bivector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(vector, vector) -> bivector
 template <class T>
 basic_bivector<T> op(const basic_vector<T>& a, const basic_vector<T>& b) {
-  return basic_bivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(vector, bivector) -> trivector
 template <class T>
 basic_trivector<T> op(const basic_vector<T>& a, const basic_bivector<T>& b) {
-  return basic_trivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(bivector, vector) -> trivector
 template <class T>
 basic_trivector<T> op(const basic_bivector<T>& a, const basic_vector<T>& b) {
-  return basic_trivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(vector, bivector) -> vector
 template <class T>
 basic_vector<T> lc(const basic_vector<T>& a, const basic_bivector<T>& b) {
-  return basic_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(vector, vector) -> scalar
 template <class T>
 T lc(const basic_vector<T>& a, const basic_vector<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(bivector, bivector) -> scalar
 template <class T>
 T lc(const basic_bivector<T>& a, const basic_bivector<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(bivector, vector) -> vector
 template <class T>
 basic_vector<T> rc(const basic_bivector<T>& a, const basic_vector<T>& b) {
-  return basic_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // scp(vector, vector) -> scalar
 template <class T>
 T scp(const basic_vector<T>& a, const basic_vector<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(bivector, bivector) -> scalar
 template <class T>
 T scp(const basic_bivector<T>& a, const basic_bivector<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(rotor, rotor) -> scalar
 template <class T>
 T scp(const basic_rotor<T>& a, const basic_rotor<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // apply(rotor, vector) -> vector
 template <class T>
 basic_vector<T> apply(const basic_rotor<T>& a, const basic_vector<T>& b) {
-  return basic_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(rotor, bivector) -> bivector
 template <class T>
 basic_bivector<T> apply(const basic_rotor<T>& a, const basic_bivector<T>& b) {
-  return basic_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // exp(bivector) -> rotor
 template <class T>
 basic_rotor<T> exp(const basic_bivector<T>& a) {
-  return basic_rotor<T>(exp(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return exp(x...); }, a);
+  } else {
+    return basic_rotor<T>(exp(basic_mv<T>(a)));
+  }
 }
 
 // log(rotor) -> bivector
 template <class T>
 basic_bivector<T> log(const basic_rotor<T>& a) {
-  return basic_bivector<T>(detail::log_within(basic_mv<T>(a), 0x70u));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return log(x...); }, a);
+  } else {
+    return basic_bivector<T>(detail::log_within(basic_mv<T>(a), 0x70u));
+  }
 }
 
 // meet(bivector, bivector) -> vector
 template <class T>
 basic_vector<T> meet(const basic_bivector<T>& a, const basic_bivector<T>& b) {
-  return basic_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(rotor, rotor) -> rotor
 template <class T>
 basic_rotor<T> lc(const basic_rotor<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(rotor, rotor) -> rotor
 template <class T>
 basic_rotor<T> op(const basic_rotor<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(scalar, scalar) -> scalar
 template <class T>
 T gp(const basic_scalar<T>& a, const basic_scalar<T>& b) {
-  return gaphys::ga::scalar_part(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(scalar, vector) -> vector
 template <class T>
 basic_vector<T> gp(const basic_scalar<T>& a, const basic_vector<T>& b) {
-  return basic_vector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_vector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(scalar, bivector) -> bivector
 template <class T>
 basic_bivector<T> gp(const basic_scalar<T>& a, const basic_bivector<T>& b) {
-  return basic_bivector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(scalar, trivector) -> trivector
 template <class T>
 basic_trivector<T> gp(const basic_scalar<T>& a, const basic_trivector<T>& b) {
-  return basic_trivector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(scalar, rotor) -> rotor
 template <class T>
 basic_rotor<T> gp(const basic_scalar<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(vector, scalar) -> vector
 template <class T>
 basic_vector<T> gp(const basic_vector<T>& a, const basic_scalar<T>& b) {
-  return basic_vector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_vector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(vector, trivector) -> bivector
 template <class T>
 basic_bivector<T> gp(const basic_vector<T>& a, const basic_trivector<T>& b) {
-  return basic_bivector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(bivector, scalar) -> bivector
 template <class T>
 basic_bivector<T> gp(const basic_bivector<T>& a, const basic_scalar<T>& b) {
-  return basic_bivector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(bivector, trivector) -> vector
 template <class T>
 basic_vector<T> gp(const basic_bivector<T>& a, const basic_trivector<T>& b) {
-  return basic_vector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_vector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(trivector, scalar) -> trivector
 template <class T>
 basic_trivector<T> gp(const basic_trivector<T>& a, const basic_scalar<T>& b) {
-  return basic_trivector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(trivector, vector) -> bivector
 template <class T>
 basic_bivector<T> gp(const basic_trivector<T>& a, const basic_vector<T>& b) {
-  return basic_bivector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(trivector, bivector) -> vector
 template <class T>
 basic_vector<T> gp(const basic_trivector<T>& a, const basic_bivector<T>& b) {
-  return basic_vector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_vector<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(trivector, trivector) -> scalar
 template <class T>
 T gp(const basic_trivector<T>& a, const basic_trivector<T>& b) {
-  return gaphys::ga::scalar_part(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(trivector, rotor) -> mv
 template <class T>
 basic_mv<T> gp(const basic_trivector<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(trivector, rotor) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // gp(rotor, scalar) -> rotor
 template <class T>
 basic_rotor<T> gp(const basic_rotor<T>& a, const basic_scalar<T>& b) {
-  return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return gp(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(gp(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // gp(rotor, trivector) -> mv
 template <class T>
 basic_mv<T> gp(const basic_rotor<T>& a, const basic_trivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, trivector) -> mv: an mv result has no batch form");
   return gp(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(scalar, scalar) -> scalar
 template <class T>
 T op(const basic_scalar<T>& a, const basic_scalar<T>& b) {
-  return gaphys::ga::scalar_part(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(scalar, vector) -> vector
 template <class T>
 basic_vector<T> op(const basic_scalar<T>& a, const basic_vector<T>& b) {
-  return basic_vector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_vector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(scalar, bivector) -> bivector
 template <class T>
 basic_bivector<T> op(const basic_scalar<T>& a, const basic_bivector<T>& b) {
-  return basic_bivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(scalar, trivector) -> trivector
 template <class T>
 basic_trivector<T> op(const basic_scalar<T>& a, const basic_trivector<T>& b) {
-  return basic_trivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(scalar, rotor) -> rotor
 template <class T>
 basic_rotor<T> op(const basic_scalar<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(vector, scalar) -> vector
 template <class T>
 basic_vector<T> op(const basic_vector<T>& a, const basic_scalar<T>& b) {
-  return basic_vector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_vector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(vector, rotor) -> mv
 template <class T>
 basic_mv<T> op(const basic_vector<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(vector, rotor) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(bivector, scalar) -> bivector
 template <class T>
 basic_bivector<T> op(const basic_bivector<T>& a, const basic_scalar<T>& b) {
-  return basic_bivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(bivector, rotor) -> bivector
 template <class T>
 basic_bivector<T> op(const basic_bivector<T>& a, const basic_rotor<T>& b) {
-  return basic_bivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(trivector, scalar) -> trivector
 template <class T>
 basic_trivector<T> op(const basic_trivector<T>& a, const basic_scalar<T>& b) {
-  return basic_trivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(trivector, rotor) -> trivector
 template <class T>
 basic_trivector<T> op(const basic_trivector<T>& a, const basic_rotor<T>& b) {
-  return basic_trivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(rotor, scalar) -> rotor
 template <class T>
 basic_rotor<T> op(const basic_rotor<T>& a, const basic_scalar<T>& b) {
-  return basic_rotor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(rotor, vector) -> mv
 template <class T>
 basic_mv<T> op(const basic_rotor<T>& a, const basic_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(rotor, vector) -> mv: an mv result has no batch form");
   return op(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // op(rotor, bivector) -> bivector
 template <class T>
 basic_bivector<T> op(const basic_rotor<T>& a, const basic_bivector<T>& b) {
-  return basic_bivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // op(rotor, trivector) -> trivector
 template <class T>
 basic_trivector<T> op(const basic_rotor<T>& a, const basic_trivector<T>& b) {
-  return basic_trivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return op(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(op(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(scalar, scalar) -> scalar
 template <class T>
 T lc(const basic_scalar<T>& a, const basic_scalar<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(scalar, vector) -> vector
 template <class T>
 basic_vector<T> lc(const basic_scalar<T>& a, const basic_vector<T>& b) {
-  return basic_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(scalar, bivector) -> bivector
 template <class T>
 basic_bivector<T> lc(const basic_scalar<T>& a, const basic_bivector<T>& b) {
-  return basic_bivector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(scalar, trivector) -> trivector
 template <class T>
 basic_trivector<T> lc(const basic_scalar<T>& a, const basic_trivector<T>& b) {
-  return basic_trivector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(scalar, rotor) -> rotor
 template <class T>
 basic_rotor<T> lc(const basic_scalar<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(vector, trivector) -> bivector
 template <class T>
 basic_bivector<T> lc(const basic_vector<T>& a, const basic_trivector<T>& b) {
-  return basic_bivector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(vector, rotor) -> vector
 template <class T>
 basic_vector<T> lc(const basic_vector<T>& a, const basic_rotor<T>& b) {
-  return basic_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(bivector, trivector) -> vector
 template <class T>
 basic_vector<T> lc(const basic_bivector<T>& a, const basic_trivector<T>& b) {
-  return basic_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(bivector, rotor) -> scalar
 template <class T>
 T lc(const basic_bivector<T>& a, const basic_rotor<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(trivector, trivector) -> scalar
 template <class T>
 T lc(const basic_trivector<T>& a, const basic_trivector<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(rotor, scalar) -> scalar
 template <class T>
 T lc(const basic_rotor<T>& a, const basic_scalar<T>& b) {
-  return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(rotor, vector) -> vector
 template <class T>
 basic_vector<T> lc(const basic_rotor<T>& a, const basic_vector<T>& b) {
-  return basic_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_vector<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(rotor, bivector) -> rotor
 template <class T>
 basic_rotor<T> lc(const basic_rotor<T>& a, const basic_bivector<T>& b) {
-  return basic_rotor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return lc(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(lc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // lc(rotor, trivector) -> mv
 template <class T>
 basic_mv<T> lc(const basic_rotor<T>& a, const basic_trivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(rotor, trivector) -> mv: an mv result has no batch form");
   return lc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(scalar, scalar) -> scalar
 template <class T>
 T rc(const basic_scalar<T>& a, const basic_scalar<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(scalar, rotor) -> scalar
 template <class T>
 T rc(const basic_scalar<T>& a, const basic_rotor<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(vector, scalar) -> vector
 template <class T>
 basic_vector<T> rc(const basic_vector<T>& a, const basic_scalar<T>& b) {
-  return basic_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(vector, vector) -> scalar
 template <class T>
 T rc(const basic_vector<T>& a, const basic_vector<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(vector, rotor) -> vector
 template <class T>
 basic_vector<T> rc(const basic_vector<T>& a, const basic_rotor<T>& b) {
-  return basic_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(bivector, scalar) -> bivector
 template <class T>
 basic_bivector<T> rc(const basic_bivector<T>& a, const basic_scalar<T>& b) {
-  return basic_bivector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(bivector, bivector) -> scalar
 template <class T>
 T rc(const basic_bivector<T>& a, const basic_bivector<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(bivector, rotor) -> rotor
 template <class T>
 basic_rotor<T> rc(const basic_bivector<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(trivector, scalar) -> trivector
 template <class T>
 basic_trivector<T> rc(const basic_trivector<T>& a, const basic_scalar<T>& b) {
-  return basic_trivector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(trivector, vector) -> bivector
 template <class T>
 basic_bivector<T> rc(const basic_trivector<T>& a, const basic_vector<T>& b) {
-  return basic_bivector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(trivector, bivector) -> vector
 template <class T>
 basic_vector<T> rc(const basic_trivector<T>& a, const basic_bivector<T>& b) {
-  return basic_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(trivector, trivector) -> scalar
 template <class T>
 T rc(const basic_trivector<T>& a, const basic_trivector<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(trivector, rotor) -> mv
 template <class T>
 basic_mv<T> rc(const basic_trivector<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(trivector, rotor) -> mv: an mv result has no batch form");
   return rc(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // rc(rotor, scalar) -> rotor
 template <class T>
 basic_rotor<T> rc(const basic_rotor<T>& a, const basic_scalar<T>& b) {
-  return basic_rotor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(rotor, vector) -> vector
 template <class T>
 basic_vector<T> rc(const basic_rotor<T>& a, const basic_vector<T>& b) {
-  return basic_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_vector<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(rotor, bivector) -> scalar
 template <class T>
 T rc(const basic_rotor<T>& a, const basic_bivector<T>& b) {
-  return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // rc(rotor, rotor) -> rotor
 template <class T>
 basic_rotor<T> rc(const basic_rotor<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return rc(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(rc(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // scp(scalar, scalar) -> scalar
 template <class T>
 T scp(const basic_scalar<T>& a, const basic_scalar<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(scalar, rotor) -> scalar
 template <class T>
 T scp(const basic_scalar<T>& a, const basic_rotor<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(bivector, rotor) -> scalar
 template <class T>
 T scp(const basic_bivector<T>& a, const basic_rotor<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(trivector, trivector) -> scalar
 template <class T>
 T scp(const basic_trivector<T>& a, const basic_trivector<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(rotor, scalar) -> scalar
 template <class T>
 T scp(const basic_rotor<T>& a, const basic_scalar<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // scp(rotor, bivector) -> scalar
 template <class T>
 T scp(const basic_rotor<T>& a, const basic_bivector<T>& b) {
-  return scp(basic_mv<T>(a), basic_mv<T>(b));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return scp(x...); }, a, b);
+  } else {
+    return scp(basic_mv<T>(a), basic_mv<T>(b));
+  }
 }
 
 // meet(scalar, trivector) -> scalar
 template <class T>
 T meet(const basic_scalar<T>& a, const basic_trivector<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(vector, bivector) -> scalar
 template <class T>
 T meet(const basic_vector<T>& a, const basic_bivector<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(vector, trivector) -> vector
 template <class T>
 basic_vector<T> meet(const basic_vector<T>& a, const basic_trivector<T>& b) {
-  return basic_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(vector, rotor) -> scalar
 template <class T>
 T meet(const basic_vector<T>& a, const basic_rotor<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(bivector, vector) -> scalar
 template <class T>
 T meet(const basic_bivector<T>& a, const basic_vector<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(bivector, trivector) -> bivector
 template <class T>
 basic_bivector<T> meet(const basic_bivector<T>& a, const basic_trivector<T>& b) {
-  return basic_bivector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(bivector, rotor) -> vector
 template <class T>
 basic_vector<T> meet(const basic_bivector<T>& a, const basic_rotor<T>& b) {
-  return basic_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(trivector, scalar) -> scalar
 template <class T>
 T meet(const basic_trivector<T>& a, const basic_scalar<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(trivector, vector) -> vector
 template <class T>
 basic_vector<T> meet(const basic_trivector<T>& a, const basic_vector<T>& b) {
-  return basic_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(trivector, bivector) -> bivector
 template <class T>
 basic_bivector<T> meet(const basic_trivector<T>& a, const basic_bivector<T>& b) {
-  return basic_bivector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(trivector, trivector) -> trivector
 template <class T>
 basic_trivector<T> meet(const basic_trivector<T>& a, const basic_trivector<T>& b) {
-  return basic_trivector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(trivector, rotor) -> rotor
 template <class T>
 basic_rotor<T> meet(const basic_trivector<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(rotor, vector) -> scalar
 template <class T>
 T meet(const basic_rotor<T>& a, const basic_vector<T>& b) {
-  return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(rotor, bivector) -> vector
 template <class T>
 basic_vector<T> meet(const basic_rotor<T>& a, const basic_bivector<T>& b) {
-  return basic_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(rotor, trivector) -> rotor
 template <class T>
 basic_rotor<T> meet(const basic_rotor<T>& a, const basic_trivector<T>& b) {
-  return basic_rotor<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // meet(rotor, rotor) -> vector
 template <class T>
 basic_vector<T> meet(const basic_rotor<T>& a, const basic_rotor<T>& b) {
-  return basic_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return meet(x...); }, a, b);
+  } else {
+    return basic_vector<T>(meet(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(scalar, scalar) -> scalar
 template <class T>
 T join(const basic_scalar<T>& a, const basic_scalar<T>& b) {
-  return gaphys::ga::scalar_part(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(scalar, vector) -> vector
 template <class T>
 basic_vector<T> join(const basic_scalar<T>& a, const basic_vector<T>& b) {
-  return basic_vector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_vector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(scalar, bivector) -> bivector
 template <class T>
 basic_bivector<T> join(const basic_scalar<T>& a, const basic_bivector<T>& b) {
-  return basic_bivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(scalar, trivector) -> trivector
 template <class T>
 basic_trivector<T> join(const basic_scalar<T>& a, const basic_trivector<T>& b) {
-  return basic_trivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(scalar, rotor) -> rotor
 template <class T>
 basic_rotor<T> join(const basic_scalar<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(vector, scalar) -> vector
 template <class T>
 basic_vector<T> join(const basic_vector<T>& a, const basic_scalar<T>& b) {
-  return basic_vector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_vector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(vector, vector) -> bivector
 template <class T>
 basic_bivector<T> join(const basic_vector<T>& a, const basic_vector<T>& b) {
-  return basic_bivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(vector, bivector) -> trivector
 template <class T>
 basic_trivector<T> join(const basic_vector<T>& a, const basic_bivector<T>& b) {
-  return basic_trivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(vector, rotor) -> mv
 template <class T>
 basic_mv<T> join(const basic_vector<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(vector, rotor) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(bivector, scalar) -> bivector
 template <class T>
 basic_bivector<T> join(const basic_bivector<T>& a, const basic_scalar<T>& b) {
-  return basic_bivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(bivector, vector) -> trivector
 template <class T>
 basic_trivector<T> join(const basic_bivector<T>& a, const basic_vector<T>& b) {
-  return basic_trivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(bivector, rotor) -> bivector
 template <class T>
 basic_bivector<T> join(const basic_bivector<T>& a, const basic_rotor<T>& b) {
-  return basic_bivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(trivector, scalar) -> trivector
 template <class T>
 basic_trivector<T> join(const basic_trivector<T>& a, const basic_scalar<T>& b) {
-  return basic_trivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(trivector, rotor) -> trivector
 template <class T>
 basic_trivector<T> join(const basic_trivector<T>& a, const basic_rotor<T>& b) {
-  return basic_trivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(rotor, scalar) -> rotor
 template <class T>
 basic_rotor<T> join(const basic_rotor<T>& a, const basic_scalar<T>& b) {
-  return basic_rotor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(rotor, vector) -> mv
 template <class T>
 basic_mv<T> join(const basic_rotor<T>& a, const basic_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(rotor, vector) -> mv: an mv result has no batch form");
   return join(basic_mv<T>(a), basic_mv<T>(b));
 }
 
 // join(rotor, bivector) -> bivector
 template <class T>
 basic_bivector<T> join(const basic_rotor<T>& a, const basic_bivector<T>& b) {
-  return basic_bivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(rotor, trivector) -> trivector
 template <class T>
 basic_trivector<T> join(const basic_rotor<T>& a, const basic_trivector<T>& b) {
-  return basic_trivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // join(rotor, rotor) -> rotor
 template <class T>
 basic_rotor<T> join(const basic_rotor<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return join(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(join(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(scalar, scalar) -> scalar
 template <class T>
 T apply(const basic_scalar<T>& a, const basic_scalar<T>& b) {
-  return gaphys::ga::scalar_part(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(scalar, vector) -> vector
 template <class T>
 basic_vector<T> apply(const basic_scalar<T>& a, const basic_vector<T>& b) {
-  return basic_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(scalar, bivector) -> bivector
 template <class T>
 basic_bivector<T> apply(const basic_scalar<T>& a, const basic_bivector<T>& b) {
-  return basic_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(scalar, trivector) -> trivector
 template <class T>
 basic_trivector<T> apply(const basic_scalar<T>& a, const basic_trivector<T>& b) {
-  return basic_trivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(scalar, rotor) -> rotor
 template <class T>
 basic_rotor<T> apply(const basic_scalar<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(vector, scalar) -> scalar
 template <class T>
 T apply(const basic_vector<T>& a, const basic_scalar<T>& b) {
-  return gaphys::ga::scalar_part(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(vector, vector) -> vector
 template <class T>
 basic_vector<T> apply(const basic_vector<T>& a, const basic_vector<T>& b) {
-  return basic_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(vector, bivector) -> bivector
 template <class T>
 basic_bivector<T> apply(const basic_vector<T>& a, const basic_bivector<T>& b) {
-  return basic_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(vector, trivector) -> trivector
 template <class T>
 basic_trivector<T> apply(const basic_vector<T>& a, const basic_trivector<T>& b) {
-  return basic_trivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(vector, rotor) -> rotor
 template <class T>
 basic_rotor<T> apply(const basic_vector<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(bivector, scalar) -> scalar
 template <class T>
 T apply(const basic_bivector<T>& a, const basic_scalar<T>& b) {
-  return gaphys::ga::scalar_part(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(bivector, vector) -> vector
 template <class T>
 basic_vector<T> apply(const basic_bivector<T>& a, const basic_vector<T>& b) {
-  return basic_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(bivector, bivector) -> bivector
 template <class T>
 basic_bivector<T> apply(const basic_bivector<T>& a, const basic_bivector<T>& b) {
-  return basic_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(bivector, trivector) -> trivector
 template <class T>
 basic_trivector<T> apply(const basic_bivector<T>& a, const basic_trivector<T>& b) {
-  return basic_trivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(bivector, rotor) -> rotor
 template <class T>
 basic_rotor<T> apply(const basic_bivector<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(trivector, scalar) -> scalar
 template <class T>
 T apply(const basic_trivector<T>& a, const basic_scalar<T>& b) {
-  return gaphys::ga::scalar_part(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(trivector, vector) -> vector
 template <class T>
 basic_vector<T> apply(const basic_trivector<T>& a, const basic_vector<T>& b) {
-  return basic_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_vector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_vector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(trivector, bivector) -> bivector
 template <class T>
 basic_bivector<T> apply(const basic_trivector<T>& a, const basic_bivector<T>& b) {
-  return basic_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_bivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(trivector, trivector) -> trivector
 template <class T>
 basic_trivector<T> apply(const basic_trivector<T>& a, const basic_trivector<T>& b) {
-  return basic_trivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(trivector, rotor) -> rotor
 template <class T>
 basic_rotor<T> apply(const basic_trivector<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(rotor, scalar) -> scalar
 template <class T>
 T apply(const basic_rotor<T>& a, const basic_scalar<T>& b) {
-  return gaphys::ga::scalar_part(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<T>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return gaphys::ga::scalar_part(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(rotor, trivector) -> trivector
 template <class T>
 basic_trivector<T> apply(const basic_rotor<T>& a, const basic_trivector<T>& b) {
-  return basic_trivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_trivector<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_trivector<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 // apply(rotor, rotor) -> rotor
 template <class T>
 basic_rotor<T> apply(const basic_rotor<T>& a, const basic_rotor<T>& b) {
-  return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return apply(x...); }, a, b);
+  } else {
+    return basic_rotor<T>(apply(basic_mv<T>(a), basic_mv<T>(b)));
+  }
 }
 
 }  // namespace e3ga

@@ -993,6 +993,7 @@ GAPHYS_ALWAYS_INLINE basic_rotor<T> inverse(const basic_rotor<T>& a) {
 // dual(rotor) -> mv: 0 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> dual(const basic_rotor<T>& a) {
+  static_assert(!gaphys::ga::is_batch_v<T>, "dual(rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[18] = a.c[3];
   r.c[20] = -a.c[2];
@@ -1005,6 +1006,7 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> dual(const basic_rotor<T>& a) {
 // undual(rotor) -> mv: 0 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> undual(const basic_rotor<T>& a) {
+  static_assert(!gaphys::ga::is_batch_v<T>, "undual(rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[18] = -a.c[3];
   r.c[20] = a.c[2];
@@ -1072,6 +1074,8 @@ GAPHYS_ALWAYS_INLINE basic_translator<T> inverse(const basic_translator<T>& a) {
 // dual(translator) -> mv: 0 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> dual(const basic_translator<T>& a) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "dual(translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[23] = a.c[3];
   r.c[24] = -a.c[2];
@@ -1084,6 +1088,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> dual(const basic_translator<T>& a) {
 // undual(translator) -> mv: 0 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> undual(const basic_translator<T>& a) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "undual(translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[23] = -a.c[3];
   r.c[24] = a.c[2];
@@ -1155,6 +1161,7 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> inverse(const basic_motor<T>& a) {
 // dual(motor) -> mv: 0 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> dual(const basic_motor<T>& a) {
+  static_assert(!gaphys::ga::is_batch_v<T>, "dual(motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = -a.c[7];
   r.c[18] = a.c[3];
@@ -1171,6 +1178,7 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> dual(const basic_motor<T>& a) {
 // undual(motor) -> mv: 0 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> undual(const basic_motor<T>& a) {
+  static_assert(!gaphys::ga::is_batch_v<T>, "undual(motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = a.c[7];
   r.c[18] = -a.c[3];
@@ -1271,6 +1279,8 @@ GAPHYS_ALWAYS_INLINE basic_point_pair<T> op(const basic_normalized_point<T>& a,
 // gp(dual_sphere, dual_sphere) -> mv: 25 mul, 14 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[0] * b.c[4] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] - a.c[4] * b.c[0];
   r.c[6] = a.c[0] * b.c[1] - a.c[1] * b.c[0];
@@ -1355,6 +1365,8 @@ GAPHYS_ALWAYS_INLINE basic_circle<T> meet(const basic_sphere<T>& a, const basic_
 // gp(circle, circle) -> mv: 100 mul, 84 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = a.c[0] * b.c[7] + a.c[1] * b.c[8] + a.c[2] * b.c[9] + a.c[3] * b.c[3] + a.c[4] * b.c[4] +
            a.c[5] * b.c[5] - a.c[6] * b.c[6] + a.c[7] * b.c[0] + a.c[8] * b.c[1] + a.c[9] * b.c[2];
@@ -1583,49 +1595,76 @@ GAPHYS_ALWAYS_INLINE basic_dual_plane<T> apply(const basic_motor<T>& a,
 // exp(euclidean_bivector) -> rotor: 6 mul, 2 add, 1 exp_of_square
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_rotor<T> exp(const basic_euclidean_bivector<T>& a) {
-  const auto factors =
-      gaphys::ga::exp_of_square<T>(-a.c[0] * a.c[0] - a.c[1] * a.c[1] - a.c[2] * a.c[2]);
-  const T c = factors.c, k = factors.k;
-  return basic_rotor<T>(c, a.c[0] * k, a.c[1] * k, a.c[2] * k);
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return exp(x...); }, a);
+  } else {
+    const auto factors =
+        gaphys::ga::exp_of_square<T>(-a.c[0] * a.c[0] - a.c[1] * a.c[1] - a.c[2] * a.c[2]);
+    const T c = factors.c, k = factors.k;
+    return basic_rotor<T>(c, a.c[0] * k, a.c[1] * k, a.c[2] * k);
+  }
 }
 
 // exp(dual_line) -> motor (general mv path)
 template <class T>
 basic_motor<T> exp(const basic_dual_line<T>& a) {
-  return basic_motor<T>(exp(basic_mv<T>(a)));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_motor<T>>(
+        [](const auto&... x) { return exp(x...); }, a);
+  } else {
+    return basic_motor<T>(exp(basic_mv<T>(a)));
+  }
 }
 
 // log(rotor) -> euclidean_bivector: 9 mul, 4 add, 1 log_factor
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> log(const basic_rotor<T>& a) {
-  const T s = -a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3];
-  const T c = a.c[0];
-  const gaphys::ga::log_case where =
-      gaphys::ga::log_case_of(s, c, a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
-  if (where == gaphys::ga::log_case::minus_one) {  // -1: a rotation by 2 pi in a chosen plane
-    basic_euclidean_bivector<T> r;
-    r.c[0] = T(3.14159265358979323846);
-    return r;
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_euclidean_bivector<T>>(
+        [](const auto&... x) { return log(x...); }, a);
+  } else {
+    const T s = -a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3];
+    const T c = a.c[0];
+    const gaphys::ga::log_case where =
+        gaphys::ga::log_case_of(s, c, a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+    if (where == gaphys::ga::log_case::minus_one) {  // -1: a rotation by 2 pi in a chosen plane
+      basic_euclidean_bivector<T> r;
+      r.c[0] = T(3.14159265358979323846);
+      return r;
+    }
+    const T f =
+        gaphys::ga::log_factor(s, c, where);  // throws std::domain_error: no log in the plane
+    return basic_euclidean_bivector<T>(a.c[1] * f, a.c[2] * f, a.c[3] * f);
   }
-  const T f = gaphys::ga::log_factor(s, c, where);  // throws std::domain_error: no log in the plane
-  return basic_euclidean_bivector<T>(a.c[1] * f, a.c[2] * f, a.c[3] * f);
 }
 
 // log(translator) -> flat_point: 6 mul, 2 add, 1 log_factor
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_flat_point<T> log(const basic_translator<T>& a) {
-  const T s = T(0);
-  const T c = a.c[0];
-  const gaphys::ga::log_case where =
-      gaphys::ga::log_case_of(s, c, a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
-  const T f = gaphys::ga::log_factor(s, c, where);  // throws std::domain_error: no log in the plane
-  return basic_flat_point<T>(a.c[1] * f, a.c[2] * f, a.c[3] * f, T(0));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_flat_point<T>>(
+        [](const auto&... x) { return log(x...); }, a);
+  } else {
+    const T s = T(0);
+    const T c = a.c[0];
+    const gaphys::ga::log_case where =
+        gaphys::ga::log_case_of(s, c, a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+    const T f =
+        gaphys::ga::log_factor(s, c, where);  // throws std::domain_error: no log in the plane
+    return basic_flat_point<T>(a.c[1] * f, a.c[2] * f, a.c[3] * f, T(0));
+  }
 }
 
 // log(motor) -> dual_line (general mv path)
 template <class T>
 basic_dual_line<T> log(const basic_motor<T>& a) {
-  return basic_dual_line<T>(detail::log_within(basic_mv<T>(a), 0xfc00u));
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_dual_line<T>>(
+        [](const auto&... x) { return log(x...); }, a);
+  } else {
+    return basic_dual_line<T>(detail::log_within(basic_mv<T>(a), 0xfc00u));
+  }
 }
 
 // lc(dual_sphere, dual_sphere) -> scalar: 5 mul, 4 add
@@ -1637,6 +1676,8 @@ GAPHYS_ALWAYS_INLINE T lc(const basic_dual_sphere<T>& a, const basic_dual_sphere
 // gp(point_pair, point_pair) -> mv: 100 mul, 84 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[0] * b.c[6] - a.c[1] * b.c[8] - a.c[2] * b.c[9] + a.c[3] * b.c[3] -
            a.c[4] * b.c[4] - a.c[5] * b.c[5] - a.c[6] * b.c[0] - a.c[7] * b.c[7] - a.c[8] * b.c[1] -
@@ -1735,6 +1776,8 @@ GAPHYS_ALWAYS_INLINE T scp(const basic_motor<T>& a, const basic_motor<T>& b) {
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
                                     const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[3] - b.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
   r.c[6] = -a.c[0] + b.c[0];
@@ -1755,6 +1798,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
                                     const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -b.c[4] + a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] - a.c[3] * b.c[0];
   r.c[6] = b.c[1] - a.c[0] * b.c[0];
@@ -1775,6 +1820,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
                                     const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, dual_plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -b.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
   r.c[6] = b.c[0];
@@ -1795,6 +1842,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
                                     const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, euclidean_vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
   r.c[6] = b.c[0];
@@ -1814,6 +1863,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
                                     const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, flat_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = b.c[3];
   r.c[2] = b.c[0];
@@ -1834,6 +1885,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
                                     const basic_euclidean_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, euclidean_bivector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
   r.c[3] = a.c[0] * b.c[0] - a.c[2] * b.c[2];
@@ -1853,6 +1906,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
                                     const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = b.c[3] - a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[2] = b.c[6] - a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[0];
@@ -1877,6 +1932,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
                                     const basic_dual_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, dual_line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = b.c[3] - a.c[1] * b.c[0] - a.c[2] * b.c[1];
   r.c[3] = b.c[4] + a.c[0] * b.c[0] - a.c[2] * b.c[2];
@@ -1899,6 +1956,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
 // gp(normalized_point, line) -> mv: 21 mul, 16 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = -b.c[3];
   r.c[7] = -b.c[4];
@@ -1921,6 +1980,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a, const ba
 // gp(normalized_point, circle) -> mv: 40 mul, 35 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = -b.c[3] + a.c[1] * b.c[0] + a.c[2] * b.c[1];
   r.c[7] = -b.c[4] - a.c[0] * b.c[0] + a.c[2] * b.c[2];
@@ -1944,6 +2005,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a, const ba
 // gp(normalized_point, sphere) -> mv: 20 mul, 14 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = b.c[1] - a.c[2] * b.c[0];
   r.c[17] = b.c[2] + a.c[1] * b.c[0];
@@ -1963,6 +2026,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a, const ba
 // gp(normalized_point, plane) -> mv: 15 mul, 9 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = b.c[1];
   r.c[17] = b.c[2];
@@ -1990,6 +2055,8 @@ GAPHYS_ALWAYS_INLINE basic_sphere<T> gp(const basic_normalized_point<T>& a,
 // gp(normalized_point, rotor) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = b.c[0];
   r.c[2] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
@@ -2011,6 +2078,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a, const ba
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
                                     const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = b.c[0];
   r.c[2] = b.c[1] + a.c[0] * b.c[0];
@@ -2030,6 +2099,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a,
 // gp(normalized_point, motor) -> mv: 28 mul, 24 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(normalized_point, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = b.c[0];
   r.c[2] = b.c[4] + a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
@@ -2055,6 +2126,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_normalized_point<T>& a, const ba
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a,
                                     const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[4] - a.c[0] * b.c[3] + a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
   r.c[6] = -a.c[1] + a.c[0] * b.c[0];
@@ -2074,6 +2147,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a,
 // gp(dual_sphere, dual_plane) -> mv: 20 mul, 9 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, dual_plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[0] * b.c[3] + a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
   r.c[6] = a.c[0] * b.c[0];
@@ -2094,6 +2169,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_d
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a,
                                     const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, euclidean_vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
   r.c[6] = a.c[0] * b.c[0];
@@ -2112,6 +2189,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a,
 // gp(dual_sphere, flat_point) -> mv: 20 mul, 9 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, flat_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[3];
   r.c[2] = a.c[0] * b.c[0];
@@ -2132,6 +2211,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_f
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a,
                                     const basic_euclidean_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, euclidean_bivector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = -a.c[2] * b.c[0] - a.c[3] * b.c[1];
   r.c[3] = a.c[1] * b.c[0] - a.c[3] * b.c[2];
@@ -2150,6 +2231,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a,
 // gp(dual_sphere, point_pair) -> mv: 50 mul, 35 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[3] - a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
   r.c[2] = a.c[0] * b.c[6] - a.c[2] * b.c[4] - a.c[3] * b.c[5] - a.c[4] * b.c[0];
@@ -2173,6 +2256,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_p
 // gp(dual_sphere, dual_line) -> mv: 30 mul, 16 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_dual_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, dual_line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[3] - a.c[2] * b.c[0] - a.c[3] * b.c[1];
   r.c[3] = a.c[0] * b.c[4] + a.c[1] * b.c[0] - a.c[3] * b.c[2];
@@ -2195,6 +2280,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_d
 // gp(dual_sphere, line) -> mv: 30 mul, 16 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = -a.c[0] * b.c[3];
   r.c[7] = -a.c[0] * b.c[4];
@@ -2217,6 +2304,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_l
 // gp(dual_sphere, circle) -> mv: 50 mul, 35 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = -a.c[0] * b.c[3] + a.c[2] * b.c[0] + a.c[3] * b.c[1];
   r.c[7] = -a.c[0] * b.c[4] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
@@ -2240,6 +2329,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_c
 // gp(dual_sphere, sphere) -> mv: 25 mul, 14 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = a.c[0] * b.c[1] - a.c[3] * b.c[0];
   r.c[17] = a.c[0] * b.c[2] + a.c[2] * b.c[0];
@@ -2259,6 +2350,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_s
 // gp(dual_sphere, plane) -> mv: 20 mul, 9 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = a.c[0] * b.c[1];
   r.c[17] = a.c[0] * b.c[2];
@@ -2286,6 +2379,8 @@ GAPHYS_ALWAYS_INLINE basic_sphere<T> gp(const basic_dual_sphere<T>& a,
 // gp(dual_sphere, rotor) -> mv: 20 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
@@ -2306,6 +2401,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_r
 // gp(dual_sphere, translator) -> mv: 20 mul, 9 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[0] * b.c[1] + a.c[1] * b.c[0];
@@ -2325,6 +2422,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_t
 // gp(dual_sphere, motor) -> mv: 40 mul, 24 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_sphere, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[0] * b.c[4] + a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
@@ -2350,6 +2449,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_sphere<T>& a, const basic_m
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a,
                                     const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
   r.c[6] = -a.c[0];
@@ -2369,6 +2470,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a,
 // gp(dual_plane, dual_sphere) -> mv: 20 mul, 9 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] - a.c[3] * b.c[0];
   r.c[6] = -a.c[0] * b.c[0];
@@ -2407,6 +2510,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_dual_plane<T>& a,
 // gp(dual_plane, flat_point) -> mv: 13 mul, 6 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, flat_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] - a.c[3] * b.c[3];
   r.c[18] = -a.c[0] * b.c[3];
@@ -2423,6 +2528,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_fl
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a,
                                     const basic_euclidean_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, euclidean_bivector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
   r.c[3] = a.c[0] * b.c[0] - a.c[2] * b.c[2];
@@ -2438,6 +2545,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a,
 // gp(dual_plane, point_pair) -> mv: 40 mul, 25 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[2] = -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[0];
@@ -2461,6 +2570,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_po
 // gp(dual_plane, dual_line) -> mv: 21 mul, 13 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_dual_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, dual_line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
   r.c[3] = a.c[0] * b.c[0] - a.c[2] * b.c[2];
@@ -2477,6 +2588,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_du
 // gp(dual_plane, line) -> mv: 21 mul, 13 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
   r.c[12] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[3];
@@ -2493,6 +2606,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_li
 // gp(dual_plane, circle) -> mv: 40 mul, 25 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = a.c[1] * b.c[0] + a.c[2] * b.c[1];
   r.c[7] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
@@ -2516,6 +2631,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_ci
 // gp(dual_plane, sphere) -> mv: 20 mul, 9 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = -a.c[2] * b.c[0];
   r.c[17] = a.c[1] * b.c[0];
@@ -2535,6 +2652,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_sp
 // gp(dual_plane, plane) -> mv: 15 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[18] = a.c[1] * b.c[1] + a.c[2] * b.c[2];
   r.c[20] = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
@@ -2557,6 +2676,8 @@ GAPHYS_ALWAYS_INLINE basic_plane<T> gp(const basic_dual_plane<T>& a,
 // gp(dual_plane, rotor) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[3] = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
@@ -2573,6 +2694,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_ro
 // gp(dual_plane, translator) -> mv: 13 mul, 6 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[1] * b.c[0];
@@ -2588,6 +2711,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_tr
 // gp(dual_plane, motor) -> mv: 28 mul, 20 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_plane, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[3] = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
@@ -2605,6 +2730,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_plane<T>& a, const basic_mo
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a,
                                     const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
   r.c[6] = -a.c[0];
@@ -2624,6 +2751,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a,
                                     const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3];
   r.c[6] = -a.c[0] * b.c[0];
@@ -2662,6 +2791,8 @@ GAPHYS_ALWAYS_INLINE basic_rotor<T> gp(const basic_euclidean_vector<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a,
                                     const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, flat_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
   r.c[18] = -a.c[0] * b.c[3];
@@ -2678,6 +2809,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a,
                                     const basic_euclidean_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, euclidean_bivector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
   r.c[3] = a.c[0] * b.c[0] - a.c[2] * b.c[2];
@@ -2691,6 +2824,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a,
                                     const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[2] = -a.c[1] * b.c[4] - a.c[2] * b.c[5];
@@ -2715,6 +2850,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a,
                                     const basic_dual_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, dual_line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
   r.c[3] = a.c[0] * b.c[0] - a.c[2] * b.c[2];
@@ -2731,6 +2868,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a,
 // gp(euclidean_vector, line) -> mv: 18 mul, 10 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
   r.c[12] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
@@ -2747,6 +2886,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a, const ba
 // gp(euclidean_vector, circle) -> mv: 30 mul, 15 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = a.c[1] * b.c[0] + a.c[2] * b.c[1];
   r.c[7] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
@@ -2770,6 +2911,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a, const ba
 // gp(euclidean_vector, sphere) -> mv: 15 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = -a.c[2] * b.c[0];
   r.c[17] = a.c[1] * b.c[0];
@@ -2788,6 +2931,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a, const ba
 // gp(euclidean_vector, plane) -> mv: 12 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[18] = a.c[1] * b.c[1] + a.c[2] * b.c[2];
   r.c[20] = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
@@ -2810,6 +2955,8 @@ GAPHYS_ALWAYS_INLINE basic_plane<T> gp(const basic_euclidean_vector<T>& a,
 // gp(euclidean_vector, rotor) -> mv: 12 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[3] = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
@@ -2823,6 +2970,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a, const ba
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a,
                                     const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[1] * b.c[0];
@@ -2838,6 +2987,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a,
 // gp(euclidean_vector, motor) -> mv: 24 mul, 16 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_vector, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[3] = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
@@ -2855,6 +3006,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_vector<T>& a, const ba
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a,
                                     const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[3];
   r.c[2] = -a.c[0];
@@ -2874,6 +3027,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a,
 // gp(flat_point, dual_sphere) -> mv: 20 mul, 9 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[3] * b.c[0];
   r.c[2] = -a.c[0] * b.c[0];
@@ -2893,6 +3048,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_du
 // gp(flat_point, dual_plane) -> mv: 13 mul, 6 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, dual_plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[3];
   r.c[18] = -a.c[3] * b.c[0];
@@ -2909,6 +3066,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_du
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a,
                                     const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, euclidean_vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[18] = -a.c[3] * b.c[0];
@@ -2934,6 +3093,8 @@ GAPHYS_ALWAYS_INLINE basic_translator<T> gp(const basic_flat_point<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a,
                                     const basic_euclidean_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, euclidean_bivector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[12] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
   r.c[14] = a.c[0] * b.c[0] - a.c[2] * b.c[2];
@@ -2949,6 +3110,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a,
 // gp(flat_point, point_pair) -> mv: 40 mul, 25 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[3];
   r.c[6] = -a.c[3] * b.c[0];
@@ -2972,6 +3135,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_po
 // gp(flat_point, dual_line) -> mv: 15 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_dual_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, dual_line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[12] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] + a.c[3] * b.c[3];
   r.c[14] = a.c[0] * b.c[0] - a.c[2] * b.c[2] + a.c[3] * b.c[4];
@@ -2987,6 +3152,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_du
 // gp(flat_point, line) -> mv: 15 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = -a.c[3] * b.c[3];
   r.c[3] = -a.c[3] * b.c[4];
@@ -3002,6 +3169,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_li
 // gp(flat_point, circle) -> mv: 40 mul, 25 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[1] * b.c[0] + a.c[2] * b.c[1] - a.c[3] * b.c[3];
   r.c[3] = -a.c[0] * b.c[0] + a.c[2] * b.c[2] - a.c[3] * b.c[4];
@@ -3025,6 +3194,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_ci
 // gp(flat_point, sphere) -> mv: 20 mul, 9 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[10] = -a.c[2] * b.c[0] + a.c[3] * b.c[1];
   r.c[11] = a.c[1] * b.c[0] + a.c[3] * b.c[2];
@@ -3061,6 +3232,8 @@ GAPHYS_ALWAYS_INLINE basic_circle<T> gp(const basic_flat_point<T>& a,
 // gp(flat_point, rotor) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = a.c[3] * b.c[0];
   r.c[12] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
@@ -3085,6 +3258,8 @@ GAPHYS_ALWAYS_INLINE basic_flat_point<T> gp(const basic_flat_point<T>& a,
 // gp(flat_point, motor) -> mv: 20 mul, 12 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(flat_point, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = a.c[3] * b.c[0];
   r.c[12] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[4];
@@ -3102,6 +3277,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_flat_point<T>& a, const basic_mo
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
                                     const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_bivector, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
   r.c[3] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
@@ -3121,6 +3298,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
                                     const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_bivector, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[2] + a.c[1] * b.c[3];
   r.c[3] = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
@@ -3140,6 +3319,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
                                     const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_bivector, dual_plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
   r.c[3] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
@@ -3156,6 +3337,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
                                     const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_bivector, euclidean_vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
   r.c[3] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
@@ -3169,6 +3352,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
                                     const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_bivector, flat_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[12] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
   r.c[14] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
@@ -3194,6 +3379,8 @@ GAPHYS_ALWAYS_INLINE basic_rotor<T> gp(const basic_euclidean_bivector<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
                                     const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_bivector, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[7];
   r.c[6] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
@@ -3228,6 +3415,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_euclidean_bivector<T>& a,
 // gp(euclidean_bivector, line) -> mv: 18 mul, 10 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_bivector, line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[18] = a.c[0] * b.c[4] + a.c[1] * b.c[5];
@@ -3245,6 +3434,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a, const 
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
                                     const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_bivector, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[2] = -a.c[2] * b.c[6];
@@ -3269,6 +3460,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
                                     const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_bivector, sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = -a.c[2] * b.c[0];
   r.c[7] = a.c[1] * b.c[0];
@@ -3287,6 +3480,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a,
 // gp(euclidean_bivector, plane) -> mv: 12 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_euclidean_bivector<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(euclidean_bivector, plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
   r.c[12] = -a.c[2] * b.c[0];
@@ -3344,6 +3539,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_euclidean_bivector<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a,
                                     const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[3] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
   r.c[2] = -a.c[6] + a.c[0] * b.c[3] + a.c[4] * b.c[1] + a.c[5] * b.c[2];
@@ -3367,6 +3564,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a,
 // gp(point_pair, dual_sphere) -> mv: 50 mul, 35 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] - a.c[3] * b.c[0];
   r.c[2] = a.c[0] * b.c[4] + a.c[4] * b.c[2] + a.c[5] * b.c[3] - a.c[6] * b.c[0];
@@ -3390,6 +3589,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_du
 // gp(point_pair, dual_plane) -> mv: 40 mul, 25 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, dual_plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
   r.c[2] = a.c[0] * b.c[3] + a.c[4] * b.c[1] + a.c[5] * b.c[2];
@@ -3414,6 +3615,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_du
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a,
                                     const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, euclidean_vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
   r.c[2] = a.c[4] * b.c[1] + a.c[5] * b.c[2];
@@ -3437,6 +3640,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a,
 // gp(point_pair, flat_point) -> mv: 40 mul, 25 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, flat_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] + a.c[3] * b.c[3];
   r.c[6] = a.c[0] * b.c[3];
@@ -3461,6 +3666,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_fl
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a,
                                     const basic_euclidean_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, euclidean_bivector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[4] * b.c[0] - a.c[5] * b.c[1] - a.c[7] * b.c[2];
   r.c[6] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
@@ -3484,6 +3691,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a,
 // gp(point_pair, dual_line) -> mv: 60 mul, 44 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_dual_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, dual_line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[4] * b.c[0] -
            a.c[5] * b.c[1] - a.c[7] * b.c[2];
@@ -3510,6 +3719,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_du
 // gp(point_pair, line) -> mv: 60 mul, 44 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
   r.c[2] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[3];
@@ -3536,6 +3747,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_li
 // gp(point_pair, circle) -> mv: 100 mul, 84 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[0] * b.c[3] - a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[4] * b.c[0] -
            a.c[5] * b.c[1] - a.c[7] * b.c[2];
@@ -3577,6 +3790,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_ci
 // gp(point_pair, sphere) -> mv: 50 mul, 35 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[7] * b.c[0];
   r.c[7] = a.c[0] * b.c[1] - a.c[2] * b.c[3] + a.c[5] * b.c[0];
@@ -3600,6 +3815,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_sp
 // gp(point_pair, plane) -> mv: 40 mul, 25 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[7] = a.c[0] * b.c[1] - a.c[2] * b.c[3];
@@ -3632,6 +3849,8 @@ GAPHYS_ALWAYS_INLINE basic_circle<T> gp(const basic_point_pair<T>& a,
 // gp(point_pair, rotor) -> mv: 40 mul, 24 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[4] * b.c[1] - a.c[5] * b.c[2] - a.c[7] * b.c[3];
   r.c[6] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
@@ -3656,6 +3875,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_ro
 // gp(point_pair, translator) -> mv: 40 mul, 25 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
   r.c[6] = a.c[0] * b.c[0];
@@ -3679,6 +3900,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_tr
 // gp(point_pair, motor) -> mv: 80 mul, 64 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(point_pair, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[6] - a.c[4] * b.c[1] -
            a.c[5] * b.c[2] - a.c[7] * b.c[3];
@@ -3712,6 +3935,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_point_pair<T>& a, const basic_mo
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a,
                                     const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_line, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = -a.c[3] + a.c[0] * b.c[1] + a.c[1] * b.c[2];
   r.c[3] = -a.c[4] - a.c[0] * b.c[0] + a.c[2] * b.c[2];
@@ -3734,6 +3959,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a,
 // gp(dual_line, dual_sphere) -> mv: 30 mul, 16 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_line, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[2] + a.c[1] * b.c[3] - a.c[3] * b.c[0];
   r.c[3] = -a.c[0] * b.c[1] + a.c[2] * b.c[3] - a.c[4] * b.c[0];
@@ -3756,6 +3983,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a, const basic_dua
 // gp(dual_line, dual_plane) -> mv: 21 mul, 13 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_line, dual_plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
   r.c[3] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
@@ -3773,6 +4002,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a, const basic_dua
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a,
                                     const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_line, euclidean_vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
   r.c[3] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
@@ -3789,6 +4020,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a,
 // gp(dual_line, flat_point) -> mv: 15 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_line, flat_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[12] = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[3];
   r.c[14] = -a.c[0] * b.c[0] + a.c[2] * b.c[2] - a.c[4] * b.c[3];
@@ -3815,6 +4048,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_dual_line<T>& a,
 // gp(dual_line, point_pair) -> mv: 60 mul, 44 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_line, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[7] - a.c[3] * b.c[0] -
            a.c[4] * b.c[1] - a.c[5] * b.c[2];
@@ -3856,6 +4091,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_dual_line<T>& a, const basic_
 // gp(dual_line, line) -> mv: 27 mul, 19 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_line, line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3] -
            a.c[4] * b.c[4] - a.c[5] * b.c[5];
@@ -3873,6 +4110,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a, const basic_lin
 // gp(dual_line, circle) -> mv: 60 mul, 44 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_line, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[2] = -a.c[2] * b.c[6] + a.c[4] * b.c[0] + a.c[5] * b.c[1];
@@ -3901,6 +4140,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a, const basic_cir
 // gp(dual_line, sphere) -> mv: 30 mul, 16 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_line, sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = -a.c[2] * b.c[0];
   r.c[7] = a.c[1] * b.c[0];
@@ -3923,6 +4164,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a, const basic_sph
 // gp(dual_line, plane) -> mv: 21 mul, 13 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_dual_line<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(dual_line, plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
   r.c[12] = -a.c[2] * b.c[0] + a.c[4] * b.c[1] + a.c[5] * b.c[2];
@@ -3986,6 +4229,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_dual_line<T>& a, const basic_
 // gp(line, normalized_point) -> mv: 21 mul, 16 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = -a.c[3];
   r.c[7] = -a.c[4];
@@ -4008,6 +4253,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_normaliz
 // gp(line, dual_sphere) -> mv: 30 mul, 16 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = -a.c[3] * b.c[0];
   r.c[7] = -a.c[4] * b.c[0];
@@ -4030,6 +4277,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_dual_sph
 // gp(line, dual_plane) -> mv: 21 mul, 13 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, dual_plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
   r.c[12] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[3] * b.c[3];
@@ -4046,6 +4295,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_dual_pla
 // gp(line, euclidean_vector) -> mv: 18 mul, 10 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, euclidean_vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
   r.c[12] = -a.c[0] * b.c[1] - a.c[1] * b.c[2];
@@ -4062,6 +4313,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_euclidea
 // gp(line, flat_point) -> mv: 15 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, flat_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = -a.c[3] * b.c[3];
   r.c[3] = -a.c[4] * b.c[3];
@@ -4077,6 +4330,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_flat_poi
 // gp(line, euclidean_bivector) -> mv: 18 mul, 10 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_euclidean_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, euclidean_bivector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[18] = -a.c[4] * b.c[0] - a.c[5] * b.c[1];
@@ -4093,6 +4348,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_euclidea
 // gp(line, point_pair) -> mv: 60 mul, 44 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
   r.c[2] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[3] * b.c[3];
@@ -4121,6 +4378,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_point_pa
 // gp(line, dual_line) -> mv: 27 mul, 19 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_dual_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, dual_line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3] -
            a.c[4] * b.c[4] - a.c[5] * b.c[5];
@@ -4151,6 +4410,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_line<T>& a, const basic_line<
 // gp(line, circle) -> mv: 60 mul, 44 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] + a.c[4] * b.c[4] +
            a.c[5] * b.c[5];
@@ -4178,6 +4439,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_circle<T
 // gp(line, sphere) -> mv: 30 mul, 16 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[2] * b.c[0] + a.c[4] * b.c[1] + a.c[5] * b.c[2];
   r.c[3] = -a.c[1] * b.c[0] - a.c[3] * b.c[1] + a.c[5] * b.c[3];
@@ -4200,6 +4463,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_sphere<T
 // gp(line, plane) -> mv: 21 mul, 13 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[4] * b.c[1] + a.c[5] * b.c[2];
   r.c[3] = -a.c[3] * b.c[1] + a.c[5] * b.c[3];
@@ -4223,6 +4488,8 @@ GAPHYS_ALWAYS_INLINE basic_dual_line<T> gp(const basic_line<T>& a, const basic_p
 // gp(line, rotor) -> mv: 24 mul, 16 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
   r.c[18] = a.c[3] * b.c[0] - a.c[4] * b.c[1] - a.c[5] * b.c[2];
@@ -4239,6 +4506,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_rotor<T>
 // gp(line, translator) -> mv: 15 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = -a.c[3] * b.c[1] - a.c[4] * b.c[2] - a.c[5] * b.c[3];
   r.c[18] = a.c[3] * b.c[0];
@@ -4254,6 +4523,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_translat
 // gp(line, motor) -> mv: 36 mul, 28 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(line, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3] - a.c[3] * b.c[4] -
            a.c[4] * b.c[5] - a.c[5] * b.c[6];
@@ -4274,6 +4545,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_line<T>& a, const basic_motor<T>
 // gp(circle, normalized_point) -> mv: 40 mul, 35 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = -a.c[3] + a.c[0] * b.c[1] + a.c[1] * b.c[2];
   r.c[7] = -a.c[4] - a.c[0] * b.c[0] + a.c[2] * b.c[2];
@@ -4297,6 +4570,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_normal
 // gp(circle, dual_sphere) -> mv: 50 mul, 35 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = a.c[0] * b.c[2] + a.c[1] * b.c[3] - a.c[3] * b.c[0];
   r.c[7] = -a.c[0] * b.c[1] + a.c[2] * b.c[3] - a.c[4] * b.c[0];
@@ -4320,6 +4595,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_dual_s
 // gp(circle, dual_plane) -> mv: 40 mul, 25 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, dual_plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
   r.c[7] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
@@ -4343,6 +4620,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_dual_p
 // gp(circle, euclidean_vector) -> mv: 30 mul, 15 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, euclidean_vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
   r.c[7] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
@@ -4366,6 +4645,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_euclid
 // gp(circle, flat_point) -> mv: 40 mul, 25 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, flat_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[1] + a.c[1] * b.c[2] - a.c[3] * b.c[3];
   r.c[3] = -a.c[0] * b.c[0] + a.c[2] * b.c[2] - a.c[4] * b.c[3];
@@ -4390,6 +4671,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_flat_p
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a,
                                     const basic_euclidean_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, euclidean_bivector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[2] = -a.c[6] * b.c[2];
@@ -4413,6 +4696,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a,
 // gp(circle, point_pair) -> mv: 100 mul, 84 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[7] - a.c[3] * b.c[0] -
            a.c[4] * b.c[1] - a.c[5] * b.c[2];
@@ -4454,6 +4739,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_point_
 // gp(circle, dual_line) -> mv: 60 mul, 44 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_dual_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, dual_line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[2] = a.c[0] * b.c[4] + a.c[1] * b.c[5] - a.c[6] * b.c[2];
@@ -4483,6 +4770,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_dual_l
 // gp(circle, line) -> mv: 60 mul, 44 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] + a.c[3] * b.c[3] + a.c[4] * b.c[4] +
            a.c[5] * b.c[5];
@@ -4511,6 +4800,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_line<T
 // gp(circle, sphere) -> mv: 50 mul, 35 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3] + a.c[6] * b.c[0];
   r.c[2] = -a.c[2] * b.c[4] + a.c[4] * b.c[1] + a.c[5] * b.c[2] + a.c[9] * b.c[0];
@@ -4534,6 +4825,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_sphere
 // gp(circle, plane) -> mv: 40 mul, 25 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
   r.c[2] = -a.c[2] * b.c[0] + a.c[4] * b.c[1] + a.c[5] * b.c[2];
@@ -4566,6 +4859,8 @@ GAPHYS_ALWAYS_INLINE basic_point_pair<T> gp(const basic_circle<T>& a,
 // gp(circle, rotor) -> mv: 40 mul, 24 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
   r.c[2] = -a.c[6] * b.c[3];
@@ -4590,6 +4885,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_rotor<
 // gp(circle, translator) -> mv: 40 mul, 25 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[2] + a.c[1] * b.c[3];
   r.c[3] = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
@@ -4613,6 +4910,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_transl
 // gp(circle, motor) -> mv: 80 mul, 64 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(circle, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
   r.c[2] = a.c[0] * b.c[5] + a.c[1] * b.c[6] - a.c[2] * b.c[7] - a.c[6] * b.c[3];
@@ -4645,6 +4944,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_circle<T>& a, const basic_motor<
 // gp(sphere, normalized_point) -> mv: 20 mul, 14 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = -a.c[1] + a.c[0] * b.c[2];
   r.c[17] = -a.c[2] - a.c[0] * b.c[1];
@@ -4664,6 +4965,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_normal
 // gp(sphere, dual_sphere) -> mv: 25 mul, 14 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = a.c[0] * b.c[3] - a.c[1] * b.c[0];
   r.c[17] = -a.c[0] * b.c[2] - a.c[2] * b.c[0];
@@ -4683,6 +4986,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_dual_s
 // gp(sphere, dual_plane) -> mv: 20 mul, 9 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, dual_plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = a.c[0] * b.c[2];
   r.c[17] = -a.c[0] * b.c[1];
@@ -4702,6 +5007,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_dual_p
 // gp(sphere, euclidean_vector) -> mv: 15 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, euclidean_vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = a.c[0] * b.c[2];
   r.c[17] = -a.c[0] * b.c[1];
@@ -4720,6 +5027,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_euclid
 // gp(sphere, flat_point) -> mv: 20 mul, 9 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, flat_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[10] = -a.c[0] * b.c[2] + a.c[1] * b.c[3];
   r.c[11] = a.c[0] * b.c[1] + a.c[2] * b.c[3];
@@ -4740,6 +5049,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_flat_p
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a,
                                     const basic_euclidean_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, euclidean_bivector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = -a.c[0] * b.c[2];
   r.c[7] = a.c[0] * b.c[1];
@@ -4758,6 +5069,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a,
 // gp(sphere, point_pair) -> mv: 50 mul, 35 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = -a.c[0] * b.c[7] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[7] = a.c[0] * b.c[5] + a.c[1] * b.c[0] - a.c[3] * b.c[2];
@@ -4781,6 +5094,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_point_
 // gp(sphere, dual_line) -> mv: 30 mul, 16 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_dual_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, dual_line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = -a.c[0] * b.c[2];
   r.c[7] = a.c[0] * b.c[1];
@@ -4803,6 +5118,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_dual_l
 // gp(sphere, line) -> mv: 30 mul, 16 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = -a.c[0] * b.c[2] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
   r.c[3] = a.c[0] * b.c[1] + a.c[1] * b.c[3] - a.c[3] * b.c[5];
@@ -4825,6 +5142,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_line<T
 // gp(sphere, circle) -> mv: 50 mul, 35 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[0] * b.c[6] + a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
   r.c[2] = -a.c[0] * b.c[9] - a.c[1] * b.c[4] - a.c[2] * b.c[5] + a.c[4] * b.c[2];
@@ -4848,6 +5167,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_circle
 // gp(sphere, sphere) -> mv: 25 mul, 14 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = a.c[0] * b.c[4] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3] + a.c[4] * b.c[0];
   r.c[6] = -a.c[0] * b.c[3] + a.c[3] * b.c[0];
@@ -4867,6 +5188,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_sphere
 // gp(sphere, plane) -> mv: 20 mul, 9 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
   r.c[6] = -a.c[0] * b.c[3];
@@ -4894,6 +5217,8 @@ GAPHYS_ALWAYS_INLINE basic_dual_sphere<T> gp(const basic_sphere<T>& a,
 // gp(sphere, rotor) -> mv: 20 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = -a.c[0] * b.c[3];
   r.c[7] = a.c[0] * b.c[2];
@@ -4914,6 +5239,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_rotor<
 // gp(sphere, translator) -> mv: 20 mul, 9 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[10] = -a.c[0] * b.c[3];
   r.c[11] = a.c[0] * b.c[2];
@@ -4933,6 +5260,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_transl
 // gp(sphere, motor) -> mv: 40 mul, 24 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(sphere, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = a.c[0] * b.c[7];
   r.c[6] = -a.c[0] * b.c[3];
@@ -4957,6 +5286,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_sphere<T>& a, const basic_motor<
 // gp(plane, normalized_point) -> mv: 15 mul, 9 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = -a.c[1];
   r.c[17] = -a.c[2];
@@ -4976,6 +5307,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_normali
 // gp(plane, dual_sphere) -> mv: 20 mul, 9 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = -a.c[1] * b.c[0];
   r.c[17] = -a.c[2] * b.c[0];
@@ -4995,6 +5328,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_dual_sp
 // gp(plane, dual_plane) -> mv: 15 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, dual_plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[18] = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[20] = a.c[1] * b.c[0] - a.c[3] * b.c[2];
@@ -5010,6 +5345,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_dual_pl
 // gp(plane, euclidean_vector) -> mv: 12 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, euclidean_vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[18] = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[20] = a.c[1] * b.c[0] - a.c[3] * b.c[2];
@@ -5034,6 +5371,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_plane<T>& a, const basic_flat
 // gp(plane, euclidean_bivector) -> mv: 12 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_euclidean_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, euclidean_bivector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
   r.c[12] = -a.c[0] * b.c[2];
@@ -5049,6 +5388,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_euclide
 // gp(plane, point_pair) -> mv: 40 mul, 25 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[7] = a.c[1] * b.c[0] - a.c[3] * b.c[2];
@@ -5072,6 +5413,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_point_p
 // gp(plane, dual_line) -> mv: 21 mul, 13 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_dual_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, dual_line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
   r.c[12] = -a.c[0] * b.c[2] + a.c[1] * b.c[4] + a.c[2] * b.c[5];
@@ -5088,6 +5431,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_dual_li
 // gp(plane, line) -> mv: 21 mul, 13 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = -a.c[1] * b.c[4] - a.c[2] * b.c[5];
   r.c[3] = a.c[1] * b.c[3] - a.c[3] * b.c[5];
@@ -5104,6 +5449,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_line<T>
 // gp(plane, circle) -> mv: 40 mul, 25 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[1] * b.c[0] + a.c[2] * b.c[1] + a.c[3] * b.c[2];
   r.c[2] = a.c[0] * b.c[2] - a.c[1] * b.c[4] - a.c[2] * b.c[5];
@@ -5127,6 +5474,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_circle<
 // gp(plane, sphere) -> mv: 20 mul, 9 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
   r.c[6] = a.c[3] * b.c[0];
@@ -5163,6 +5512,8 @@ GAPHYS_ALWAYS_INLINE basic_dual_plane<T> gp(const basic_plane<T>& a,
 // gp(plane, rotor) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
   r.c[12] = -a.c[0] * b.c[3];
@@ -5179,6 +5530,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_rotor<T
 // gp(plane, translator) -> mv: 13 mul, 6 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[12] = a.c[1] * b.c[2] + a.c[2] * b.c[3];
   r.c[14] = -a.c[1] * b.c[1] + a.c[3] * b.c[3];
@@ -5194,6 +5547,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_transla
 // gp(plane, motor) -> mv: 28 mul, 20 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_plane<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(plane, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
   r.c[12] = -a.c[0] * b.c[3] + a.c[1] * b.c[5] + a.c[2] * b.c[6] - a.c[3] * b.c[7];
@@ -5308,6 +5663,8 @@ GAPHYS_ALWAYS_INLINE T gp(const basic_pseudoscalar<T>& a, const basic_pseudoscal
 // gp(pseudoscalar, rotor) -> mv: 4 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_pseudoscalar<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(pseudoscalar, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[18] = -a.c[0] * b.c[3];
   r.c[20] = a.c[0] * b.c[2];
@@ -5320,6 +5677,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_pseudoscalar<T>& a, const basic_
 // gp(pseudoscalar, translator) -> mv: 4 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_pseudoscalar<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(pseudoscalar, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[23] = -a.c[0] * b.c[3];
   r.c[24] = a.c[0] * b.c[2];
@@ -5332,6 +5691,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_pseudoscalar<T>& a, const basic_
 // gp(pseudoscalar, motor) -> mv: 8 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_pseudoscalar<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(pseudoscalar, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = a.c[0] * b.c[7];
   r.c[18] = -a.c[0] * b.c[3];
@@ -5348,6 +5709,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_pseudoscalar<T>& a, const basic_
 // gp(rotor, normalized_point) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0];
   r.c[2] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
@@ -5368,6 +5731,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_normali
 // gp(rotor, dual_sphere) -> mv: 20 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3];
@@ -5388,6 +5753,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_dual_sp
 // gp(rotor, dual_plane) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, dual_plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
   r.c[3] = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
@@ -5404,6 +5771,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_dual_pl
 // gp(rotor, euclidean_vector) -> mv: 12 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, euclidean_vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
   r.c[3] = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
@@ -5416,6 +5785,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_euclide
 // gp(rotor, flat_point) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, flat_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = a.c[0] * b.c[3];
   r.c[12] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
@@ -5442,6 +5813,8 @@ GAPHYS_ALWAYS_INLINE basic_rotor<T> gp(const basic_rotor<T>& a,
 // gp(rotor, point_pair) -> mv: 40 mul, 24 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[7];
   r.c[6] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
@@ -5479,6 +5852,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_rotor<T>& a, const basic_dual
 // gp(rotor, line) -> mv: 24 mul, 16 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
   r.c[18] = a.c[0] * b.c[3] + a.c[1] * b.c[4] + a.c[2] * b.c[5];
@@ -5495,6 +5870,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_line<T>
 // gp(rotor, circle) -> mv: 40 mul, 24 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
   r.c[2] = -a.c[3] * b.c[6];
@@ -5519,6 +5896,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_circle<
 // gp(rotor, sphere) -> mv: 20 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = -a.c[3] * b.c[0];
   r.c[7] = a.c[2] * b.c[0];
@@ -5539,6 +5918,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_sphere<
 // gp(rotor, plane) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
   r.c[12] = -a.c[3] * b.c[0];
@@ -5555,6 +5936,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_plane<T
 // gp(rotor, pseudoscalar) -> mv: 4 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_pseudoscalar<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, pseudoscalar) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[18] = -a.c[3] * b.c[0];
   r.c[20] = a.c[2] * b.c[0];
@@ -5581,6 +5964,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_rotor<T>& a, const basic_moto
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a,
                                     const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(translator, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0];
   r.c[2] = -a.c[1] + a.c[0] * b.c[0];
@@ -5600,6 +5985,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a,
 // gp(translator, dual_sphere) -> mv: 20 mul, 9 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(translator, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[0] * b.c[1] - a.c[1] * b.c[0];
@@ -5619,6 +6006,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_du
 // gp(translator, dual_plane) -> mv: 13 mul, 6 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(translator, dual_plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[0] * b.c[1];
@@ -5635,6 +6024,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_du
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a,
                                     const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(translator, euclidean_vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[0] * b.c[1];
@@ -5668,6 +6059,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_translator<T>& a,
 // gp(translator, point_pair) -> mv: 40 mul, 25 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(translator, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
   r.c[6] = a.c[0] * b.c[0];
@@ -5701,6 +6094,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_translator<T>& a, const basic
 // gp(translator, line) -> mv: 15 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(translator, line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = -a.c[1] * b.c[3] - a.c[2] * b.c[4] - a.c[3] * b.c[5];
   r.c[18] = a.c[0] * b.c[3];
@@ -5716,6 +6111,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_li
 // gp(translator, circle) -> mv: 40 mul, 25 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(translator, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[2] * b.c[0] + a.c[3] * b.c[1];
   r.c[3] = -a.c[1] * b.c[0] + a.c[3] * b.c[2];
@@ -5739,6 +6136,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_ci
 // gp(translator, sphere) -> mv: 20 mul, 9 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(translator, sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[10] = -a.c[3] * b.c[0];
   r.c[11] = a.c[2] * b.c[0];
@@ -5758,6 +6157,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_sp
 // gp(translator, plane) -> mv: 13 mul, 6 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(translator, plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[12] = a.c[2] * b.c[1] + a.c[3] * b.c[2];
   r.c[14] = -a.c[1] * b.c[1] + a.c[3] * b.c[3];
@@ -5773,6 +6174,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_pl
 // gp(translator, pseudoscalar) -> mv: 4 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_translator<T>& a, const basic_pseudoscalar<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(translator, pseudoscalar) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[23] = -a.c[3] * b.c[0];
   r.c[24] = a.c[2] * b.c[0];
@@ -5795,6 +6198,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_translator<T>& a, const basic
 // gp(motor, normalized_point) -> mv: 28 mul, 24 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0];
   r.c[2] = -a.c[4] + a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
@@ -5819,6 +6224,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_normali
 // gp(motor, dual_sphere) -> mv: 40 mul, 24 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[0] * b.c[1] + a.c[1] * b.c[2] + a.c[2] * b.c[3] - a.c[4] * b.c[0];
@@ -5843,6 +6250,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_dual_sp
 // gp(motor, dual_plane) -> mv: 28 mul, 20 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, dual_plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
   r.c[3] = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
@@ -5859,6 +6268,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_dual_pl
 // gp(motor, euclidean_vector) -> mv: 24 mul, 16 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, euclidean_vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
   r.c[3] = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
@@ -5875,6 +6286,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_euclide
 // gp(motor, flat_point) -> mv: 20 mul, 12 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, flat_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = a.c[0] * b.c[3];
   r.c[12] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2] - a.c[4] * b.c[3];
@@ -5905,6 +6318,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_motor<T>& a,
 // gp(motor, point_pair) -> mv: 80 mul, 64 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[7] - a.c[4] * b.c[0] -
            a.c[5] * b.c[1] - a.c[6] * b.c[2];
@@ -5954,6 +6369,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> gp(const basic_motor<T>& a, const basic_dual
 // gp(motor, line) -> mv: 36 mul, 28 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2] - a.c[4] * b.c[3] -
            a.c[5] * b.c[4] - a.c[6] * b.c[5];
@@ -5974,6 +6391,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_line<T>
 // gp(motor, circle) -> mv: 80 mul, 64 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
   r.c[2] = -a.c[3] * b.c[6] + a.c[5] * b.c[0] + a.c[6] * b.c[1] + a.c[7] * b.c[2];
@@ -6006,6 +6425,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_circle<
 // gp(motor, sphere) -> mv: 40 mul, 24 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = a.c[7] * b.c[0];
   r.c[6] = -a.c[3] * b.c[0];
@@ -6030,6 +6451,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_sphere<
 // gp(motor, plane) -> mv: 28 mul, 20 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
   r.c[12] = -a.c[3] * b.c[0] + a.c[5] * b.c[1] + a.c[6] * b.c[2] + a.c[7] * b.c[3];
@@ -6046,6 +6469,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_plane<T
 // gp(motor, pseudoscalar) -> mv: 8 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_motor<T>& a, const basic_pseudoscalar<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(motor, pseudoscalar) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = a.c[7] * b.c[0];
   r.c[18] = -a.c[3] * b.c[0];
@@ -6183,6 +6608,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_normalized_point<T>& a
 // op(normalized_point, rotor) -> mv: 10 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_normalized_point<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(normalized_point, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = b.c[0];
   r.c[2] = a.c[0] * b.c[0];
@@ -6204,6 +6631,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_normalized_point<T>& a, const ba
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_normalized_point<T>& a,
                                     const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(normalized_point, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = b.c[0];
   r.c[2] = a.c[0] * b.c[0];
@@ -6223,6 +6652,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_normalized_point<T>& a,
 // op(normalized_point, motor) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_normalized_point<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(normalized_point, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = b.c[0];
   r.c[2] = a.c[0] * b.c[0];
@@ -6348,6 +6779,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_dual_sphere<T>& a,
 // op(dual_sphere, rotor) -> mv: 14 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_dual_sphere<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(dual_sphere, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[1] * b.c[0];
@@ -6368,6 +6801,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_dual_sphere<T>& a, const basic_r
 // op(dual_sphere, translator) -> mv: 14 mul, 3 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_dual_sphere<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(dual_sphere, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[1] * b.c[0];
@@ -6387,6 +6822,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_dual_sphere<T>& a, const basic_t
 // op(dual_sphere, motor) -> mv: 24 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_dual_sphere<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(dual_sphere, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[1] * b.c[0];
@@ -6522,6 +6959,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_dual_plane<T>& a,
 // op(dual_plane, rotor) -> mv: 10 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_dual_plane<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(dual_plane, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[1] * b.c[0];
@@ -6538,6 +6977,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_dual_plane<T>& a, const basic_ro
 // op(dual_plane, translator) -> mv: 10 mul, 3 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_dual_plane<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(dual_plane, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[1] * b.c[0];
@@ -6553,6 +6994,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_dual_plane<T>& a, const basic_tr
 // op(dual_plane, motor) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_dual_plane<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(dual_plane, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[1] * b.c[0];
@@ -6676,6 +7119,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_euclidean_vector<T>& a
 // op(euclidean_vector, rotor) -> mv: 6 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_euclidean_vector<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(euclidean_vector, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[1] * b.c[0];
@@ -6689,6 +7134,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_euclidean_vector<T>& a, const ba
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_euclidean_vector<T>& a,
                                     const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(euclidean_vector, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[1] * b.c[0];
@@ -6703,6 +7150,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_euclidean_vector<T>& a,
 // op(euclidean_vector, motor) -> mv: 12 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_euclidean_vector<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(euclidean_vector, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[1] * b.c[0];
@@ -6775,6 +7224,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_flat_point<T>& a,
 // op(flat_point, rotor) -> mv: 10 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_flat_point<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(flat_point, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = a.c[3] * b.c[0];
   r.c[12] = a.c[0] * b.c[0];
@@ -6798,6 +7249,8 @@ GAPHYS_ALWAYS_INLINE basic_flat_point<T> op(const basic_flat_point<T>& a,
 // op(flat_point, motor) -> mv: 10 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_flat_point<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(flat_point, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = a.c[3] * b.c[0];
   r.c[12] = a.c[0] * b.c[0];
@@ -6996,6 +7449,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_point_pair<T>& a,
 // op(point_pair, rotor) -> mv: 19 mul, 4 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_point_pair<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(point_pair, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = a.c[0] * b.c[0];
   r.c[7] = a.c[1] * b.c[0];
@@ -7019,6 +7474,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_point_pair<T>& a, const basic_ro
 // op(point_pair, translator) -> mv: 19 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_point_pair<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(point_pair, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = a.c[0] * b.c[0];
   r.c[7] = a.c[1] * b.c[0];
@@ -7041,6 +7498,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_point_pair<T>& a, const basic_tr
 // op(point_pair, motor) -> mv: 28 mul, 13 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_point_pair<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(point_pair, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = a.c[0] * b.c[0];
   r.c[7] = a.c[1] * b.c[0];
@@ -7226,6 +7685,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_line<T>& a, const basi
 // op(line, rotor) -> mv: 9 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_line<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(line, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[18] = a.c[3] * b.c[0];
   r.c[20] = a.c[4] * b.c[0];
@@ -7248,6 +7709,8 @@ GAPHYS_ALWAYS_INLINE basic_line<T> op(const basic_line<T>& a, const basic_transl
 // op(line, motor) -> mv: 9 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_line<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(line, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[18] = a.c[3] * b.c[0];
   r.c[20] = a.c[4] * b.c[0];
@@ -7325,6 +7788,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_circle<T>& a,
 // op(circle, rotor) -> mv: 13 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_circle<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(circle, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = a.c[0] * b.c[0];
   r.c[17] = a.c[1] * b.c[0];
@@ -7344,6 +7809,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_circle<T>& a, const basic_rotor<
 // op(circle, translator) -> mv: 13 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_circle<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(circle, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = a.c[0] * b.c[0];
   r.c[17] = a.c[1] * b.c[0];
@@ -7363,6 +7830,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_circle<T>& a, const basic_transl
 // op(circle, motor) -> mv: 16 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_circle<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(circle, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = a.c[0] * b.c[0];
   r.c[17] = a.c[1] * b.c[0];
@@ -7503,6 +7972,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> op(const basic_pseudoscalar<T>& a,
 // op(rotor, normalized_point) -> mv: 10 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(rotor, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0];
   r.c[2] = a.c[0] * b.c[0];
@@ -7523,6 +7994,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_normali
 // op(rotor, dual_sphere) -> mv: 14 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(rotor, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[0] * b.c[1];
@@ -7543,6 +8016,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_dual_sp
 // op(rotor, dual_plane) -> mv: 10 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(rotor, dual_plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[0] * b.c[1];
@@ -7559,6 +8034,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_dual_pl
 // op(rotor, euclidean_vector) -> mv: 6 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(rotor, euclidean_vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[0] * b.c[1];
@@ -7571,6 +8048,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_euclide
 // op(rotor, flat_point) -> mv: 10 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(rotor, flat_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = a.c[0] * b.c[3];
   r.c[12] = a.c[0] * b.c[0];
@@ -7594,6 +8073,8 @@ GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> op(const basic_rotor<T>& a,
 // op(rotor, point_pair) -> mv: 19 mul, 4 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(rotor, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = a.c[0] * b.c[0];
   r.c[7] = a.c[0] * b.c[1];
@@ -7625,6 +8106,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_rotor<T>& a, const basic_dual
 // op(rotor, line) -> mv: 9 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(rotor, line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[18] = a.c[0] * b.c[3];
   r.c[20] = a.c[0] * b.c[4];
@@ -7640,6 +8123,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_line<T>
 // op(rotor, circle) -> mv: 13 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(rotor, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = a.c[0] * b.c[0];
   r.c[17] = a.c[0] * b.c[1];
@@ -7704,6 +8189,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_rotor<T>& a, const basic_moto
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_translator<T>& a,
                                     const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(translator, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0];
   r.c[2] = a.c[0] * b.c[0];
@@ -7723,6 +8210,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_translator<T>& a,
 // op(translator, dual_sphere) -> mv: 14 mul, 3 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_translator<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(translator, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[0] * b.c[1];
@@ -7742,6 +8231,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_translator<T>& a, const basic_du
 // op(translator, dual_plane) -> mv: 10 mul, 3 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_translator<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(translator, dual_plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[0] * b.c[1];
@@ -7758,6 +8249,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_translator<T>& a, const basic_du
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_translator<T>& a,
                                     const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(translator, euclidean_vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[0] * b.c[1];
@@ -7787,6 +8280,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_translator<T>& a,
 // op(translator, point_pair) -> mv: 19 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_translator<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(translator, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = a.c[0] * b.c[0];
   r.c[7] = a.c[0] * b.c[1];
@@ -7824,6 +8319,8 @@ GAPHYS_ALWAYS_INLINE basic_line<T> op(const basic_translator<T>& a, const basic_
 // op(translator, circle) -> mv: 13 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_translator<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(translator, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = a.c[0] * b.c[0];
   r.c[17] = a.c[0] * b.c[1];
@@ -7888,6 +8385,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_translator<T>& a, const basic
 // op(motor, normalized_point) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_motor<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(motor, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0];
   r.c[2] = a.c[0] * b.c[0];
@@ -7912,6 +8411,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_motor<T>& a, const basic_normali
 // op(motor, dual_sphere) -> mv: 24 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_motor<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(motor, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[0] * b.c[1];
@@ -7936,6 +8437,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_motor<T>& a, const basic_dual_sp
 // op(motor, dual_plane) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_motor<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(motor, dual_plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[0] * b.c[1];
@@ -7952,6 +8455,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_motor<T>& a, const basic_dual_pl
 // op(motor, euclidean_vector) -> mv: 12 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_motor<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(motor, euclidean_vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[0] * b.c[1];
@@ -7967,6 +8472,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_motor<T>& a, const basic_euclide
 // op(motor, flat_point) -> mv: 10 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_motor<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(motor, flat_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = a.c[0] * b.c[3];
   r.c[12] = a.c[0] * b.c[0];
@@ -7991,6 +8498,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_motor<T>& a,
 // op(motor, point_pair) -> mv: 28 mul, 13 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_motor<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(motor, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = a.c[0] * b.c[0];
   r.c[7] = a.c[0] * b.c[1];
@@ -8024,6 +8533,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> op(const basic_motor<T>& a, const basic_dual
 // op(motor, line) -> mv: 9 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_motor<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(motor, line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[18] = a.c[0] * b.c[3];
   r.c[20] = a.c[0] * b.c[4];
@@ -8039,6 +8550,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_motor<T>& a, const basic_line<T>
 // op(motor, circle) -> mv: 16 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_motor<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(motor, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = a.c[0] * b.c[0];
   r.c[17] = a.c[0] * b.c[1];
@@ -8227,6 +8740,8 @@ GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_normalized_point<T>& a,
 // lc(normalized_point, motor) -> mv: 12 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_normalized_point<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(normalized_point, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = b.c[4] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[3] = b.c[5] + a.c[0] * b.c[1] - a.c[2] * b.c[3];
@@ -8372,6 +8887,8 @@ GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_dual_sphere<T>& a,
 // lc(dual_sphere, motor) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_dual_sphere<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(dual_sphere, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[4] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
   r.c[3] = a.c[0] * b.c[5] + a.c[1] * b.c[1] - a.c[3] * b.c[3];
@@ -8513,6 +9030,8 @@ GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_dual_plane<T>& a,
 // lc(dual_plane, motor) -> mv: 12 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_dual_plane<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(dual_plane, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[3] = a.c[0] * b.c[1] - a.c[2] * b.c[3];
@@ -8648,6 +9167,8 @@ GAPHYS_ALWAYS_INLINE basic_dual_plane<T> lc(const basic_euclidean_vector<T>& a,
 // lc(euclidean_vector, motor) -> mv: 12 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_euclidean_vector<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(euclidean_vector, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = -a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[3] = a.c[0] * b.c[1] - a.c[2] * b.c[3];
@@ -9154,6 +9675,8 @@ GAPHYS_ALWAYS_INLINE basic_rotor<T> lc(const basic_rotor<T>& a,
 // lc(rotor, point_pair) -> mv: 13 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_rotor<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(rotor, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[7];
   r.c[6] = a.c[0] * b.c[0];
@@ -9181,6 +9704,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> lc(const basic_rotor<T>& a, const basic_dual
 // lc(rotor, line) -> mv: 9 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_rotor<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(rotor, line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
   r.c[18] = a.c[0] * b.c[3];
@@ -9196,6 +9721,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_rotor<T>& a, const basic_line<T>
 // lc(rotor, circle) -> mv: 19 mul, 4 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_rotor<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(rotor, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
   r.c[2] = -a.c[3] * b.c[6];
@@ -9219,6 +9746,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_rotor<T>& a, const basic_circle<
 // lc(rotor, sphere) -> mv: 14 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_rotor<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(rotor, sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = -a.c[3] * b.c[0];
   r.c[7] = a.c[2] * b.c[0];
@@ -9239,6 +9768,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_rotor<T>& a, const basic_sphere<
 // lc(rotor, plane) -> mv: 10 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_rotor<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(rotor, plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
   r.c[12] = -a.c[3] * b.c[0];
@@ -9255,6 +9786,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_rotor<T>& a, const basic_plane<T
 // lc(rotor, pseudoscalar) -> mv: 4 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_rotor<T>& a, const basic_pseudoscalar<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(rotor, pseudoscalar) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[18] = -a.c[3] * b.c[0];
   r.c[20] = a.c[2] * b.c[0];
@@ -9333,6 +9866,8 @@ GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> lc(const basic_translator<T>& a
 // lc(translator, point_pair) -> mv: 13 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_translator<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(translator, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
   r.c[6] = a.c[0] * b.c[0];
@@ -9360,6 +9895,8 @@ GAPHYS_ALWAYS_INLINE basic_dual_line<T> lc(const basic_translator<T>& a,
 // lc(translator, line) -> mv: 9 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_translator<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(translator, line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = -a.c[1] * b.c[3] - a.c[2] * b.c[4] - a.c[3] * b.c[5];
   r.c[18] = a.c[0] * b.c[3];
@@ -9375,6 +9912,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_translator<T>& a, const basic_li
 // lc(translator, circle) -> mv: 19 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_translator<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(translator, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[2] * b.c[0] + a.c[3] * b.c[1];
   r.c[3] = -a.c[1] * b.c[0] + a.c[3] * b.c[2];
@@ -9397,6 +9936,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_translator<T>& a, const basic_ci
 // lc(translator, sphere) -> mv: 14 mul, 3 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_translator<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(translator, sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[10] = -a.c[3] * b.c[0];
   r.c[11] = a.c[2] * b.c[0];
@@ -9416,6 +9957,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_translator<T>& a, const basic_sp
 // lc(translator, plane) -> mv: 10 mul, 3 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_translator<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(translator, plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[12] = a.c[2] * b.c[1] + a.c[3] * b.c[2];
   r.c[14] = -a.c[1] * b.c[1] + a.c[3] * b.c[3];
@@ -9431,6 +9974,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_translator<T>& a, const basic_pl
 // lc(translator, pseudoscalar) -> mv: 4 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_translator<T>& a, const basic_pseudoscalar<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(translator, pseudoscalar) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[23] = -a.c[3] * b.c[0];
   r.c[24] = a.c[2] * b.c[0];
@@ -9506,6 +10051,8 @@ GAPHYS_ALWAYS_INLINE basic_rotor<T> lc(const basic_motor<T>& a,
 // lc(motor, point_pair) -> mv: 16 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_motor<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(motor, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[1] * b.c[4] - a.c[2] * b.c[5] - a.c[3] * b.c[7] - a.c[4] * b.c[0] -
            a.c[5] * b.c[1] - a.c[6] * b.c[2];
@@ -9534,6 +10081,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> lc(const basic_motor<T>& a, const basic_dual
 // lc(motor, line) -> mv: 12 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_motor<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(motor, line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2] - a.c[4] * b.c[3] -
            a.c[5] * b.c[4] - a.c[6] * b.c[5];
@@ -9550,6 +10099,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_motor<T>& a, const basic_line<T>
 // lc(motor, circle) -> mv: 28 mul, 13 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_motor<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(motor, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
   r.c[2] = -a.c[3] * b.c[6] + a.c[5] * b.c[0] + a.c[6] * b.c[1];
@@ -9574,6 +10125,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_motor<T>& a, const basic_circle<
 // lc(motor, sphere) -> mv: 24 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_motor<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(motor, sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = a.c[7] * b.c[0];
   r.c[6] = -a.c[3] * b.c[0];
@@ -9598,6 +10151,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_motor<T>& a, const basic_sphere<
 // lc(motor, plane) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_motor<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(motor, plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
   r.c[12] = -a.c[3] * b.c[0] + a.c[5] * b.c[1] + a.c[6] * b.c[2];
@@ -9614,6 +10169,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_motor<T>& a, const basic_plane<T
 // lc(motor, pseudoscalar) -> mv: 8 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_motor<T>& a, const basic_pseudoscalar<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(motor, pseudoscalar) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = a.c[7] * b.c[0];
   r.c[18] = -a.c[3] * b.c[0];
@@ -10042,6 +10599,8 @@ GAPHYS_ALWAYS_INLINE T rc(const basic_point_pair<T>& a, const basic_dual_line<T>
 // rc(point_pair, rotor) -> mv: 13 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_point_pair<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(point_pair, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[4] * b.c[1] - a.c[5] * b.c[2] - a.c[7] * b.c[3];
   r.c[6] = a.c[0] * b.c[0];
@@ -10061,6 +10620,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_point_pair<T>& a, const basic_ro
 // rc(point_pair, translator) -> mv: 13 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_point_pair<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(point_pair, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
   r.c[6] = a.c[0] * b.c[0];
@@ -10080,6 +10641,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_point_pair<T>& a, const basic_tr
 // rc(point_pair, motor) -> mv: 16 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_point_pair<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(point_pair, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[6] - a.c[4] * b.c[1] -
            a.c[5] * b.c[2] - a.c[7] * b.c[3];
@@ -10267,6 +10830,8 @@ GAPHYS_ALWAYS_INLINE T rc(const basic_line<T>& a, const basic_circle<T>& b) {
 // rc(line, rotor) -> mv: 9 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_line<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(line, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
   r.c[18] = a.c[3] * b.c[0];
@@ -10282,6 +10847,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_line<T>& a, const basic_rotor<T>
 // rc(line, translator) -> mv: 9 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_line<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(line, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = -a.c[3] * b.c[1] - a.c[4] * b.c[2] - a.c[5] * b.c[3];
   r.c[18] = a.c[3] * b.c[0];
@@ -10297,6 +10864,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_line<T>& a, const basic_translat
 // rc(line, motor) -> mv: 12 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_line<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(line, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3] - a.c[3] * b.c[4] -
            a.c[4] * b.c[5] - a.c[5] * b.c[6];
@@ -10429,6 +10998,8 @@ GAPHYS_ALWAYS_INLINE T rc(const basic_circle<T>& a, const basic_circle<T>& b) {
 // rc(circle, rotor) -> mv: 19 mul, 4 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_circle<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(circle, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
   r.c[2] = -a.c[6] * b.c[3];
@@ -10452,6 +11023,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_circle<T>& a, const basic_rotor<
 // rc(circle, translator) -> mv: 19 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_circle<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(circle, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[2] + a.c[1] * b.c[3];
   r.c[3] = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
@@ -10474,6 +11047,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_circle<T>& a, const basic_transl
 // rc(circle, motor) -> mv: 28 mul, 13 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_circle<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(circle, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
   r.c[2] = a.c[0] * b.c[5] + a.c[1] * b.c[6] - a.c[6] * b.c[3];
@@ -10614,6 +11189,8 @@ GAPHYS_ALWAYS_INLINE T rc(const basic_sphere<T>& a, const basic_plane<T>& b) {
 // rc(sphere, rotor) -> mv: 14 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_sphere<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(sphere, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = -a.c[0] * b.c[3];
   r.c[7] = a.c[0] * b.c[2];
@@ -10634,6 +11211,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_sphere<T>& a, const basic_rotor<
 // rc(sphere, translator) -> mv: 14 mul, 3 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_sphere<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(sphere, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[10] = -a.c[0] * b.c[3];
   r.c[11] = a.c[0] * b.c[2];
@@ -10653,6 +11232,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_sphere<T>& a, const basic_transl
 // rc(sphere, motor) -> mv: 24 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_sphere<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(sphere, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[0] = a.c[0] * b.c[7];
   r.c[6] = -a.c[0] * b.c[3];
@@ -10781,6 +11362,8 @@ GAPHYS_ALWAYS_INLINE T rc(const basic_plane<T>& a, const basic_plane<T>& b) {
 // rc(plane, rotor) -> mv: 10 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_plane<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(plane, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
   r.c[12] = -a.c[0] * b.c[3];
@@ -10797,6 +11380,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_plane<T>& a, const basic_rotor<T
 // rc(plane, translator) -> mv: 10 mul, 3 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_plane<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(plane, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[12] = a.c[1] * b.c[2] + a.c[2] * b.c[3];
   r.c[14] = -a.c[1] * b.c[1] + a.c[3] * b.c[3];
@@ -10812,6 +11397,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_plane<T>& a, const basic_transla
 // rc(plane, motor) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_plane<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(plane, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = -a.c[1] * b.c[1] - a.c[2] * b.c[2] - a.c[3] * b.c[3];
   r.c[12] = -a.c[0] * b.c[3] + a.c[1] * b.c[5] + a.c[2] * b.c[6];
@@ -10926,6 +11513,8 @@ GAPHYS_ALWAYS_INLINE T rc(const basic_pseudoscalar<T>& a, const basic_pseudoscal
 // rc(pseudoscalar, rotor) -> mv: 4 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_pseudoscalar<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(pseudoscalar, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[18] = -a.c[0] * b.c[3];
   r.c[20] = a.c[0] * b.c[2];
@@ -10938,6 +11527,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_pseudoscalar<T>& a, const basic_
 // rc(pseudoscalar, translator) -> mv: 4 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_pseudoscalar<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(pseudoscalar, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[23] = -a.c[0] * b.c[3];
   r.c[24] = a.c[0] * b.c[2];
@@ -10950,6 +11541,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_pseudoscalar<T>& a, const basic_
 // rc(pseudoscalar, motor) -> mv: 8 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_pseudoscalar<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(pseudoscalar, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[5] = a.c[0] * b.c[7];
   r.c[18] = -a.c[0] * b.c[3];
@@ -11097,6 +11690,8 @@ GAPHYS_ALWAYS_INLINE basic_translator<T> rc(const basic_translator<T>& a, const 
 // rc(motor, normalized_point) -> mv: 12 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_motor<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(motor, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = -a.c[4] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
   r.c[3] = -a.c[5] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
@@ -11113,6 +11708,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_motor<T>& a, const basic_normali
 // rc(motor, dual_sphere) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_motor<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(motor, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[1] * b.c[2] + a.c[2] * b.c[3] - a.c[4] * b.c[0];
   r.c[3] = -a.c[1] * b.c[1] + a.c[3] * b.c[3] - a.c[5] * b.c[0];
@@ -11129,6 +11726,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_motor<T>& a, const basic_dual_sp
 // rc(motor, dual_plane) -> mv: 12 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_motor<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(motor, dual_plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[1] * b.c[1] + a.c[2] * b.c[2];
   r.c[3] = -a.c[1] * b.c[0] + a.c[3] * b.c[2];
@@ -11144,6 +11743,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_motor<T>& a, const basic_dual_pl
 // rc(motor, euclidean_vector) -> mv: 12 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_motor<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(motor, euclidean_vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[1] * b.c[1] + a.c[2] * b.c[2];
   r.c[3] = -a.c[1] * b.c[0] + a.c[3] * b.c[2];
@@ -12130,6 +12731,8 @@ GAPHYS_ALWAYS_INLINE basic_dual_plane<T> meet(const basic_sphere<T>& a,
 // meet(sphere, motor) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> meet(const basic_sphere<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "meet(sphere, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = -a.c[0] * b.c[4] + a.c[1] * b.c[2] - a.c[2] * b.c[1];
   r.c[3] = -a.c[0] * b.c[5] + a.c[1] * b.c[3] - a.c[3] * b.c[1];
@@ -12270,6 +12873,8 @@ GAPHYS_ALWAYS_INLINE basic_dual_plane<T> meet(const basic_plane<T>& a,
 // meet(plane, motor) -> mv: 12 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> meet(const basic_plane<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "meet(plane, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[1] * b.c[2] - a.c[2] * b.c[1];
   r.c[3] = a.c[1] * b.c[3] - a.c[3] * b.c[1];
@@ -12510,6 +13115,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> meet(const basic_motor<T>& a, const basic_ci
 // meet(motor, sphere) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> meet(const basic_motor<T>& a, const basic_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "meet(motor, sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[1] * b.c[2] - a.c[2] * b.c[1] + a.c[4] * b.c[0];
   r.c[3] = a.c[1] * b.c[3] - a.c[3] * b.c[1] + a.c[5] * b.c[0];
@@ -12526,6 +13133,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> meet(const basic_motor<T>& a, const basic_spher
 // meet(motor, plane) -> mv: 12 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> meet(const basic_motor<T>& a, const basic_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "meet(motor, plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[1] * b.c[2] - a.c[2] * b.c[1];
   r.c[3] = a.c[1] * b.c[3] - a.c[3] * b.c[1];
@@ -12667,6 +13276,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_normalized_point<T>&
 // join(normalized_point, rotor) -> mv: 10 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_normalized_point<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(normalized_point, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = b.c[0];
   r.c[2] = a.c[0] * b.c[0];
@@ -12688,6 +13299,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_normalized_point<T>& a, const 
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_normalized_point<T>& a,
                                       const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(normalized_point, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = b.c[0];
   r.c[2] = a.c[0] * b.c[0];
@@ -12707,6 +13320,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_normalized_point<T>& a,
 // join(normalized_point, motor) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_normalized_point<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(normalized_point, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = b.c[0];
   r.c[2] = a.c[0] * b.c[0];
@@ -12854,6 +13469,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_dual_sphere<T>& a,
 // join(dual_sphere, rotor) -> mv: 14 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_dual_sphere<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(dual_sphere, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[1] * b.c[0];
@@ -12874,6 +13491,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_dual_sphere<T>& a, const basic
 // join(dual_sphere, translator) -> mv: 14 mul, 3 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_dual_sphere<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(dual_sphere, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[1] * b.c[0];
@@ -12893,6 +13512,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_dual_sphere<T>& a, const basic
 // join(dual_sphere, motor) -> mv: 24 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_dual_sphere<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(dual_sphere, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[1] * b.c[0];
@@ -13030,6 +13651,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_dual_plane<T>& a,
 // join(dual_plane, rotor) -> mv: 10 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_dual_plane<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(dual_plane, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[1] * b.c[0];
@@ -13046,6 +13669,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_dual_plane<T>& a, const basic_
 // join(dual_plane, translator) -> mv: 10 mul, 3 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_dual_plane<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(dual_plane, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[1] * b.c[0];
@@ -13061,6 +13686,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_dual_plane<T>& a, const basic_
 // join(dual_plane, motor) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_dual_plane<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(dual_plane, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[1] * b.c[0];
@@ -13185,6 +13812,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_euclidean_vector<T>&
 // join(euclidean_vector, rotor) -> mv: 6 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_euclidean_vector<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(euclidean_vector, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[1] * b.c[0];
@@ -13198,6 +13827,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_euclidean_vector<T>& a, const 
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_euclidean_vector<T>& a,
                                       const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(euclidean_vector, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[1] * b.c[0];
@@ -13212,6 +13843,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_euclidean_vector<T>& a,
 // join(euclidean_vector, motor) -> mv: 12 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_euclidean_vector<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(euclidean_vector, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[1] * b.c[0];
@@ -13297,6 +13930,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_flat_point<T>& a,
 // join(flat_point, rotor) -> mv: 10 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_flat_point<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(flat_point, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = a.c[3] * b.c[0];
   r.c[12] = a.c[0] * b.c[0];
@@ -13320,6 +13955,8 @@ GAPHYS_ALWAYS_INLINE basic_flat_point<T> join(const basic_flat_point<T>& a,
 // join(flat_point, motor) -> mv: 10 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_flat_point<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(flat_point, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = a.c[3] * b.c[0];
   r.c[12] = a.c[0] * b.c[0];
@@ -13550,6 +14187,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_point_pair<T>& a,
 // join(point_pair, rotor) -> mv: 19 mul, 4 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_point_pair<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(point_pair, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = a.c[0] * b.c[0];
   r.c[7] = a.c[1] * b.c[0];
@@ -13573,6 +14212,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_point_pair<T>& a, const basic_
 // join(point_pair, translator) -> mv: 19 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_point_pair<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(point_pair, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = a.c[0] * b.c[0];
   r.c[7] = a.c[1] * b.c[0];
@@ -13595,6 +14236,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_point_pair<T>& a, const basic_
 // join(point_pair, motor) -> mv: 28 mul, 13 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_point_pair<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(point_pair, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = a.c[0] * b.c[0];
   r.c[7] = a.c[1] * b.c[0];
@@ -13797,6 +14440,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_line<T>& a,
 // join(line, rotor) -> mv: 9 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_line<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(line, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[18] = a.c[3] * b.c[0];
   r.c[20] = a.c[4] * b.c[0];
@@ -13819,6 +14464,8 @@ GAPHYS_ALWAYS_INLINE basic_line<T> join(const basic_line<T>& a, const basic_tran
 // join(line, motor) -> mv: 9 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_line<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(line, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[18] = a.c[3] * b.c[0];
   r.c[20] = a.c[4] * b.c[0];
@@ -13907,6 +14554,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_circle<T>& a,
 // join(circle, rotor) -> mv: 13 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_circle<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(circle, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = a.c[0] * b.c[0];
   r.c[17] = a.c[1] * b.c[0];
@@ -13926,6 +14575,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_circle<T>& a, const basic_roto
 // join(circle, translator) -> mv: 13 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_circle<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(circle, translator) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = a.c[0] * b.c[0];
   r.c[17] = a.c[1] * b.c[0];
@@ -13945,6 +14596,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_circle<T>& a, const basic_tran
 // join(circle, motor) -> mv: 16 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_circle<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(circle, motor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = a.c[0] * b.c[0];
   r.c[17] = a.c[1] * b.c[0];
@@ -14085,6 +14738,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> join(const basic_pseudoscalar<T>& a,
 // join(rotor, normalized_point) -> mv: 10 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(rotor, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0];
   r.c[2] = a.c[0] * b.c[0];
@@ -14105,6 +14760,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_norma
 // join(rotor, dual_sphere) -> mv: 14 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(rotor, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[0] * b.c[1];
@@ -14125,6 +14782,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_dual_
 // join(rotor, dual_plane) -> mv: 10 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(rotor, dual_plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[0] * b.c[1];
@@ -14141,6 +14800,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_dual_
 // join(rotor, euclidean_vector) -> mv: 6 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(rotor, euclidean_vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[0] * b.c[1];
@@ -14153,6 +14814,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_eucli
 // join(rotor, flat_point) -> mv: 10 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(rotor, flat_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = a.c[0] * b.c[3];
   r.c[12] = a.c[0] * b.c[0];
@@ -14176,6 +14839,8 @@ GAPHYS_ALWAYS_INLINE basic_euclidean_bivector<T> join(const basic_rotor<T>& a,
 // join(rotor, point_pair) -> mv: 19 mul, 4 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(rotor, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = a.c[0] * b.c[0];
   r.c[7] = a.c[0] * b.c[1];
@@ -14207,6 +14872,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_rotor<T>& a, const basic_du
 // join(rotor, line) -> mv: 9 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(rotor, line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[18] = a.c[0] * b.c[3];
   r.c[20] = a.c[0] * b.c[4];
@@ -14222,6 +14889,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_line<
 // join(rotor, circle) -> mv: 13 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(rotor, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = a.c[0] * b.c[0];
   r.c[17] = a.c[0] * b.c[1];
@@ -14286,6 +14955,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_rotor<T>& a, const basic_mo
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_translator<T>& a,
                                       const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(translator, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0];
   r.c[2] = a.c[0] * b.c[0];
@@ -14305,6 +14976,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_translator<T>& a,
 // join(translator, dual_sphere) -> mv: 14 mul, 3 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_translator<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(translator, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[0] * b.c[1];
@@ -14324,6 +14997,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_translator<T>& a, const basic_
 // join(translator, dual_plane) -> mv: 10 mul, 3 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_translator<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(translator, dual_plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[0] * b.c[1];
@@ -14340,6 +15015,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_translator<T>& a, const basic_
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_translator<T>& a,
                                       const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(translator, euclidean_vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[0] * b.c[1];
@@ -14369,6 +15046,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_translator<T>& a,
 // join(translator, point_pair) -> mv: 19 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_translator<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(translator, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = a.c[0] * b.c[0];
   r.c[7] = a.c[0] * b.c[1];
@@ -14407,6 +15086,8 @@ GAPHYS_ALWAYS_INLINE basic_line<T> join(const basic_translator<T>& a, const basi
 // join(translator, circle) -> mv: 13 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_translator<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(translator, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = a.c[0] * b.c[0];
   r.c[17] = a.c[0] * b.c[1];
@@ -14471,6 +15152,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_translator<T>& a, const bas
 // join(motor, normalized_point) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_motor<T>& a, const basic_normalized_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(motor, normalized_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0];
   r.c[2] = a.c[0] * b.c[0];
@@ -14495,6 +15178,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_motor<T>& a, const basic_norma
 // join(motor, dual_sphere) -> mv: 24 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_motor<T>& a, const basic_dual_sphere<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(motor, dual_sphere) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[0] * b.c[1];
@@ -14519,6 +15204,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_motor<T>& a, const basic_dual_
 // join(motor, dual_plane) -> mv: 16 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_motor<T>& a, const basic_dual_plane<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(motor, dual_plane) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[0] * b.c[1];
@@ -14535,6 +15222,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_motor<T>& a, const basic_dual_
 // join(motor, euclidean_vector) -> mv: 12 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_motor<T>& a, const basic_euclidean_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(motor, euclidean_vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[2] = a.c[0] * b.c[0];
   r.c[3] = a.c[0] * b.c[1];
@@ -14550,6 +15239,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_motor<T>& a, const basic_eucli
 // join(motor, flat_point) -> mv: 10 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_motor<T>& a, const basic_flat_point<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(motor, flat_point) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[9] = a.c[0] * b.c[3];
   r.c[12] = a.c[0] * b.c[0];
@@ -14574,6 +15265,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_motor<T>& a,
 // join(motor, point_pair) -> mv: 28 mul, 13 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_motor<T>& a, const basic_point_pair<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(motor, point_pair) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[6] = a.c[0] * b.c[0];
   r.c[7] = a.c[0] * b.c[1];
@@ -14607,6 +15300,8 @@ GAPHYS_ALWAYS_INLINE basic_motor<T> join(const basic_motor<T>& a, const basic_du
 // join(motor, line) -> mv: 9 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_motor<T>& a, const basic_line<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(motor, line) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[18] = a.c[0] * b.c[3];
   r.c[20] = a.c[0] * b.c[4];
@@ -14622,6 +15317,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_motor<T>& a, const basic_line<
 // join(motor, circle) -> mv: 16 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_motor<T>& a, const basic_circle<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(motor, circle) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[16] = a.c[0] * b.c[0];
   r.c[17] = a.c[0] * b.c[1];
@@ -15028,6 +15725,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> apply(const basic_normalized_point<T>
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_normalized_point<T>& a,
                                        const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(normalized_point, rotor) -> mv: an mv result has no batch form");
   const T t0 = b.c[0];
   const T t1 = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
   const T t2 = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
@@ -15061,6 +15760,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_normalized_point<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_normalized_point<T>& a,
                                        const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(normalized_point, translator) -> mv: an mv result has no batch form");
   const T t0 = b.c[0];
   const T t1 = b.c[1] + a.c[0] * b.c[0];
   const T t2 = b.c[2] + a.c[1] * b.c[0];
@@ -15093,6 +15794,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_normalized_point<T>& a,
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_normalized_point<T>& a,
                                        const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(normalized_point, motor) -> mv: an mv result has no batch form");
   const T t0 = b.c[0];
   const T t1 = b.c[4] + a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
   const T t2 = b.c[5] + a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
@@ -15490,6 +16193,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> apply(const basic_dual_sphere<T>& a,
 // apply(dual_sphere, rotor) -> mv: 82 mul, 46 add, 1 div
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_dual_sphere<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(dual_sphere, rotor) -> mv: an mv result has no batch form");
   const T t0 = a.c[0] * b.c[0];
   const T t1 = a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
   const T t2 = a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[3] * b.c[3];
@@ -15524,6 +16229,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_dual_sphere<T>& a, const basi
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_dual_sphere<T>& a,
                                        const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(dual_sphere, translator) -> mv: an mv result has no batch form");
   const T t0 = a.c[0] * b.c[0];
   const T t1 = a.c[0] * b.c[1] + a.c[1] * b.c[0];
   const T t2 = a.c[0] * b.c[2] + a.c[2] * b.c[0];
@@ -15556,6 +16263,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_dual_sphere<T>& a,
 // apply(dual_sphere, motor) -> mv: 141 mul, 91 add, 1 div
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_dual_sphere<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(dual_sphere, motor) -> mv: an mv result has no batch form");
   const T t0 = a.c[0] * b.c[0];
   const T t1 = a.c[0] * b.c[4] + a.c[1] * b.c[0] - a.c[2] * b.c[1] - a.c[3] * b.c[2];
   const T t2 = a.c[0] * b.c[5] + a.c[1] * b.c[1] + a.c[2] * b.c[0] - a.c[3] * b.c[3];
@@ -17486,6 +18195,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> apply(const basic_point_pair<T>& a,
 // apply(point_pair, rotor) -> mv: 171 mul, 129 add, 1 div
 template <class T>
 basic_mv<T> apply(const basic_point_pair<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(point_pair, rotor) -> mv: an mv result has no batch form");
   const T t0 = -a.c[4] * b.c[1] - a.c[5] * b.c[2] - a.c[7] * b.c[3];
   const T t1 = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
   const T t2 = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
@@ -17545,6 +18256,8 @@ basic_mv<T> apply(const basic_point_pair<T>& a, const basic_rotor<T>& b) {
 // apply(point_pair, translator) -> mv: 165 mul, 124 add, 1 div
 template <class T>
 basic_mv<T> apply(const basic_point_pair<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(point_pair, translator) -> mv: an mv result has no batch form");
   const T t0 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
   const T t1 = a.c[0] * b.c[0];
   const T t2 = a.c[1] * b.c[0];
@@ -17603,6 +18316,8 @@ basic_mv<T> apply(const basic_point_pair<T>& a, const basic_translator<T>& b) {
 // apply(point_pair, motor) -> mv: 266 mul, 214 add, 1 div
 template <class T>
 basic_mv<T> apply(const basic_point_pair<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(point_pair, motor) -> mv: an mv result has no batch form");
   const T t0 = -a.c[0] * b.c[4] - a.c[1] * b.c[5] - a.c[2] * b.c[6] - a.c[4] * b.c[1] -
                a.c[5] * b.c[2] - a.c[7] * b.c[3];
   const T t1 = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
@@ -19087,6 +19802,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> apply(const basic_circle<T>& a,
 // apply(circle, rotor) -> mv: 171 mul, 129 add, 1 div
 template <class T>
 basic_mv<T> apply(const basic_circle<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(circle, rotor) -> mv: an mv result has no batch form");
   const T t0 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
   const T t1 = -a.c[6] * b.c[3];
   const T t2 = a.c[6] * b.c[2];
@@ -19146,6 +19863,8 @@ basic_mv<T> apply(const basic_circle<T>& a, const basic_rotor<T>& b) {
 // apply(circle, translator) -> mv: 165 mul, 124 add, 1 div
 template <class T>
 basic_mv<T> apply(const basic_circle<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(circle, translator) -> mv: an mv result has no batch form");
   const T t0 = a.c[0] * b.c[2] + a.c[1] * b.c[3];
   const T t1 = -a.c[0] * b.c[1] + a.c[2] * b.c[3];
   const T t2 = a.c[0] * b.c[0];
@@ -19204,6 +19923,8 @@ basic_mv<T> apply(const basic_circle<T>& a, const basic_translator<T>& b) {
 // apply(circle, motor) -> mv: 266 mul, 214 add, 1 div
 template <class T>
 basic_mv<T> apply(const basic_circle<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(circle, motor) -> mv: an mv result has no batch form");
   const T t0 = -a.c[0] * b.c[1] - a.c[1] * b.c[2] - a.c[2] * b.c[3];
   const T t1 = a.c[0] * b.c[5] + a.c[1] * b.c[6] - a.c[2] * b.c[7] - a.c[6] * b.c[3];
   const T t2 = -a.c[0] * b.c[4] + a.c[1] * b.c[7] + a.c[2] * b.c[6] + a.c[6] * b.c[2];
@@ -19640,6 +20361,8 @@ GAPHYS_ALWAYS_INLINE basic_pseudoscalar<T> apply(const basic_sphere<T>& a,
 // apply(sphere, rotor) -> mv: 82 mul, 46 add, 1 div
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_sphere<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(sphere, rotor) -> mv: an mv result has no batch form");
   const T t0 = -a.c[0] * b.c[3];
   const T t1 = a.c[0] * b.c[2];
   const T t2 = -a.c[0] * b.c[1];
@@ -19673,6 +20396,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_sphere<T>& a, const basic_rot
 // apply(sphere, translator) -> mv: 79 mul, 44 add, 1 div
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_sphere<T>& a, const basic_translator<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(sphere, translator) -> mv: an mv result has no batch form");
   const T t0 = -a.c[0] * b.c[3];
   const T t1 = a.c[0] * b.c[2];
   const T t2 = -a.c[0] * b.c[1];
@@ -19705,6 +20430,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_sphere<T>& a, const basic_tra
 // apply(sphere, motor) -> mv: 141 mul, 91 add, 1 div
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> apply(const basic_sphere<T>& a, const basic_motor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "apply(sphere, motor) -> mv: an mv result has no batch form");
   const T t0 = a.c[0] * b.c[7];
   const T t1 = -a.c[0] * b.c[3];
   const T t2 = a.c[0] * b.c[2];

@@ -325,6 +325,7 @@ GAPHYS_ALWAYS_INLINE basic_rotor<T> inverse(const basic_rotor<T>& a) {
 // dual(rotor) -> mv: 0 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> dual(const basic_rotor<T>& a) {
+  static_assert(!gaphys::ga::is_batch_v<T>, "dual(rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[3];
   r.c[2] = -a.c[2];
@@ -337,6 +338,7 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> dual(const basic_rotor<T>& a) {
 // undual(rotor) -> mv: 0 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> undual(const basic_rotor<T>& a) {
+  static_assert(!gaphys::ga::is_batch_v<T>, "undual(rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[3];
   r.c[2] = a.c[2];
@@ -384,6 +386,8 @@ GAPHYS_ALWAYS_INLINE basic_rotor<T> gp(const basic_rotor<T>& a, const basic_roto
 // gp(rotor, vector) -> mv: 12 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
   r.c[2] = a.c[0] * b.c[1] - a.c[1] * b.c[0] + a.c[3] * b.c[2];
@@ -396,6 +400,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_vector<
 // gp(vector, rotor) -> mv: 12 mul, 8 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_vector<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(vector, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0] - a.c[1] * b.c[1] - a.c[2] * b.c[2];
   r.c[2] = a.c[0] * b.c[1] + a.c[1] * b.c[0] - a.c[2] * b.c[3];
@@ -434,6 +440,8 @@ GAPHYS_ALWAYS_INLINE basic_rotor<T> gp(const basic_bivector<T>& a, const basic_r
 // gp(bivector, vector) -> mv: 9 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_bivector<T>& a, const basic_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(bivector, vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[1] + a.c[1] * b.c[2];
   r.c[2] = -a.c[0] * b.c[0] + a.c[2] * b.c[2];
@@ -446,6 +454,8 @@ GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_bivector<T>& a, const basic_vect
 // gp(vector, bivector) -> mv: 9 mul, 5 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_vector<T>& a, const basic_bivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(vector, bivector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[1] * b.c[0] - a.c[2] * b.c[1];
   r.c[2] = a.c[0] * b.c[0] - a.c[2] * b.c[2];
@@ -547,26 +557,37 @@ GAPHYS_ALWAYS_INLINE basic_bivector<T> apply(const basic_rotor<T>& a, const basi
 // exp(bivector) -> rotor: 6 mul, 2 add, 1 exp_of_square
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_rotor<T> exp(const basic_bivector<T>& a) {
-  const auto factors =
-      gaphys::ga::exp_of_square<T>(-a.c[0] * a.c[0] - a.c[1] * a.c[1] - a.c[2] * a.c[2]);
-  const T c = factors.c, k = factors.k;
-  return basic_rotor<T>(c, a.c[0] * k, a.c[1] * k, a.c[2] * k);
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_rotor<T>>(
+        [](const auto&... x) { return exp(x...); }, a);
+  } else {
+    const auto factors =
+        gaphys::ga::exp_of_square<T>(-a.c[0] * a.c[0] - a.c[1] * a.c[1] - a.c[2] * a.c[2]);
+    const T c = factors.c, k = factors.k;
+    return basic_rotor<T>(c, a.c[0] * k, a.c[1] * k, a.c[2] * k);
+  }
 }
 
 // log(rotor) -> bivector: 9 mul, 4 add, 1 log_factor
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_bivector<T> log(const basic_rotor<T>& a) {
-  const T s = -a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3];
-  const T c = a.c[0];
-  const gaphys::ga::log_case where =
-      gaphys::ga::log_case_of(s, c, a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
-  if (where == gaphys::ga::log_case::minus_one) {  // -1: a rotation by 2 pi in a chosen plane
-    basic_bivector<T> r;
-    r.c[0] = T(3.14159265358979323846);
-    return r;
+  if constexpr (gaphys::ga::is_batch_v<T>) {
+    return gaphys::ga::batch_traits<T>::template lanewise<basic_bivector<T>>(
+        [](const auto&... x) { return log(x...); }, a);
+  } else {
+    const T s = -a.c[1] * a.c[1] - a.c[2] * a.c[2] - a.c[3] * a.c[3];
+    const T c = a.c[0];
+    const gaphys::ga::log_case where =
+        gaphys::ga::log_case_of(s, c, a.c[1] * a.c[1] + a.c[2] * a.c[2] + a.c[3] * a.c[3]);
+    if (where == gaphys::ga::log_case::minus_one) {  // -1: a rotation by 2 pi in a chosen plane
+      basic_bivector<T> r;
+      r.c[0] = T(3.14159265358979323846);
+      return r;
+    }
+    const T f =
+        gaphys::ga::log_factor(s, c, where);  // throws std::domain_error: no log in the plane
+    return basic_bivector<T>(a.c[1] * f, a.c[2] * f, a.c[3] * f);
   }
-  const T f = gaphys::ga::log_factor(s, c, where);  // throws std::domain_error: no log in the plane
-  return basic_bivector<T>(a.c[1] * f, a.c[2] * f, a.c[3] * f);
 }
 
 // meet(bivector, bivector) -> vector: 6 mul, 3 add
@@ -671,6 +692,8 @@ GAPHYS_ALWAYS_INLINE T gp(const basic_trivector<T>& a, const basic_trivector<T>&
 // gp(trivector, rotor) -> mv: 4 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_trivector<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(trivector, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[0] * b.c[3];
   r.c[2] = a.c[0] * b.c[2];
@@ -689,6 +712,8 @@ GAPHYS_ALWAYS_INLINE basic_rotor<T> gp(const basic_rotor<T>& a, const basic_scal
 // gp(rotor, trivector) -> mv: 4 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> gp(const basic_rotor<T>& a, const basic_trivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "gp(rotor, trivector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[3] * b.c[0];
   r.c[2] = a.c[2] * b.c[0];
@@ -737,6 +762,8 @@ GAPHYS_ALWAYS_INLINE basic_vector<T> op(const basic_vector<T>& a, const basic_sc
 // op(vector, rotor) -> mv: 6 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_vector<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(vector, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[1] * b.c[0];
@@ -779,6 +806,8 @@ GAPHYS_ALWAYS_INLINE basic_rotor<T> op(const basic_rotor<T>& a, const basic_scal
 // op(rotor, vector) -> mv: 6 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> op(const basic_rotor<T>& a, const basic_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "op(rotor, vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[0] * b.c[1];
@@ -883,6 +912,8 @@ GAPHYS_ALWAYS_INLINE basic_rotor<T> lc(const basic_rotor<T>& a, const basic_bive
 // lc(rotor, trivector) -> mv: 4 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> lc(const basic_rotor<T>& a, const basic_trivector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "lc(rotor, trivector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[3] * b.c[0];
   r.c[2] = a.c[2] * b.c[0];
@@ -968,6 +999,8 @@ GAPHYS_ALWAYS_INLINE T rc(const basic_trivector<T>& a, const basic_trivector<T>&
 // rc(trivector, rotor) -> mv: 4 mul, 0 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> rc(const basic_trivector<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "rc(trivector, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = -a.c[0] * b.c[3];
   r.c[2] = a.c[0] * b.c[2];
@@ -1194,6 +1227,8 @@ GAPHYS_ALWAYS_INLINE basic_trivector<T> join(const basic_vector<T>& a, const bas
 // join(vector, rotor) -> mv: 6 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_vector<T>& a, const basic_rotor<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(vector, rotor) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[1] * b.c[0];
@@ -1243,6 +1278,8 @@ GAPHYS_ALWAYS_INLINE basic_rotor<T> join(const basic_rotor<T>& a, const basic_sc
 // join(rotor, vector) -> mv: 6 mul, 2 add
 template <class T>
 GAPHYS_ALWAYS_INLINE basic_mv<T> join(const basic_rotor<T>& a, const basic_vector<T>& b) {
+  static_assert(!gaphys::ga::is_batch_v<T>,
+                "join(rotor, vector) -> mv: an mv result has no batch form");
   basic_mv<T> r;
   r.c[1] = a.c[0] * b.c[0];
   r.c[2] = a.c[0] * b.c[1];

@@ -60,12 +60,23 @@ template <class A, class B>
 using if_multivectors = std::enable_if_t<same_algebra_v<A, B>, int>;
 template <class X>
 using if_general_mv = std::enable_if_t<is_general_mv_v<X>, int>;
+// A batch of a named type (gaphys/ga/batch.hpp): never widened to an mv, so
+// that a function with no named-type kernel for it is no match at all.
+template <class X, class = void>
+inline constexpr bool is_batch_of_named_v = false;
+template <class X>
+inline constexpr bool is_batch_of_named_v<X, std::void_t<typename X::scalar_type>> =
+    is_batch_v<typename X::scalar_type>;
+
 // The combinations the functions on mv do not take: some named type among them.
 template <class X>
-using if_widened = std::enable_if_t<is_multivector_v<X> && !is_general_mv_v<X>, int>;
+using if_widened =
+    std::enable_if_t<is_multivector_v<X> && !is_general_mv_v<X> && !is_batch_of_named_v<X>, int>;
 template <class A, class B>
 using if_widened_pair =
-    std::enable_if_t<same_algebra_v<A, B> && !(is_general_mv_v<A> && is_general_mv_v<B>), int>;
+    std::enable_if_t<same_algebra_v<A, B> && !(is_general_mv_v<A> && is_general_mv_v<B>) &&
+                         !is_batch_of_named_v<A>,
+                     int>;
 
 namespace api {
 

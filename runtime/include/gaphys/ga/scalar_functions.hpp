@@ -6,6 +6,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "batch_traits.hpp"
+
 namespace gaphys::ga {
 
 template <class T>
@@ -90,7 +92,13 @@ T log_factor(T s, T c, log_case where) {
 // NaN where ~a is zero.
 template <class T>
 T inverse_norm2(T norm2) {
-  if (norm2 == T(0))
+  bool null;
+  if constexpr (is_batch_v<T>) {
+    null = batch_traits<T>::any_zero(norm2);  // any lane
+  } else {
+    null = norm2 == T(0);
+  }
+  if (null)
     throw std::domain_error("inverse: <a ~a>_0 = 0, a null multivector has no versor inverse");
   return T(1) / norm2;
 }
