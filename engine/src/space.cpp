@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "round_meet.hpp"
 #include "thread_count.hpp"
 
 namespace gaphys {
@@ -160,24 +161,74 @@ void space::find_contacts(const std::vector<body>& bodies, const std::vector<bod
   }
 }
 
+// Whether the pair is one of single round shapes whose meet runs on
+// batches (detail::batched_terms), and whose contact find_contacts would
+// look for (no sensor, filters that meet).
+static bool meets_on_batches(const body& body_a, const body& body_b, const placed_shape* shape_a,
+                             const placed_shape* shape_b) {
+  if (body_a.shapes().size() != 1 || body_b.shapes().size() != 1) return false;
+  if (!detail::meets_on_batches(shape_a->kind, shape_b->kind)) return false;
+  const shape& a = body_a.shapes()[0].shape;
+  const shape& b = body_b.shapes()[0].shape;
+  return a.filter().meets(b.filter()) && !a.is_sensor() && !b.is_sensor();
+}
+
+// What meet finds for a pair that meets_on_batches, from its meet's terms:
+// whether the manifold has a contact.
+static bool contact_from_terms(const placed_shape& shape_a, const placed_shape& shape_b,
+                               const detail::round_terms<real>& terms, real lookahead,
+                               const vector& velocity_a, const vector& velocity_b,
+                               contact_manifold& manifold) {
+  manifold.count = 0;
+  const auto geometry =
+      detail::contact_from(shape_a, shape_b, terms, lookahead, velocity_a, velocity_b);
+  if (!geometry) return false;
+  manifold.points[0] = contact_point{*geometry, 0};
+  manifold.count = 1;
+  return true;
+}
+
 void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
                        const body_pair* end, std::vector<contact>& contacts, real lookahead,
                        const material_combine_rules& rules, real margin,
                        std::vector<sensor_overlap>* sensors) const {
+  // The meets of single spheres and planes first, their algebra on batches
+  // of pairs; then every pair in order, those from their terms.
+  constexpr std::size_t none = ~std::size_t{0};
+  std::vector<std::pair<const placed_shape*, const placed_shape*>> round_pairs;
+  std::vector<std::size_t> round_slot(static_cast<std::size_t>(end - first), none);
+  for (const body_pair* pair = first; pair != end; ++pair) {
+    const auto [a, b] = *pair;
+    const placed_shape* shape_a = placed_.data() + first_shape_[a];
+    const placed_shape* shape_b = placed_.data() + first_shape_[b];
+    if (!meets_on_batches(bodies[a], bodies[b], shape_a, shape_b)) continue;
+    round_slot[static_cast<std::size_t>(pair - first)] = round_pairs.size();
+    round_pairs.emplace_back(shape_a, shape_b);
+  }
+  std::vector<detail::round_terms<real>> terms(round_pairs.size());
+  detail::batched_terms(round_pairs.data(), round_pairs.size(), terms.data());
+
   contact_manifold manifold;
   for (const body_pair* pair = first; pair != end; ++pair) {
     const auto [a, b] = *pair;
     const body& body_a = bodies[a];
     const body& body_b = bodies[b];
     const std::size_t shapes_a = body_a.shapes().size(), shapes_b = body_b.shapes().size();
-    const real reach = closing_reach(body_a, body_b, lookahead, margin);
+    const std::size_t slot = round_slot[static_cast<std::size_t>(pair - first)];
+    // (The meet of rounds sees speeds through the lookahead alone.)
+    const real reach = slot == none ? closing_reach(body_a, body_b, lookahead, margin) : 0;
     for (std::size_t i = 0; i < shapes_a; ++i) {
       const placed_shape& shape_a = placed_[first_shape_[a] + i];
       const attached_shape& attached_a = body_a.shapes()[i];
       for (std::size_t j = 0; j < shapes_b; ++j) {
         const placed_shape& shape_b = placed_[first_shape_[b] + j];
         const attached_shape& attached_b = body_b.shapes()[j];
-        const met what = meet(body_a, body_b, i, j, shape_a, shape_b, lookahead, reach, manifold);
+        const met what =
+            slot == none ? meet(body_a, body_b, i, j, shape_a, shape_b, lookahead, reach, manifold)
+            : contact_from_terms(shape_a, shape_b, terms[slot], lookahead, body_a.velocity(),
+                                 body_b.velocity(), manifold)
+                ? met::contacts
+                : met::nothing;
         if (what == met::sensed && sensors) {
           const bool a_senses = attached_a.shape.is_sensor();
           sensors->push_back(a_senses ? sensor_overlap{a, i, b, j} : sensor_overlap{b, j, a, i});

@@ -1,0 +1,151 @@
+#include "round_meet.hpp"
+
+#include <algorithm>
+#include <c3ga/batch.hpp>
+#include <cmath>
+#include <vector>
+
+namespace gaphys::detail {
+
+namespace {
+
+// The largest value of x . direction over the shape's solid. A plane's solid
+// is unbounded except along its own normal, the only direction a contact with
+// a plane has.
+real support_height(const placed_shape& s, const vector& direction) {
+  switch (s.kind) {
+    case shape_kind::sphere:
+      return e3ga::scp(s.center, direction) + s.radius;
+    case shape_kind::point:
+      return e3ga::scp(s.center, direction);
+    case shape_kind::plane:
+      return s.offset;
+    default:  // the convex narrow phase's shapes never reach the meet
+      break;
+  }
+  return 0;
+}
+
+// Two spheres with the same centre and radius: their duals are equal, the
+// meet is zero and has no round to read. They overlap wholly; the normal is
+// arbitrary (e3), so the solver separates them deterministically.
+// `duals_product` is scp(A*, B*).
+std::optional<contact_geometry> coincident_spheres(const placed_shape& a, const placed_shape& b,
+                                                   real duals_product) {
+  if (a.kind != shape_kind::sphere || b.kind != shape_kind::sphere) return std::nullopt;
+  if (!(duals_product > 0)) return std::nullopt;
+  const vector normal{0, 0, 1};
+  const real depth = support_height(a, -normal) + support_height(b, normal);
+  return contact_geometry{a.center, normal, depth, a.radius * a.radius};
+}
+
+vector to_vector(const std::array<real, 3>& x) { return {x[0], x[1], x[2]}; }
+
+// The lanes of one batch: a pack of doubles as wide as the target's vector
+// registers (2 with SSE2, 4 with AVX2).
+constexpr int lanes = c3ga::native_lanes;
+
+// terms_of on the pairs at[0 .. count) (count <= lanes; the rest of the
+// batch repeats the last pair), their duals made by dual_a and dual_b.
+template <class DualOfA, class DualOfB>
+void terms_of_batch(const std::pair<const placed_shape*, const placed_shape*>* pairs,
+                    const std::size_t* at, int count, round_terms<real>* terms, DualOfA dual_a,
+                    DualOfB dual_b) {
+  const auto pair = [&](int i) { return pairs[at[std::min(i, count - 1)]]; };
+  const auto duals_a = c3ga::gather<lanes>([&](int i) { return dual_a(*pair(i).first); });
+  const auto duals_b = c3ga::gather<lanes>([&](int i) { return dual_b(*pair(i).second); });
+  const auto t = terms_of(duals_a, duals_b);
+  for (int i = 0; i < count; ++i) {
+    round_terms<real>& out = terms[at[i]];
+    out.weight_square = t.weight_square[i];
+    out.duals_product = t.duals_product[i];
+    out.meet_square = t.meet_square[i];
+    for (int k = 0; k < 3; ++k) out.direction[k] = t.direction[k][i], out.centre[k] = t.centre[k][i];
+    out.centre_weight = t.centre_weight[i];
+  }
+}
+
+}  // namespace
+
+c3ga::dual_sphere dual_sphere_of(const placed_shape& s) {
+  const real half_square = real(0.5) * e3ga::scp(s.center, s.center);
+  return {1, s.center.e1(), s.center.e2(), s.center.e3(),
+          half_square - real(0.5) * s.radius * s.radius};
+}
+
+c3ga::dual_plane dual_plane_of(const placed_shape& s) {
+  return -c3ga::dual_plane{s.normal.e1(), s.normal.e2(), s.normal.e3(), s.offset};
+}
+
+std::optional<contact_geometry> contact_from(const placed_shape& a, const placed_shape& b,
+                                             const round_terms<real>& t, real lookahead,
+                                             const vector& velocity_a, const vector& velocity_b) {
+  // A zero weight means no finite intersection (parallel planes, a point and
+  // a plane) or no intersection to speak of (identical spheres).
+  if (!(std::fabs(t.weight_square) > 0)) return coincident_spheres(a, b, t.duals_product);
+  // The squared radius of a round is C Ĉ / (ni ⌋ C)^2 (Dorst et al. 2007,
+  // table 14.1). > 0: interpenetrating, 0: touching, < 0: the surfaces do not
+  // meet.
+  const real squared_radius = t.meet_square / t.weight_square;
+  // Surfaces that do not meet are apart, or one solid holds the other whole
+  // (a sphere sunk below a plane, or inside a bigger sphere). The inner
+  // product of the duals tells which: for spheres σA . σB = (rA^2 + rB^2 -
+  // d^2) / 2, below -rA rB when apart and above rA rB when nested; for a
+  // sphere and a plane it is the centre's depth below the plane. Apart
+  // shapes go on only when they may close the gap within the lookahead.
+  const bool apart = !(squared_radius >= 0) && !(t.duals_product > 0);
+  if (apart && !(lookahead > 0)) return std::nullopt;
+
+  // The normal, from B to A. A round point has no carrier direction: for a
+  // flat point the normal is the line of the two centres.
+  vector normal = -to_vector(t.direction);
+  real length = e3ga::norm(normal);
+  if (!(length > 1e-9 * std::sqrt(std::fabs(t.weight_square)))) {
+    if (a.kind == shape_kind::plane || b.kind == shape_kind::plane) return std::nullopt;
+    normal = a.center - b.center;
+    length = e3ga::norm(normal);
+    if (!(length > 0)) normal = vector{0, 0, 1}, length = 1;  // coincident centres: any direction
+  }
+  normal = normal / length;
+
+  // Depth: how far the solids overlap along the normal (minus the gap when
+  // they are apart). A gap counts when the speeds of A and B towards each
+  // other, -n . vA and n . vB where positive, cover it within the lookahead.
+  const real depth = support_height(a, -normal) + support_height(b, normal);
+  const real closing = std::max(-e3ga::scp(normal, velocity_a), real(0)) +
+                       std::max(e3ga::scp(normal, velocity_b), real(0));
+  if (apart && !(-depth <= lookahead * closing)) return std::nullopt;
+
+  const vector point = to_vector(t.centre) / t.centre_weight;
+  return contact_geometry{point, normal, depth, squared_radius};
+}
+
+bool meets_on_batches(shape_kind a, shape_kind b) {
+  return (a == shape_kind::sphere && (b == shape_kind::sphere || b == shape_kind::plane)) ||
+         (a == shape_kind::plane && b == shape_kind::sphere);
+}
+
+void batched_terms(const std::pair<const placed_shape*, const placed_shape*>* pairs,
+                   std::size_t count, round_terms<real>* terms) {
+  // The pairs of each kind, batch by batch: sphere-sphere, sphere-plane,
+  // plane-sphere.
+  std::array<std::vector<std::size_t>, 3> of_kind;
+  for (std::size_t k = 0; k < count; ++k) {
+    const bool plane_a = pairs[k].first->kind == shape_kind::plane;
+    const bool plane_b = pairs[k].second->kind == shape_kind::plane;
+    of_kind[plane_a ? 2 : plane_b ? 1 : 0].push_back(k);
+  }
+  const auto sphere = [](const placed_shape& s) { return dual_sphere_of(s); };
+  const auto plane = [](const placed_shape& s) { return dual_plane_of(s); };
+  for (int kind = 0; kind < 3; ++kind) {
+    const std::vector<std::size_t>& at = of_kind[kind];
+    for (std::size_t first = 0; first < at.size(); first += lanes) {
+      const int n = static_cast<int>(std::min<std::size_t>(lanes, at.size() - first));
+      if (kind == 0) terms_of_batch(pairs, &at[first], n, terms, sphere, sphere);
+      if (kind == 1) terms_of_batch(pairs, &at[first], n, terms, sphere, plane);
+      if (kind == 2) terms_of_batch(pairs, &at[first], n, terms, plane, sphere);
+    }
+  }
+}
+
+}  // namespace gaphys::detail

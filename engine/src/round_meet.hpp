@@ -1,0 +1,108 @@
+// The conformal meet of two round shapes (spheres, planes, points), in two
+// halves: the algebra (terms_of: products of the shapes' duals, the same for
+// one pair or, on batches, for W pairs at once) and the contact it tells of
+// (contact_from: the branches, per pair).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <type_traits>
+
+#include "gaphys/contact.hpp"
+
+namespace gaphys::detail {
+
+// What the meet C = (A* ∧ B*)^-* of two duals says, as numbers (T a scalar,
+// or a pack of lanes on batches).
+template <class T>
+struct round_terms {
+  T weight_square;             // (ni ⌋ C)^2, the round's squared weight
+  T duals_product;             // A* . B*
+  T meet_square;               // C Ĉ: over weight_square, the round's squared radius
+  std::array<T, 3> direction;  // Euclidean part of no ⌋ ((ni ⌋ C) ∧ ni)^-*: along the normal
+  std::array<T, 3> centre;     // Euclidean part of C ni C, the round's centre, weighted
+  T centre_weight;             // -ni . (C ni C)
+};
+
+// A sphere's and a plane's duals as their named c3ga types, the numbers
+// place() stores in placed_shape::dual: the meet's products then run the
+// generated kernels of those types (straight-line code, no mv dispatch).
+c3ga::dual_sphere dual_sphere_of(const placed_shape& s);
+c3ga::dual_plane dual_plane_of(const placed_shape& s);
+
+// The Euclidean part (e1, e2, e3) of a c3ga value, named type or mv.
+template <class X>
+auto euclidean_part(const X& x) {
+  if constexpr (std::is_same_v<X, c3ga::mv>) {
+    const c3ga::euclidean_vector v(x);
+    return std::array<real, 3>{v.e1(), v.e2(), v.e3()};
+  } else {
+    return std::array<typename X::scalar_type, 3>{x.e1(), x.e2(), x.e3()};
+  }
+}
+
+// Thesis eq. 4.10: reflecting infinity in the round C gives its centre, C ni C.
+template <class Round, class Weight>
+c3ga::mv centre_of(const Round& meet, const Weight&) {
+  const c3ga::mv ni = c3ga::ni();
+  return c3ga::gp(c3ga::gp(meet, ni), meet);
+}
+
+// The same for a circle, by grades: C ni C is a vector, the grade-1 part of
+// (C ⌊ ni) C + (C ∧ ni) C, that is (C ⌊ ni) ⌋ C + (C ∧ ni) ⌊ C. For a
+// trivector C ⌊ ni = ni ⌋ C (the weight), and (C ∧ ni) ⌊ C = -C ⌋ (C ∧ ni)
+// (reverse both sides: C~ = -C, (C ∧ ni)~ = C ∧ ni). Contractions of named
+// types, where the geometric products would pass through an mv of grades 2
+// and 4.
+template <class T>
+c3ga::basic_dual_sphere<T> centre_of(const c3ga::basic_circle<T>& meet,
+                                     const c3ga::basic_point_pair<T>& weight) {
+  return c3ga::sub(c3ga::lc(weight, meet), c3ga::lc(meet, c3ga::op(meet, c3ga::ni<T>())));
+}
+
+// The terms of the meet of two duals: dual_sphere and dual_plane (or their
+// batches), or mv where a point takes part (its dual, the flat point's, has
+// no named type of its own).
+template <class DualA, class DualB>
+auto terms_of(const DualA& dual_a, const DualB& dual_b) {
+  using scalar = std::conditional_t<std::is_same_v<DualA, c3ga::mv>, real,
+                                    typename DualA::scalar_type>;
+  const auto ni = c3ga::ni<scalar>();
+  const auto no = c3ga::no<scalar>();
+  // Thesis eq. 4.8 on dual shapes: C = A ∩ B = (A* ∧ B*)^-*. Two spheres, or a
+  // sphere and a plane, meet in a circle; a sphere and a flat point in a round
+  // point (a dual sphere centred on the point).
+  const auto meet = c3ga::undual(c3ga::op(dual_a, dual_b));
+  // Thesis test t = C^2 (eq. 4.9), made independent of C's grade and weight
+  // (contact_from divides by the weight).
+  const auto weight = c3ga::lc(ni, meet);
+  // Thesis eq. 4.11: (-ni ⌋ C) ∧ ni = -weight ∧ ni is the direction of the
+  // round's carrier, n ∧ ni; undualized and read out by no ⌋ it is a vector
+  // along the normal, oriented from B to A.
+  const auto direction = c3ga::lc(no, c3ga::undual(c3ga::op(weight, ni)));
+  const auto centre = centre_of(meet, weight);
+  return round_terms<scalar>{c3ga::scp(weight, weight),
+                             c3ga::scp(dual_a, dual_b),
+                             c3ga::scp(meet, c3ga::involute(meet)),
+                             euclidean_part(direction),
+                             euclidean_part(centre),
+                             -c3ga::scp(ni, centre)};
+}
+
+// The contact of two round shapes whose meet has terms t (find_contact's
+// rules: contact.hpp).
+std::optional<contact_geometry> contact_from(const placed_shape& a, const placed_shape& b,
+                                             const round_terms<real>& t, real lookahead,
+                                             const vector& velocity_a, const vector& velocity_b);
+
+// Two round shapes that terms_of meets on batches: a sphere and a sphere,
+// or a sphere and a plane, in either order.
+bool meets_on_batches(shape_kind a, shape_kind b);
+
+// terms[k] = the terms of pairs[k], for pairs of shapes that
+// meets_on_batches: W pairs of one kind of pair at a time.
+void batched_terms(const std::pair<const placed_shape*, const placed_shape*>* pairs,
+                   std::size_t count, round_terms<real>* terms);
+
+}  // namespace gaphys::detail
