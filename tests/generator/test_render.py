@@ -1,5 +1,6 @@
 """Rendering: what the generated headers say, for the shipped specs and the test fixtures."""
 
+import functools
 import os
 import re
 import unittest
@@ -13,7 +14,14 @@ FIXTURES_DIR = os.path.join(REPO_DIR, "tests", "algebra", "specs")
 
 
 def rendered(path: str, variant: str) -> dict[str, str]:
-    """Every file of one generated library, unformatted: {file name: text}."""
+    """Every file of one generated library, unformatted: {file name: text}
+    (made once per spec text and variant: callers only read it)."""
+    with open(path, encoding="utf-8") as spec:
+        return _rendered(path, variant, spec.read())
+
+
+@functools.lru_cache(maxsize=None)
+def _rendered(path: str, variant: str, spec_text: str) -> dict[str, str]:  # spec_text: the cache key
     algebra = load(path)
     files = render.render(algebra, variant, algebra.name, "gaphys-gen generate ...", None)
     return {os.path.basename(name): text for name, text in files.items()}
@@ -124,3 +132,33 @@ class SparseAlgebras(unittest.TestCase):
         algebra = load(spec_path("c4ga"))
         with self.assertRaisesRegex(UsageError, "at most 5"):
             render.render(algebra, "optimized", "c4ga", "gaphys-gen ...", None, profile_path="c4ga.json")
+
+
+class Batches(unittest.TestCase):
+    def test_every_named_type_has_a_batch(self):
+        for path in (spec_path("e3ga"), spec_path("c3ga"), spec_path("pga3d")):
+            algebra = load(path)
+            for variant in render.VARIANTS:
+                header = rendered(path, variant)["batch.hpp"]
+                for named in algebra.types:
+                    self.assertIn(f"using {named.name}_batch = basic_{named.name}<batch<W>>;", header,
+                                  f"{algebra.name} {variant}")
+                for alias in algebra.aliases:
+                    self.assertIn(f"using {alias}_batch =", header, f"{algebra.name} {variant}")
+
+    def test_kernels_that_cannot_run_on_packs_run_lane_by_lane(self):
+        # A polynomial runs on the packs; exp, log and the mv path run lane by
+        # lane; a kernel with an mv result refuses batches.
+        kernels = {name: body for name, _, body in functions_of(rendered(spec_path("c3ga"), "optimized")["kernels.hpp"])
+                   if name in ("exp", "log")}
+        self.assertTrue(kernels)
+        for name, body in kernels.items():
+            self.assertIn("lanewise", body, name)
+        for variant in ("reference", "instrumented"):
+            for name, params, body in functions_of(rendered(spec_path("c3ga"), variant)["kernels.hpp"]):
+                self.assertTrue("lanewise" in body or "no batch form" in body, f"{variant} {name}({params})")
+        optimized = functions_of(rendered(spec_path("c3ga"), "optimized")["kernels.hpp"])
+        polynomials = [body for name, params, body in optimized if "gp" == name and "basic_mv<T> r;" in body]
+        self.assertTrue(polynomials)
+        for body in polynomials:
+            self.assertIn("no batch form", body)
