@@ -21,20 +21,18 @@ bool is_round(shape_kind kind) {
 placed_shape place(const shape& s, const vector& position, const rotor& attitude) {
   placed_shape placed{mv{}, s.kind(), position, vector{}, s.radius(), 0};
   placed.attitude = attitude;
-  const real half_square = real(0.5) * e3ga::scp(position, position);
   switch (s.kind()) {
     case shape_kind::sphere:  // σ = c - r^2/2 ni, c = no + x + x^2/2 ni
-      placed.dual = c3ga::dual_sphere{1, position.e1(), position.e2(), position.e3(),
-                                      half_square - real(0.5) * s.radius() * s.radius()};
+      placed.dual = detail::dual_sphere_of(placed);
       break;
     case shape_kind::plane: {  // -(n + d ni), n and d in the world frame
       placed.normal = e3ga::apply(attitude, s.normal());
       placed.offset = s.offset() + e3ga::scp(placed.normal, position);
-      placed.dual = -c3ga::dual_plane{placed.normal.e1(), placed.normal.e2(), placed.normal.e3(),
-                                      placed.offset};
+      placed.dual = detail::dual_plane_of(placed);
       break;
     }
     case shape_kind::point: {  // the dual of the flat point x ^ ni
+      const real half_square = real(0.5) * e3ga::scp(position, position);
       const c3ga::normalized_point x{position.e1(), position.e2(), position.e3(), half_square};
       placed.dual = c3ga::dual(c3ga::op(x, c3ga::ni()));
       break;

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <utility>
 #include <type_traits>
 
 #include "gaphys/contact.hpp"
@@ -25,9 +26,9 @@ struct round_terms {
   T centre_weight;             // -ni . (C ni C)
 };
 
-// A sphere's and a plane's duals as their named c3ga types, the numbers
-// place() stores in placed_shape::dual: the meet's products then run the
-// generated kernels of those types (straight-line code, no mv dispatch).
+// A sphere's and a plane's duals as their named c3ga types (place() stores
+// them in placed_shape::dual, widened to mv): the meet's products then run
+// the generated kernels of those types (straight-line code, no mv dispatch).
 c3ga::dual_sphere dual_sphere_of(const placed_shape& s);
 c3ga::dual_plane dual_plane_of(const placed_shape& s);
 
