@@ -52,7 +52,8 @@ world mixed_scene() {
     const real t = real(i) / 20;
     body_definition ball;
     ball.mass = 0.5 + t;
-    ball.position = vector{-0.7 + 1.4 * std::fmod(t * 7, 1), -0.7 + 1.4 * std::fmod(t * 3, 1), -0.7 + 1.4 * t};
+    ball.position = vector{real(-0.7 + 1.4 * std::fmod(t * 7, 1)),
+                           real(-0.7 + 1.4 * std::fmod(t * 3, 1)), real(-0.7 + 1.4 * t)};
     ball.velocity = vector{std::sin(9 * t), std::cos(7 * t), std::sin(5 * t + 1)};
     ball.shape = shape::sphere(0.08 + 0.06 * std::fmod(t * 5, 1)).with_restitution(1).with_friction(0);
     w.create_body(ball);
@@ -61,8 +62,8 @@ world mixed_scene() {
     body_definition spinner;
     spinner.mass = 2;
     spinner.inertia = inertia::principal(0.01, 0.02, 0.03);
-    spinner.position = vector{0.5 * (i - 1), 0.8, 0};
-    spinner.velocity = vector{0, -0.5, 0.3 * (i - 1)};
+    spinner.position = vector{real(0.5 * (i - 1)), 0.8, 0};
+    spinner.velocity = vector{0, -0.5, real(0.3 * (i - 1))};
     spinner.angular_velocity = bivector{3, -2, 1};
     spinner.shape = shape::sphere(0.15).with_restitution(1).with_friction(0);
     w.create_body(spinner);
@@ -71,7 +72,7 @@ world mixed_scene() {
     body_definition point;
     point.mass = 0.1;
     point.inertia = inertia::principal(1e-3, 1e-3, 1e-3);
-    point.position = vector{-0.6 + 0.3 * i, -0.6, 0.1 * i};
+    point.position = vector{real(-0.6 + 0.3 * i), -0.6, real(0.1 * i)};
     point.shape = shape::point().with_friction(0);
     w.create_body(point);
   }

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "precision.hpp"
 #include "vec3.hpp"
 
 namespace gaphys::detail {
@@ -28,7 +29,7 @@ constexpr real edge_preference = real(0.95);
 // face of the Minkowski difference it would bound is a sliver whose normal
 // rounding cannot give (it errs by ~1e-16 / sine), and leaving it out errs
 // by at most this sine times the segment's length.
-constexpr real edge_axis_sine = real(1e-8);
+const real edge_axis_sine = by_precision(1e-8, 3e-4);
 
 real clamp01(real x) { return std::clamp(x, real(0), real(1)); }
 
@@ -144,12 +145,12 @@ void collide_round(const placed_shape& capsule, const placed_shape& round, real 
 void collide_plane(const placed_shape& capsule, const placed_shape& plane, real margin,
                    contact_manifold& out) {
   const segment3 core = core_of(capsule);
-  const c3ga::dual_sphere dual(plane.dual);  // a dual plane: its no coefficient is 0
+  const conformal::dual_sphere dual(plane.dual);  // a dual plane: its no coefficient is 0
   const vec3 n = to_vec3(plane.normal);
   const int ends = capsule.half_height > 0 ? 2 : 1;
   for (int end = 0; end < ends; ++end) {
     const vec3& x = end == 0 ? core.start : core.end;
-    const c3ga::normalized_point point{x.x, x.y, x.z, real(0.5) * dot(x, x)};
+    const conformal::normalized_point point{x.x, x.y, x.z, real(0.5) * dot(x, x)};
     const real depth = capsule.radius + c3ga::scp(point, dual);
     if (!(depth >= -margin)) continue;
     const vec3 midway = x - (capsule.radius - real(0.5) * depth) * n;
@@ -172,7 +173,7 @@ constexpr std::uint32_t alongside_id = 16;
 bool hold_line(const contact_point (&points)[2], real deepest, real scale, real margin) {
   const real lower = std::min(points[0].geometry.depth, points[1].geometry.depth);
   const real upper = std::max(points[0].geometry.depth, points[1].geometry.depth);
-  return lower >= -margin && upper >= deepest - real(1e-9) * scale;
+  return lower >= -margin && upper >= deepest - by_precision(1e-9, 1e-4) * scale;
 }
 
 // Capsules alongside each other: the stretch of A's segment over which B's
@@ -190,7 +191,7 @@ bool collide_alongside(const placed_shape& a, const placed_shape& b, const segme
     lower = std::min(start_b, end_b), lower_id = b_ascends ? 2 : 3;
   if (std::max(start_b, end_b) < upper)
     upper = std::max(start_b, end_b), upper_id = b_ascends ? 3 : 2;
-  if (!(upper - lower > real(1e-9) * (a.half_height + b.half_height))) return false;
+  if (!(upper - lower > by_precision(1e-9, 1e-4) * (a.half_height + b.half_height))) return false;
 
   const real reach = a.radius + b.radius;
   const real along[2] = {lower, upper};
@@ -230,8 +231,9 @@ segment_gap nearest_cores(const placed_shape& a, const segment3& core_a, const s
   const vec3 axis_a = to_vec3(a.axis);
   const vec3 across = cross(axis_a, core_b.delta());
   const real across_length = length(across);
-  gap.normal = across_length > real(1e-12) * length(core_b.delta()) ? (1 / across_length) * across
-                                                                    : orthogonal_to(axis_a);
+  gap.normal = across_length > by_precision(1e-12, 1e-5) * length(core_b.delta())
+                   ? (1 / across_length) * across
+                   : orthogonal_to(axis_a);
   return gap;
 }
 
@@ -337,7 +339,7 @@ segment_axes overlap_axes(const convex_polyhedron& p, const segment3& core, cons
     const vec3 left = to_vec3(p.faces[e.left].normal), right = to_vec3(p.faces[e.right].normal);
     const vec3 bisector = left + right;
     if (dot(axis, bisector) < 0) axis = -axis;
-    if (dot(axis, bisector) < 1 + dot(left, right) - real(1e-12)) continue;
+    if (dot(axis, bisector) < 1 + dot(left, right) - by_precision(1e-12, 1e-5)) continue;
     const real overlap = std::max(dot(axis, tail), dot(axis, head)) -
                          std::min(dot(axis, core.start), dot(axis, core.end));
     if (overlap < best.edge.overlap) best.edge = {overlap, axis, i};
@@ -447,7 +449,7 @@ int face_contacts(const convex_polyhedron& p, std::uint32_t face, const segment3
   const clipped_stretch stretch = clip_to_face(p, f, core);
   out.count = 0;
   if (stretch.empty) return 0;
-  const bool two_ends = has_length && stretch.upper - stretch.lower > real(1e-9);
+  const bool two_ends = has_length && stretch.upper - stretch.lower > by_precision(1e-9, 1e-4);
   const contact_point lower =
       face_point(f, face, core.at(stretch.lower), radius, stretch.lower_side, 0);
   const contact_point upper =
@@ -475,7 +477,7 @@ bool edge_contacts(const convex_polyhedron& p, std::uint32_t i, const segment3& 
     lower = std::min(at_tail, at_head), lower_clip = at_tail <= at_head ? 1 : 2;
   if (std::max(at_tail, at_head) < upper)
     upper = std::max(at_tail, at_head), upper_clip = at_tail <= at_head ? 2 : 1;
-  if (!(upper - lower > real(1e-9))) return false;
+  if (!(upper - lower > by_precision(1e-9, 1e-4))) return false;
   const real along[2] = {lower, upper};
   const std::uint32_t clips[2] = {lower_clip, upper_clip};
   contact_point points[2];
@@ -524,7 +526,8 @@ void collide_outside(const convex_polyhedron& p, const segment3& core, real radi
     if (cosine >= face_alignment &&
         face_contacts(p, face, core, radius, has_length, margin, out) == 2)
       return;
-    const real tie = gap.distance * real(1e-9) + real(1e-12) * p.bounding_radius;
+    const real tie =
+        gap.distance * by_precision(1e-9, 1e-4) + by_precision(1e-12, 1e-5) * p.bounding_radius;
     if (gap.parallel_distance <= gap.distance + tie &&
         edge_contacts(p, gap.parallel_edge, core, radius, normal, radius - gap.distance, margin,
                       out))

@@ -10,7 +10,7 @@ namespace gaphys {
 
 namespace {
 
-using c3ga::mv;
+using conformal::mv;
 
 bool is_round(shape_kind kind) {
   return kind == shape_kind::sphere || kind == shape_kind::plane || kind == shape_kind::point;
@@ -33,8 +33,8 @@ placed_shape place(const shape& s, const vector& position, const rotor& attitude
     }
     case shape_kind::point: {  // the dual of the flat point x ^ ni
       const real half_square = real(0.5) * e3ga::scp(position, position);
-      const c3ga::normalized_point x{position.e1(), position.e2(), position.e3(), half_square};
-      placed.dual = c3ga::dual(c3ga::op(x, c3ga::ni()));
+      const conformal::normalized_point x{position.e1(), position.e2(), position.e3(), half_square};
+      placed.dual = c3ga::dual(c3ga::op(x, c3ga::ni<real>()));
       break;
     }
     case shape_kind::capsule:

@@ -32,6 +32,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "precision.hpp"
 #include "validate.hpp"
 
 namespace gaphys {
@@ -46,7 +47,7 @@ constexpr index none = std::numeric_limits<index>::max();
 // allowance for points far from the origin) to a common plane or line count
 // as lying on it: flat faces merge, straight-edge corners drop, and inputs
 // this thin are rejected as having no volume.
-constexpr real relative_tolerance = 1e-9;
+const real relative_tolerance = detail::by_precision(1e-9, 1e-5);
 
 struct xyz {
   real x, y, z;
@@ -647,7 +648,8 @@ convex_polyhedron convex_polyhedron::hull(const std::vector<vector>& input) {
   for (std::size_t i = 0; i < input.size(); ++i) {
     for (real x : input[i].c) {
       if (!std::isfinite(x)) {
-        detail::reject("convex hull point ", i, " must be finite (got ", e3ga::mv(input[i]), ")");
+        detail::reject("convex hull point ", i, " must be finite (got ",
+                       e3ga::basic_mv<real>(input[i]), ")");
       }
     }
   }

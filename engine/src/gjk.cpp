@@ -7,6 +7,7 @@
 #include <limits>
 #include <utility>
 
+#include "precision.hpp"
 #include "vec3.hpp"
 
 namespace gaphys::detail {
@@ -168,7 +169,7 @@ bool reduce(simplex& s) {
           {{1, 2, 3, 0}, {0, 2, 3, 1}, {0, 1, 3, 2}, {0, 1, 2, 3}}};
       const real volume = dot(b - a, cross(c - a, d - a));
       const real scale = std::max({dot(a, a), dot(b, b), dot(c, c), dot(d, d)});
-      const bool flat = !(std::fabs(volume) > 1e-14 * scale * std::sqrt(scale));
+      const bool flat = !(std::fabs(volume) > by_precision(1e-14, 5e-6) * scale * std::sqrt(scale));
       triangle_nearest best{};
       real best_squared = std::numeric_limits<real>::infinity();
       bool outside_any = false;
@@ -246,8 +247,9 @@ gjk_result gjk_distance(const support_function& a, const support_function& b,
                         const vector& first_direction) {
   constexpr int max_iterations = 128;
   // Converged when the support plane's lower bound v.w/|v| of the distance
-  // is within a relative 1e-13 of the upper bound |v| (squared: 2e-13).
-  constexpr real relative_tolerance = 2e-13;
+  // is within a relative 1e-13 of the upper bound |v| (squared: 2e-13; in
+  // float 5e-5 and 1e-4).
+  const real relative_tolerance = by_precision(2e-13, 1e-4);
 
   auto support_of_difference = [&](const vec3& direction) {
     const vec3 pa = to_vec3(a(to_vector(direction)));
@@ -268,7 +270,7 @@ gjk_result gjk_distance(const support_function& a, const support_function& b,
     const vec3 v = best.nearest;
     const real squared = dot(v, v);
     // The origin on the simplex: touching or overlapping within rounding.
-    if (!(squared > 1e-30 * scale)) return result_of(best, true);
+    if (!(squared > by_precision(1e-30, 1e-13) * scale)) return result_of(best, true);
     const simplex_vertex w = support_of_difference(-v);
     scale = std::max(scale, dot(w.w, w.w));
     // No support point beyond the current nearest point's plane by more

@@ -18,6 +18,7 @@
 #include "gaphys/algebra.hpp"
 #include "gaphys/body.hpp"
 #include "gaphys/ga/compiler.hpp"
+#include "precision.hpp"
 
 namespace gaphys::detail {
 
@@ -170,12 +171,12 @@ struct disk_block {
     if (!(bound > 0)) return {0, 0};
     // A bound this small next to λ* holds nothing that matters (and the
     // root below would underflow): scale onto the disk.
-    if (!(bound > real(1e-9) * (std::fabs(total[0]) + std::fabs(total[1])))) {
+    if (!(bound > by_precision(1e-9, 1e-4) * (std::fabs(total[0]) + std::fabs(total[1])))) {
       return within_disk(total, bound);
     }
     // An isotropic K (a contact through a sphere's centre): the nearest
     // point is λ* scaled onto the disk, no root to find.
-    if (!(eigenvalues[0] - eigenvalues[1] > real(1e-9) * eigenvalues[0])) {
+    if (!(eigenvalues[0] - eigenvalues[1] > by_precision(1e-9, 1e-4) * eigenvalues[0])) {
       return within_disk(total, bound);
     }
     return nearest_on_disk(total, bound);
@@ -200,7 +201,7 @@ struct disk_block {
     real nu = std::clamp(slip_rate, lowest, k[0] * excess);
     std::array<real, 2> l{};
     // Converging quadratically, a step below 1e-8 of the scale leaves an
-    // error near 1e-16 after it: stop once it is taken.
+    // error near 1e-16 after it (in float: 3e-4, 1e-7): stop once it is taken.
     for (int iteration = 0; iteration < 20; ++iteration) {
       const real d0 = k[0] + nu, d1 = k[1] + nu;
       const real both = 1 / (d0 * d1);
@@ -212,7 +213,7 @@ struct disk_block {
       const real length = std::sqrt(squared);
       const real step = (bound - length) * squared / (bound * (l[0] * l[0] * i0 + l[1] * l[1] * i1));
       nu = std::max(nu - step, lowest);
-      if (!(std::fabs(step) > real(1e-8) * (nu + k[0]))) break;
+      if (!(std::fabs(step) > by_precision(1e-8, 3e-4) * (nu + k[0]))) break;
     }
     slip_rate = nu;
     l = {k[0] * w[0] / (k[0] + nu), k[1] * w[1] / (k[1] + nu)};

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "precision.hpp"
 #include "validate.hpp"
 
 namespace gaphys {
@@ -36,7 +37,7 @@ inertia::inertia(const matrix& rows, const matrix& inverse)
 inertia inertia::tensor(const matrix& m) {
   for (real x : m) detail::require_finite(x, "inertia tensor entry");
   const real scale = std::fabs(m[0]) + std::fabs(m[4]) + std::fabs(m[8]);
-  const real tolerance = 1e-12 * scale;
+  const real tolerance = detail::by_precision(1e-12, 1e-5) * scale;
   if (std::fabs(m[1] - m[3]) > tolerance || std::fabs(m[2] - m[6]) > tolerance ||
       std::fabs(m[5] - m[7]) > tolerance) {
     detail::reject("inertia tensor must be symmetric");

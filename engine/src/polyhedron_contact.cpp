@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "gjk.hpp"
+#include "precision.hpp"
 #include "vec3.hpp"
 
 namespace gaphys::detail {
@@ -235,7 +236,9 @@ edge_query query_edges(const polyhedron_data& a, const polyhedron_data& b, real 
       // lies in a face already tried).
       vec3 axis = cross(ea.along, eb.along);
       const real axis_squared = dot(axis, axis);
-      if (!(axis_squared > 1e-18 * dot(ea.along, ea.along) * dot(eb.along, eb.along))) continue;
+      if (!(axis_squared >
+            by_precision(1e-18, 1e-8) * dot(ea.along, ea.along) * dot(eb.along, eb.along)))
+        continue;
       axis = (1 / std::sqrt(axis_squared)) * axis;
       if (dot(axis, toward_a_arc) < 0) axis = -axis;
       const real gap = dot(axis, eb.tail - ea.tail);
@@ -343,7 +346,8 @@ sat_result box_axes(const placed_shape& a, const placed_shape& b, const rigid_fr
       const vec3 e_j{real(j == 0), real(j == 1), real(j == 2)};
       const vec3 n = cross(axis[i], e_j);
       const real squared = dot(n, n);
-      if (!(squared > 1e-18)) continue;  // parallel edges span no face of their own
+      if (!(squared > by_precision(1e-18, 1e-8)))
+        continue;  // parallel edges span no face of their own
       const real reach = h_a[0] * std::fabs(dot(axis[0], n)) + h_a[1] * std::fabs(dot(axis[1], n)) +
                          h_a[2] * std::fabs(dot(axis[2], n)) + h_b[0] * std::fabs(n.x) +
                          h_b[1] * std::fabs(n.y) + h_b[2] * std::fabs(n.z);
@@ -626,11 +630,11 @@ real axis_bias(const placed_shape& a, const placed_shape& b) {
 
 // The inverse of a shape's pose x -> c + R x ~R as a c3ga motor, ~R ~T with
 // T = 1 - c ni / 2: it moves world objects into the shape's frame.
-c3ga::motor world_to_shape(const placed_shape& s) {
+conformal::motor world_to_shape(const placed_shape& s) {
   const rotor& r = s.attitude;
-  const c3ga::rotor undo_turn{r.c[0], -r.c[1], -r.c[2], -r.c[3]};
-  const c3ga::translator undo_shift{1, real(0.5) * s.center.c[0], real(0.5) * s.center.c[1],
-                                    real(0.5) * s.center.c[2]};
+  const conformal::rotor undo_turn{r.c[0], -r.c[1], -r.c[2], -r.c[3]};
+  const conformal::translator undo_shift{1, real(0.5) * s.center.c[0], real(0.5) * s.center.c[1],
+                                         real(0.5) * s.center.c[2]};
   return c3ga::gp(undo_turn, undo_shift);
 }
 
@@ -642,9 +646,9 @@ struct local_plane {
   real offset;
 };
 local_plane plane_in_frame_of(const placed_shape& polyhedron, const placed_shape& plane) {
-  const c3ga::dual_plane world{plane.normal.c[0], plane.normal.c[1], plane.normal.c[2],
-                               plane.offset};
-  const c3ga::dual_plane local = c3ga::apply(world_to_shape(polyhedron), world);
+  const conformal::dual_plane world{plane.normal.c[0], plane.normal.c[1], plane.normal.c[2],
+                                    plane.offset};
+  const conformal::dual_plane local = c3ga::apply(world_to_shape(polyhedron), world);
   return {{local.c[0], local.c[1], local.c[2]}, local.c[3]};
 }
 
@@ -703,8 +707,8 @@ nearest_point nearest_on_polyhedron(const convex_polyhedron& p, const vec3& x) {
 nearest_point sphere_against_polyhedron(const placed_shape& polyhedron, const placed_shape& sphere,
                                         real& radius) {
   const vec3 c = to_vec3(sphere.center);
-  const c3ga::normalized_point world{c.x, c.y, c.z, real(0.5) * dot(c, c)};
-  const c3ga::normalized_point local = c3ga::apply(world_to_shape(polyhedron), world);
+  const conformal::normalized_point world{c.x, c.y, c.z, real(0.5) * dot(c, c)};
+  const conformal::normalized_point local = c3ga::apply(world_to_shape(polyhedron), world);
   radius = sphere.kind == shape_kind::sphere ? sphere.radius : 0;
   return nearest_on_polyhedron(*polyhedron.polyhedron, {local.c[0], local.c[1], local.c[2]});
 }

@@ -13,8 +13,8 @@ namespace {
 constexpr real infinity = std::numeric_limits<real>::infinity();
 
 // The conformal point of x: no + x + ½ x² ni.
-c3ga::normalized_point up(const vector& x) {
-  return c3ga::normalized_point{x.e1(), x.e2(), x.e3(), real(0.5) * e3ga::scp(x, x)};
+conformal::normalized_point up(const vector& x) {
+  return conformal::normalized_point{x.e1(), x.e2(), x.e3(), real(0.5) * e3ga::scp(x, x)};
 }
 
 std::optional<shape_hit> inside(const vector& direction) { return shape_hit{0, -direction}; }
@@ -26,7 +26,7 @@ std::optional<shape_hit> inside(const vector& direction) { return shape_hit{0, -
 std::optional<shape_hit> cast_at_sphere(const placed_shape& s, const vector& origin,
                                         const vector& direction, real max_distance) {
   const vector o = origin - s.center;
-  const c3ga::dual_sphere sigma{1, 0, 0, 0, -real(0.5) * s.radius * s.radius};
+  const conformal::dual_sphere sigma{1, 0, 0, 0, -real(0.5) * s.radius * s.radius};
   const real at_origin = c3ga::scp(up(o), sigma);  // > 0: the ray starts inside
   if (at_origin >= 0) return inside(direction);
   const real b = -e3ga::scp(direction, o);
@@ -47,7 +47,7 @@ std::optional<shape_hit> cast_at_sphere(const placed_shape& s, const vector& ori
 // (with the dual_sphere type's no coefficient 0), linear in t.
 std::optional<shape_hit> cast_at_plane(const placed_shape& s, const vector& origin,
                                        const vector& direction, real max_distance) {
-  const c3ga::dual_sphere pi{0, -s.normal.e1(), -s.normal.e2(), -s.normal.e3(), -s.offset};
+  const conformal::dual_sphere pi{0, -s.normal.e1(), -s.normal.e2(), -s.normal.e3(), -s.offset};
   const real at_origin = c3ga::scp(up(origin), pi);  // offset - n . o: >= 0 inside
   if (at_origin >= 0) return inside(direction);
   const real slope = -e3ga::scp(s.normal, direction);  // d/dt of X(t) . π

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <vector>
 
+#include "precision.hpp"
+
 namespace gaphys::detail {
 
 namespace {
@@ -67,14 +69,14 @@ void terms_of_batch(const std::pair<const placed_shape*, const placed_shape*>* p
 
 }  // namespace
 
-c3ga::dual_sphere dual_sphere_of(const placed_shape& s) {
+conformal::dual_sphere dual_sphere_of(const placed_shape& s) {
   const real half_square = real(0.5) * e3ga::scp(s.center, s.center);
   return {1, s.center.e1(), s.center.e2(), s.center.e3(),
           half_square - real(0.5) * s.radius * s.radius};
 }
 
-c3ga::dual_plane dual_plane_of(const placed_shape& s) {
-  return -c3ga::dual_plane{s.normal.e1(), s.normal.e2(), s.normal.e3(), s.offset};
+conformal::dual_plane dual_plane_of(const placed_shape& s) {
+  return -conformal::dual_plane{s.normal.e1(), s.normal.e2(), s.normal.e3(), s.offset};
 }
 
 std::optional<contact_geometry> contact_from(const placed_shape& a, const placed_shape& b,
@@ -100,7 +102,7 @@ std::optional<contact_geometry> contact_from(const placed_shape& a, const placed
   // flat point the normal is the line of the two centres.
   vector normal = -to_vector(t.direction);
   real length = e3ga::norm(normal);
-  if (!(length > 1e-9 * std::sqrt(std::fabs(t.weight_square)))) {
+  if (!(length > by_precision(1e-9, 1e-4) * std::sqrt(std::fabs(t.weight_square)))) {
     if (a.kind == shape_kind::plane || b.kind == shape_kind::plane) return std::nullopt;
     normal = a.center - b.center;
     length = e3ga::norm(normal);

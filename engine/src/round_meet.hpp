@@ -29,14 +29,14 @@ struct round_terms {
 // A sphere's and a plane's duals as their named c3ga types (place() stores
 // them in placed_shape::dual, widened to mv): the meet's products then run
 // the generated kernels of those types (straight-line code, no mv dispatch).
-c3ga::dual_sphere dual_sphere_of(const placed_shape& s);
-c3ga::dual_plane dual_plane_of(const placed_shape& s);
+conformal::dual_sphere dual_sphere_of(const placed_shape& s);
+conformal::dual_plane dual_plane_of(const placed_shape& s);
 
 // The Euclidean part (e1, e2, e3) of a c3ga value, named type or mv.
 template <class X>
 auto euclidean_part(const X& x) {
-  if constexpr (std::is_same_v<X, c3ga::mv>) {
-    const c3ga::euclidean_vector v(x);
+  if constexpr (std::is_same_v<X, conformal::mv>) {
+    const conformal::euclidean_vector v(x);
     return std::array<real, 3>{v.e1(), v.e2(), v.e3()};
   } else {
     return std::array<typename X::scalar_type, 3>{x.e1(), x.e2(), x.e3()};
@@ -45,8 +45,8 @@ auto euclidean_part(const X& x) {
 
 // Thesis eq. 4.10: reflecting infinity in the round C gives its centre, C ni C.
 template <class Round, class Weight>
-c3ga::mv centre_of(const Round& meet, const Weight&) {
-  const c3ga::mv ni = c3ga::ni();
+conformal::mv centre_of(const Round& meet, const Weight&) {
+  const conformal::mv ni = c3ga::ni<real>();
   return c3ga::gp(c3ga::gp(meet, ni), meet);
 }
 
@@ -67,8 +67,8 @@ c3ga::basic_dual_sphere<T> centre_of(const c3ga::basic_circle<T>& meet,
 // no named type of its own).
 template <class DualA, class DualB>
 auto terms_of(const DualA& dual_a, const DualB& dual_b) {
-  using scalar = std::conditional_t<std::is_same_v<DualA, c3ga::mv>, real,
-                                    typename DualA::scalar_type>;
+  using scalar =
+      std::conditional_t<std::is_same_v<DualA, conformal::mv>, real, typename DualA::scalar_type>;
   const auto ni = c3ga::ni<scalar>();
   const auto no = c3ga::no<scalar>();
   // Thesis eq. 4.8 on dual shapes: C = A ∩ B = (A* ∧ B*)^-*. Two spheres, or a

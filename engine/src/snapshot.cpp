@@ -48,6 +48,7 @@
 
 #include "byte_stream.hpp"
 #include "gaphys/world.hpp"
+#include "precision.hpp"
 #include "validate.hpp"
 
 namespace gaphys {
@@ -67,7 +68,7 @@ constexpr real pi = real(3.14159265358979323846);
 real byte_order_check() { return real(-4) / 3; }
 
 // Attitudes are unit rotors to rounding; a restored one must be within this.
-constexpr real unit_tolerance = 1e-6;
+const real unit_tolerance = detail::by_precision(1e-6, 1e-5);
 
 // Lower bounds on the bytes of one item, for the counts' checks.
 constexpr std::size_t body_bytes = 24 * sizeof(real);
@@ -124,7 +125,7 @@ real non_negative(detail::byte_reader& in, const char* what) {
 template <class Named>
 Named finite_numbers(detail::byte_reader& in, const char* what) {
   const Named value = in.numbers<Named>(what);
-  if (!all_finite(value)) in.fail(what, " must be finite (got ", e3ga::mv(value), ")");
+  if (!all_finite(value)) in.fail(what, " must be finite (got ", e3ga::basic_mv<real>(value), ")");
   return value;
 }
 
@@ -357,7 +358,7 @@ void check_hull(detail::byte_reader& in, std::size_t at, const convex_polyhedron
   real radius = 0;
   for (const vector& v : p.vertices) radius = std::max(radius, length(v));
   if (!(radius > 0 && std::isfinite(radius))) fail("the hull's size must be finite and > 0");
-  if (!(std::fabs(p.bounding_radius - radius) <= 1e-9 * radius)) {
+  if (!(std::fabs(p.bounding_radius - radius) <= detail::by_precision(1e-9, 1e-5) * radius)) {
     fail("the hull's bounding radius is ", p.bounding_radius, ", its farthest vertex ", radius);
   }
   // The faces' corner lists tile vertex_indices in order, as hull() lays
@@ -374,7 +375,7 @@ void check_hull(detail::byte_reader& in, std::size_t at, const convex_polyhedron
   if (corners != p.vertex_indices.size()) {
     fail("the faces have ", corners, " corners, the vertex indices ", p.vertex_indices.size());
   }
-  const real tolerance = 1e-6 * radius;
+  const real tolerance = detail::by_precision(1e-6, 1e-4) * radius;
   for (std::size_t f = 0; f < p.faces.size(); ++f) {
     const polyhedron_face& face = p.faces[f];
     const vector& n = face.normal;
@@ -743,7 +744,8 @@ struct snapshot_access {
       reach = std::max(reach, e3ga::norm(a.offset) + a.shape.bounding_radius());
     }
     const bool infinite = std::isinf(reach) && b.bounding_radius_ == reach;
-    if (!infinite && !(std::fabs(b.bounding_radius_ - reach) <= 1e-9 * (1 + reach))) {
+    if (!infinite && !(std::fabs(b.bounding_radius_ - reach) <=
+                       detail::by_precision(1e-9, 1e-5) * (1 + reach))) {
       in.fail("bounding radius is ", b.bounding_radius_, ", its shapes reach ", reach);
     }
 
@@ -784,7 +786,8 @@ struct snapshot_access {
     for (real& x : out.inverse_) x = finite(in, "inverse inertia entry");
     out.isotropic_ = in.boolean("isotropic flag");
     const std::array<real, 9>& m = out.tensor_;
-    const real tolerance = 1e-12 * (std::fabs(m[0]) + std::fabs(m[4]) + std::fabs(m[8]));
+    const real tolerance =
+        detail::by_precision(1e-12, 1e-5) * (std::fabs(m[0]) + std::fabs(m[4]) + std::fabs(m[8]));
     const bool symmetric = std::fabs(m[1] - m[3]) <= tolerance &&
                            std::fabs(m[2] - m[6]) <= tolerance &&
                            std::fabs(m[5] - m[7]) <= tolerance;

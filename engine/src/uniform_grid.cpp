@@ -4,6 +4,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "precision.hpp"
 #include "thread_count.hpp"
 
 namespace gaphys::detail {
@@ -13,7 +14,7 @@ namespace {
 // Bounds are widened by this share of their scale (1 + |centre| + r), far
 // above the rounding of the narrow phase's test, so a pair the meet calls
 // touching is never lost to rounding here.
-constexpr real relative_margin = 1e-9;
+const real relative_margin = by_precision(1e-9, 1e-5);
 // Cell coordinates must fit in 64-bit integers with room for the +-1 offsets.
 constexpr real largest_cell_coordinate = 0x1.0p50;
 

@@ -9,6 +9,7 @@
 
 #include "gaphys/algebra.hpp"
 #include "gaphys/error.hpp"
+#include "precision.hpp"
 
 namespace gaphys::detail {
 
@@ -35,7 +36,7 @@ inline void require_non_negative(real value, const char* what) {
 template <class Named>
 void require_finite(const Named& value, const char* what) {
   for (real x : value.c) {
-    if (!std::isfinite(x)) reject(what, " must be finite (got ", e3ga::mv(value), ")");
+    if (!std::isfinite(x)) reject(what, " must be finite (got ", e3ga::basic_mv<real>(value), ")");
   }
 }
 
@@ -43,7 +44,7 @@ void require_finite(const Named& value, const char* what) {
 inline rotor unit_rotor(const rotor& r, const char* what) {
   require_finite(r, what);
   const real length = e3ga::norm(r);
-  if (std::isfinite(length) && length > real(1e-150)) return r / length;
+  if (std::isfinite(length) && length > by_precision(1e-150, 1e-18)) return r / length;
   // A rotor of 1e200 (whose squared norm overflows) or of 1e-200 (whose
   // squared norm underflows): scaled by its largest coefficient first.
   real largest = 0;

@@ -26,15 +26,17 @@ inline real dot(const vector& a, const vector& b) { return e3ga::scp(a, b); }
 inline ::testing::AssertionResult near(const vector& actual, const vector& expected, real tolerance) {
   const real error = length(actual - expected);
   if (error <= tolerance) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "|" << e3ga::mv(actual) << " - " << e3ga::mv(expected)
-                                       << "| = " << error << " > " << tolerance;
+  return ::testing::AssertionFailure()
+         << "|" << e3ga::basic_mv<real>(actual) << " - " << e3ga::basic_mv<real>(expected)
+         << "| = " << error << " > " << tolerance;
 }
 
 inline ::testing::AssertionResult near(const bivector& actual, const bivector& expected, real tolerance) {
   const real error = length(actual - expected);
   if (error <= tolerance) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "|" << e3ga::mv(actual) << " - " << e3ga::mv(expected)
-                                       << "| = " << error << " > " << tolerance;
+  return ::testing::AssertionFailure()
+         << "|" << e3ga::basic_mv<real>(actual) << " - " << e3ga::basic_mv<real>(expected)
+         << "| = " << error << " > " << tolerance;
 }
 
 // Runs `bad`, which must throw invalid_input whose message mentions `what`.

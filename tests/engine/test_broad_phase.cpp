@@ -3,6 +3,7 @@
 // the grid's candidates include every pair that touches, both give the same
 // contacts in the same order, and whole simulations agree to the bit.
 #include <cstring>
+#include <limits>
 #include <vector>
 
 #include "engine_test_support.hpp"
@@ -108,9 +109,11 @@ TEST_F(broad_phase_test, coincident_and_far_away_bodies_are_handled) {
   body_definition d;
   d.shape = shape::sphere(0.5);
   for (int i = 0; i < 10; ++i) bodies.emplace_back(d);  // all at the origin
-  d.position = vector{1e300, 0, 0};  // beyond integer cells: the grid defers to all pairs
+  // (Near the largest real: 1e300 in double, 1e30 in float.)
+  const real far_away = std::numeric_limits<real>::max() > 1e300 ? real(1e300) : real(1e30);
+  d.position = vector{far_away, 0, 0};  // beyond integer cells: the grid defers to all pairs
   bodies.emplace_back(d);
-  d.position = vector{1e300, 0, 0.5};
+  d.position = vector{far_away, 0, 0.5};
   bodies.emplace_back(d);
   space grid(broad_phase_kind::uniform_grid), all(broad_phase_kind::all_pairs);
   std::vector<body_pair> grid_pairs, all_pairs;
@@ -118,7 +121,7 @@ TEST_F(broad_phase_test, coincident_and_far_away_bodies_are_handled) {
   const auto from_all = contacts_of(all, bodies, all_pairs);
   ASSERT_EQ(from_grid.size(), from_all.size());
   // Every two of the ten coincident spheres. The far pair touches, but at
-  // 1e300 the conformal embedding (|x|^2 / 2) overflows, so the meet sees
+  // far_away the conformal embedding (|x|^2 / 2) overflows, so the meet sees
   // nothing: finite, never NaN, and the same with either broad phase.
   EXPECT_EQ(from_all.size(), 45u);
   for (std::size_t i = 0; i < from_all.size(); ++i)

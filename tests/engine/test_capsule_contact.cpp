@@ -346,7 +346,7 @@ TEST_F(CapsuleContactBox, capsule_lying_on_a_face_rests_on_two_points) {
   // bottom and the face, z = 0.25 - 0.005.
   const real r = 0.1, sink = 0.01;
   const placed_shape b = box({0, 0, 0}, {1, 0.5, 0.25});
-  const contact_manifold m = collide(capsule({0.2, 0.1, 0.25 + r - sink}, e1, 0.5, r), b);
+  const contact_manifold m = collide(capsule({0.2, 0.1, real(0.25) + r - sink}, e1, 0.5, r), b);
   ASSERT_EQ(m.count, 2);
   const real z = 0.25 - sink / 2;
   bool saw[2] = {false, false};
@@ -356,18 +356,18 @@ TEST_F(CapsuleContactBox, capsule_lying_on_a_face_rests_on_two_points) {
     EXPECT_NEAR(g.depth, sink, tolerance);
     const bool left = x(g.point) < 0.2;
     saw[left ? 0 : 1] = true;
-    EXPECT_TRUE(near(g.point, vector{left ? -0.3 : 0.7, 0.1, z}, tolerance));
+    EXPECT_TRUE(near(g.point, vector{left ? real(-0.3) : real(0.7), 0.1, z}, tolerance));
   }
   EXPECT_TRUE(saw[0] && saw[1]);
   EXPECT_NE(m.points[0].feature, m.points[1].feature);
-  expect_mirrored(m, collide(b, capsule({0.2, 0.1, 0.25 + r - sink}, e1, 0.5, r)));
+  expect_mirrored(m, collide(b, capsule({0.2, 0.1, real(0.25) + r - sink}, e1, 0.5, r)));
 }
 
 TEST_F(CapsuleContactBox, capsule_across_a_face_rests_where_the_face_ends) {
   // Longer than the box: its stretch over the top face is x in [-1, 1].
   const real r = 0.1, sink = 0.02;
   const contact_manifold m =
-      collide(capsule({0.3, 0, 0.25 + r - sink}, e1, 2, r), box({0, 0, 0}, {1, 0.5, 0.25}));
+      collide(capsule({0.3, 0, real(0.25) + r - sink}, e1, 2, r), box({0, 0, 0}, {1, 0.5, 0.25}));
   ASSERT_EQ(m.count, 2);
   std::vector<real> xs;
   for (int i = 0; i < 2; ++i) {
@@ -563,7 +563,7 @@ TEST_F(CapsuleContactSeparation, hand_computed_distances) {
 real box_distance(const real (&x)[3], const vector& h) {
   real squared = 0;
   for (int k = 0; k < 3; ++k) {
-    const real outside = std::max(std::fabs(x[k]) - h.c[k], 0.0);
+    const real outside = std::max(std::fabs(x[k]) - h.c[k], real(0));
     squared += outside * outside;
   }
   return std::sqrt(squared);

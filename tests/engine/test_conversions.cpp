@@ -263,7 +263,7 @@ TEST_F(conversions_test, the_worked_example_in_the_docs_turns_as_it_says) {
   body_definition d;
   d.shape = shape::box(vector{0.5, 0.5, 0.5});
   const double half = 0.3926990816987241;  // 45° about z, halved
-  d.attitude = to_rotor(quaternion{std::cos(half), 0, 0, std::sin(half)});
+  d.attitude = to_rotor(quaternion{real(std::cos(half)), 0, 0, real(std::sin(half))});
   d.angular_velocity = to_bivector(vector{0, 0, 2});
   world w;
   const body_id id = w.create_body(d);

@@ -69,7 +69,7 @@ using ConvexContactSphere = convex_contact_test;
     if (length(p - q) <= tol) return ::testing::AssertionSuccess();
   }
   return ::testing::AssertionFailure()
-         << e3ga::mv(p) << " is none of the " << points.size() << " expected points";
+         << e3ga::basic_mv<real>(p) << " is none of the " << points.size() << " expected points";
 }
 
 // ---- Planes -------------------------------------------------------------------
@@ -201,8 +201,8 @@ TEST_F(ConvexContactFaces, turned_box_gives_its_corners_or_the_cut_polygon) {
   // (1, 1), (0.9 - r + 0.1, 1).
   const real r = 0.5 * std::sqrt(real(2));
   const contact_manifold cut = collide(box({0.9, 0.9, 0.99}, h, about(e3, M_PI / 4)), slab, 0.001);
-  const std::vector<vector> pentagon{{0.9 - r, 0.9, 0.495},
-                                     {0.9, 0.9 - r, 0.495},
+  const std::vector<vector> pentagon{{real(0.9) - r, 0.9, 0.495},
+                                     {0.9, real(0.9) - r, 0.495},
                                      {1, 1 - r, 0.495},
                                      {1, 1, 0.495},
                                      {1 - r, 1, 0.495}};
@@ -222,7 +222,8 @@ TEST_F(ConvexContactFaces, resting_box_keeps_its_ids_and_swaps_cleanly) {
   const placed_shape lower = box({0, 0, 0}, {1, 1, 0.2}, about(e3, 0.2));
   std::set<std::uint32_t> first;
   for (int step = 0; step < 20; ++step) {
-    const vector centre{0.01 * step, -0.005 * step, 0.4 - 0.001 - 1e-5 * (step % 3)};
+    const vector centre{real(0.01 * step), real(-0.005 * step),
+                        real(0.4 - 0.001 - 1e-5 * (step % 3))};
     const placed_shape upper = box(centre, h, about(e3, 0.5 + 1e-3 * step));
     const contact_manifold m = collide(upper, lower, 0.002);
     ASSERT_EQ(m.count, 4) << "step " << step;
@@ -258,14 +259,14 @@ TEST_F(ConvexContactEdges, crossing_edges_give_one_point) {
     ASSERT_EQ(m.count, 1) << "gap " << gap;
     EXPECT_NEAR(m.points[0].geometry.depth, -gap, tolerance);
     EXPECT_TRUE(near(m.points[0].geometry.normal, e3, tolerance));
-    EXPECT_TRUE(near(m.points[0].geometry.point, vector{0, 0, reach + 0.5 * gap}, tolerance));
+    EXPECT_TRUE(near(m.points[0].geometry.point, vector{0, 0, reach + real(0.5) * gap}, tolerance));
 
     const contact_manifold swapped = collide(b, a, 0.01);
     ASSERT_EQ(swapped.count, 1);
     EXPECT_TRUE(near(swapped.points[0].geometry.normal, -e3, tolerance));
     EXPECT_NEAR(swapped.points[0].geometry.depth, -gap, tolerance);
   }
-  EXPECT_EQ(collide(box({0, 0, 2 * reach + 0.011}, h, on_edge_x), b, 0.01).count, 0);
+  EXPECT_EQ(collide(box({0, 0, 2 * reach + real(0.011)}, h, on_edge_x), b, 0.01).count, 0);
 }
 
 // Box against box apart by 5 mm face to face: speculative within a 1 cm
@@ -422,7 +423,7 @@ TEST_F(ConvexContactSeparation, boxes_against_closed_forms) {
   // 3 mm from B's +x face.
   const real reach = 0.5 * std::sqrt(real(2));
   const separation corner_to_face = convex_separation(
-      box({hb.e1() + reach + 0.003, 0, 0}, {0.5, 0.5, 0.1}, about(e3, M_PI / 4)), b);
+      box({hb.e1() + reach + real(0.003), 0, 0}, {0.5, 0.5, 0.1}, about(e3, M_PI / 4)), b);
   EXPECT_NEAR(corner_to_face.distance, 0.003, tolerance);
   EXPECT_TRUE(near(corner_to_face.normal, e1, 1e-9));
 }

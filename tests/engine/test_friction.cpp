@@ -168,7 +168,7 @@ TEST_F(friction_test, an_oblique_impact_with_friction_follows_the_impulsive_law)
     world w = make_world(vector{});
     add_floor(w, 0, e, mu);
     // Meets the floor 0.4 of the way into the first step.
-    const vector start{0, 0, radius + 0.4 * approach * h};
+    const vector start{0, 0, radius + real(0.4) * approach * h};
     body_definition d;
     d.mass = m;
     d.position = start;

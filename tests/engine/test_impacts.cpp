@@ -41,7 +41,7 @@ TEST_F(impact_test, a_bounce_off_a_wall_into_a_second_sphere_creates_no_energy) 
     const real wall_gap = 0.3 * 2 * h;  // B meets the wall 0.3 of the way into the step
     const body_id b = add_sphere(w, vector{r + wall_gap, 0, 0}, r, 1, vector{-2, 0, 0}, 1, 0);
     const body_id a =
-        add_sphere(w, vector{3 * r + wall_gap + 0.001, 0, 0}, r, 1, vector{-1, 0, 0}, 1, 0);
+        add_sphere(w, vector{3 * r + wall_gap + real(0.001), 0, 0}, r, 1, vector{-1, 0, 0}, 1, 0);
     const real e0 = kinetic_energy(w);
     for (int i = 0; i < 24; ++i) {  // 0.1 s
       const real before = kinetic_energy(w);
@@ -145,7 +145,7 @@ TEST_F(impact_test, a_struck_row_of_unequal_masses_follows_the_sequential_closed
 TEST_F(impact_test, a_resting_column_of_elastic_balls_stays_at_rest) {
   world w = make_world();
   add_floor(w, 0, 1);
-  for (int i = 0; i < 4; ++i) add_sphere(w, vector{0, 0, 0.5 + i}, 0.5, 1, vector{}, 1);
+  for (int i = 0; i < 4; ++i) add_sphere(w, vector{0, 0, real(0.5) + real(i)}, 0.5, 1, vector{}, 1);
   simulate(w, 240 * 5);
   for (body_id i = 1; i <= 4; ++i) {
     EXPECT_NEAR(z(w.at(i).position()), 0.5 + (i - 1), 1e-6) << "ball " << i;

@@ -120,8 +120,8 @@ TEST_F(impulse_test, an_off_centre_impulse_on_a_sphere_spins_it_by_r_cross_j_ove
   // A tangential kick e2 at the equator point +e1: spin about z (e12).
   const vector impulse{0, 1.5, 0};
   ball.apply_impulse(impulse, d.position + vector{radius, 0, 0});
-  EXPECT_TRUE(near(ball.velocity(), vector{0, 1.5 / mass, 0}, 1e-15));
-  EXPECT_TRUE(near(ball.angular_velocity(), bivector{radius * 1.5 / moment, 0, 0}, 1e-15));
+  EXPECT_TRUE(near(ball.velocity(), vector{0, real(1.5) / mass, 0}, 1e-15));
+  EXPECT_TRUE(near(ball.angular_velocity(), bivector{radius * real(1.5) / moment, 0, 0}, 1e-15));
 }
 
 // The struck point's velocity along the unit direction n of an impulse j n

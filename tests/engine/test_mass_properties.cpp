@@ -279,7 +279,7 @@ TEST_F(MassPropertiesTest, of_a_table_sum_their_parts) {
   std::vector<triple> leg_centres;
   for (real sx : {-1.0, 1.0}) {
     for (real sy : {-1.0, 1.0}) {
-      const triple at{sx * 0.9, sy * 0.5, leg_h / 2};
+      const triple at{sx * real(0.9), sy * real(0.5), leg_h / 2};
       leg_centres.push_back(at);
       table.push_back(
           {shape::box(vector{leg_w / 2, leg_w / 2, leg_h / 2}), vector{at[0], at[1], at[2]}});

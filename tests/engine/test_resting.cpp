@@ -26,7 +26,7 @@ TEST_F(resting_test, a_sphere_rests_on_a_floor_without_sinking_or_jitter) {
   const real radius = 0.5;
   world w = make_world();
   add_floor(w);
-  const body_id ball = add_sphere(w, vector{0.2, -0.1, radius + 0.001}, radius);
+  const body_id ball = add_sphere(w, vector{0.2, -0.1, radius + real(0.001)}, radius);
   real max_depth = 0, early_mean = 0, late_mean = 0, max_late_speed = 0;
   simulate(w, 10 * steps_per_second, [&](int i) {
     const real depth = radius - z(w.at(ball).position());

@@ -143,7 +143,8 @@ real size_of(const std::vector<vector>& points) {
       return x(q) == x(c) && y(q) == y(c) && z(q) == z(c);
     });
     if (!given)
-      return ::testing::AssertionFailure() << "corner " << e3ga::mv(c) << " is not a given point";
+      return ::testing::AssertionFailure()
+             << "corner " << e3ga::basic_mv<real>(c) << " is not a given point";
   }
   for (std::size_t i = 0; i < points.size(); ++i) {
     for (const polyhedron_face& f : p.faces) {
@@ -360,7 +361,8 @@ TEST_F(HullTest, of_a_dodecahedron_has_12_pentagons) {
   const real phi = (1 + std::sqrt(real(5))) / 2;
   std::vector<vector> points;
   for (int i = 0; i < 8; ++i)
-    points.push_back({i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0, i & 4 ? 1.0 : -1.0});
+    points.push_back(
+        {i & 1 ? real(1) : real(-1), i & 2 ? real(1) : real(-1), i & 4 ? real(1) : real(-1)});
   for (real s : {-1 / phi, 1 / phi}) {
     for (real t : {-phi, phi}) {
       points.push_back({0, s, t});
@@ -391,7 +393,7 @@ TEST_F(HullTest, rejects_points_that_span_no_volume) {
   std::vector<vector> nearly_flat;
   const rotor r = about(vector{0, 0.6, 0.8}, 1);
   for (std::size_t i = 0; i < flat.size(); ++i) {
-    nearly_flat.push_back(e3ga::apply(r, flat[i] + vector{0, 0, i % 2 ? 1e-13 : 0}));
+    nearly_flat.push_back(e3ga::apply(r, flat[i] + vector{0, 0, i % 2 ? real(1e-13) : real(0)}));
   }
   EXPECT_TRUE(rejects([&] { convex_polyhedron::hull(nearly_flat); }, "in one plane"));
   std::vector<vector> straight;
@@ -440,7 +442,7 @@ TEST(ShapeTest, box_polyhedron_is_the_box) {
     for (int k = 0; k < 3; ++k) {
       if (std::fabs(f.normal.c[k]) == 1) axis = k;
     }
-    ASSERT_GE(axis, 0) << "normal " << e3ga::mv(f.normal) << " is not an axis";
+    ASSERT_GE(axis, 0) << "normal " << e3ga::basic_mv<real>(f.normal) << " is not an axis";
     EXPECT_EQ(f.offset, h.c[axis]);
     for (std::uint32_t c : corners_of(p, f))
       EXPECT_EQ(p.vertices[c].c[axis], f.normal.c[axis] * h.c[axis]);

@@ -243,7 +243,7 @@ TEST_F(sleeping_test, the_state_hash_is_deterministic_through_sleep_and_waking) 
     world w = make_world();
     add_floor(w);
     for (int i = 0; i < 3; ++i)
-      add_box(w, vector{0.1 * i, 0, 0.5005 + 1.001 * i}, vector{0.5, 0.5, 0.5});
+      add_box(w, vector{real(0.1 * i), 0, real(0.5005 + 1.001 * i)}, vector{0.5, 0.5, 0.5});
     std::vector<std::uint64_t> hashes;
     simulate(w, 360, [&](int step) {
       if (step == 240)

@@ -12,6 +12,7 @@
 #include <iterator>
 #include <random>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "box_helpers.hpp"
@@ -49,20 +50,26 @@ void put_u64(bytes& b, std::size_t at, std::uint64_t x) {
   for (int i = 0; i < 8; ++i) b[at + i] = std::uint8_t(x >> (8 * i));
 }
 
-std::uint64_t bits_of(real x) {
-  std::uint64_t bits;
+// A real's bit pattern (binary64, or binary32 in a float engine).
+using real_bits = std::conditional_t<sizeof(real) == 8, std::uint64_t, std::uint32_t>;
+real_bits bits_of(real x) {
+  real_bits bits;
   std::memcpy(&bits, &x, sizeof bits);
   return bits;
 }
 
-void put_real(bytes& b, std::size_t at, real x) { put_u64(b, at, bits_of(x)); }
+void put_real(bytes& b, std::size_t at, real x) {
+  for (std::size_t i = 0; i < sizeof(real); ++i) b[at + i] = std::uint8_t(bits_of(x) >> (8 * i));
+}
 
 // Where the reals appear in a row in the snapshot, as it writes them
 // (little-endian bit patterns); the test needs them to be there once.
 std::size_t find_reals(const bytes& b, const std::vector<real>& values) {
   bytes pattern;
   for (real x : values) {
-    for (int i = 0; i < 8; ++i) pattern.push_back(std::uint8_t(bits_of(x) >> (8 * i)));
+    for (std::size_t i = 0; i < sizeof(real); ++i) {
+      pattern.push_back(std::uint8_t(bits_of(x) >> (8 * i)));
+    }
   }
   const auto first = std::search(b.begin(), b.end(), pattern.begin(), pattern.end());
   if (first == b.end()) return b.size();

@@ -5,12 +5,35 @@
 
 #include <c3ga/c3ga.hpp>
 #include <e3ga/e3ga.hpp>
+#include <type_traits>
+
+// The engine's scalar, set by the build (CMake's GAPHYS_REAL): double, or
+// float for a single-precision engine. The generated kernels are templates
+// on the scalar, so both are the same code.
+#ifndef GAPHYS_REAL
+#define GAPHYS_REAL double
+#endif
 
 namespace gaphys {
 
-using real = e3ga::real;
-using vector = e3ga::vector;      // positions, velocities, forces (metres, m/s, N)
-using bivector = e3ga::bivector;  // angular velocity, torque, angular momentum
-using rotor = e3ga::rotor;        // attitude: x_world = R x_body ~R
+using real = GAPHYS_REAL;
+static_assert(std::is_same_v<real, double> || std::is_same_v<real, float>,
+              "GAPHYS_REAL must be double or float");
+
+using vector = e3ga::basic_vector<real>;      // positions, velocities, forces (metres, m/s, N)
+using bivector = e3ga::basic_bivector<real>;  // angular velocity, torque, angular momentum
+using rotor = e3ga::basic_rotor<real>;        // attitude: x_world = R x_body ~R
+
+// The conformal types of the narrow phase, in the engine's scalar.
+namespace conformal {
+using mv = c3ga::basic_mv<real>;
+using normalized_point = c3ga::basic_normalized_point<real>;
+using dual_sphere = c3ga::basic_dual_sphere<real>;
+using dual_plane = c3ga::basic_dual_plane<real>;
+using euclidean_vector = c3ga::basic_euclidean_vector<real>;
+using rotor = c3ga::basic_rotor<real>;
+using translator = c3ga::basic_translator<real>;
+using motor = c3ga::basic_motor<real>;
+}  // namespace conformal
 
 }  // namespace gaphys

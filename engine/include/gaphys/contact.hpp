@@ -19,7 +19,7 @@ struct placed_shape {
   // The shape's dual in c3ga: a sphere is c - r^2/2 ni (c the conformal centre),
   // a plane -(n + d ni) (the limit of a sphere containing its solid side, so
   // spheres and planes orient alike), a point the dual of the flat point x ^ ni.
-  c3ga::mv dual;
+  conformal::mv dual;
   shape_kind kind;
   vector center{};  // the shape frame's origin in the world (a sphere's centre)
   vector normal{};  // world-frame outward normal (planes)

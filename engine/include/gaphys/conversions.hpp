@@ -42,8 +42,9 @@ using matrix3 = std::array<real, 9>;
 
 // How far a matrix may be from a rotation and still be accepted: every entry
 // of M Mᵀ - 1 within this (which puts det M within 1.5e-6 of ±1), and
-// det M > 0, not a reflection.
-inline constexpr real rotation_matrix_tolerance = 1e-6;
+// det M > 0, not a reflection. (1e-5 in a float engine, whose own matrices
+// err by a few 1e-7.)
+inline constexpr real rotation_matrix_tolerance = sizeof(real) == 8 ? real(1e-6) : real(1e-5);
 
 // Rotations. The results are unit quaternions and rotors and orthonormal
 // matrices, whatever the length of the quaternion or rotor given.

@@ -40,10 +40,11 @@ struct convex_polyhedron {
   // The convex hull of the points (quickhull, exact on a fine grid). Its
   // vertices are the given points that are corners, in the given order and
   // with their given coordinates; the same points give the same polyhedron.
-  // Lengths below 1e-9 of the points' extent count as zero: points that
-  // close count once, faces that flat merge, points that close to an edge or
-  // face are not corners. Throws invalid_input for a non-finite point, fewer
-  // than 4 points, or points all (nearly) on one plane or line.
+  // Lengths below 1e-9 of the points' extent (1e-5 in a float engine)
+  // count as zero: points that close count once, faces that flat merge,
+  // points that close to an edge or face are not corners. Throws
+  // invalid_input for a non-finite point, fewer than 4 points, or points all
+  // (nearly) on one plane or line.
   static convex_polyhedron hull(const std::vector<vector>& points);
 };
 

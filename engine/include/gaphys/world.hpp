@@ -29,7 +29,9 @@ struct world_settings {
   // ten boxes stands within 0.4 mm for 10 s; without, it walks 5 mm
   // (docs/engine.md). Spheres alone never pay for them.
   int turning_iterations = 10;
-  real solver_tolerance = 1e-9;  // m/s: a sweep changing no normal speed more ends the solve
+  // m/s: a sweep changing no normal speed more ends the solve (1e-6 in a
+  // float engine, whose speeds of 1 m/s round to 1e-7).
+  real solver_tolerance = sizeof(real) == 8 ? real(1e-9) : real(1e-6);
   // Over-relaxation (projected SOR), in (0, 2): each impulse is this multiple
   // of the one that would meet its contact's target. 1 is plain
   // Gauss-Seidel; above 1 converges faster along chains of contacts.

@@ -282,7 +282,7 @@ void compare(const placed_pair& p, const tolerances& tol, tally& t) {
     return;
   }
   // libccd's direction moves B out of A; ours, from B into A, is its opposite.
-  const vector theirs = -vector{direction.v[0], direction.v[1], direction.v[2]};
+  const vector theirs = -vector{real(direction.v[0]), real(direction.v[1]), real(direction.v[2])};
   const real theirs_overlap = overlap_along(p.ccd_a, p.ccd_b, theirs);
   const real error = std::fabs(-ours.distance - depth);
   // Touching, to libccd's resolution: its EPA then starts from a flat
