@@ -115,7 +115,7 @@ engine gaphys_engine(int threads) {
   return {
       "gaphys",
       "this tree",
-      "double",
+      sizeof(gaphys::real) == 8 ? "double" : "float (GAPHYS_REAL=float)",
       {{"world", "gaphys::world, default world_settings but sleeping off",
         "the engine as documented; no engine sleeps here"},
        {"threads", threads == 0 ? std::string("every core") : std::to_string(threads),

@@ -15,6 +15,15 @@
 
 namespace gaphys::testing {
 
+// A tolerance stated for each scalar the engine builds with: for a double
+// engine, and for a float one (GAPHYS_REAL=float), whose rounding is 2^29
+// times coarser. A test that states its float tolerances this way runs in
+// both (tests/engine/CMakeLists.txt); the float value is the error measured
+// in float with a margin, as the double value was.
+constexpr real tolerance(double in_double, double in_float) {
+  return sizeof(real) == 8 ? real(in_double) : real(in_float);
+}
+
 // Components of vectors and bivectors, for readable assertions.
 inline real x(const vector& v) { return v.e1(); }
 inline real y(const vector& v) { return v.e2(); }

@@ -46,11 +46,11 @@ TEST_F(impact_test, a_bounce_off_a_wall_into_a_second_sphere_creates_no_energy) 
     for (int i = 0; i < 24; ++i) {  // 0.1 s
       const real before = kinetic_energy(w);
       w.step(h);
-      EXPECT_LE(kinetic_energy(w), before * (1 + 1e-12)) << "step " << i << ", threshold " << threshold;
+      EXPECT_LE(kinetic_energy(w), before * (1 + tolerance(1e-12, 1e-6))) << "step " << i << ", threshold " << threshold;
     }
-    EXPECT_NEAR(kinetic_energy(w) / e0, 1, 1e-12) << "threshold " << threshold;
-    EXPECT_NEAR(x(w.at(a).velocity()), 2, 1e-12) << "threshold " << threshold;
-    EXPECT_NEAR(x(w.at(b).velocity()), 1, 1e-12) << "threshold " << threshold;
+    EXPECT_NEAR(kinetic_energy(w) / e0, 1, tolerance(1e-12, 1e-6)) << "threshold " << threshold;
+    EXPECT_NEAR(x(w.at(a).velocity()), 2, tolerance(1e-12, 1e-6)) << "threshold " << threshold;
+    EXPECT_NEAR(x(w.at(b).velocity()), 1, tolerance(1e-12, 1e-6)) << "threshold " << threshold;
   }
 }
 
@@ -66,7 +66,7 @@ TEST_F(impact_test, a_gas_of_elastic_spheres_keeps_its_energy) {
     w.step(h);
     largest_gain = std::max(largest_gain, (kinetic_energy(w) - before) / e0);
   }
-  EXPECT_LE(largest_gain, 1e-9);
+  EXPECT_LE(largest_gain, tolerance(1e-9, 1e-5));
   EXPECT_NEAR(kinetic_energy(w) / e0, 1, 1e-4);
   // And the balls stayed in the box.
   for (const body& b : w.bodies()) {
@@ -89,10 +89,10 @@ TEST_F(impact_test, newtons_cradle_sends_out_as_many_balls_as_came_in) {
     simulate(w, 240);
     for (body_id i = 0; i < 5; ++i) {
       const real expected = i >= 5 - static_cast<body_id>(released) ? 1 : 0;
-      EXPECT_NEAR(x(w.at(i).velocity()), expected, 1e-9) << released << " released, ball " << i;
+      EXPECT_NEAR(x(w.at(i).velocity()), expected, tolerance(1e-9, 1e-5)) << released << " released, ball " << i;
     }
-    EXPECT_NEAR(kinetic_energy(w), e0, 1e-12 * e0) << released << " released";
-    EXPECT_TRUE(near(momentum(w), p0, 1e-12)) << released << " released";
+    EXPECT_NEAR(kinetic_energy(w), e0, tolerance(1e-12, 1e-6) * e0) << released << " released";
+    EXPECT_TRUE(near(momentum(w), p0, tolerance(1e-12, 1e-6))) << released << " released";
   }
 }
 
@@ -103,8 +103,8 @@ TEST_F(impact_test, a_row_struck_against_the_contact_order_gives_the_same_answer
   for (int i = 0; i < 4; ++i) add_sphere(w, vector{real(i), 0, 0}, 0.5, 1, vector{}, 1, 0);
   add_sphere(w, vector{4 + 1e-9, 0, 0}, 0.5, 1, vector{-1, 0, 0}, 1, 0);
   simulate(w, 240);
-  EXPECT_NEAR(x(w.at(0).velocity()), -1, 1e-9);
-  for (body_id i = 1; i < 5; ++i) EXPECT_NEAR(x(w.at(i).velocity()), 0, 1e-9) << "ball " << i;
+  EXPECT_NEAR(x(w.at(0).velocity()), -1, tolerance(1e-9, 1e-5));
+  for (body_id i = 1; i < 5; ++i) EXPECT_NEAR(x(w.at(i).velocity()), 0, tolerance(1e-9, 1e-5)) << "ball " << i;
 }
 
 // A 1 kg ball at 1 m/s strikes a touching row of 2, 3 and 4 kg (e = 1).
@@ -128,15 +128,15 @@ TEST_F(impact_test, a_struck_row_of_unequal_masses_follows_the_sequential_closed
     incoming = 2 * m1 / (m1 + m2) * incoming;
   }
   expected.back() = incoming;
-  EXPECT_NEAR(expected[0], -1.0 / 3, 1e-15);
-  EXPECT_NEAR(expected[3], 48.0 / 105, 1e-15);
+  EXPECT_NEAR(expected[0], -1.0 / 3, tolerance(1e-15, 1e-7));
+  EXPECT_NEAR(expected[3], 48.0 / 105, tolerance(1e-15, 1e-7));
   const real e0 = kinetic_energy(w);
   simulate(w, 240);
   for (std::size_t i = 0; i < masses.size(); ++i) {
-    EXPECT_NEAR(x(w.at(i).velocity()), expected[i], 1e-9) << "ball " << i;
+    EXPECT_NEAR(x(w.at(i).velocity()), expected[i], tolerance(1e-9, 1e-5)) << "ball " << i;
   }
-  EXPECT_NEAR(kinetic_energy(w), e0, 1e-12 * e0);
-  EXPECT_NEAR(x(momentum(w)), 1, 1e-12);
+  EXPECT_NEAR(kinetic_energy(w), e0, tolerance(1e-12, 1e-6) * e0);
+  EXPECT_NEAR(x(momentum(w)), 1, tolerance(1e-12, 1e-6));
 }
 
 // A column of elastic balls resting on a floor is not an impact: gravity
@@ -148,8 +148,8 @@ TEST_F(impact_test, a_resting_column_of_elastic_balls_stays_at_rest) {
   for (int i = 0; i < 4; ++i) add_sphere(w, vector{0, 0, real(0.5) + real(i)}, 0.5, 1, vector{}, 1);
   simulate(w, 240 * 5);
   for (body_id i = 1; i <= 4; ++i) {
-    EXPECT_NEAR(z(w.at(i).position()), 0.5 + (i - 1), 1e-6) << "ball " << i;
-    EXPECT_LE(length(w.at(i).velocity()), 1e-9) << "ball " << i;
+    EXPECT_NEAR(z(w.at(i).position()), 0.5 + (i - 1), tolerance(1e-6, 1e-5)) << "ball " << i;
+    EXPECT_LE(length(w.at(i).velocity()), tolerance(1e-9, 1e-5)) << "ball " << i;
   }
 }
 

@@ -31,13 +31,13 @@ TEST_F(spinning_test, an_asymmetric_body_keeps_its_angular_momentum_for_10000_st
     max_turn_of_omega = std::max(max_turn_of_omega, length(b.angular_velocity() - omega0));
   });
   EXPECT_LT(max_drift, 0.01);
-  EXPECT_LT(max_defect, 1e-6);
+  EXPECT_LT(max_defect, tolerance(1e-6, 1e-5));
   EXPECT_LT(max_energy_error, 0.01);
   // The body does tumble: Ω wanders far from where it started (without the
   // gyroscopic term it would stay fixed and L would drift instead).
   EXPECT_GT(max_turn_of_omega, 0.5 * length(omega0));
   // Body-frame L = J Ω: (1, 2, 3) kg m^2 times (1, 2, 3) rad/s at the start.
-  EXPECT_NEAR(length(l0), std::sqrt(real(1 + 16 + 81)), 1e-12);
+  EXPECT_NEAR(length(l0), std::sqrt(real(1 + 16 + 81)), tolerance(1e-12, 1e-5));
 }
 
 // Spun about its axis of largest or smallest moment, a body turns steadily:
@@ -51,8 +51,9 @@ TEST_F(spinning_test, a_spin_about_a_principal_axis_is_steady) {
   const body_id id = w.create_body(d);
   simulate(w, 2400);
   const real angle = rate * w.time();
-  EXPECT_TRUE(near(w.at(id).angular_velocity(), bivector{rate, 0, 0}, 1e-12));
-  EXPECT_TRUE(near(w.at(id).to_world(vector{1, 0, 0}), vector{std::cos(angle), std::sin(angle), 0}, 1e-9));
+  EXPECT_TRUE(near(w.at(id).angular_velocity(), bivector{rate, 0, 0}, tolerance(1e-12, 1e-3)));
+  EXPECT_TRUE(near(w.at(id).to_world(vector{1, 0, 0}), vector{std::cos(angle), std::sin(angle), 0},
+                   tolerance(1e-9, 3e-3)));
 }
 
 // The same tumbling body at a random starting attitude and a general
@@ -67,9 +68,9 @@ TEST_F(spinning_test, a_general_inertia_tensor_conserves_angular_momentum) {
   const bivector l0 = w.at(id).angular_momentum();
   const real e0 = w.at(id).kinetic_energy();
   simulate(w, 4800);
-  EXPECT_LT(length(w.at(id).angular_momentum() - l0) / length(l0), 1e-6);
+  EXPECT_LT(length(w.at(id).angular_momentum() - l0) / length(l0), tolerance(1e-6, 5e-4));
   EXPECT_NEAR(w.at(id).kinetic_energy(), e0, 0.01 * e0);
-  EXPECT_LT(rotor_defect(w.at(id).attitude()), 1e-6);
+  EXPECT_LT(rotor_defect(w.at(id).attitude()), tolerance(1e-6, 1e-5));
 }
 
 }  // namespace
