@@ -24,6 +24,12 @@ constexpr real tolerance(double in_double, double in_float) {
   return sizeof(real) == 8 ? real(in_double) : real(in_float);
 }
 
+// A test input stated for each scalar, where double's would be lost in
+// float: a gap below float's rounding, a magnitude beyond its range.
+constexpr real for_scalar(double in_double, double in_float) {
+  return sizeof(real) == 8 ? real(in_double) : real(in_float);
+}
+
 // Components of vectors and bivectors, for readable assertions.
 inline real x(const vector& v) { return v.e1(); }
 inline real y(const vector& v) { return v.e2(); }

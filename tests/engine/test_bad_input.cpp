@@ -72,7 +72,7 @@ TEST_F(bad_input_test, materials_reject_negative_and_non_finite_values) {
   // The shape a bad call started from keeps its values.
   const shape ball = shape::sphere(1).with_friction(0.7);
   EXPECT_TRUE(rejects([&] { (void)ball.with_friction(-1); }, "friction"));
-  EXPECT_EQ(ball.friction(), 0.7);
+  EXPECT_EQ(ball.friction(), real(0.7));
   // Zero is a valid value of each.
   EXPECT_EQ(shape::sphere(1).with_friction(0).friction(), 0);
   EXPECT_EQ(shape::sphere(1).with_rolling_resistance(0).rolling_resistance(), 0);

@@ -115,7 +115,7 @@ TEST_F(contact_test, touching_spheres_are_in_contact_at_the_touching_point) {
     // Overlapping by far less than the sizes, far more than the rounding of
     // the meet's terms 5 m out (in float, |x|^2 / 2 ε: about 1e-5 m^2 at 5 m;
     // 1e-4 m left a 5 cm sphere's contact unseen).
-    const real overlap = tolerance(1e-7, 1e-3);
+    const real overlap = for_scalar(1e-7, 1e-3);
     const sphere_pair s{b + (ra + rb - overlap) * n, b, ra, rb};
     const auto g = find_contact(sphere_at(s.centre_a, ra), sphere_at(s.centre_b, rb));
     ASSERT_TRUE(g) << "trial " << trial;
