@@ -48,6 +48,12 @@ class byte_writer {
   void numbers(const Named& value) {
     for (real x : value.c) number(x);
   }
+  // A double whatever the engine's scalar (the world's clock).
+  void float64(double x) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    u64(bits);
+  }
   // Overwrites 8 bytes written earlier (a size known only later).
   void patch_u64(std::size_t at, std::uint64_t x) {
     for (int i = 0; i < 8; ++i) bytes_[at + i] = static_cast<std::uint8_t>(x >> (8 * i));
@@ -111,6 +117,12 @@ class byte_reader {
       const std::uint32_t bits = u32(what);
       std::memcpy(&x, &bits, sizeof x);
     }
+    return x;
+  }
+  double float64(const char* what) {
+    const std::uint64_t bits = u64(what);
+    double x;
+    std::memcpy(&x, &bits, sizeof x);
     return x;
   }
   // A vector, bivector or rotor, coordinate by coordinate.

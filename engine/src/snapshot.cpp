@@ -7,8 +7,9 @@
 //   header    magic "gaphysSN" (8 bytes), format version (u32), sizeof(real)
 //             (u8), the real -4/3 (byte order and real format), payload size
 //             (u64)
-//   payload   settings, time, the next island label, the polyhedra (each
-//             box or hull once, shared by the shapes that share it), the
+//   payload   settings, time (a double whatever sizeof(real)), the next
+//             island label, the polyhedra (each box or hull once, shared
+//             by the shapes that share it), the
 //             bodies with their shapes, the id tables, the contacts, the
 //             sleeping contacts, the events, the sensor overlaps
 //   checksum  FNV-1a 64 of every byte before it (u64)
@@ -594,7 +595,7 @@ struct snapshot_access {
     out.u64(0);  // the payload's size, patched below
 
     write_settings(out, w.settings_);
-    out.number(w.time_);
+    out.float64(w.time_);
     out.u64(w.next_island_);
     std::unordered_map<const convex_polyhedron*, std::size_t> index;
     write_polyhedra(out, w, index);
@@ -917,7 +918,10 @@ struct snapshot_access {
       in.fail_at(settings_at, "settings: ", e.what() + std::strlen("gaphys: "));
     }
     world& w = *restored;
-    w.time_ = non_negative(in, "time");
+    w.time_ = in.float64("time");
+    if (!(std::isfinite(w.time_) && w.time_ >= 0)) {
+      in.fail("time must be finite and >= 0 (got ", w.time_, ")");
+    }
     w.next_island_ = in.u64("next island label");
     if (w.next_island_ == 0) in.fail("the next island label must be >= 1");
     const polyhedra table = read_polyhedra(in);

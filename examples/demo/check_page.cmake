@@ -21,12 +21,17 @@ foreach(wanted IN ITEMS "<!DOCTYPE html>" "</html>" "REVISION"
                         "{\"id\": 0, \"static\": true, \"shape\": {\"kind\": \"plane\", \"normal\": [0, 0, 1], \"offset\": 0}"
                         "{\"id\": 1, \"static\": false, \"shape\": {\"kind\": \"sphere\", \"radius\": 0.5}, \"shapes\": [{\"kind\": \"sphere\", \"radius\": 0.5, \"position\": [0, 0, 0], \"attitude\": [1, 0, 0, 0]}]"
                         "{\"scene\": \"bouncing_sphere\", \"time_step\": "
-                        "{\"time\": 0.1, \"bodies\": [{\"id\": 1, ")
+                        "{\"time\": 0.1")
   string(FIND "${text}" "${wanted}" where)
   if(where EQUAL -1)
     message(FATAL_ERROR "${page} lacks '${wanted}'")
   endif()
 endforeach()
+# The frame at 0.1 s: 24 steps of 1/240 s, which a float engine's step
+# (1/240 to 7 digits) brings to 0.1000000016.
+if(NOT text MATCHES "\\{\"time\": 0\\.1(0000000[0-9]*)?, \"bodies\": \\[\\{\"id\": 1, ")
+  message(FATAL_ERROR "${page} lacks the frame at 0.1 s")
+endif()
 string(FIND "${text}" "${at}GAPHYS_" where)
 if(NOT where EQUAL -1)
   message(FATAL_ERROR "${page} still has a placeholder at byte ${where}")

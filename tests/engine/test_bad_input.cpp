@@ -45,7 +45,7 @@ class bad_input_test : public engine_test {
   body_id ball = 0;
   std::uint64_t hash = 0;
   std::size_t count = 0;
-  real time = 0;
+  double time = 0;
 };
 
 TEST_F(bad_input_test, shapes_reject_bad_radii_normals_and_restitutions) {

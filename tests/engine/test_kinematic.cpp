@@ -20,7 +20,7 @@ class kinematic_test : public engine_test {
     d.position = position;
     d.velocity = velocity;
     d.angular_velocity = spin;
-    d.shape = s;
+    d.shape.emplace(s);  // (assigning: a false maybe-uninitialized warning of GCC 12 at -O3)
     return w.create_body(d);
   }
 };

@@ -124,7 +124,9 @@ class world {
   // Advances by h seconds (finite, > 0; else invalid_input, nothing changes).
   void step(real h);
 
-  real time() const { return time_; }
+  // Seconds simulated, summed in double whatever the engine's scalar: summed
+  // in float, 1/240 s steps would lose a step in 2,048 s.
+  double time() const { return time_; }
   // Every contact, the sleeping islands' too (as they were when the island
   // fell asleep), in body pair order. With islands asleep the list is
   // merged on the first call after a change: like the queries, not safe to
@@ -225,7 +227,7 @@ class world {
   std::vector<sensor_overlap> sensor_overlaps_;
   std::vector<body_velocity> start_velocities_;  // before this step's forces, for restitution
   step_timings timings_;
-  real time_ = 0;
+  double time_ = 0;
   // The contact solver's working memory, kept from step to step (it holds
   // nothing a later step reads, so a copy of the world starts a fresh one).
   std::unique_ptr<contact_solver> solver_;

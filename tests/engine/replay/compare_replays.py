@@ -7,7 +7,14 @@ scene by scene: equal hashes mean bit-identical states; otherwise the largest
 difference in any body's position, velocity, attitude or angular velocity must
 stay within that scene's bound (see BOUNDS), and is printed.
 
-    compare_replays.py STEPS NAME=EXECUTABLE [NAME=EXECUTABLE ...]
+    compare_replays.py [--float] STEPS NAME=EXECUTABLE [NAME=EXECUTABLE ...]
+
+--float (a GAPHYS_REAL=float build): the variants' differences are printed
+but not bounded. The bounds below are double's rounding; in float the
+reference's generic kernels (double tables, orthogonal-basis scaling) and
+the optimized straight-line ones round differently even for spheres, and
+a pile of falling spheres amplifies that into a different pile (0.16 m
+after 1200 steps). Reruns must still be byte-identical.
 """
 
 import subprocess
@@ -59,8 +66,11 @@ def parse(text):
 
 
 def main():
-    steps = int(sys.argv[1])
-    variants = dict(argument.split("=", 1) for argument in sys.argv[2:])
+    arguments = sys.argv[1:]
+    bounded = "--float" not in arguments
+    arguments = [a for a in arguments if a != "--float"]
+    steps = int(arguments[0])
+    variants = dict(argument.split("=", 1) for argument in arguments[1:])
     outputs, failed = {}, False
     for name, executable in variants.items():
         first, second = run(executable, steps), run(executable, steps)
@@ -76,6 +86,10 @@ def main():
                 print(f"{scene}: {names[0]} and {other} bit-identical after {steps} steps")
                 continue
             difference = max(abs(x - y) for a, b in zip(bodies_a, bodies_b) for x, y in zip(a, b))
+            if not bounded:
+                print(f"{scene}: {names[0]} and {other} differ by {difference:.3g} after {steps} steps "
+                      "(float: not bounded)")
+                continue
             verdict = "within" if difference <= BOUNDS[scene] else "OVER"
             print(f"{scene}: {names[0]} and {other} differ by {difference:.3g} after {steps} steps "
                   f"({verdict} the bound {BOUNDS[scene]:g})")
