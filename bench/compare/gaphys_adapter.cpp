@@ -41,13 +41,15 @@ gaphys::shape with_surface(const gaphys::shape& shape, double restitution, doubl
 
 class gaphys_adapter final : public engine_adapter {
  public:
-  explicit gaphys_adapter(int threads) : threads_(threads) {}
+  gaphys_adapter(int threads, gaphys::contact_batching batches)
+      : threads_(threads), batches_(batches) {}
 
   void build(const scene& s) override {
     gaphys::world_settings settings;  // defaults: 20 sweeps (+10 for turning contacts), threshold 0.5 m/s
     settings.gravity = to_gaphys(s.gravity);
     settings.sleeping = false;  // as Bullet and ODE run here: every body steps every step
     settings.threads = threads_;
+    settings.batch_contacts = batches_;
     world_.emplace(settings);
     for (const plane_description& p : s.planes) {
       gaphys::body_definition plane;
@@ -88,6 +90,7 @@ class gaphys_adapter final : public engine_adapter {
 
  private:
   int threads_;
+  gaphys::contact_batching batches_;
   std::optional<gaphys::world> world_;
   std::size_t first_body_ = 0;
 };
@@ -110,7 +113,7 @@ std::string rule_name(gaphys::combine_rule rule) {
 
 }  // namespace
 
-engine gaphys_engine(int threads) {
+engine gaphys_engine(int threads, gaphys::contact_batching batches) {
   const gaphys::world_settings defaults;
   return {
       "gaphys",
@@ -120,8 +123,14 @@ engine gaphys_engine(int threads) {
         "the engine as documented; no engine sleeps here"},
        {"threads", threads == 0 ? std::string("every core") : std::to_string(threads),
         "--gaphys-threads; the results are the same with any number, only the time changes"},
-       {"solver sweeps", std::to_string(defaults.solver_iterations) + " (+" +
-                             std::to_string(defaults.turning_iterations) + " for contacts that turn a body)",
+       {"contact batches",
+        batches == gaphys::contact_batching::automatic ? "auto"
+        : batches == gaphys::contact_batching::on      ? "on"
+                                                       : "off",
+        "--gaphys-batches; the sweeps on SIMD batches or one by one, the same results"},
+       {"solver sweeps",
+        std::to_string(defaults.solver_iterations) + " (+" +
+            std::to_string(defaults.turning_iterations) + " for contacts that turn a body)",
         "default"},
        {"restitution",
         "max(e_a, e_b) per contact, threshold " + number(defaults.restitution_threshold) + " m/s",
@@ -144,7 +153,7 @@ engine gaphys_engine(int threads) {
         "the F scenes measure sliding friction only; set explicitly, as are friction and e"},
        {"damping", "0", "default"},
        {"attitude", "rotor, |q| = sqrt(R ~R)", "read as a quaternion for the harness"}},
-      [threads] { return std::make_unique<gaphys_adapter>(threads); }};
+      [threads, batches] { return std::make_unique<gaphys_adapter>(threads, batches); }};
 }
 
 }  // namespace gaphys_compare

@@ -60,6 +60,7 @@ const char* usage() {
          "  --box-budget S        skip a B3-B5 run (and larger B5 sizes) after S s of wall time\n"
          "                        or a step longer than --m6-step-budget (60)\n"
          "  --gaphys-threads N    gaphys's solver and narrow-phase threads, 0: every core (1)\n"
+         "  --gaphys-batches B    gaphys's contact sweeps on SIMD batches: auto, on or off (auto)\n"
          "  --out-dir DIR         results.csv, results.json, plots (compare-results)\n"
          "  --no-plots            do not run gnuplot\n"
          "The --m6-warmup, --m6-steps and --m6-*-budget flags time F5 too; F1-F4 (one\n"
@@ -114,6 +115,16 @@ options parse_options(int argc, char** argv) {
       o.b5_steps = to_count(flag, value);
     } else if (flag == "--gaphys-threads") {
       o.gaphys_threads = to_count(flag, value);
+    } else if (flag == "--gaphys-batches") {
+      if (value == "auto") {
+        o.gaphys_batches = gaphys::contact_batching::automatic;
+      } else if (value == "on") {
+        o.gaphys_batches = gaphys::contact_batching::on;
+      } else if (value == "off") {
+        o.gaphys_batches = gaphys::contact_batching::off;
+      } else {
+        throw std::invalid_argument("--gaphys-batches takes auto, on or off, not " + value);
+      }
     } else if (flag == "--box-budget") {
       o.box_budget = to_number(flag, value);
     } else if (flag == "--out-dir") {

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "gaphys/world.hpp"
+
 namespace gaphys_compare {
 
 struct options {
@@ -36,6 +38,8 @@ struct options {
   // gaphys's world_settings::threads: 1, as Bullet and ODE run here (0:
   // every core, gaphys's default).
   int gaphys_threads = 1;
+  // gaphys's world_settings::batch_contacts (the sweeps on SIMD batches).
+  gaphys::contact_batching gaphys_batches = gaphys::contact_batching::automatic;
   std::string out_dir = "compare-results";
   bool plots = true;
   bool help = false;

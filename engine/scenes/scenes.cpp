@@ -101,6 +101,31 @@ world falling_spheres_in_box(int count, std::uint64_t seed, real friction) {
   return w;
 }
 
+world falling_boxes_in_box(int count, std::uint64_t seed, real friction) {
+  const vector half{real(0.25), real(0.25), real(0.25)};
+  const real radius = e3ga::norm(half), spacing = 3 * radius;
+  const material m = surface(0, friction);
+  const int side = std::max(1, static_cast<int>(std::ceil(std::sqrt(real(count) / 4))));
+  const real half_width = side * spacing / 2;
+  world w;
+  add_open_box(w, half_width, m);
+  jitter random(seed);
+  const shape cube = shape::box(half);
+  for (int i = 0; i < count; ++i) {
+    const int layer = i / (side * side), row = (i / side) % side, column = i % side;
+    const vector cell{-half_width + (column + real(0.5)) * spacing,
+                      -half_width + (row + real(0.5)) * spacing, 2 * radius + layer * spacing};
+    const vector shake{random.next(), random.next(), random.next()};
+    // An attitude from four jitters: a rotor normalized (not uniform over
+    // the turns, which the scene does not need).
+    rotor turn{random.next(), random.next(), random.next(), random.next()};
+    turn = turn / e3ga::norm(turn);
+    const body_id box = add_solid(w, cube, cell + (radius / 4) * shake, m, turn);
+    w.at(box).set_velocity(real(0.5) * shake);
+  }
+  return w;
+}
+
 world sphere_column(int count, real radius, real friction) {
   world w;
   const material m = surface(0, friction);

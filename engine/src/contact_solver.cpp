@@ -407,8 +407,10 @@ void contact_solver::solve_contacts(const world_settings& settings) {
   const int threads = sweep_threads_;
   if (threads == 1) {
     for (int sweep = 0; sweep < sweeps; ++sweep) {
+      const sweep_kind kind = kind_of(sweep);
       sweep_result result;
-      solve_runs(0, runs, kind_of(sweep), result);
+      for (std::size_t colour = 0; colour < colours; ++colour) solve_block(colour, kind, result);
+      solve_runs(sequential, runs, kind, result);
       if (converged(result)) break;
     }
     return;
@@ -417,7 +419,6 @@ void contact_solver::solve_contacts(const world_settings& settings) {
   // sweeps: a thread may write the next sweep's while another still reads
   // this one's.
   thread_results_.assign(2 * threads, sweep_result{});
-  const std::size_t stride = static_cast<std::size_t>(threads) + 1;
 #pragma omp parallel num_threads(threads)
   {
     const int thread = omp_get_thread_num();
@@ -426,8 +427,7 @@ void contact_solver::solve_contacts(const world_settings& settings) {
       sweep_result mine;
       for (std::size_t colour = 0; colour < colours; ++colour) {
         // This thread's block of the colour (split_colours).
-        const std::size_t* starts = &colouring_.thread_starts[colour * stride];
-        solve_runs(starts[thread], starts[thread + 1], kind, mine);
+        solve_block(colour * threads + thread, kind, mine);
         // The next colour's runs may change the bodies this one's changed.
 #pragma omp barrier
       }
@@ -570,7 +570,9 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
 
   resolve_impacts(settings, h);
   warm_start(bodies, contacts, previous);
+  pack_batches(settings);
   solve_contacts(settings);
+  unpack_batches();
   store_impulses(contacts, settings.threads);
   detail::parallel_for(settings.threads, bodies.size(), 2048, [&](std::size_t i) {
     body& b = bodies[i];

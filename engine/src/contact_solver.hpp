@@ -16,10 +16,11 @@
 #include <optional>
 #include <vector>
 
+#include "contact_batch.hpp"
+#include "contact_colouring.hpp"
 #include "gaphys/body.hpp"
 #include "gaphys/contact.hpp"
 #include "gaphys/world.hpp"
-#include "contact_colouring.hpp"
 #include "impulse_row.hpp"
 #include "timed_impact.hpp"
 
@@ -148,6 +149,16 @@ class contact_solver {
     bool any = false;
   };
   void solve_contacts(const world_settings& settings);
+  // The sweeps on batches (contact_batch.hpp, contact_batches.cpp).
+  struct batch_group;
+  void pack_batches(const world_settings& settings);
+  void add_batch_group(const std::array<std::size_t, detail::contact_lanes>& runs, int filled);
+  bool batchable(std::size_t run) const;
+  void solve_block(std::size_t block, const sweep_kind& kind, sweep_result& result);
+  void solve_group(const batch_group& group, const sweep_kind& kind, sweep_result& result);
+  void scatter_bodies(const std::array<std::size_t, detail::contact_lanes>& index, bool angular,
+                      const detail::body_pack& x);
+  void unpack_batches();
   void solve_runs(std::size_t first_run, std::size_t end_run, const sweep_kind& kind,
                   sweep_result& result);
   GAPHYS_ALWAYS_INLINE void solve_contact(constraint& k, const sweep_kind& kind,
@@ -174,6 +185,24 @@ class contact_solver {
   std::vector<solver_body> pseudo_bodies_;  // correct_turning's pseudo velocities
   std::vector<real> pseudo_targets_, pseudo_accumulated_, pseudo_depths_;  // per contact
   std::vector<sweep_result> thread_results_;  // one per thread of the contact phase
+
+  // The sweeps' batches. Block b is what one thread solves of one colour:
+  // colour b / T, thread b % T of the sweep's T threads (the whole colour
+  // on one thread). Its runs are groups_[block_groups_[b] ..
+  // block_groups_[b + 1]), up to contact_lanes runs each, and the runs
+  // solved one by one, single_runs_[block_singles_[b] .. block_singles_[b + 1]).
+  struct batch_group {
+    static constexpr std::size_t no_body = ~std::size_t{0};
+    std::array<std::size_t, detail::contact_lanes> body_a, body_b;  // per lane, or no_body
+    std::size_t first = 0, count = 0;  // its contacts: normal_packs_[first .. first + count)
+    bool angular = false;              // some lane's impulses turn a body
+  };
+  std::vector<batch_group> groups_;
+  std::vector<std::size_t> single_runs_, block_groups_, block_singles_;
+  std::vector<detail::normal_pack> normal_packs_;
+  std::vector<detail::friction_pack> friction_packs_;
+  // Per normal pack, each lane's constraint (index into constraints_), or -1.
+  std::vector<std::array<std::ptrdiff_t, detail::contact_lanes>> pack_slots_;
   int sweep_threads_ = 1;  // the contact phase's threads in this step
 };
 

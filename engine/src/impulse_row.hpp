@@ -97,11 +97,6 @@ inline impulse_row angular_row(const bivector& u, const body& a, const body& b) 
   return row;
 }
 
-// Two rows solved together, their accumulated impulse kept within a disk
-// |λ| <= bound: friction's two tangents (the Coulomb cone), or rolling
-// resistance's two planes. Solving both at once with the 2x2 effective mass
-// and projecting on the disk makes the friction isotropic: a pyramid of
-// two clamped rows would let a body slide at 45° to them feel √2 μ.
 // v scaled back onto the disk |v| <= bound if it lies outside. (Not
 // std::hypot: its care for overflow made it a third of a step with friction.)
 inline std::array<real, 2> within_disk(const std::array<real, 2>& v, real bound) {
@@ -111,6 +106,74 @@ inline std::array<real, 2> within_disk(const std::array<real, 2>& v, real bound)
   return {v[0] * scale, v[1] * scale};
 }
 
+// The point of the circle |λ| = bound nearest to `outside` in K's metric,
+// in K's eigenbasis: there λ_i = k_i w_i / (k_i + ν) with w the eigen-
+// coordinates of `outside`, and Newton's method on 1/|λ(ν)| - 1/bound,
+// which is nearly linear in ν, converges in a few steps.
+//
+// `eigenvalues` and `eigenbasis` are K's (disk_block), `slip_rate` the last
+// sweep's root, updated.
+inline std::array<real, 2> nearest_on_disk(const std::array<real, 2>& outside, real bound,
+                                           const std::array<real, 2>& eigenvalues,
+                                           const std::array<real, 2>& eigenbasis, real& slip_rate) {
+  const real c = eigenbasis[0], s = eigenbasis[1];
+  const std::array<real, 2> w{c * outside[0] + s * outside[1], -s * outside[0] + c * outside[1]};
+  const std::array<real, 2>& k = eigenvalues;
+  // The root lies in [k_min, k_max] (|w| / bound - 1). From its lower end
+  // Newton's method on this concave function climbs to the root without
+  // overshooting (for an isotropic K it is the root); from above it, one
+  // step lands below and the climb goes on from there. Start at the last
+  // sweep's root where it lies in the bracket.
+  const real inverse_bound = 1 / bound;
+  const real excess = std::sqrt(w[0] * w[0] + w[1] * w[1]) * inverse_bound - 1;
+  const real lowest = k[1] * excess;
+  real nu = std::clamp(slip_rate, lowest, k[0] * excess);
+  std::array<real, 2> l{};
+  // Converging quadratically, a step below 1e-8 of the scale leaves an
+  // error near 1e-16 after it (in float: 3e-4, 1e-7): stop once it is taken.
+  for (int iteration = 0; iteration < 20; ++iteration) {
+    const real d0 = k[0] + nu, d1 = k[1] + nu;
+    const real both = 1 / (d0 * d1);
+    const real i0 = d1 * both, i1 = d0 * both;
+    l = {k[0] * w[0] * i0, k[1] * w[1] * i1};
+    // The Newton step (1/|λ| - 1/bound) / (d/dν 1/|λ|), with
+    // d/dν 1/|λ| = (l0² i0 + l1² i1) / |λ|³, written with one division.
+    const real squared = l[0] * l[0] + l[1] * l[1];
+    const real length = std::sqrt(squared);
+    const real step = (bound - length) * squared / (bound * (l[0] * l[0] * i0 + l[1] * l[1] * i1));
+    nu = std::max(nu - step, lowest);
+    if (!(std::fabs(step) > by_precision(1e-8, 3e-4) * (nu + k[0]))) break;
+  }
+  slip_rate = nu;
+  l = {k[0] * w[0] / (k[0] + nu), k[1] * w[1] / (k[1] + nu)};
+  return within_disk({c * l[0] - s * l[1], s * l[0] + c * l[1]}, bound);
+}
+
+// The total impulse of a block whose stopping impulse `total` lies outside
+// the disk |λ| <= bound (disk_block::stopping_total): the nearest point of
+// the disk in the metric of K.
+inline std::array<real, 2> outside_disk(const std::array<real, 2>& total, real bound,
+                                        const std::array<real, 2>& eigenvalues,
+                                        const std::array<real, 2>& eigenbasis, real& slip_rate) {
+  if (!(bound > 0)) return {0, 0};
+  // A bound this small next to λ* holds nothing that matters (and the
+  // root below would underflow): scale onto the disk.
+  if (!(bound > by_precision(1e-9, 1e-4) * (std::fabs(total[0]) + std::fabs(total[1])))) {
+    return within_disk(total, bound);
+  }
+  // An isotropic K (a contact through a sphere's centre): the nearest
+  // point is λ* scaled onto the disk, no root to find.
+  if (!(eigenvalues[0] - eigenvalues[1] > by_precision(1e-9, 1e-4) * eigenvalues[0])) {
+    return within_disk(total, bound);
+  }
+  return nearest_on_disk(total, bound, eigenvalues, eigenbasis, slip_rate);
+}
+
+// Two rows solved together, their accumulated impulse kept within a disk
+// |λ| <= bound: friction's two tangents (the Coulomb cone), or rolling
+// resistance's two planes. Solving both at once with the 2x2 effective mass
+// and projecting on the disk makes the friction isotropic: a pyramid of
+// two clamped rows would let a body slide at 45° to them feel √2 μ.
 struct disk_block {
   std::array<impulse_row, 2> rows;
   std::array<real, 3> inverse{};      // K⁻¹ as (00, 01, 11)
@@ -168,56 +231,11 @@ struct disk_block {
     const std::array<real, 2> total{held[0] - (inverse[0] * s0 + inverse[1] * s1),
                                     held[1] - (inverse[1] * s0 + inverse[2] * s1)};
     if (!(total[0] * total[0] + total[1] * total[1] > bound * bound)) return total;
-    if (!(bound > 0)) return {0, 0};
-    // A bound this small next to λ* holds nothing that matters (and the
-    // root below would underflow): scale onto the disk.
-    if (!(bound > by_precision(1e-9, 1e-4) * (std::fabs(total[0]) + std::fabs(total[1])))) {
-      return within_disk(total, bound);
-    }
-    // An isotropic K (a contact through a sphere's centre): the nearest
-    // point is λ* scaled onto the disk, no root to find.
-    if (!(eigenvalues[0] - eigenvalues[1] > by_precision(1e-9, 1e-4) * eigenvalues[0])) {
-      return within_disk(total, bound);
-    }
-    return nearest_on_disk(total, bound);
+    return outside_disk(total, bound, eigenvalues, eigenbasis, slip_rate);
   }
 
-  // The point of the circle |λ| = bound nearest to `outside` in K's metric,
-  // in K's eigenbasis: there λ_i = k_i w_i / (k_i + ν) with w the eigen-
-  // coordinates of `outside`, and Newton's method on 1/|λ(ν)| - 1/bound,
-  // which is nearly linear in ν, converges in a few steps.
   std::array<real, 2> nearest_on_disk(const std::array<real, 2>& outside, real bound) {
-    const real c = eigenbasis[0], s = eigenbasis[1];
-    const std::array<real, 2> w{c * outside[0] + s * outside[1], -s * outside[0] + c * outside[1]};
-    const std::array<real, 2>& k = eigenvalues;
-    // The root lies in [k_min, k_max] (|w| / bound - 1). From its lower end
-    // Newton's method on this concave function climbs to the root without
-    // overshooting (for an isotropic K it is the root); from above it, one
-    // step lands below and the climb goes on from there. Start at the last
-    // sweep's root where it lies in the bracket.
-    const real inverse_bound = 1 / bound;
-    const real excess = std::sqrt(w[0] * w[0] + w[1] * w[1]) * inverse_bound - 1;
-    const real lowest = k[1] * excess;
-    real nu = std::clamp(slip_rate, lowest, k[0] * excess);
-    std::array<real, 2> l{};
-    // Converging quadratically, a step below 1e-8 of the scale leaves an
-    // error near 1e-16 after it (in float: 3e-4, 1e-7): stop once it is taken.
-    for (int iteration = 0; iteration < 20; ++iteration) {
-      const real d0 = k[0] + nu, d1 = k[1] + nu;
-      const real both = 1 / (d0 * d1);
-      const real i0 = d1 * both, i1 = d0 * both;
-      l = {k[0] * w[0] * i0, k[1] * w[1] * i1};
-      // The Newton step (1/|λ| - 1/bound) / (d/dν 1/|λ|), with
-      // d/dν 1/|λ| = (l0² i0 + l1² i1) / |λ|³, written with one division.
-      const real squared = l[0] * l[0] + l[1] * l[1];
-      const real length = std::sqrt(squared);
-      const real step = (bound - length) * squared / (bound * (l[0] * l[0] * i0 + l[1] * l[1] * i1));
-      nu = std::max(nu - step, lowest);
-      if (!(std::fabs(step) > by_precision(1e-8, 3e-4) * (nu + k[0]))) break;
-    }
-    slip_rate = nu;
-    l = {k[0] * w[0] / (k[0] + nu), k[1] * w[1] / (k[1] + nu)};
-    return within_disk({c * l[0] - s * l[1], s * l[0] + c * l[1]}, bound);
+    return gaphys::detail::nearest_on_disk(outside, bound, eigenvalues, eigenbasis, slip_rate);
   }
 
   // Both rows' impulses at once: one update of each body instead of two in

@@ -248,10 +248,13 @@ void write_settings(detail::byte_writer& out, const world_settings& s) {
   const auto& [gravity, linear_damping, angular_damping, solver_iterations, turning_iterations,
                solver_tolerance, solver_relaxation, restitution_threshold, impact_iterations,
                material_combine, position_correction, linear_slop, contact_margin, broad_phase,
-               sleeping, sleep_linear_speed, sleep_angular_speed, time_to_sleep, threads] = s;
-  // Not written: how many threads step the world changes nothing it
-  // computes, and the state hash must not depend on it.
+               sleeping, sleep_linear_speed, sleep_angular_speed, time_to_sleep, threads,
+               batch_contacts] = s;
+  // Not written: how many threads step the world, and whether its sweeps
+  // run on batches, change nothing it computes, and the state hash must not
+  // depend on them.
   static_cast<void>(threads);
+  static_cast<void>(batch_contacts);
   const auto& [restitution_rule, friction_rule, rolling_rule, spinning_rule] = material_combine;
   out.numbers(gravity);
   out.number(linear_damping);
@@ -1007,7 +1010,9 @@ void world::restore_snapshot(const std::vector<std::uint8_t>& bytes) {
   world restored = detail::snapshot_access::restore(bytes);
   // A later query must not take the old index for the new bodies.
   restored.geometry_version_ = geometry_version_ + 1;
-  restored.settings_.threads = settings_.threads;  // this machine's, not the snapshot's
+  // This machine's, not the snapshot's.
+  restored.settings_.threads = settings_.threads;
+  restored.settings_.batch_contacts = settings_.batch_contacts;
   *this = std::move(restored);
 }
 

@@ -65,6 +65,11 @@ const world_settings& validated(const world_settings& s) {
   if (s.threads < 0 || s.threads > 1024) {
     detail::reject("threads must be in [0, 1024], 0 for every core (got ", s.threads, ")");
   }
+  if (s.batch_contacts != contact_batching::automatic && s.batch_contacts != contact_batching::on &&
+      s.batch_contacts != contact_batching::off) {
+    detail::reject("batch_contacts must be automatic, on or off (got ",
+                   static_cast<int>(s.batch_contacts), ")");
+  }
   if (s.broad_phase != broad_phase_kind::uniform_grid &&
       s.broad_phase != broad_phase_kind::all_pairs) {
     detail::reject("broad phase must be uniform_grid or all_pairs");
@@ -324,6 +329,12 @@ void world::set_broad_phase(broad_phase_kind kind) {
 void world::set_threads(int threads) {
   world_settings changed = settings_;
   changed.threads = threads;
+  settings_ = validated(changed);
+}
+
+void world::set_batch_contacts(contact_batching batching) {
+  world_settings changed = settings_;
+  changed.batch_contacts = batching;
   settings_ = validated(changed);
 }
 

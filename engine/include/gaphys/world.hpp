@@ -18,6 +18,13 @@
 
 namespace gaphys {
 
+// Whether the contact sweeps run on SIMD batches (world_settings).
+enum class contact_batching {
+  automatic,  // where a batch holds 4 or more reals (AVX, or float with SSE2)
+  on,
+  off,
+};
+
 struct world_settings {
   vector gravity{0, 0, -9.81};  // m/s^2
   // Damping rates (1/s, >= 0): each step scales v by 1 / (1 + h c).
@@ -63,6 +70,12 @@ struct world_settings {
   // the same to the bit with any number (docs/engine.md, "Threads"), so
   // snapshots do not keep it: a restored world keeps its own.
   int threads = 0;
+  // The contact sweeps on SIMD batches, several contacts at once
+  // (docs/engine.md, "Batches"). They pay where a batch holds 4 or more
+  // reals; 2 doubles (SSE2 alone) do not pay for gathering their bodies.
+  // Like threads, it changes the time, not the result (to the bit), so
+  // snapshots do not keep it.
+  contact_batching batch_contacts = contact_batching::automatic;
 };
 
 // Wall-clock seconds the last step spent in each phase, and how many candidate
@@ -120,6 +133,7 @@ class world {
   // Off wakes every body. (A new gravity wakes every body too.)
   void set_sleeping(bool sleeping);
   void set_threads(int threads);
+  void set_batch_contacts(contact_batching batching);
 
   // Advances by h seconds (finite, > 0; else invalid_input, nothing changes).
   void step(real h);

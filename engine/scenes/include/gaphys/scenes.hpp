@@ -19,6 +19,11 @@ inline constexpr real time_step = real(1) / 240;
 // Friction (every shape's) 0 by default: the thesis's frictionless world.
 world falling_spheres_in_box(int count, std::uint64_t seed = 1, real friction = 0);
 
+// count cubes (half extent 0.25 m, 1 kg, e = 0) in falling_spheres_in_box's
+// pattern, spaced by their circumradius and turned at random, falling into
+// an open box: the comparison's B5 scene. Friction 0.5 by default.
+world falling_boxes_in_box(int count, std::uint64_t seed = 1, real friction = real(0.5));
+
 // count spheres (radius, 1 kg, e = 0) stacked in a square tube of static
 // planes 2% wider than a sphere, each dropped from 1 cm above the one below.
 world sphere_column(int count = 5, real radius = real(0.5), real friction = 0);

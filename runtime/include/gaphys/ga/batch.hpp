@@ -28,9 +28,14 @@ using batch = std::experimental::fixed_size_simd<T, W>;
 template <class T>
 inline constexpr int native_lanes = static_cast<int>(std::experimental::native_simd<T>::size());
 
+// Any pack of std::experimental::simd, of a fixed size (batch) or as wide
+// as the target's registers (native_simd, whose masks are registers too).
+template <class T, class Abi>
+using simd_pack = std::experimental::simd<T, Abi>;
+
 // Lane i of a pack, or of a named type's batch.
-template <class T, int W>
-T lane(const batch<T, W>& x, int i) {
+template <class T, class Abi>
+T lane(const simd_pack<T, Abi>& x, int i) {
   return x[i];
 }
 
@@ -41,8 +46,8 @@ Named<typename batch_traits<P>::scalar> lane(const Named<P>& x, int i) {
   return value;
 }
 
-template <class T, int W>
-void set_lane(batch<T, W>& x, int i, T value) {
+template <class T, class Abi>
+void set_lane(simd_pack<T, Abi>& x, int i, T value) {
   x[i] = value;
 }
 
@@ -77,11 +82,12 @@ auto gather(ValueOf value_of) {
   return x;
 }
 
-template <class T, int W>
-struct batch_traits<batch<T, W>> {
+template <class T, class Abi>
+struct batch_traits<simd_pack<T, Abi>> {
   static constexpr bool is_batch = true;
   using scalar = T;
-  static constexpr int lanes = W;
+  static constexpr int lanes = static_cast<int>(simd_pack<T, Abi>::size());
+  static constexpr int W = lanes;
 
   template <class R, class F, class... X>
   static R lanewise(F f, const X&... x) {
@@ -91,7 +97,7 @@ struct batch_traits<batch<T, W>> {
   }
 
   // inverse_norm2's check: no lane may be null.
-  static bool any_zero(const batch<T, W>& x) { return std::experimental::any_of(x == T(0)); }
+  static bool any_zero(const simd_pack<T, Abi>& x) { return std::experimental::any_of(x == T(0)); }
 };
 
 }  // namespace gaphys::ga

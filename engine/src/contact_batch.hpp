@@ -1,0 +1,244 @@
+// The contact phase's sweeps on batches: `contact_lanes` runs of one colour
+// (contact_colouring.hpp), which share no body the solver changes, solved at
+// once, lane i the run in lane i. Each lane does exactly what the scalar
+// solve (impulse_row.hpp, contact_solver::solve_contact) does to its contact,
+// the same operations on the same numbers in the same order, with masks
+// where the scalar solve branches; so a step is the same to the bit whichever
+// runs share a batch, and with batches or without (test_contact_batches.cpp).
+//
+// The rows and bodies are e3ga's named types on packs (e3ga/batch.hpp), so
+// the speeds and impulses run the generated kernels on W contacts at once.
+// A body's velocities are gathered into lanes once per batch of runs and
+// stay there while the run's contacts (a manifold's points, which all share
+// the run's two bodies) are solved one after the other.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <e3ga/batch.hpp>
+
+#include "impulse_row.hpp"
+
+namespace gaphys::detail {
+
+// As wide as the target's vector registers (2 doubles with SSE2, 4 with
+// AVX2, 8 with AVX-512): their masks are registers too, and a select is a
+// few bitwise operations (a fixed-size pack's mask is a bit set, and
+// turning it into a register took longer than the solve).
+using pack = std::experimental::native_simd<real>;
+using pack_mask = typename pack::mask_type;
+inline constexpr int contact_lanes = static_cast<int>(pack::size());
+
+// Whether `batching` puts the sweeps on batches here: automatic where a
+// batch holds 4 or more lanes. (Measured, docs/benchmarks.md: with 2
+// doubles the gathers cost what the lanes save.)
+inline bool batches_on(contact_batching batching) {
+  return batching == contact_batching::on ||
+         (batching == contact_batching::automatic && contact_lanes >= 4);
+}
+using vector_pack = e3ga::basic_vector<pack>;
+using bivector_pack = e3ga::basic_bivector<pack>;
+
+// x where `mask`, else `otherwise`: per coordinate of a named type.
+template <template <class> class Named>
+GAPHYS_ALWAYS_INLINE Named<pack> select(const pack_mask& mask, const Named<pack>& x,
+                                        Named<pack> otherwise) {
+  for (int k = 0; k < Named<pack>::size; ++k) where(mask, otherwise.c[k]) = x.c[k];
+  return otherwise;
+}
+GAPHYS_ALWAYS_INLINE pack select(const pack_mask& mask, const pack& x, pack otherwise) {
+  where(mask, otherwise) = x;
+  return otherwise;
+}
+
+// The velocities of one body per lane, as solver_body.
+struct body_pack {
+  vector_pack velocity;
+  bivector_pack angular_velocity;
+  pack inverse_mass;
+  pack_mask moves;  // it has mass: static and kinematic bodies are only read
+
+  // The bodies from[0 .. contact_lanes). (Their angular velocities even
+  // where no lane turns them: zeros in their place, chosen by a branch,
+  // made GCC 12 fail at -O3.)
+  GAPHYS_ALWAYS_INLINE static body_pack gather(const solver_body* const* from) {
+    body_pack x{no_init};
+    for (int c = 0; c < 3; ++c) {
+      x.velocity.c[c] = pack([&](auto lane) { return from[lane]->velocity.c[c]; });
+      x.angular_velocity.c[c] = pack([&](auto lane) { return from[lane]->angular_velocity.c[c]; });
+    }
+    x.inverse_mass = pack([&](auto lane) { return from[lane]->inverse_mass; });
+    x.moves = x.inverse_mass > 0;
+    return x;
+  }
+
+ private:
+  // (Value-initialized, the packs were zeroed before every gather: a
+  // quarter of a sweep over spheres' contacts.)
+  struct uninitialized {};
+  static constexpr uninitialized no_init{};
+  explicit body_pack(uninitialized) {}
+};
+
+// impulse_row, one per lane.
+struct row_pack {
+  vector_pack linear;
+  bivector_pack arm_a, arm_b, turn_a, turn_b;
+  pack mass_inverse{};
+
+  void set_lane(int i, const impulse_row& row) {
+    ga::set_lane(linear, i, row.linear);
+    ga::set_lane(arm_a, i, row.arm_a);
+    ga::set_lane(arm_b, i, row.arm_b);
+    ga::set_lane(turn_a, i, row.turn_a);
+    ga::set_lane(turn_b, i, row.turn_b);
+    mass_inverse[i] = row.mass_inverse;
+  }
+
+  // impulse_row::speed of a row that turns.
+  GAPHYS_ALWAYS_INLINE pack linear_speed(const body_pack& a, const body_pack& b) const {
+    return e3ga::scp(linear, e3ga::sub(a.velocity, b.velocity));
+  }
+  GAPHYS_ALWAYS_INLINE pack speed(const body_pack& a, const body_pack& b) const {
+    return linear_speed(a, b) + e3ga::lc(arm_a, a.angular_velocity) -
+           e3ga::lc(arm_b, b.angular_velocity);
+  }
+
+  // impulse_row::apply in the lanes of `mask`; `turning`: those whose row
+  // turns (where it does not, its turns are zero and the angular velocities
+  // are left as they are).
+  GAPHYS_ALWAYS_INLINE void apply(body_pack& a, body_pack& b, const pack& j, const pack_mask& mask,
+                                  const pack_mask& turning) const {
+    const pack_mask on_a = mask && a.moves, on_b = mask && b.moves;
+    a.velocity =
+        select(on_a, e3ga::add(a.velocity, e3ga::smul(j * a.inverse_mass, linear)), a.velocity);
+    b.velocity =
+        select(on_b, e3ga::sub(b.velocity, e3ga::smul(j * b.inverse_mass, linear)), b.velocity);
+    if (none_of(turning)) return;
+    a.angular_velocity = select(
+        on_a && turning, e3ga::add(a.angular_velocity, e3ga::smul(j, turn_a)), a.angular_velocity);
+    b.angular_velocity = select(
+        on_b && turning, e3ga::sub(b.angular_velocity, e3ga::smul(j, turn_b)), b.angular_velocity);
+  }
+};
+
+// What each sweep reads and changes of a contact's normal, one contact per
+// lane (contact_solver::constraint).
+struct normal_pack {
+  row_pack row;
+  pack normal_mass{}, target_speed{}, relaxation{}, accumulated{};
+  pack_mask solvable{};  // mass_inverse > 0 and not a bounce that waits unstruck
+  pack_mask turns{};     // the row turns a body
+  int friction = -1;     // its lanes' friction in the friction packs, or -1: no lane rubs
+};
+
+// disk_block for friction, one per lane; lanes without friction have
+// `present` false.
+struct friction_pack {
+  std::array<row_pack, 2> rows;
+  std::array<pack, 3> inverse{};
+  std::array<pack, 2> eigenvalues{}, eigenbasis{};
+  std::array<pack, 2> accumulated{};
+  pack slip_rate{};
+  pack coefficient{};  // μ
+  pack_mask present{};
+
+  void set_lane(int i, const disk_block& block, real friction_coefficient) {
+    rows[0].set_lane(i, block.rows[0]);
+    rows[1].set_lane(i, block.rows[1]);
+    for (int k = 0; k < 3; ++k) inverse[k][i] = block.inverse[k];
+    for (int k = 0; k < 2; ++k) {
+      eigenvalues[k][i] = block.eigenvalues[k];
+      eigenbasis[k][i] = block.eigenbasis[k];
+      accumulated[k][i] = block.accumulated[k];
+    }
+    slip_rate[i] = block.slip_rate;
+    coefficient[i] = friction_coefficient;
+    present[i] = block.active();
+  }
+
+  // disk_block::solve in the lanes of `mask`, with each lane's bound; adds
+  // each lane's |Δλ_1| + |Δλ_2| times its first row's mass_inverse to
+  // `largest` as solve_contact does.
+  GAPHYS_ALWAYS_INLINE void solve(body_pack& a, body_pack& b, const pack& bound,
+                                  const pack_mask& mask, pack& largest) {
+    const pack s0 = rows[0].speed(a, b), s1 = rows[1].speed(a, b);
+    std::array<pack, 2> total{accumulated[0] - (inverse[0] * s0 + inverse[1] * s1),
+                              accumulated[1] - (inverse[1] * s0 + inverse[2] * s1)};
+    // Lanes whose stopping impulse lies outside the disk slip: the nearest
+    // point of the disk, lane by lane (disk_block's own branches and Newton's
+    // iterations).
+    const pack_mask outside = mask && (total[0] * total[0] + total[1] * total[1] > bound * bound);
+    if (any_of(outside)) {
+      for (int i = 0; i < contact_lanes; ++i) {
+        if (!outside[i]) continue;
+        real slip = slip_rate[i];
+        const std::array<real, 2> on_disk = outside_disk(
+            {total[0][i], total[1][i]}, bound[i], {eigenvalues[0][i], eigenvalues[1][i]},
+            {eigenbasis[0][i], eigenbasis[1][i]}, slip);
+        slip_rate[i] = slip;
+        total[0][i] = on_disk[0];
+        total[1][i] = on_disk[1];
+      }
+    }
+    const pack j0 = total[0] - accumulated[0], j1 = total[1] - accumulated[1];
+    // disk_block::apply.
+    using e3ga::add, e3ga::sub, e3ga::smul;
+    const vector_pack linear = add(smul(j0, rows[0].linear), smul(j1, rows[1].linear));
+    const pack_mask on_a = mask && a.moves, on_b = mask && b.moves;
+    a.velocity = select(on_a, add(a.velocity, smul(a.inverse_mass, linear)), a.velocity);
+    a.angular_velocity = select(
+        on_a, add(a.angular_velocity, add(smul(j0, rows[0].turn_a), smul(j1, rows[1].turn_a))),
+        a.angular_velocity);
+    b.velocity = select(on_b, sub(b.velocity, smul(b.inverse_mass, linear)), b.velocity);
+    b.angular_velocity = select(
+        on_b, sub(b.angular_velocity, add(smul(j0, rows[0].turn_b), smul(j1, rows[1].turn_b))),
+        b.angular_velocity);
+    accumulated[0] = select(mask, total[0], accumulated[0]);
+    accumulated[1] = select(mask, total[1], accumulated[1]);
+    const pack change = (abs(j0) + abs(j1)) * rows[0].mass_inverse;
+    where(mask && largest < change, largest) = change;
+  }
+};
+
+// Which contacts a sweep solves, as contact_solver::sweep_kind.
+struct sweep_lanes {
+  bool turning_only, last_of_all, last_of_turning;
+};
+
+// contact_solver::solve_contact on one contact per lane, the lanes' bodies
+// in a and b: the normal impulse, then friction where a lane has it.
+// `largest` takes each lane's largest speed change; returns whether any
+// lane was solved.
+GAPHYS_ALWAYS_INLINE bool solve_lanes(normal_pack& k, friction_pack* friction, body_pack& a,
+                                      body_pack& b, const sweep_lanes& kind, pack& largest) {
+  pack_mask active = k.solvable;
+  if (kind.turning_only) active = active && k.turns && k.accumulated > 0;
+  if (none_of(active)) return false;
+  // The last sweep of a contact is plain (no over-relaxation).
+  pack_mask last(false);
+  if (kind.last_of_turning) last = last || k.turns;
+  if (kind.last_of_all) last = last || !k.turns;
+  const pack relaxation = select(last, pack(1), k.relaxation);
+  const pack speed = any_of(k.turns) ? select(k.turns, k.row.speed(a, b), k.row.linear_speed(a, b))
+                                     : k.row.linear_speed(a, b);
+  const pack wanted = relaxation * (k.target_speed - speed) * k.normal_mass;
+  pack total = k.accumulated + wanted;
+  where(total < 0, total) = 0;
+  const pack j = total - k.accumulated;
+  // (Most speculative contacts hold no impulse and get none.)
+  k.row.apply(a, b, j, active && j != 0, k.turns);
+  k.accumulated = select(active, total, k.accumulated);
+  const pack change = abs(j) * k.row.mass_inverse;
+  where(active && largest < change, largest) = change;
+  if (!friction) return true;
+  // Nothing pushes and nothing is held: nothing to rub (a speculative contact).
+  const pack_mask rubs =
+      active && friction->present &&
+      (k.accumulated > 0 || friction->accumulated[0] != 0 || friction->accumulated[1] != 0);
+  if (any_of(rubs)) friction->solve(a, b, friction->coefficient * k.accumulated, rubs, largest);
+  return true;
+}
+
+}  // namespace gaphys::detail
