@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <e3ga/batch.hpp>
 
+#include "gaphys/world.hpp"
 #include "impulse_row.hpp"
 
 namespace gaphys::detail {
@@ -30,12 +31,17 @@ using pack = std::experimental::native_simd<real>;
 using pack_mask = typename pack::mask_type;
 inline constexpr int contact_lanes = static_cast<int>(pack::size());
 
-// Whether `batching` puts the sweeps on batches here: automatic where a
-// batch holds 4 or more lanes. (Measured, docs/benchmarks.md: with 2
-// doubles the gathers cost what the lanes save.)
-inline bool batches_on(contact_batching batching) {
-  return batching == contact_batching::on ||
-         (batching == contact_batching::automatic && contact_lanes >= 4);
+// Whether `batching` puts a run of contacts in a batch here (runs with
+// rolling or spinning resistance, which the packs leave out, never go):
+// automatic where a batch holds 4 or more lanes, and for a plain run
+// (frictionless contacts through the centres, which turn nothing: a few
+// products each, less than gathering their bodies) only with 32-byte
+// registers (AVX). Measured in docs/benchmarks.md, "Contact batches": with
+// 2 doubles (SSE2) the gathers cost what the lanes save, and 4 floats in
+// SSE2 lose 10% on plain runs.
+inline bool batches_take(contact_batching batching, bool plain) {
+  if (batching != contact_batching::automatic) return batching == contact_batching::on;
+  return contact_lanes >= 4 && (!plain || sizeof(pack) >= 32);
 }
 using vector_pack = e3ga::basic_vector<pack>;
 using bivector_pack = e3ga::basic_bivector<pack>;
@@ -133,6 +139,76 @@ struct normal_pack {
   int friction = -1;     // its lanes' friction in the friction packs, or -1: no lane rubs
 };
 
+// within_disk (impulse_row.hpp) in the lanes of `mask`.
+GAPHYS_ALWAYS_INLINE std::array<pack, 2> within_disk(const std::array<pack, 2>& v,
+                                                     const pack& bound, const pack_mask& mask) {
+  const pack squared = v[0] * v[0] + v[1] * v[1];
+  const pack_mask outside = mask && squared > bound * bound;
+  if (none_of(outside)) return v;
+  const pack scale = bound / sqrt(squared);
+  return {select(outside, v[0] * scale, v[0]), select(outside, v[1] * scale, v[1])};
+}
+
+// outside_disk and nearest_on_disk (impulse_row.hpp) in the lanes of
+// `outside`, their branches as masks and Newton's method run until every
+// lane has stopped, each lane's root frozen once it stops: each lane takes
+// the steps, and rounds, that its contact solved alone would.
+inline std::array<pack, 2> outside_disk(const std::array<pack, 2>& total, const pack& bound,
+                                        const std::array<pack, 2>& k,
+                                        const std::array<pack, 2>& eigenbasis, pack& slip_rate,
+                                        const pack_mask& outside) {
+  std::array<pack, 2> result = total;
+  // No bound: nothing holds.
+  const pack_mask none = outside && !(bound > 0);
+  where(none, result[0]) = 0;
+  where(none, result[1]) = 0;
+  // A bound tiny next to λ*, or an isotropic K: λ* scaled onto the disk.
+  const pack_mask scaled =
+      outside && !none &&
+      (!(bound > pack(by_precision(1e-9, 1e-4)) * (abs(total[0]) + abs(total[1]))) ||
+       !(k[0] - k[1] > pack(by_precision(1e-9, 1e-4)) * k[0]));
+  if (any_of(scaled)) {
+    const std::array<pack, 2> on_disk = within_disk(total, bound, scaled);
+    result[0] = select(scaled, on_disk[0], result[0]);
+    result[1] = select(scaled, on_disk[1], result[1]);
+  }
+  const pack_mask newton = outside && !none && !scaled;
+  if (none_of(newton)) return result;
+  const pack c = eigenbasis[0], s = eigenbasis[1];
+  const pack inverse_bound = 1 / bound;
+  const std::array<pack, 2> w{(c * total[0] + s * total[1]) * inverse_bound,
+                              (-s * total[0] + c * total[1]) * inverse_bound};
+  const pack excess = sqrt(w[0] * w[0] + w[1] * w[1]) - 1;
+  const pack lowest = k[1] * excess;
+  // std::min(std::max(slip_rate, lowest), k[0] * excess).
+  const pack highest = k[0] * excess;
+  pack nu = slip_rate;
+  where(nu < lowest, nu) = lowest;
+  where(highest < nu, nu) = highest;
+  pack_mask running = newton;
+  for (int iteration = 0; iteration < 20 && any_of(running); ++iteration) {
+    const pack d0 = k[0] + nu, d1 = k[1] + nu;
+    const pack both = 1 / (d0 * d1);
+    const pack i0 = d1 * both, i1 = d0 * both;
+    const pack l0 = k[0] * w[0] * i0, l1 = k[1] * w[1] * i1;
+    const pack squared = l0 * l0 + l1 * l1;
+    const pack length = sqrt(squared);
+    const pack step = (1 - length) * squared / (l0 * l0 * i0 + l1 * l1 * i1);
+    // std::max(nu - step, lowest).
+    pack next = nu - step;
+    where(next < lowest, next) = lowest;
+    nu = select(running, next, nu);
+    running = running && abs(step) > pack(by_precision(1e-8, 3e-4)) * (nu + k[0]);
+  }
+  slip_rate = select(newton, nu, slip_rate);
+  const pack l0 = k[0] * w[0] / (k[0] + nu), l1 = k[1] * w[1] / (k[1] + nu);
+  const std::array<pack, 2> on_disk =
+      within_disk({(c * l0 - s * l1) * bound, (s * l0 + c * l1) * bound}, bound, newton);
+  result[0] = select(newton, on_disk[0], result[0]);
+  result[1] = select(newton, on_disk[1], result[1]);
+  return result;
+}
+
 // disk_block for friction, one per lane; lanes without friction have
 // `present` false.
 struct friction_pack {
@@ -167,20 +243,10 @@ struct friction_pack {
     std::array<pack, 2> total{accumulated[0] - (inverse[0] * s0 + inverse[1] * s1),
                               accumulated[1] - (inverse[1] * s0 + inverse[2] * s1)};
     // Lanes whose stopping impulse lies outside the disk slip: the nearest
-    // point of the disk, lane by lane (disk_block's own branches and Newton's
-    // iterations).
+    // point of the disk (outside_disk below).
     const pack_mask outside = mask && (total[0] * total[0] + total[1] * total[1] > bound * bound);
     if (any_of(outside)) {
-      for (int i = 0; i < contact_lanes; ++i) {
-        if (!outside[i]) continue;
-        real slip = slip_rate[i];
-        const std::array<real, 2> on_disk = outside_disk(
-            {total[0][i], total[1][i]}, bound[i], {eigenvalues[0][i], eigenvalues[1][i]},
-            {eigenbasis[0][i], eigenbasis[1][i]}, slip);
-        slip_rate[i] = slip;
-        total[0][i] = on_disk[0];
-        total[1][i] = on_disk[1];
-      }
+      total = outside_disk(total, bound, eigenvalues, eigenbasis, slip_rate, outside);
     }
     const pack j0 = total[0] - accumulated[0], j1 = total[1] - accumulated[1];
     // disk_block::apply.

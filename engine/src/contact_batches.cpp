@@ -10,15 +10,17 @@ namespace {
 constexpr int lanes = detail::contact_lanes;
 }  // namespace
 
-// A run goes into a batch unless one of its contacts has rolling or spinning
-// resistance, which the packs leave out (few contacts have it): the scalar
-// solve takes those.
-bool contact_solver::batchable(std::size_t run) const {
+// Whether a run goes into a batch (detail::batches_take): never if one of
+// its contacts has rolling or spinning resistance, which the packs leave out
+// (few contacts have it): the scalar solve takes those.
+bool contact_solver::batchable(std::size_t run, contact_batching batching) const {
+  bool plain = true;
   for (std::size_t i = colouring_.run_starts[run]; i < colouring_.run_starts[run + 1]; ++i) {
     const constraint& k = constraints_[i];
     if (k.surface >= 0 && surfaces_[k.surface].resistance >= 0) return false;
+    if (k.normal.turns || (k.surface >= 0 && surfaces_[k.surface].friction.active())) plain = false;
   }
-  return true;
+  return detail::batches_take(batching, plain);
 }
 
 // Each block's runs, in order, into batches of `lanes` (the last one maybe
@@ -34,7 +36,6 @@ void contact_solver::pack_batches(const world_settings& settings) {
   pack_slots_.clear();
   block_groups_.assign(1, 0);
   block_singles_.assign(1, 0);
-  const bool batches = detail::batches_on(settings.batch_contacts);
   for (std::size_t block = 0; block < blocks; ++block) {
     const std::size_t colour = block / threads, thread = block % threads;
     std::size_t first = colouring_.colour_starts[colour],
@@ -47,7 +48,7 @@ void contact_solver::pack_batches(const world_settings& settings) {
     std::array<std::size_t, lanes> runs{};
     int filled = 0;
     for (std::size_t run = first; run < end; ++run) {
-      if (!batches || !batchable(run)) {
+      if (!batchable(run, settings.batch_contacts)) {
         single_runs_.push_back(run);
         continue;
       }

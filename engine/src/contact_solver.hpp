@@ -153,7 +153,7 @@ class contact_solver {
   struct batch_group;
   void pack_batches(const world_settings& settings);
   void add_batch_group(const std::array<std::size_t, detail::contact_lanes>& runs, int filled);
-  bool batchable(std::size_t run) const;
+  bool batchable(std::size_t run, contact_batching batching) const;
   void solve_block(std::size_t block, const sweep_kind& kind, sweep_result& result);
   void solve_group(const batch_group& group, const sweep_kind& kind, sweep_result& result);
   void scatter_bodies(const std::array<std::size_t, detail::contact_lanes>& index, bool angular,

@@ -117,17 +117,25 @@ inline std::array<real, 2> nearest_on_disk(const std::array<real, 2>& outside, r
                                            const std::array<real, 2>& eigenvalues,
                                            const std::array<real, 2>& eigenbasis, real& slip_rate) {
   const real c = eigenbasis[0], s = eigenbasis[1];
-  const std::array<real, 2> w{c * outside[0] + s * outside[1], -s * outside[0] + c * outside[1]};
+  // In units of the bound: λ scales with λ* and the bound, ν does not, and
+  // the iteration's numbers stay near 1. (In impulses, an impulse of 1e-16
+  // N s squared and times another gave 1e-48: zero in float, and a step of
+  // infinity.)
+  const real inverse_bound = 1 / bound;
+  const std::array<real, 2> w{(c * outside[0] + s * outside[1]) * inverse_bound,
+                              (-s * outside[0] + c * outside[1]) * inverse_bound};
   const std::array<real, 2>& k = eigenvalues;
-  // The root lies in [k_min, k_max] (|w| / bound - 1). From its lower end
+  // The root lies in [k_min, k_max] (|w| - 1). From its lower end
   // Newton's method on this concave function climbs to the root without
   // overshooting (for an isotropic K it is the root); from above it, one
   // step lands below and the climb goes on from there. Start at the last
   // sweep's root where it lies in the bracket.
-  const real inverse_bound = 1 / bound;
-  const real excess = std::sqrt(w[0] * w[0] + w[1] * w[1]) * inverse_bound - 1;
+  const real excess = std::sqrt(w[0] * w[0] + w[1] * w[1]) - 1;
   const real lowest = k[1] * excess;
-  real nu = std::clamp(slip_rate, lowest, k[0] * excess);
+  // (Not std::clamp: where |w| lies a rounding error below the bound, excess
+  // is below zero and the bracket's ends come the wrong way round, which
+  // clamp does not allow.)
+  real nu = std::min(std::max(slip_rate, lowest), k[0] * excess);
   std::array<real, 2> l{};
   // Converging quadratically, a step below 1e-8 of the scale leaves an
   // error near 1e-16 after it (in float: 3e-4, 1e-7): stop once it is taken.
@@ -136,17 +144,17 @@ inline std::array<real, 2> nearest_on_disk(const std::array<real, 2>& outside, r
     const real both = 1 / (d0 * d1);
     const real i0 = d1 * both, i1 = d0 * both;
     l = {k[0] * w[0] * i0, k[1] * w[1] * i1};
-    // The Newton step (1/|λ| - 1/bound) / (d/dν 1/|λ|), with
+    // The Newton step (1/|λ| - 1) / (d/dν 1/|λ|), with
     // d/dν 1/|λ| = (l0² i0 + l1² i1) / |λ|³, written with one division.
     const real squared = l[0] * l[0] + l[1] * l[1];
     const real length = std::sqrt(squared);
-    const real step = (bound - length) * squared / (bound * (l[0] * l[0] * i0 + l[1] * l[1] * i1));
+    const real step = (1 - length) * squared / (l[0] * l[0] * i0 + l[1] * l[1] * i1);
     nu = std::max(nu - step, lowest);
     if (!(std::fabs(step) > by_precision(1e-8, 3e-4) * (nu + k[0]))) break;
   }
   slip_rate = nu;
   l = {k[0] * w[0] / (k[0] + nu), k[1] * w[1] / (k[1] + nu)};
-  return within_disk({c * l[0] - s * l[1], s * l[0] + c * l[1]}, bound);
+  return within_disk({(c * l[0] - s * l[1]) * bound, (s * l[0] + c * l[1]) * bound}, bound);
 }
 
 // The total impulse of a block whose stopping impulse `total` lies outside

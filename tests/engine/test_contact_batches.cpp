@@ -122,9 +122,14 @@ TEST_F(contact_batches_test, batches_on_two_threads_step_as_one_by_one_on_one) {
 
 TEST_F(contact_batches_test, automatic_batches_where_a_batch_holds_four_lanes) {
   EXPECT_EQ(world_settings{}.batch_contacts, contact_batching::automatic);
-  EXPECT_EQ(detail::batches_on(contact_batching::automatic), detail::contact_lanes >= 4);
-  EXPECT_TRUE(detail::batches_on(contact_batching::on));
-  EXPECT_FALSE(detail::batches_on(contact_batching::off));
+  for (const bool plain : {false, true}) {
+    EXPECT_TRUE(detail::batches_take(contact_batching::on, plain));
+    EXPECT_FALSE(detail::batches_take(contact_batching::off, plain));
+  }
+  const bool wide = detail::contact_lanes >= 4;
+  EXPECT_EQ(detail::batches_take(contact_batching::automatic, false), wide);
+  EXPECT_EQ(detail::batches_take(contact_batching::automatic, true),
+            wide && sizeof(detail::pack) >= 32);
   world w;
   EXPECT_TRUE(
       rejects([&] { w.set_batch_contacts(static_cast<contact_batching>(7)); }, "batch_contacts"));

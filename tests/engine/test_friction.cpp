@@ -389,5 +389,34 @@ TEST_F(friction_test, a_sliding_impulse_is_the_disk_point_nearest_in_the_effecti
   }
 }
 
+// The nearest point scales with λ* and the bound (the metric does not
+// change), however small the impulses: a box settling into a corner of a
+// float world had friction bounds of 3e-16 N s, whose squares times
+// another impulse underflowed, and its impulses became NaN.
+TEST_F(friction_test, a_sliding_impulse_scales_with_the_stopping_impulse_and_the_bound) {
+  for (int trial = 0; trial < 500; ++trial) {
+    detail::disk_block block;
+    block.rows[0].linear = vector{uniform(0.4, 1.7), 0, 0};
+    block.rows[1].linear = vector{uniform(-0.5, 0.5), uniform(0.4, 1.7), 0};
+    block.rows[0].turns = block.rows[1].turns = false;
+    block.rows[0].mass_inverse = e3ga::scp(block.rows[0].linear, block.rows[0].linear);
+    block.rows[1].mass_inverse = e3ga::scp(block.rows[1].linear, block.rows[1].linear);
+    block.prepare(1);
+    const std::array<real, 2> outside{uniform(-3, 3), uniform(-3, 3)};
+    const real bound = uniform(0.1, 0.5);
+    if (outside[0] * outside[0] + outside[1] * outside[1] <= bound * bound) continue;
+    const std::array<real, 2> unit = block.nearest_on_disk(outside, bound);
+    for (const real scale : {real(1e-16), real(1e-12), real(1e-6), real(1e8)}) {
+      block.slip_rate = -1;  // as a new contact starts
+      const std::array<real, 2> l =
+          block.nearest_on_disk({scale * outside[0], scale * outside[1]}, scale * bound);
+      for (int i = 0; i < 2; ++i) {
+        ASSERT_TRUE(std::isfinite(l[i])) << "scale " << scale;
+        ASSERT_NEAR(l[i] / scale, unit[i], tolerance(1e-12, 1e-5)) << "scale " << scale;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace gaphys::testing
