@@ -32,16 +32,15 @@ using pack_mask = typename pack::mask_type;
 inline constexpr int contact_lanes = static_cast<int>(pack::size());
 
 // Whether `batching` puts a run of contacts in a batch here (runs with
-// rolling or spinning resistance, which the packs leave out, never go):
-// automatic where a batch holds 4 or more lanes, and for a plain run
-// (frictionless contacts through the centres, which turn nothing: a few
-// products each, less than gathering their bodies) only with 32-byte
-// registers (AVX). Measured in docs/benchmarks.md, "Contact batches": with
-// 2 doubles (SSE2) the gathers cost what the lanes save, and 4 floats in
-// SSE2 lose 10% on plain runs.
+// rolling or spinning resistance, which the packs leave out, never go).
+// automatic: where a batch holds 4 or more lanes, the runs that turn a body
+// or rub; not plain runs (frictionless contacts through the centres, a few
+// products each: no faster on batches than their gathers cost). Measured in
+// docs/benchmarks.md, "Contact batches": with 2 doubles (SSE2) even boxes
+// lose.
 inline bool batches_take(contact_batching batching, bool plain) {
   if (batching != contact_batching::automatic) return batching == contact_batching::on;
-  return contact_lanes >= 4 && (!plain || sizeof(pack) >= 32);
+  return contact_lanes >= 4 && !plain;
 }
 using vector_pack = e3ga::basic_vector<pack>;
 using bivector_pack = e3ga::basic_bivector<pack>;

@@ -20,7 +20,8 @@ namespace gaphys {
 
 // Whether the contact sweeps run on SIMD batches (world_settings).
 enum class contact_batching {
-  automatic,  // where a batch holds 4 or more reals (AVX, or float with SSE2)
+  automatic,  // where a batch holds 4 or more reals (AVX, or float with SSE2), for
+              // contacts that turn a body or rub
   on,
   off,
 };
@@ -71,10 +72,11 @@ struct world_settings {
   // snapshots do not keep it: a restored world keeps its own.
   int threads = 0;
   // The contact sweeps on SIMD batches, several contacts at once
-  // (docs/engine.md, "Batches"). They pay where a batch holds 4 or more
-  // reals; 2 doubles (SSE2 alone) do not pay for gathering their bodies.
-  // Like threads, it changes the time, not the result (to the bit), so
-  // snapshots do not keep it.
+  // (docs/engine.md, "Contact batches"). They pay where a batch holds 4 or
+  // more reals, for contacts with friction or off-centre ones; 2 doubles
+  // (SSE2 alone) do not pay for gathering their bodies. Like threads, it
+  // changes the time, not the result (to the bit), so snapshots do not
+  // keep it.
   contact_batching batch_contacts = contact_batching::automatic;
 };
 
