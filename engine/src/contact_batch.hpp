@@ -14,8 +14,6 @@
 #pragma once
 
 #include <array>
-#include <cstddef>
-#include <cstdint>
 #include <e3ga/batch.hpp>
 
 #include "gaphys/world.hpp"
@@ -42,6 +40,7 @@ inline bool batches_take(contact_batching batching, bool plain) {
   if (batching != contact_batching::automatic) return batching == contact_batching::on;
   return contact_lanes >= 4 && !plain;
 }
+
 using vector_pack = e3ga::basic_vector<pack>;
 using bivector_pack = e3ga::basic_bivector<pack>;
 
@@ -101,7 +100,8 @@ struct row_pack {
     mass_inverse[i] = row.mass_inverse;
   }
 
-  // impulse_row::speed of a row that turns.
+  // impulse_row::speed of a row that does not turn (linear_speed) and of
+  // one that does (speed).
   GAPHYS_ALWAYS_INLINE pack linear_speed(const body_pack& a, const body_pack& b) const {
     return e3ga::scp(linear, e3ga::sub(a.velocity, b.velocity));
   }
