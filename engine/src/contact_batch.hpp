@@ -277,8 +277,9 @@ struct sweep_lanes {
 // `largest` takes each lane's largest speed change; returns whether any
 // lane was solved.
 GAPHYS_ALWAYS_INLINE bool solve_lanes(normal_pack& k, friction_pack* friction, body_pack& a,
-                                      body_pack& b, const sweep_lanes& kind, pack& largest) {
-  pack_mask active = k.solvable;
+                                      body_pack& b, const sweep_lanes& kind, const pack_mask& open,
+                                      pack& largest) {
+  pack_mask active = k.solvable && open;
   if (kind.turning_only) active = active && k.turns && k.accumulated > 0;
   if (none_of(active)) return false;
   // The last sweep of a contact is plain (no over-relaxation).

@@ -68,7 +68,9 @@ void contact_solver::add_batch_group(const std::array<std::size_t, lanes>& runs,
   group.first = normal_packs_.size();
   group.body_a.fill(batch_group::no_body);
   group.body_b.fill(batch_group::no_body);
+  group.runs.fill(batch_group::no_run);
   for (int lane = 0; lane < filled; ++lane) {
+    group.runs[lane] = runs[lane];
     const std::size_t begin = colouring_.run_starts[runs[lane]];
     const std::size_t length = colouring_.run_starts[runs[lane] + 1] - begin;
     group.count = std::max(group.count, length);
@@ -125,6 +127,14 @@ void contact_solver::scatter_bodies(const std::array<std::size_t, lanes>& index,
 
 void contact_solver::solve_group(const batch_group& group, const sweep_kind& kind,
                                  sweep_result& result) {
+  // The lanes whose runs are not settled (settled_run), as the scalar solve
+  // passes them by.
+  detail::pack_mask open(false);
+  for (int lane = 0; lane < lanes; ++lane) {
+    const std::size_t run = group.runs[lane];
+    open[lane] = run != batch_group::no_run && !settled_run(run);
+  }
+  if (none_of(open)) return;
   static const solver_body none{};
   std::array<const solver_body*, lanes> from_a, from_b;
   for (int lane = 0; lane < lanes; ++lane) {
@@ -140,7 +150,12 @@ void contact_solver::solve_group(const batch_group& group, const sweep_kind& kin
   for (std::size_t s = group.first; s < group.first + group.count; ++s) {
     detail::normal_pack& k = normal_packs_[s];
     detail::friction_pack* friction = k.friction >= 0 ? &friction_packs_[k.friction] : nullptr;
-    any = detail::solve_lanes(k, friction, a, b, lanes_kind, largest) || any;
+    any = detail::solve_lanes(k, friction, a, b, lanes_kind, open, largest) || any;
+  }
+  for (int lane = 0; lane < lanes; ++lane) {
+    if (!open[lane]) continue;
+    const std::size_t run = group.runs[lane];
+    record_run(run, kind.stamps + run + 1, real(largest[lane]));
   }
   if (!any) return;  // nothing solved, nothing changed
   scatter_bodies(group.body_a, group.angular, a);

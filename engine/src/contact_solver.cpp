@@ -392,17 +392,25 @@ void contact_solver::solve_contacts(const world_settings& settings) {
   // Every contact gets solver_iterations sweeps; contacts that turn a body
   // get turning_iterations more (a stack of boxes converges slowly).
   const int sweeps = settings.solver_iterations + settings.turning_iterations;
+  const std::size_t runs = colouring_.runs();
   const auto kind_of = [&](int sweep) {
     // The last sweep of a contact is plain: it takes back what
     // over-relaxation pushed contacts apart beyond their targets.
     return sweep_kind{sweep >= settings.solver_iterations, sweep + 1 == settings.solver_iterations,
-                      sweep + 1 == sweeps};
+                      sweep + 1 == sweeps, static_cast<std::uint64_t>(sweep) * runs};
   };
   const auto converged = [&](const sweep_result& r) {
     return !r.any || r.largest_change <= settings.solver_tolerance;
   };
   const std::size_t colours = colouring_.colours();
-  const std::size_t runs = colouring_.runs();
+  settle_tolerance_ = settings.solver_tolerance;
+  run_states_.resize(runs);
+  for (std::size_t run = 0; run < runs; ++run) {
+    const constraint& first = constraints_[colouring_.run_starts[run]];
+    run_states_[run] = {0, first.body_a, first.body_b};
+  }
+  body_disturbed_.assign(solver_bodies_.size(), 0);
+  body_drift_.assign(solver_bodies_.size(), 0);
   const std::size_t sequential = colouring_.colour_starts.back();
   const int threads = sweep_threads_;
   if (threads == 1) {
@@ -447,12 +455,20 @@ void contact_solver::solve_contacts(const world_settings& settings) {
   }
 }
 
-// Runs first_run .. end_run - 1 of the colouring, in order.
+// Runs first_run .. end_run - 1 of the colouring, in order, but for the
+// settled ones (settled_run).
 void contact_solver::solve_runs(std::size_t first_run, std::size_t end_run, const sweep_kind& kind,
                                 sweep_result& result) {
-  const std::size_t first = colouring_.run_starts[first_run];
-  const std::size_t end = colouring_.run_starts[end_run];
-  for (std::size_t i = first; i < end; ++i) solve_contact(constraints_[i], kind, result);
+  for (std::size_t run = first_run; run < end_run; ++run) {
+    if (settled_run(run)) continue;
+    sweep_result mine;
+    for (std::size_t i = colouring_.run_starts[run]; i < colouring_.run_starts[run + 1]; ++i) {
+      solve_contact(constraints_[i], kind, mine);
+    }
+    record_run(run, kind.stamps + run + 1, mine.largest_change);
+    result.any = result.any || mine.any;
+    result.largest_change = std::max(result.largest_change, mine.largest_change);
+  }
 }
 
 GAPHYS_ALWAYS_INLINE void contact_solver::solve_contact(constraint& k, const sweep_kind& kind,

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -142,6 +143,7 @@ class contact_solver {
     bool turning_only;     // past solver_iterations: only contacts that turn a body
     bool last_of_all;      // the last sweep of the contacts that do not turn a body
     bool last_of_turning;  // the last sweep of those that do
+    std::uint64_t stamps;  // the stamp of the sweep's run r is stamps + r + 1
   };
   // A sweep's largest speed change, and whether it solved any contact.
   struct sweep_result {
@@ -159,6 +161,29 @@ class contact_solver {
   void scatter_bodies(const std::array<std::size_t, detail::contact_lanes>& index, bool angular,
                       const detail::body_pack& x);
   void unpack_batches();
+  // Whether a run is settled: its last solve changed no speed by more than
+  // the tolerance, and the other runs on its bodies have changed them by no
+  // more than that in all since. Solving it again would change next to
+  // nothing, so the sweeps pass it by (in a pile of boxes coming to rest,
+  // half the contact solves).
+  bool settled_run(std::size_t run) const {
+    const run_state& r = run_states_[run];
+    return r.settled != 0 && body_disturbed_[r.body_a] <= r.settled &&
+           body_disturbed_[r.body_b] <= r.settled;
+  }
+  // After run `run` was solved with stamp `stamp`, changing speeds by up to
+  // `change`: it has settled, or its bodies are disturbed. Changes below the
+  // tolerance add up on each body (its drift) until they disturb it: many
+  // small ones move a body as far as one large one.
+  void record_run(std::size_t run, std::uint64_t stamp, real change) {
+    run_state& r = run_states_[run];
+    r.settled = change <= settle_tolerance_ ? stamp : 0;
+    for (const std::size_t x : {r.body_a, r.body_b}) {
+      if (!(solver_bodies_[x].inverse_mass > 0)) continue;
+      body_drift_[x] += change;
+      if (!(body_drift_[x] <= settle_tolerance_)) body_disturbed_[x] = stamp, body_drift_[x] = 0;
+    }
+  }
   void solve_runs(std::size_t first_run, std::size_t end_run, const sweep_kind& kind,
                   sweep_result& result);
   GAPHYS_ALWAYS_INLINE void solve_contact(constraint& k, const sweep_kind& kind,
@@ -192,7 +217,8 @@ class contact_solver {
   // block_groups_[b + 1]), up to contact_lanes runs each, and the runs
   // solved one by one, single_runs_[block_singles_[b] .. block_singles_[b + 1]).
   struct batch_group {
-    static constexpr std::size_t no_body = ~std::size_t{0};
+    static constexpr std::size_t no_body = ~std::size_t{0}, no_run = ~std::size_t{0};
+    std::array<std::size_t, detail::contact_lanes> runs;            // per lane, or no_run
     std::array<std::size_t, detail::contact_lanes> body_a, body_b;  // per lane, or no_body
     std::size_t first = 0, count = 0;  // its contacts: normal_packs_[first .. first + count)
     bool angular = false;              // some lane's impulses turn a body
@@ -204,6 +230,20 @@ class contact_solver {
   // Per normal pack, each lane's constraint (index into constraints_), or -1.
   std::vector<std::array<std::ptrdiff_t, detail::contact_lanes>> pack_slots_;
   int sweep_threads_ = 1;  // the contact phase's threads in this step
+  // Per run, its bodies and the stamp of its last solve if it settled
+  // there, else 0 (kept apart from the constraints: a settled run is passed
+  // by without reading them); per body, the stamp of the run solve after
+  // which its changes passed settle_tolerance_ (settled_run, record_run).
+  // The stamps of sweep s are s * runs + run + 1: a body's runs are solved
+  // in that order.
+  struct run_state {
+    std::uint64_t settled = 0;
+    std::size_t body_a = 0, body_b = 0;
+  };
+  std::vector<run_state> run_states_;
+  std::vector<std::uint64_t> body_disturbed_;
+  std::vector<real> body_drift_;  // per body: the changes below the tolerance since disturbed
+  real settle_tolerance_ = 0;
 };
 
 }  // namespace gaphys
