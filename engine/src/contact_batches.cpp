@@ -14,6 +14,9 @@ constexpr int lanes = detail::contact_lanes;
 // its contacts has rolling or spinning resistance, which the packs leave out
 // (few contacts have it): the scalar solve takes those.
 bool contact_solver::batchable(std::size_t run, contact_batching batching) const {
+  // (Where not even a run that turns a body would go, none goes: no need
+  // to walk the run.)
+  if (!detail::batches_take(batching, false)) return false;
   bool plain = true;
   for (std::size_t i = colouring_.run_starts[run]; i < colouring_.run_starts[run + 1]; ++i) {
     const constraint& k = constraints_[i];

@@ -37,12 +37,13 @@ bool central(const body& b) {
   return round && s.offset.e1() == 0 && s.offset.e2() == 0 && s.offset.e3() == 0;
 }
 
-// Where a body touches the other, from its centre: a central sphere's
+// Where a body touches the other, from its centre: a central (`is_central`) sphere's
 // surface point along the normal (towards -n for A, which the normal points
 // to, +n for B), a central point's centre; for every other shape the
 // contact point, midway between the two surfaces.
-vector contact_offset(const body& x, const contact& c, const vector& n, real side) {
-  if (central(x)) {
+vector contact_offset(const body& x, bool is_central, const contact& c, const vector& n,
+                      real side) {
+  if (is_central) {
     const shape& s = *x.shape();
     return s.kind() == shape_kind::sphere ? (side * s.radius()) * n : vector{};
   }
@@ -155,12 +156,13 @@ void contact_solver::build_constraint(const world_settings& settings, const body
   k.gap = -c.geometry.depth;
   k.bounces = k.restitution > 0 &&
               approach_speed(a, b, start_a, start_b, c) < -settings.restitution_threshold;
-  const bool central_a = central(a) || a.is_static();
-  const bool central_b = central(b) || b.is_static();
+  const bool round_a = central(a), round_b = central(b);
+  const bool central_a = round_a || a.is_static();
+  const bool central_b = round_b || b.is_static();
   vector n = c.geometry.normal;
   // (Only a sphere or point about its centre, or a plane, moves with its
   // body's centre as timed_impact assumes.)
-  if (k.bounces && (central(a) || is_plane(a)) && (central(b) || is_plane(b))) {
+  if (k.bounces && (round_a || is_plane(a)) && (round_b || is_plane(b))) {
     // Bounced at the moment the surfaces meet, along the normal then.
     impact.timing = time_impact(a, b, c, start_a, start_b, h);
     if (impact.timing) n = impact.timing->normal;
@@ -168,8 +170,8 @@ void contact_solver::build_constraint(const world_settings& settings, const body
   // A bounce whose surfaces meet only in a later step waits for it.
   k.waits = k.bounces && k.gap > 0 && !impact.timing;
 
-  const vector r_a = contact_offset(a, c, n, -1);
-  const vector r_b = contact_offset(b, c, n, 1);
+  const vector r_a = contact_offset(a, round_a, c, n, -1);
+  const vector r_b = contact_offset(b, round_b, c, n, 1);
   // The denominator of eq. 3.20 / 4.7, with the inertias as linear maps:
   // 1/mA + 1/mB + n . (rA ⌋ I_A⁻¹(rA ∧ n)) + n . (rB ⌋ I_B⁻¹(rB ∧ n)).
   if (central_a && central_b) {
@@ -178,7 +180,7 @@ void contact_solver::build_constraint(const world_settings& settings, const body
     k.normal.turns = false;
     k.normal.mass_inverse = a.inverse_mass() + b.inverse_mass();
   } else {
-    k.normal = detail::linear_row(n, r_a, r_b, a, b);
+    detail::set_linear_row(k.normal, n, r_a, r_b, a, b);
   }
   k.normal_mass = k.normal.mass_inverse > 0 ? 1 / k.normal.mass_inverse : real(0);
   k.target_speed = k.gap > 0 ? -k.gap / h : real(0);
@@ -190,27 +192,35 @@ void contact_solver::build_constraint(const world_settings& settings, const body
   if (m.friction > 0 || rolls || spins) {
     surface_terms& t = surfaces_[at.surfaces];
     surface_frame& f = frames_[at.surfaces];
-    t = surface_terms{};
-    f = surface_frame{};
+    // (Field by field: zeroing the terms first, then writing them, cost a
+    // tenth of building a box's contact.)
     f.frame = tangents(n);
-    f.planes = {e3ga::op(n, f.frame[0]), e3ga::op(n, f.frame[1]), e3ga::op(f.frame[0], f.frame[1])};
+    f.impact_tangent = {};
     const real inverse_masses = a.inverse_mass() + b.inverse_mass();
     if (m.friction > 0) {
-      t.friction.rows = {detail::linear_row(f.frame[0], r_a, r_b, a, b),
-                         detail::linear_row(f.frame[1], r_a, r_b, a, b)};
-      t.friction.prepare(inverse_masses);
-      t.friction_coefficient = m.friction;
+      detail::disk_block& block = t.friction;
+      detail::set_linear_row(block.rows[0], f.frame[0], r_a, r_b, a, b);
+      detail::set_linear_row(block.rows[1], f.frame[1], r_a, r_b, a, b);
+      block.prepare(inverse_masses);
+      block.accumulated = {};
+    } else {
+      t.friction = detail::disk_block{};
     }
+    t.friction_coefficient = m.friction > 0 ? m.friction : real(0);
+    t.resistance = -1;
     if (rolls || spins) {
       resistance_terms& r = resistances_[at.resistances];
       r = resistance_terms{};
+      r.planes = {e3ga::op(n, f.frame[0]), e3ga::op(n, f.frame[1]),
+                  e3ga::op(f.frame[0], f.frame[1])};
       if (rolls) {
-        r.rolling.rows = {detail::angular_row(f.planes[0], a, b), detail::angular_row(f.planes[1], a, b)};
+        r.rolling.rows = {detail::angular_row(r.planes[0], a, b),
+                          detail::angular_row(r.planes[1], a, b)};
         r.rolling.prepare(inverse_masses);
         r.rolling_bound = m.rolling_resistance * radius;
       }
       if (spins) {
-        r.spinning = detail::angular_row(f.planes[2], a, b);
+        r.spinning = detail::angular_row(r.planes[2], a, b);
         r.spinning_bound = m.spinning_friction * radius;
       }
       t.resistance = static_cast<int>(at.resistances);
@@ -365,13 +375,13 @@ void contact_solver::warm_start(const std::vector<body>& bodies,
     resistance_terms& r = resistances_[t.resistance];
     // An angular impulse L = Σ λ_i U_i on unit planes reads back λ_i = -L . U_i.
     if (r.rolling.active()) {
-      const std::array<real, 2> held{-e3ga::scp(resting.angular, f.planes[0]),
-                                     -e3ga::scp(resting.angular, f.planes[1])};
+      const std::array<real, 2> held{-e3ga::scp(resting.angular, r.planes[0]),
+                                     -e3ga::scp(resting.angular, r.planes[1])};
       r.rolling.start_from(a, b, detail::within_disk(held, r.rolling_bound * k.accumulated));
     }
     if (r.spinning.mass_inverse > 0) {
       const real bound = r.spinning_bound * k.accumulated;
-      r.spinning_accumulated = std::clamp(-e3ga::scp(resting.angular, f.planes[2]), -bound, bound);
+      r.spinning_accumulated = std::clamp(-e3ga::scp(resting.angular, r.planes[2]), -bound, bound);
       r.spinning.apply(a, b, r.spinning_accumulated);
     }
   }
@@ -528,8 +538,9 @@ void contact_solver::store_impulses(std::vector<contact>& contacts, int threads)
     resting.tangent = t.friction.accumulated[0] * f.frame[0] + t.friction.accumulated[1] * f.frame[1];
     if (t.resistance >= 0) {
       const resistance_terms& r = resistances_[t.resistance];
-      resting.angular = r.rolling.accumulated[0] * f.planes[0] +
-                        r.rolling.accumulated[1] * f.planes[1] + r.spinning_accumulated * f.planes[2];
+      resting.angular = r.rolling.accumulated[0] * r.planes[0] +
+                        r.rolling.accumulated[1] * r.planes[1] +
+                        r.spinning_accumulated * r.planes[2];
     }
     total.tangent = resting.tangent + f.impact_tangent[0] * f.frame[0] + f.impact_tangent[1] * f.frame[1];
     total.angular = resting.angular;

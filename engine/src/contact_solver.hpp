@@ -92,6 +92,7 @@ class contact_solver {
     int resistance = -1;            // its rolling and spinning terms in resistances_, or -1
   };
   struct resistance_terms {
+    std::array<bivector, 3> planes;  // n ∧ t1, n ∧ t2 (rolling) and t1 ∧ t2 (spin)
     disk_block rolling;              // turning in n ∧ t1 and n ∧ t2
     impulse_row spinning;            // turning in t1 ∧ t2, about the normal
     real spinning_accumulated = 0;
@@ -99,8 +100,7 @@ class contact_solver {
     real spinning_bound = 0;         // c_s ρ
   };
   struct surface_frame {
-    std::array<vector, 2> frame;     // t1, t2: unit tangents, (t1, t2, n) right-handed
-    std::array<bivector, 3> planes;  // n ∧ t1, n ∧ t2 (rolling) and t1 ∧ t2 (spin)
+    std::array<vector, 2> frame;           // t1, t2: unit tangents, (t1, t2, n) right-handed
     std::array<real, 2> impact_tangent{};  // the impact phase's friction impulse
   };
 

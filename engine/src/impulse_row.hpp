@@ -70,20 +70,32 @@ struct impulse_row {
 
 // The row along d at offsets r_a, r_b of two bodies (a static body's arm
 // counts for nothing: its Ω stays zero).
-inline impulse_row linear_row(const vector& d, const vector& r_a, const vector& r_b, const body& a,
-                              const body& b) {
-  impulse_row row;
+// Written into `row`, every field: the contact phase builds thousands of
+// rows a step, and a row built aside and copied in cost a copy each.
+inline void set_linear_row(impulse_row& row, const vector& d, const vector& r_a, const vector& r_b,
+                           const body& a, const body& b) {
   row.linear = d;
   if (!a.is_static()) {
     row.arm_a = e3ga::op(d, r_a);
     row.turn_a = a.world_inverse_inertia(e3ga::op(r_a, d));
+  } else {
+    row.arm_a = row.turn_a = bivector{};
   }
   if (!b.is_static()) {
     row.arm_b = e3ga::op(d, r_b);
     row.turn_b = b.world_inverse_inertia(e3ga::op(r_b, d));
+  } else {
+    row.arm_b = row.turn_b = bivector{};
   }
+  row.turns = true;
   row.mass_inverse = a.inverse_mass() + b.inverse_mass() + e3ga::lc(row.arm_a, row.turn_a) +
                      e3ga::lc(row.arm_b, row.turn_b);
+}
+
+inline impulse_row linear_row(const vector& d, const vector& r_a, const vector& r_b, const body& a,
+                              const body& b) {
+  impulse_row row;
+  set_linear_row(row, d, r_a, r_b, a, b);
   return row;
 }
 
@@ -200,6 +212,7 @@ struct disk_block {
     // (k00 - k11, 2 k01)), for the projection on the disk.
     const real half_gap = (k00 - k11) / 2, radius = std::sqrt(half_gap * half_gap + k01 * k01);
     eigenvalues = {(k00 + k11) / 2 + radius, (k00 + k11) / 2 - radius};
+    eigenbasis = {1, 0};
     if (radius > 0) {
       // Half-angle formulas from cos 2θ and sin 2θ, each taken where it is
       // not a difference of near equals (atan2, cos and sin took 1.4% of a
