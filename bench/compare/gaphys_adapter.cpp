@@ -41,8 +41,8 @@ gaphys::shape with_surface(const gaphys::shape& shape, double restitution, doubl
 
 class gaphys_adapter final : public engine_adapter {
  public:
-  gaphys_adapter(int threads, gaphys::contact_batching batches)
-      : threads_(threads), batches_(batches) {}
+  gaphys_adapter(int threads, gaphys::contact_batching batches, int turning_sweeps)
+      : threads_(threads), batches_(batches), turning_sweeps_(turning_sweeps) {}
 
   void build(const scene& s) override {
     gaphys::world_settings settings;  // defaults: 20 sweeps (+10 for turning contacts), threshold 0.5 m/s
@@ -50,6 +50,7 @@ class gaphys_adapter final : public engine_adapter {
     settings.sleeping = false;  // as Bullet and ODE run here: every body steps every step
     settings.threads = threads_;
     settings.batch_contacts = batches_;
+    if (turning_sweeps_ >= 0) settings.turning_iterations = turning_sweeps_;
     world_.emplace(settings);
     for (const plane_description& p : s.planes) {
       gaphys::body_definition plane;
@@ -91,6 +92,7 @@ class gaphys_adapter final : public engine_adapter {
  private:
   int threads_;
   gaphys::contact_batching batches_;
+  int turning_sweeps_;
   std::optional<gaphys::world> world_;
   std::size_t first_body_ = 0;
 };
@@ -113,8 +115,9 @@ std::string rule_name(gaphys::combine_rule rule) {
 
 }  // namespace
 
-engine gaphys_engine(int threads, gaphys::contact_batching batches) {
+engine gaphys_engine(int threads, gaphys::contact_batching batches, int turning_sweeps) {
   const gaphys::world_settings defaults;
+  const int turning = turning_sweeps >= 0 ? turning_sweeps : defaults.turning_iterations;
   return {
       "gaphys",
       "this tree",
@@ -129,9 +132,9 @@ engine gaphys_engine(int threads, gaphys::contact_batching batches) {
                                                        : "off",
         "--gaphys-batches; the sweeps on SIMD batches or one by one, the same results"},
        {"solver sweeps",
-        std::to_string(defaults.solver_iterations) + " (+" +
-            std::to_string(defaults.turning_iterations) + " for contacts that turn a body)",
-        "default"},
+        std::to_string(defaults.solver_iterations) + " (+" + std::to_string(turning) +
+            " for contacts that turn a body)",
+        turning_sweeps >= 0 ? "--gaphys-turning-sweeps" : "default"},
        {"restitution",
         "max(e_a, e_b) per contact, threshold " + number(defaults.restitution_threshold) + " m/s",
         "default; the scenes give every shape the same e"},
@@ -153,7 +156,9 @@ engine gaphys_engine(int threads, gaphys::contact_batching batches) {
         "the F scenes measure sliding friction only; set explicitly, as are friction and e"},
        {"damping", "0", "default"},
        {"attitude", "rotor, |q| = sqrt(R ~R)", "read as a quaternion for the harness"}},
-      [threads, batches] { return std::make_unique<gaphys_adapter>(threads, batches); }};
+      [threads, batches, turning_sweeps] {
+        return std::make_unique<gaphys_adapter>(threads, batches, turning_sweeps);
+      }};
 }
 
 }  // namespace gaphys_compare

@@ -7,7 +7,8 @@
 namespace gaphys_compare {
 
 // `threads`: world_settings::threads (0: every core); `batches`:
-// world_settings::batch_contacts.
-engine gaphys_engine(int threads, gaphys::contact_batching batches);
+// world_settings::batch_contacts; `turning_sweeps`:
+// world_settings::turning_iterations (< 0: the default).
+engine gaphys_engine(int threads, gaphys::contact_batching batches, int turning_sweeps);
 
 }  // namespace gaphys_compare

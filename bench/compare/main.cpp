@@ -26,8 +26,9 @@ bool selected(const std::vector<std::string>& wanted, const std::string& name) {
 
 int run(const options& o) {
   std::vector<engine> engines;
-  for (engine e : {gaphys_engine(o.gaphys_threads, o.gaphys_batches), bullet_engine(),
-                   ode_engine(ode_stepper::quick), ode_engine(ode_stepper::direct)}) {
+  for (engine e :
+       {gaphys_engine(o.gaphys_threads, o.gaphys_batches, o.gaphys_turning_sweeps), bullet_engine(),
+        ode_engine(ode_stepper::quick), ode_engine(ode_stepper::direct)}) {
     if (selected(o.engines, e.name)) engines.push_back(std::move(e));
   }
   if (engines.empty()) throw std::invalid_argument("--engines selects no engine");

@@ -61,6 +61,8 @@ const char* usage() {
          "                        or a step longer than --m6-step-budget (60)\n"
          "  --gaphys-threads N    gaphys's solver and narrow-phase threads, 0: every core (1)\n"
          "  --gaphys-batches B    gaphys's contact sweeps on SIMD batches: auto, on or off (auto)\n"
+         "  --gaphys-turning-sweeps N  gaphys's sweeps beyond 20 for contacts that turn a body\n"
+         "                        (world_settings::turning_iterations: 10)\n"
          "  --out-dir DIR         results.csv, results.json, plots (compare-results)\n"
          "  --no-plots            do not run gnuplot\n"
          "The --m6-warmup, --m6-steps and --m6-*-budget flags time F5 too; F1-F4 (one\n"
@@ -125,6 +127,8 @@ options parse_options(int argc, char** argv) {
       } else {
         throw std::invalid_argument("--gaphys-batches takes auto, on or off, not " + value);
       }
+    } else if (flag == "--gaphys-turning-sweeps") {
+      o.gaphys_turning_sweeps = to_count(flag, value);
     } else if (flag == "--box-budget") {
       o.box_budget = to_number(flag, value);
     } else if (flag == "--out-dir") {

@@ -40,6 +40,8 @@ struct options {
   int gaphys_threads = 1;
   // gaphys's world_settings::batch_contacts (the sweeps on SIMD batches).
   gaphys::contact_batching gaphys_batches = gaphys::contact_batching::automatic;
+  // gaphys's world_settings::turning_iterations, or < 0: its default.
+  int gaphys_turning_sweeps = -1;
   std::string out_dir = "compare-results";
   bool plots = true;
   bool help = false;
