@@ -38,6 +38,11 @@ int to_count(const std::string& flag, const std::string& text) {
   return static_cast<int>(value);
 }
 
+// A count that may be 0 (--gaphys-threads 0: every core).
+int to_count_or_zero(const std::string& flag, const std::string& text) {
+  return text == "0" ? 0 : to_count(flag, text);
+}
+
 }  // namespace
 
 const char* usage() {
@@ -116,7 +121,7 @@ options parse_options(int argc, char** argv) {
     } else if (flag == "--b5-steps") {
       o.b5_steps = to_count(flag, value);
     } else if (flag == "--gaphys-threads") {
-      o.gaphys_threads = to_count(flag, value);
+      o.gaphys_threads = to_count_or_zero(flag, value);
     } else if (flag == "--gaphys-batches") {
       if (value == "auto") {
         o.gaphys_batches = gaphys::contact_batching::automatic;
@@ -128,7 +133,7 @@ options parse_options(int argc, char** argv) {
         throw std::invalid_argument("--gaphys-batches takes auto, on or off, not " + value);
       }
     } else if (flag == "--gaphys-turning-sweeps") {
-      o.gaphys_turning_sweeps = to_count(flag, value);
+      o.gaphys_turning_sweeps = to_count_or_zero(flag, value);
     } else if (flag == "--box-budget") {
       o.box_budget = to_number(flag, value);
     } else if (flag == "--out-dir") {
