@@ -167,6 +167,7 @@ class contact_solver {
   // nothing, so the sweeps pass it by (in a pile of boxes coming to rest,
   // half the contact solves).
   bool settled_run(std::size_t run) const {
+    if (!settling_) return false;
     const run_state& r = run_states_[run];
     return r.settled != 0 && body_disturbed_[r.body_a] <= r.settled &&
            body_disturbed_[r.body_b] <= r.settled;
@@ -176,6 +177,7 @@ class contact_solver {
   // tolerance add up on each body (its drift) until they disturb it: many
   // small ones move a body as far as one large one.
   void record_run(std::size_t run, std::uint64_t stamp, real change) {
+    if (!settling_) return;
     run_state& r = run_states_[run];
     r.settled = change <= settle_tolerance_ ? stamp : 0;
     for (const std::size_t x : {r.body_a, r.body_b}) {
@@ -244,6 +246,7 @@ class contact_solver {
   std::vector<std::uint64_t> body_disturbed_;
   std::vector<real> body_drift_;  // per body: the changes below the tolerance since disturbed
   real settle_tolerance_ = 0;
+  bool settling_ = false;  // this step passes settled runs by: some run turns a body or rubs
 };
 
 }  // namespace gaphys
