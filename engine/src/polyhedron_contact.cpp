@@ -380,9 +380,10 @@ void find_box_edges(const placed_shape& a, const placed_shape& b, edge_query& q)
   q.edge_b = box_edge(*b.polyhedron, q.box_axes[1], -q.axis);
 }
 
-// A's data moved into B's frame, B's in its own, and the separating axes
-// tested; `world` maps B's frame to the world. Returns false when the
-// bounding spheres are apart by more than `cutoff` (nothing tested).
+// The separating axes tested, and A's data moved into B's frame, B's in
+// its own (for two boxes, only where the axes do not find them apart);
+// `world` maps B's frame to the world. Returns false when the bounding
+// spheres are apart by more than `cutoff` (nothing tested).
 bool test_pair(const placed_shape& a, const placed_shape& b, real cutoff, scratch_space& s,
                rigid_frame& world, sat_result& sat) {
   const rigid_frame frame_a = frame_of(a.attitude, a.center);
@@ -393,10 +394,17 @@ bool test_pair(const placed_shape& a, const placed_shape& b, real cutoff, scratc
   rigid_frame a_in_b;
   for (int i = 0; i < 3; ++i) a_in_b.column[i] = world.unrotate(frame_a.column[i]);
   a_in_b.origin = offset;
-  const bool boxes = a.kind == shape_kind::box && b.kind == shape_kind::box;
-  s.a.load(*a.polyhedron, &a_in_b, !boxes);
-  s.b.load(*b.polyhedron, nullptr, !boxes);
-  sat = boxes ? box_axes(a, b, a_in_b, cutoff) : separating_axes(s.a, s.b, cutoff, s.straddle);
+  if (a.kind == shape_kind::box && b.kind == shape_kind::box) {
+    // (Box pairs' axes need no loaded data: boxes found apart load none.)
+    sat = box_axes(a, b, a_in_b, cutoff);
+    if (sat.apart) return true;
+    s.a.load(*a.polyhedron, &a_in_b, false);
+    s.b.load(*b.polyhedron, nullptr, false);
+    return true;
+  }
+  s.a.load(*a.polyhedron, &a_in_b, true);
+  s.b.load(*b.polyhedron, nullptr, true);
+  sat = separating_axes(s.a, s.b, cutoff, s.straddle);
   return true;
 }
 
