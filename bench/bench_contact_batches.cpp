@@ -5,7 +5,8 @@
 // either way; the engine computes the same states with batches or without,
 // so both time the same sequence of steps. The counter response_ms is the
 // step's response phase (impulses and position correction), where the
-// sweeps run.
+// sweeps run; integration_ms, pairs_ms and narrow_ms are the step's other
+// phases (world::last_step_timings).
 //
 // Side by side in one run, repetitions interleaved:
 //   bench_contact_batches --benchmark_repetitions=5
@@ -43,14 +44,22 @@ void contact_batches(benchmark::State& state, const scene_kind& kind, bool batch
   w.set_sleeping(false);
   w.set_batch_contacts(batches ? contact_batching::on : contact_batching::off);
   for (int i = 0; i < kind.warm_up_steps; ++i) w.step(gaphys::scenes::time_step);
-  double response = 0, contacts = 0;
+  gaphys::step_timings total;
+  double contacts = 0;
   for (auto _ : state) {
     w.step(gaphys::scenes::time_step);
-    response += w.last_step_timings().response;
+    const gaphys::step_timings& t = w.last_step_timings();
+    total.integration += t.integration;
+    total.pairs += t.pairs;
+    total.narrow_phase += t.narrow_phase;
+    total.response += t.response;
     contacts += static_cast<double>(w.contacts().size());
   }
   const double steps = static_cast<double>(state.iterations());
-  state.counters["response_ms"] = 1e3 * response / steps;
+  state.counters["integration_ms"] = 1e3 * total.integration / steps;
+  state.counters["pairs_ms"] = 1e3 * total.pairs / steps;
+  state.counters["narrow_ms"] = 1e3 * total.narrow_phase / steps;
+  state.counters["response_ms"] = 1e3 * total.response / steps;
   state.counters["contacts"] = contacts / steps;
 }
 

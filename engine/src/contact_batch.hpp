@@ -177,30 +177,25 @@ inline std::array<pack, 2> outside_disk(const std::array<pack, 2>& total, const 
   const pack inverse_bound = 1 / bound;
   const std::array<pack, 2> w{(c * total[0] + s * total[1]) * inverse_bound,
                               (-s * total[0] + c * total[1]) * inverse_bound};
+  const pack k1 = k[1] / k[0];
   const pack excess = sqrt(w[0] * w[0] + w[1] * w[1]) - 1;
-  const pack lowest = k[1] * excess;
-  // std::min(std::max(slip_rate, lowest), k[0] * excess).
-  const pack highest = k[0] * excess;
+  const pack lowest = k1 * excess;
+  // std::min(std::max(slip_rate, lowest), excess).
   pack nu = slip_rate;
   where(nu < lowest, nu) = lowest;
-  where(highest < nu, nu) = highest;
+  where(excess < nu, nu) = excess;
   pack_mask running = newton;
   for (int iteration = 0; iteration < 20 && any_of(running); ++iteration) {
-    const pack d0 = k[0] + nu, d1 = k[1] + nu;
-    const pack both = 1 / (d0 * d1);
-    const pack i0 = d1 * both, i1 = d0 * both;
-    const pack l0 = k[0] * w[0] * i0, l1 = k[1] * w[1] * i1;
-    const pack squared = l0 * l0 + l1 * l1;
-    const pack length = sqrt(squared);
-    const pack step = (1 - length) * squared / (l0 * l0 * i0 + l1 * l1 * i1);
+    const pack step = disk_root_step(k1, w, nu);
     // std::max(nu - step, lowest).
     pack next = nu - step;
     where(next < lowest, next) = lowest;
     nu = select(running, next, nu);
-    running = running && abs(step) > pack(by_precision(1e-8, 3e-4)) * (nu + k[0]);
+    running = running && abs(step) > pack(disk_root_tolerance) * (nu + 1);
   }
   slip_rate = select(newton, nu, slip_rate);
-  const pack l0 = k[0] * w[0] / (k[0] + nu), l1 = k[1] * w[1] / (k[1] + nu);
+  const std::array<pack, 2> l = disk_point(k1, w, nu);
+  const pack l0 = l[0], l1 = l[1];
   const std::array<pack, 2> on_disk =
       within_disk({(c * l0 - s * l1) * bound, (s * l0 + c * l1) * bound}, bound, newton);
   result[0] = select(newton, on_disk[0], result[0]);
@@ -217,9 +212,13 @@ struct friction_pack {
   std::array<pack, 2> accumulated{};
   pack slip_rate{};
   pack coefficient{};  // μ
+  std::array<pack, 2> normal_coupling{};
   pack_mask present{};
 
-  void set_lane(int i, const disk_block& block, real friction_coefficient) {
+  void set_lane(int i, const disk_block& block, real friction_coefficient,
+                const std::array<real, 2>& coupling) {
+    normal_coupling[0][i] = coupling[0];
+    normal_coupling[1][i] = coupling[1];
     rows[0].set_lane(i, block.rows[0]);
     rows[1].set_lane(i, block.rows[1]);
     for (int k = 0; k < 3; ++k) inverse[k][i] = block.inverse[k];
@@ -233,12 +232,16 @@ struct friction_pack {
     present[i] = block.active();
   }
 
-  // disk_block::solve in the lanes of `mask`, with each lane's bound; adds
-  // each lane's |Δλ_1| + |Δλ_2| times its first row's mass_inverse to
-  // `largest` as solve_contact does.
-  GAPHYS_ALWAYS_INLINE void solve(body_pack& a, body_pack& b, const pack& bound,
-                                  const pack_mask& mask, pack& largest) {
-    const pack s0 = rows[0].speed(a, b), s1 = rows[1].speed(a, b);
+  // disk_block::solve_after in the lanes of `mask`, with each lane's bound,
+  // after the normal impulse `jn` of `normal` (whose lanes that turn are
+  // `turning`); adds each lane's |Δλ_1| + |Δλ_2| times its first row's
+  // mass_inverse to `largest` as solve_contact does.
+  GAPHYS_ALWAYS_INLINE void solve_after(body_pack& a, body_pack& b, const pack& bound,
+                                        const row_pack& normal, const pack& jn,
+                                        const pack_mask& turning, const pack_mask& mask,
+                                        pack& largest) {
+    const pack s0 = rows[0].speed(a, b) + normal_coupling[0] * jn;
+    const pack s1 = rows[1].speed(a, b) + normal_coupling[1] * jn;
     std::array<pack, 2> total{accumulated[0] - (inverse[0] * s0 + inverse[1] * s1),
                               accumulated[1] - (inverse[1] * s0 + inverse[2] * s1)};
     // Lanes whose stopping impulse lies outside the disk slip: the nearest
@@ -248,18 +251,24 @@ struct friction_pack {
       total = outside_disk(total, bound, eigenvalues, eigenbasis, slip_rate, outside);
     }
     const pack j0 = total[0] - accumulated[0], j1 = total[1] - accumulated[1];
-    // disk_block::apply.
+    // The bodies' updates of disk_block::solve_after.
     using e3ga::add, e3ga::sub, e3ga::smul;
-    const vector_pack linear = add(smul(j0, rows[0].linear), smul(j1, rows[1].linear));
+    const vector_pack linear =
+        add(smul(jn, normal.linear), add(smul(j0, rows[0].linear), smul(j1, rows[1].linear)));
     const pack_mask on_a = mask && a.moves, on_b = mask && b.moves;
+    const auto turn = [&](const bivector_pack& normal_turn, const bivector_pack& turn0,
+                          const bivector_pack& turn1) {
+      const bivector_pack rubbing = add(smul(j0, turn0), smul(j1, turn1));
+      return select(turning, add(smul(jn, normal_turn), rubbing), rubbing);
+    };
     a.velocity = select(on_a, add(a.velocity, smul(a.inverse_mass, linear)), a.velocity);
-    a.angular_velocity = select(
-        on_a, add(a.angular_velocity, add(smul(j0, rows[0].turn_a), smul(j1, rows[1].turn_a))),
-        a.angular_velocity);
+    a.angular_velocity =
+        select(on_a, add(a.angular_velocity, turn(normal.turn_a, rows[0].turn_a, rows[1].turn_a)),
+               a.angular_velocity);
     b.velocity = select(on_b, sub(b.velocity, smul(b.inverse_mass, linear)), b.velocity);
-    b.angular_velocity = select(
-        on_b, sub(b.angular_velocity, add(smul(j0, rows[0].turn_b), smul(j1, rows[1].turn_b))),
-        b.angular_velocity);
+    b.angular_velocity =
+        select(on_b, sub(b.angular_velocity, turn(normal.turn_b, rows[0].turn_b, rows[1].turn_b)),
+               b.angular_velocity);
     accumulated[0] = select(mask, total[0], accumulated[0]);
     accumulated[1] = select(mask, total[1], accumulated[1]);
     const pack change = (abs(j0) + abs(j1)) * rows[0].mass_inverse;
@@ -293,17 +302,23 @@ GAPHYS_ALWAYS_INLINE bool solve_lanes(normal_pack& k, friction_pack* friction, b
   pack total = k.accumulated + wanted;
   where(total < 0, total) = 0;
   const pack j = total - k.accumulated;
-  // (Most speculative contacts hold no impulse and get none.)
-  k.row.apply(a, b, j, active && j != 0, k.turns);
   k.accumulated = select(active, total, k.accumulated);
   const pack change = abs(j) * k.row.mass_inverse;
   where(active && largest < change, largest) = change;
-  if (!friction) return true;
   // Nothing pushes and nothing is held: nothing to rub (a speculative contact).
-  const pack_mask rubs =
-      active && friction->present &&
-      (k.accumulated > 0 || friction->accumulated[0] != 0 || friction->accumulated[1] != 0);
-  if (any_of(rubs)) friction->solve(a, b, friction->coefficient * k.accumulated, rubs, largest);
+  pack_mask rubs(false);
+  if (friction) {
+    rubs = active && friction->present &&
+           (k.accumulated > 0 || friction->accumulated[0] != 0 || friction->accumulated[1] != 0);
+  }
+  // The lanes that rub apply the normal impulse with friction's
+  // (disk_block::solve_after). (Most speculative contacts hold no impulse
+  // and get none.)
+  k.row.apply(a, b, j, active && !rubs && j != 0, k.turns);
+  if (any_of(rubs)) {
+    friction->solve_after(a, b, friction->coefficient * k.accumulated, k.row, j, k.turns, rubs,
+                          largest);
+  }
   return true;
 }
 

@@ -101,7 +101,7 @@ void contact_solver::add_batch_group(const std::array<std::size_t, lanes>& runs,
       group.angular = group.angular || k.normal.turns;
       if (k.surface < 0 || !surfaces_[k.surface].friction.active()) continue;
       const surface_terms& t = surfaces_[k.surface];
-      friction.set_lane(lane, t.friction, t.friction_coefficient);
+      friction.set_lane(lane, t.friction, t.friction_coefficient, t.normal_coupling);
       rubs = true;
     }
     if (rubs) {

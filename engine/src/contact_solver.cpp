@@ -203,8 +203,11 @@ void contact_solver::build_constraint(const world_settings& settings, const body
       detail::set_linear_row(block.rows[1], f.frame[1], r_a, r_b, a, b);
       block.prepare(inverse_masses);
       block.accumulated = {};
+      t.normal_coupling = {block.rows[0].coupling(k.normal, inverse_masses),
+                           block.rows[1].coupling(k.normal, inverse_masses)};
     } else {
       t.friction = detail::disk_block{};
+      t.normal_coupling = {};
     }
     t.friction_coefficient = m.friction > 0 ? m.friction : real(0);
     t.resistance = -1;
@@ -511,18 +514,23 @@ GAPHYS_ALWAYS_INLINE void contact_solver::solve_contact(constraint& k, const swe
   const real wanted = relaxation * (k.target_speed - k.normal.speed(a, b)) * k.normal_mass;
   const real total = std::max(k.accumulated + wanted, real(0));
   const real j = total - k.accumulated;
-  // (Most speculative contacts hold no impulse and get none.)
-  if (j != 0) k.normal.apply(a, b, j);
   k.accumulated = total;
   largest_change = std::max(largest_change, std::fabs(j) * k.normal.mass_inverse);
-  if (k.surface < 0) return;
-  surface_terms& t = surfaces_[k.surface];
+  surface_terms* rubbing = k.surface < 0 ? nullptr : &surfaces_[k.surface];
   // Nothing pushes and nothing is held: nothing to rub (a speculative contact).
-  if (!(k.accumulated > 0) && holds_nothing(t)) return;
-  if (t.friction.active()) {
-    const real change = t.friction.solve(a, b, t.friction_coefficient * k.accumulated);
+  if (rubbing && !(k.accumulated > 0) && holds_nothing(*rubbing)) rubbing = nullptr;
+  if (rubbing && rubbing->friction.active()) {
+    // The normal impulse goes with friction's (disk_block::solve_after).
+    surface_terms& t = *rubbing;
+    const real change = t.friction.solve_after(a, b, t.friction_coefficient * k.accumulated,
+                                               k.normal, j, t.normal_coupling);
     largest_change = std::max(largest_change, change * t.friction.rows[0].mass_inverse);
+  } else if (j != 0) {
+    // (Most speculative contacts hold no impulse and get none.)
+    k.normal.apply(a, b, j);
   }
+  if (!rubbing) return;
+  surface_terms& t = *rubbing;
   if (t.resistance < 0) return;
   resistance_terms& r = resistances_[t.resistance];
   if (r.rolling.active()) {

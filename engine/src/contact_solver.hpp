@@ -88,6 +88,9 @@ class contact_solver {
   // streams half the memory.
   struct surface_terms {
     disk_block friction;            // along t1, t2; inactive without friction
+    // How much a unit normal impulse changes the speeds friction's rows read
+    // (disk_block::solve_after).
+    std::array<real, 2> normal_coupling{};
     real friction_coefficient = 0;  // μ
     int resistance = -1;            // its rolling and spinning terms in resistances_, or -1
   };

@@ -118,54 +118,74 @@ inline std::array<real, 2> within_disk(const std::array<real, 2>& v, real bound)
   return {v[0] * scale, v[1] * scale};
 }
 
+// Newton's method for the disk's root (below), shared by the scalar solve
+// and the batches (contact_batch.hpp), which must round alike. In units of
+// K's larger eigenvalue (k = (1, k1), k1 <= 1, ν the same way) and of the
+// bound (w, the eigen-coordinates of λ*): λ(ν) = (w0 / d0, k1 w1 / d1) with
+// d = (1 + ν, k1 + ν), or (a, b) / D with a = w0 d1, b = k1 w1 d0, D = d0 d1.
+// The step on 1/|λ| - 1, (1 - |λ|) |λ|² / (λ0² / d0 + λ1² / d1), is
+// (D - √(a² + b²)) (a² + b²) / (a² d1 + b² d0): one division.
+template <class T>
+GAPHYS_ALWAYS_INLINE T disk_root_step(const T& k1, const std::array<T, 2>& w, const T& nu) {
+  using std::sqrt;
+  const T d0 = T(1) + nu, d1 = k1 + nu;
+  const T a = w[0] * d1, b = k1 * w[1] * d0;
+  const T squared = a * a + b * b;
+  return (d0 * d1 - sqrt(squared)) * squared / (a * a * d1 + b * b * d0);
+}
+
+// λ(ν) of disk_root_step, in units of the bound.
+template <class T>
+GAPHYS_ALWAYS_INLINE std::array<T, 2> disk_point(const T& k1, const std::array<T, 2>& w,
+                                                 const T& nu) {
+  const T d0 = T(1) + nu, d1 = k1 + nu;
+  const T inverse = T(1) / (d0 * d1);
+  return {w[0] * d1 * inverse, k1 * w[1] * d0 * inverse};
+}
+
+// Newton's method stops after a step below this share of 1 + ν. It
+// converges quadratically and 1/|λ| is nearly linear in ν: over a pile of
+// 1,000 boxes (B5), the step after one below 1e-4 was below 1e-8, mostly
+// 1e-10 to 1e-12; after one below 1e-5, below 1e-10. (In float: 3e-4, 1e-7.)
+inline constexpr real disk_root_tolerance = by_precision(1e-5, 3e-4);
+
 // The point of the circle |λ| = bound nearest to `outside` in K's metric,
 // in K's eigenbasis: there λ_i = k_i w_i / (k_i + ν) with w the eigen-
 // coordinates of `outside`, and Newton's method on 1/|λ(ν)| - 1/bound,
 // which is nearly linear in ν, converges in a few steps.
 //
 // `eigenvalues` and `eigenbasis` are K's (disk_block), `slip_rate` the last
-// sweep's root, updated.
+// sweep's root (in units of the larger eigenvalue), updated.
 inline std::array<real, 2> nearest_on_disk(const std::array<real, 2>& outside, real bound,
                                            const std::array<real, 2>& eigenvalues,
                                            const std::array<real, 2>& eigenbasis, real& slip_rate) {
   const real c = eigenbasis[0], s = eigenbasis[1];
-  // In units of the bound: λ scales with λ* and the bound, ν does not, and
-  // the iteration's numbers stay near 1. (In impulses, an impulse of 1e-16
-  // N s squared and times another gave 1e-48: zero in float, and a step of
-  // infinity.)
+  // In units of the bound and of k0: λ scales with λ* and the bound, ν
+  // with K, and the iteration's numbers stay near 1. (In impulses, an
+  // impulse of 1e-16 N s squared and times another gave 1e-48: zero in
+  // float, and a step of infinity.)
   const real inverse_bound = 1 / bound;
   const std::array<real, 2> w{(c * outside[0] + s * outside[1]) * inverse_bound,
                               (-s * outside[0] + c * outside[1]) * inverse_bound};
-  const std::array<real, 2>& k = eigenvalues;
-  // The root lies in [k_min, k_max] (|w| - 1). From its lower end
-  // Newton's method on this concave function climbs to the root without
-  // overshooting (for an isotropic K it is the root); from above it, one
-  // step lands below and the climb goes on from there. Start at the last
-  // sweep's root where it lies in the bracket.
+  const real k1 = eigenvalues[1] / eigenvalues[0];
+  // The root lies in [k1, 1] (|w| - 1). From its lower end Newton's method
+  // on this concave function climbs to the root without overshooting (for
+  // an isotropic K it is the root); from above it, one step lands below
+  // and the climb goes on from there. Start at the last sweep's root where
+  // it lies in the bracket.
   const real excess = std::sqrt(w[0] * w[0] + w[1] * w[1]) - 1;
-  const real lowest = k[1] * excess;
+  const real lowest = k1 * excess;
   // (Not std::clamp: where |w| lies a rounding error below the bound, excess
   // is below zero and the bracket's ends come the wrong way round, which
   // clamp does not allow.)
-  real nu = std::min(std::max(slip_rate, lowest), k[0] * excess);
-  std::array<real, 2> l{};
-  // Converging quadratically, a step below 1e-8 of the scale leaves an
-  // error near 1e-16 after it (in float: 3e-4, 1e-7): stop once it is taken.
+  real nu = std::min(std::max(slip_rate, lowest), excess);
   for (int iteration = 0; iteration < 20; ++iteration) {
-    const real d0 = k[0] + nu, d1 = k[1] + nu;
-    const real both = 1 / (d0 * d1);
-    const real i0 = d1 * both, i1 = d0 * both;
-    l = {k[0] * w[0] * i0, k[1] * w[1] * i1};
-    // The Newton step (1/|λ| - 1) / (d/dν 1/|λ|), with
-    // d/dν 1/|λ| = (l0² i0 + l1² i1) / |λ|³, written with one division.
-    const real squared = l[0] * l[0] + l[1] * l[1];
-    const real length = std::sqrt(squared);
-    const real step = (1 - length) * squared / (l[0] * l[0] * i0 + l[1] * l[1] * i1);
+    const real step = disk_root_step(k1, w, nu);
     nu = std::max(nu - step, lowest);
-    if (!(std::fabs(step) > by_precision(1e-8, 3e-4) * (nu + k[0]))) break;
+    if (!(std::fabs(step) > disk_root_tolerance * (nu + 1))) break;
   }
   slip_rate = nu;
-  l = {k[0] * w[0] / (k[0] + nu), k[1] * w[1] / (k[1] + nu)};
+  const std::array<real, 2> l = disk_point(k1, w, nu);
   return within_disk({(c * l[0] - s * l[1]) * bound, (s * l[0] + c * l[1]) * bound}, bound);
 }
 
@@ -200,8 +220,9 @@ struct disk_block {
   std::array<real, 2> eigenvalues{};  // of K, the first the larger
   std::array<real, 2> eigenbasis{1, 0};  // (cos, sin) of the first eigenvector's angle
   std::array<real, 2> accumulated{};
-  // ν of the last sliding solve (< 0: none yet): the next sweep's root is
-  // near it, and Newton's method started there needs a step or two.
+  // ν of the last sliding solve, in units of eigenvalues[0] (< 0: none
+  // yet): the next sweep's root is near it, and Newton's method started
+  // there needs a step or two.
   real slip_rate = -1;
 
   void prepare(real inverse_masses) {
@@ -248,7 +269,12 @@ struct disk_block {
   // skew the impulse sideways (a sliding box slowed 6% too little).
   GAPHYS_ALWAYS_INLINE std::array<real, 2> stopping_total(const solver_body& a, const solver_body& b,
                                      const std::array<real, 2>& held, real bound) {
-    const real s0 = rows[0].speed(a, b), s1 = rows[1].speed(a, b);
+    return stopping_total({rows[0].speed(a, b), rows[1].speed(a, b)}, held, bound);
+  }
+  GAPHYS_ALWAYS_INLINE std::array<real, 2> stopping_total(const std::array<real, 2>& speeds,
+                                                          const std::array<real, 2>& held,
+                                                          real bound) {
+    const real s0 = speeds[0], s1 = speeds[1];
     const std::array<real, 2> total{held[0] - (inverse[0] * s0 + inverse[1] * s1),
                                     held[1] - (inverse[1] * s0 + inverse[2] * s1)};
     if (!(total[0] * total[0] + total[1] * total[1] > bound * bound)) return total;
@@ -281,6 +307,37 @@ struct disk_block {
     apply(a, b, j);
     accumulated = total;
     return std::fabs(j[0]) + std::fabs(j[1]);  // a bound on |Δλ| good enough for convergence
+  }
+
+  // solve for friction's block after its contact's normal impulse
+  // `normal_impulse` along `normal`, which is applied with the block's: the
+  // rows' speeds are read before it, and moved by what it changes them
+  // (`normal_coupling`, per unit impulse). The speeds are then read at once,
+  // not after the normal impulse reaches the velocities, and the bodies
+  // change once: the sweeps wait on each contact's updates.
+  GAPHYS_ALWAYS_INLINE real solve_after(solver_body& a, solver_body& b, real bound,
+                                        const impulse_row& normal, real normal_impulse,
+                                        const std::array<real, 2>& normal_coupling) {
+    const std::array<real, 2> speeds{rows[0].speed(a, b) + normal_coupling[0] * normal_impulse,
+                                     rows[1].speed(a, b) + normal_coupling[1] * normal_impulse};
+    const std::array<real, 2> total = stopping_total(speeds, accumulated, bound);
+    const std::array<real, 2> j{total[0] - accumulated[0], total[1] - accumulated[1]};
+    const vector linear =
+        normal_impulse * normal.linear + (j[0] * rows[0].linear + j[1] * rows[1].linear);
+    if (a.inverse_mass > 0) {
+      a.velocity = a.velocity + a.inverse_mass * linear;
+      bivector turn = j[0] * rows[0].turn_a + j[1] * rows[1].turn_a;
+      if (normal.turns) turn = normal_impulse * normal.turn_a + turn;
+      a.angular_velocity = a.angular_velocity + turn;
+    }
+    if (b.inverse_mass > 0) {
+      b.velocity = b.velocity - b.inverse_mass * linear;
+      bivector turn = j[0] * rows[0].turn_b + j[1] * rows[1].turn_b;
+      if (normal.turns) turn = normal_impulse * normal.turn_b + turn;
+      b.angular_velocity = b.angular_velocity - turn;
+    }
+    accumulated = total;
+    return std::fabs(j[0]) + std::fabs(j[1]);
   }
 
   // Starts from a given impulse (warm starting), already within the bound.
