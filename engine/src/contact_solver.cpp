@@ -148,6 +148,8 @@ void contact_solver::build_constraint(const world_settings& settings, const body
                                       real h, std::size_t slot, const term_counts& at) {
   constraint& k = constraints_[slot];
   impact_terms& impact = impacts_[slot];
+  const detail::row_body& row_a = row_bodies_[c.body_a];
+  const detail::row_body& row_b = row_bodies_[c.body_b];
   k = constraint{};
   impact = impact_terms{};
   k.body_a = c.body_a;
@@ -180,7 +182,7 @@ void contact_solver::build_constraint(const world_settings& settings, const body
     k.normal.turns = false;
     k.normal.mass_inverse = a.inverse_mass() + b.inverse_mass();
   } else {
-    detail::set_linear_row(k.normal, n, r_a, r_b, a, b);
+    detail::set_linear_row(k.normal, n, r_a, r_b, row_a, row_b);
   }
   k.normal_mass = k.normal.mass_inverse > 0 ? 1 / k.normal.mass_inverse : real(0);
   k.target_speed = k.gap > 0 ? -k.gap / h : real(0);
@@ -199,8 +201,8 @@ void contact_solver::build_constraint(const world_settings& settings, const body
     const real inverse_masses = a.inverse_mass() + b.inverse_mass();
     if (m.friction > 0) {
       detail::disk_block& block = t.friction;
-      detail::set_linear_row(block.rows[0], f.frame[0], r_a, r_b, a, b);
-      detail::set_linear_row(block.rows[1], f.frame[1], r_a, r_b, a, b);
+      detail::set_linear_row(block.rows[0], f.frame[0], r_a, r_b, row_a, row_b);
+      detail::set_linear_row(block.rows[1], f.frame[1], r_a, r_b, row_a, row_b);
       block.prepare(inverse_masses);
       block.accumulated = {};
       t.normal_coupling = {block.rows[0].coupling(k.normal, inverse_masses),
@@ -217,13 +219,13 @@ void contact_solver::build_constraint(const world_settings& settings, const body
       r.planes = {e3ga::op(n, f.frame[0]), e3ga::op(n, f.frame[1]),
                   e3ga::op(f.frame[0], f.frame[1])};
       if (rolls) {
-        r.rolling.rows = {detail::angular_row(r.planes[0], a, b),
-                          detail::angular_row(r.planes[1], a, b)};
+        r.rolling.rows = {detail::angular_row(r.planes[0], row_a, row_b),
+                          detail::angular_row(r.planes[1], row_a, row_b)};
         r.rolling.prepare(inverse_masses);
         r.rolling_bound = m.rolling_resistance * radius;
       }
       if (spins) {
-        r.spinning = detail::angular_row(r.planes[2], a, b);
+        r.spinning = detail::angular_row(r.planes[2], row_a, row_b);
         r.spinning_bound = m.spinning_friction * radius;
       }
       t.resistance = static_cast<int>(at.resistances);
@@ -596,6 +598,13 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
     total.surfaces += own.surfaces;
     total.resistances += own.resistances;
   }
+  // What the rows read of each body in a contact (row_body), once.
+  row_bodies_.resize(bodies.size());
+  in_contact_.assign(bodies.size(), 0);
+  for (const contact& c : contacts) in_contact_[c.body_a] = in_contact_[c.body_b] = 1;
+  detail::parallel_for(settings.threads, bodies.size(), 2048, [&](std::size_t i) {
+    if (in_contact_[i]) row_bodies_[i] = detail::row_body::of(bodies[i]);
+  });
   constraints_.resize(count);
   impacts_.resize(count);
   surfaces_.resize(total.surfaces);

@@ -209,6 +209,10 @@ class contact_solver {
   std::vector<resistance_terms> resistances_;  // for the surfaces that have them
   std::vector<int> contacts_per_body_;
   std::vector<solver_body> solver_bodies_;  // the velocities after the step's forces, as solved
+  // Per body, for the bodies in contact (in_contact_): what building the
+  // rows reads (row_body).
+  std::vector<detail::row_body> row_bodies_;
+  std::vector<char> in_contact_;
   std::vector<solver_body> impact_bodies_;  // the start velocities plus the impact phase's impulses
   std::vector<char> impacted_;              // bodies the impact phase has changed
   std::vector<char> previous_used_;         // the last step's contacts already warm starting one

@@ -68,43 +68,81 @@ struct impulse_row {
   }
 };
 
+// What the rows read of a body, once per step: its inverse mass, whether it
+// is static, and I⁻¹ in the world frame as a map on bivectors. The contact
+// phase builds a few rows per contact (a box's: the normal and two friction
+// rows, for each of its two bodies), and body::world_inverse_inertia takes a
+// bivector into the body frame and back, two rotor sandwiches, for a map
+// that stays the same all step. Zero for a static or kinematic body.
+struct row_body {
+  real inverse_mass = 0;
+  bool is_static = true;  // its arms count for nothing: its Ω stays zero
+  bool isotropic = true;  // I⁻¹ = inverse_moment times the identity
+  real inverse_moment = 0;
+  std::array<bivector, 3> columns{};  // else: the images of e12, e13, e23
+
+  static row_body of(const body& b) {
+    row_body r;
+    r.inverse_mass = b.inverse_mass();
+    r.is_static = b.is_static();
+    if (!b.is_dynamic()) return r;
+    const inertia& i = b.body_inertia();
+    if (i.is_isotropic()) {
+      // (As body::world_inverse_inertia: the same rounding.)
+      r.inverse_moment = 1 / i.isotropic_moment();
+      return r;
+    }
+    r.isotropic = false;
+    r.columns = {b.world_inverse_inertia(bivector{1, 0, 0}),
+                 b.world_inverse_inertia(bivector{0, 1, 0}),
+                 b.world_inverse_inertia(bivector{0, 0, 1})};
+    return r;
+  }
+
+  // I⁻¹(l) in the world frame.
+  bivector inverse_inertia(const bivector& l) const {
+    if (isotropic) return inverse_moment * l;
+    return l.e12() * columns[0] + l.e13() * columns[1] + l.e23() * columns[2];
+  }
+};
+
 // The row along d at offsets r_a, r_b of two bodies (a static body's arm
 // counts for nothing: its Ω stays zero).
 // Written into `row`, every field: the contact phase builds thousands of
 // rows a step, and a row built aside and copied in cost a copy each.
 inline void set_linear_row(impulse_row& row, const vector& d, const vector& r_a, const vector& r_b,
-                           const body& a, const body& b) {
+                           const row_body& a, const row_body& b) {
   row.linear = d;
-  if (!a.is_static()) {
+  if (!a.is_static) {
     row.arm_a = e3ga::op(d, r_a);
-    row.turn_a = a.world_inverse_inertia(e3ga::op(r_a, d));
+    row.turn_a = a.inverse_inertia(e3ga::op(r_a, d));
   } else {
     row.arm_a = row.turn_a = bivector{};
   }
-  if (!b.is_static()) {
+  if (!b.is_static) {
     row.arm_b = e3ga::op(d, r_b);
-    row.turn_b = b.world_inverse_inertia(e3ga::op(r_b, d));
+    row.turn_b = b.inverse_inertia(e3ga::op(r_b, d));
   } else {
     row.arm_b = row.turn_b = bivector{};
   }
   row.turns = true;
-  row.mass_inverse = a.inverse_mass() + b.inverse_mass() + e3ga::lc(row.arm_a, row.turn_a) +
+  row.mass_inverse = a.inverse_mass + b.inverse_mass + e3ga::lc(row.arm_a, row.turn_a) +
                      e3ga::lc(row.arm_b, row.turn_b);
 }
 
-inline impulse_row linear_row(const vector& d, const vector& r_a, const vector& r_b, const body& a,
-                              const body& b) {
+inline impulse_row linear_row(const vector& d, const vector& r_a, const vector& r_b,
+                              const row_body& a, const row_body& b) {
   impulse_row row;
   set_linear_row(row, d, r_a, r_b, a, b);
   return row;
 }
 
 // The row that turns A by U and B by -U.
-inline impulse_row angular_row(const bivector& u, const body& a, const body& b) {
+inline impulse_row angular_row(const bivector& u, const row_body& a, const row_body& b) {
   impulse_row row;
   const bivector arm = e3ga::reverse(u);
-  if (!a.is_static()) row.arm_a = arm, row.turn_a = a.world_inverse_inertia(u);
-  if (!b.is_static()) row.arm_b = arm, row.turn_b = b.world_inverse_inertia(u);
+  if (!a.is_static) row.arm_a = arm, row.turn_a = a.inverse_inertia(u);
+  if (!b.is_static) row.arm_b = arm, row.turn_b = b.inverse_inertia(u);
   row.mass_inverse = e3ga::lc(row.arm_a, row.turn_a) + e3ga::lc(row.arm_b, row.turn_b);
   return row;
 }
