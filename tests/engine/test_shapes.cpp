@@ -443,6 +443,9 @@ TEST(ShapeTest, box_polyhedron_is_the_box) {
       if (std::fabs(f.normal.c[k]) == 1) axis = k;
     }
     ASSERT_GE(axis, 0) << "normal " << e3ga::basic_mv<real>(f.normal) << " is not an axis";
+    // In the documented order -x, +x, -y, +y, -z, +z (the box pair test
+    // finds a face by its axis and side).
+    EXPECT_EQ(&f - p.faces.data(), 2 * axis + (f.normal.c[axis] > 0 ? 1 : 0));
     EXPECT_EQ(f.offset, h.c[axis]);
     for (std::uint32_t c : corners_of(p, f))
       EXPECT_EQ(p.vertices[c].c[axis], f.normal.c[axis] * h.c[axis]);
