@@ -5,6 +5,7 @@
 // acceleration a is at v_n = n a h, x_n = a h^2 n (n + 1) / 2, which is
 // ½ a t^2 (1 + h / t): +0.21% from the continuous form after 2 s at 240 Hz.
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "engine_test_support.hpp"
@@ -393,6 +394,77 @@ TEST_F(friction_test, a_sliding_impulse_is_the_disk_point_nearest_in_the_effecti
 // change), however small the impulses: a box settling into a corner of a
 // float world had friction bounds of 3e-16 N s, whose squares times
 // another impulse underflowed, and its impulses became NaN.
+// The sweeps apply a contact's normal impulse together with its friction
+// impulse, friction reading its speeds from before the normal impulse plus
+// what that changes them (the rows' coupling, disk_block::solve_after): the
+// same, to rounding, as applying the normal impulse and then solving
+// friction, sticking or sliding, for off-centre contacts on bodies of any
+// inertia.
+TEST_F(friction_test, friction_solved_after_the_normal_impulse_is_the_same_as_solved_behind_it) {
+  int sliding = 0;
+  for (int trial = 0; trial < 1000; ++trial) {
+    std::array<detail::row_body, 2> bodies;
+    for (detail::row_body& body : bodies) {
+      body.inverse_mass = uniform(0.1, 2);
+      body.is_static = false;
+      body.isotropic = false;
+      // A symmetric I⁻¹, positive definite by its dominant diagonal.
+      const real m01 = uniform(-0.2, 0.2), m02 = uniform(-0.2, 0.2), m12 = uniform(-0.2, 0.2);
+      body.columns = {bivector{uniform(0.5, 2), m01, m02}, bivector{m01, uniform(0.5, 2), m12},
+                      bivector{m02, m12, uniform(0.5, 2)}};
+    }
+    const vector n = random_unit_vector();
+    const vector v = random_unit_vector();
+    const vector t1 = (v - dot(v, n) * n) / length(v - dot(v, n) * n);
+    const vector t2{y(n) * z(t1) - z(n) * y(t1), z(n) * x(t1) - x(n) * z(t1),
+                    x(n) * y(t1) - y(n) * x(t1)};
+    const vector r_a = uniform(0.2, 1) * random_unit_vector();
+    const vector r_b = uniform(0.2, 1) * random_unit_vector();
+    detail::impulse_row normal;
+    detail::set_linear_row(normal, n, r_a, r_b, bodies[0], bodies[1]);
+    detail::disk_block block;
+    detail::set_linear_row(block.rows[0], t1, r_a, r_b, bodies[0], bodies[1]);
+    detail::set_linear_row(block.rows[1], t2, r_a, r_b, bodies[0], bodies[1]);
+    const real inverse_masses = bodies[0].inverse_mass + bodies[1].inverse_mass;
+    block.prepare(inverse_masses);
+    block.accumulated = {uniform(-0.1, 0.1), uniform(-0.1, 0.1)};
+    const std::array<real, 2> coupling{block.rows[0].coupling(normal, inverse_masses),
+                                       block.rows[1].coupling(normal, inverse_masses)};
+    const auto velocities = [&](const detail::row_body& body) {
+      return detail::solver_body{uniform(-1, 1) * random_unit_vector(),
+                                 bivector{uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)},
+                                 body.inverse_mass};
+    };
+    const detail::solver_body a0 = velocities(bodies[0]), b0 = velocities(bodies[1]);
+    const real normal_impulse = uniform(0, 1);
+    const real bound = uniform(0.05, 0.5);
+
+    detail::solver_body a = a0, b = b0;
+    detail::disk_block behind = block;
+    normal.apply(a, b, normal_impulse);
+    const real change = behind.solve(a, b, bound);
+
+    detail::solver_body a_with = a0, b_with = b0;
+    detail::disk_block with = block;
+    const real change_with =
+        with.solve_after(a_with, b_with, bound, normal, normal_impulse, coupling);
+
+    const real tolerance_ = tolerance(1e-12, 1e-5);
+    ASSERT_TRUE(near(a_with.velocity, a.velocity, tolerance_)) << "trial " << trial;
+    ASSERT_TRUE(near(b_with.velocity, b.velocity, tolerance_)) << "trial " << trial;
+    ASSERT_TRUE(near(a_with.angular_velocity, a.angular_velocity, tolerance_)) << "trial " << trial;
+    ASSERT_TRUE(near(b_with.angular_velocity, b.angular_velocity, tolerance_)) << "trial " << trial;
+    ASSERT_NEAR(with.accumulated[0], behind.accumulated[0], tolerance_) << "trial " << trial;
+    ASSERT_NEAR(with.accumulated[1], behind.accumulated[1], tolerance_) << "trial " << trial;
+    ASSERT_NEAR(change_with, change, tolerance_) << "trial " << trial;
+    const real held = std::hypot(behind.accumulated[0], behind.accumulated[1]);
+    if (held > bound * (1 - tolerance_)) ++sliding;
+  }
+  // Both kinds of solve were met.
+  EXPECT_GT(sliding, 100);
+  EXPECT_LT(sliding, 900);
+}
+
 TEST_F(friction_test, a_sliding_impulse_scales_with_the_stopping_impulse_and_the_bound) {
   for (int trial = 0; trial < 500; ++trial) {
     detail::disk_block block;
