@@ -195,9 +195,8 @@ inline std::array<pack, 2> outside_disk(const std::array<pack, 2>& total, const 
   }
   slip_rate = select(newton, nu, slip_rate);
   const std::array<pack, 2> l = disk_point(k1, w, nu);
-  const pack l0 = l[0], l1 = l[1];
   const std::array<pack, 2> on_disk =
-      within_disk({(c * l0 - s * l1) * bound, (s * l0 + c * l1) * bound}, bound, newton);
+      within_disk({(c * l[0] - s * l[1]) * bound, (s * l[0] + c * l[1]) * bound}, bound, newton);
   result[0] = select(newton, on_disk[0], result[0]);
   result[1] = select(newton, on_disk[1], result[1]);
   return result;

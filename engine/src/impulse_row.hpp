@@ -130,13 +130,6 @@ inline void set_linear_row(impulse_row& row, const vector& d, const vector& r_a,
                      e3ga::lc(row.arm_b, row.turn_b);
 }
 
-inline impulse_row linear_row(const vector& d, const vector& r_a, const vector& r_b,
-                              const row_body& a, const row_body& b) {
-  impulse_row row;
-  set_linear_row(row, d, r_a, r_b, a, b);
-  return row;
-}
-
 // The row that turns A by U and B by -U.
 inline impulse_row angular_row(const bivector& u, const row_body& a, const row_body& b) {
   impulse_row row;
@@ -347,7 +340,7 @@ struct disk_block {
     return std::fabs(j[0]) + std::fabs(j[1]);  // a bound on |Δλ| good enough for convergence
   }
 
-  // solve for friction's block after its contact's normal impulse
+  // solve, for friction's block, after its contact's normal impulse
   // `normal_impulse` along `normal`, which is applied with the block's: the
   // rows' speeds are read before it, and moved by what it changes them
   // (`normal_coupling`, per unit impulse). The speeds are then read at once,
