@@ -150,12 +150,13 @@ GAPHYS_ALWAYS_INLINE std::array<pack, 2> within_disk(const std::array<pack, 2>& 
 
 // outside_disk and nearest_on_disk (impulse_row.hpp) in the lanes of
 // `outside`, their branches as masks and Newton's method run until every
-// lane has stopped, each lane's root frozen once it stops: each lane takes
-// the steps, and rounds, that its contact solved alone would.
+// lane has stopped (after one step where not `exact`), each lane's root
+// frozen once it stops: each lane takes the steps, and rounds, that its
+// contact solved alone would.
 inline std::array<pack, 2> outside_disk(const std::array<pack, 2>& total, const pack& bound,
-                                        const std::array<pack, 2>& k,
+                                        const pack& eigen_ratio,
                                         const std::array<pack, 2>& eigenbasis, pack& slip_rate,
-                                        const pack_mask& outside) {
+                                        const pack_mask& outside, const pack_mask& exact) {
   std::array<pack, 2> result = total;
   // No bound: nothing holds.
   const pack_mask none = outside && !(bound > 0);
@@ -165,7 +166,7 @@ inline std::array<pack, 2> outside_disk(const std::array<pack, 2>& total, const 
   const pack_mask scaled =
       outside && !none &&
       (!(bound > pack(by_precision(1e-9, 1e-4)) * (abs(total[0]) + abs(total[1]))) ||
-       !(k[0] - k[1] > pack(by_precision(1e-9, 1e-4)) * k[0]));
+       !(1 - eigen_ratio > pack(by_precision(1e-9, 1e-4))));
   if (any_of(scaled)) {
     const std::array<pack, 2> on_disk = within_disk(total, bound, scaled);
     result[0] = select(scaled, on_disk[0], result[0]);
@@ -177,7 +178,7 @@ inline std::array<pack, 2> outside_disk(const std::array<pack, 2>& total, const 
   const pack inverse_bound = 1 / bound;
   const std::array<pack, 2> w{(c * total[0] + s * total[1]) * inverse_bound,
                               (-s * total[0] + c * total[1]) * inverse_bound};
-  const pack k1 = k[1] / k[0];
+  const pack k1 = eigen_ratio;
   const pack excess = sqrt(w[0] * w[0] + w[1] * w[1]) - 1;
   const pack lowest = k1 * excess;
   // std::min(std::max(slip_rate, lowest), excess).
@@ -191,14 +192,24 @@ inline std::array<pack, 2> outside_disk(const std::array<pack, 2>& total, const 
     pack next = nu - step;
     where(next < lowest, next) = lowest;
     nu = select(running, next, nu);
-    running = running && abs(step) > pack(disk_root_tolerance) * (nu + 1);
+    running = running && exact && abs(step) > pack(disk_root_tolerance) * (nu + 1);
   }
   slip_rate = select(newton, nu, slip_rate);
-  const std::array<pack, 2> l = disk_point(k1, w, nu);
-  const std::array<pack, 2> on_disk =
-      within_disk({(c * l[0] - s * l[1]) * bound, (s * l[0] + c * l[1]) * bound}, bound, newton);
-  result[0] = select(newton, on_disk[0], result[0]);
-  result[1] = select(newton, on_disk[1], result[1]);
+  const pack_mask precise = newton && exact, stepped = newton && !exact;
+  if (any_of(precise)) {
+    const std::array<pack, 2> l = disk_point(k1, w, nu);
+    const std::array<pack, 2> on_disk =
+        within_disk({(c * l[0] - s * l[1]) * bound, (s * l[0] + c * l[1]) * bound}, bound, precise);
+    result[0] = select(precise, on_disk[0], result[0]);
+    result[1] = select(precise, on_disk[1], result[1]);
+  }
+  if (any_of(stepped)) {
+    // λ(ν) scaled onto the circle, as nearest_on_disk does after one step.
+    const pack a = w[0] * (k1 + nu), b = k1 * w[1] * (1 + nu);
+    const pack scale = bound / sqrt(a * a + b * b);
+    result[0] = select(stepped, (c * a - s * b) * scale, result[0]);
+    result[1] = select(stepped, (s * a + c * b) * scale, result[1]);
+  }
   return result;
 }
 
@@ -207,7 +218,8 @@ inline std::array<pack, 2> outside_disk(const std::array<pack, 2>& total, const 
 struct friction_pack {
   std::array<row_pack, 2> rows;
   std::array<pack, 3> inverse{};
-  std::array<pack, 2> eigenvalues{}, eigenbasis{};
+  pack eigen_ratio{};
+  std::array<pack, 2> eigenbasis{};
   std::array<pack, 2> accumulated{};
   pack slip_rate{};
   pack coefficient{};  // μ
@@ -221,8 +233,8 @@ struct friction_pack {
     rows[0].set_lane(i, block.rows[0]);
     rows[1].set_lane(i, block.rows[1]);
     for (int k = 0; k < 3; ++k) inverse[k][i] = block.inverse[k];
+    eigen_ratio[i] = block.eigen_ratio;
     for (int k = 0; k < 2; ++k) {
-      eigenvalues[k][i] = block.eigenvalues[k];
       eigenbasis[k][i] = block.eigenbasis[k];
       accumulated[k][i] = block.accumulated[k];
     }
@@ -234,11 +246,12 @@ struct friction_pack {
   // disk_block::solve_after in the lanes of `mask`, with each lane's bound,
   // after the normal impulse `jn` of `normal` (whose lanes that turn are
   // `turning`); adds each lane's |Δλ_1| + |Δλ_2| times its first row's
-  // mass_inverse to `largest` as solve_contact does.
+  // mass_inverse to `largest` as solve_contact does. `exact`: the lanes in
+  // their contact's last sweep (nearest_on_disk).
   GAPHYS_ALWAYS_INLINE void solve_after(body_pack& a, body_pack& b, const pack& bound,
                                         const row_pack& normal, const pack& jn,
                                         const pack_mask& turning, const pack_mask& mask,
-                                        pack& largest) {
+                                        const pack_mask& exact, pack& largest) {
     const pack s0 = rows[0].speed(a, b) + normal_coupling[0] * jn;
     const pack s1 = rows[1].speed(a, b) + normal_coupling[1] * jn;
     std::array<pack, 2> total{accumulated[0] - (inverse[0] * s0 + inverse[1] * s1),
@@ -247,7 +260,7 @@ struct friction_pack {
     // point of the disk (outside_disk below).
     const pack_mask outside = mask && (total[0] * total[0] + total[1] * total[1] > bound * bound);
     if (any_of(outside)) {
-      total = outside_disk(total, bound, eigenvalues, eigenbasis, slip_rate, outside);
+      total = outside_disk(total, bound, eigen_ratio, eigenbasis, slip_rate, outside, exact);
     }
     const pack j0 = total[0] - accumulated[0], j1 = total[1] - accumulated[1];
     // The bodies' updates of disk_block::solve_after.
@@ -316,7 +329,7 @@ GAPHYS_ALWAYS_INLINE bool solve_lanes(normal_pack& k, friction_pack* friction, b
   k.row.apply(a, b, j, active && !rubs && j != 0, k.turns);
   if (any_of(rubs)) {
     friction->solve_after(a, b, friction->coefficient * k.accumulated, k.row, j, k.turns, rubs,
-                          largest);
+                          last, largest);
   }
   return true;
 }

@@ -348,26 +348,33 @@ TEST_F(friction_test, friction_never_adds_kinetic_energy) {
   }
 }
 
+// A friction block of two linear rows (not turning, unit inverse masses)
+// whose effective-mass matrix K is ((k00, k01), (k01, k11)), prepared.
+detail::disk_block block_of_effective_mass(real k00, real k11, real k01) {
+  detail::disk_block block;
+  block.rows[0].linear = vector{1, 0, 0};
+  block.rows[1].linear = vector{k01 / std::sqrt(k00 * k11), 0, 0};
+  block.rows[1].linear =
+      block.rows[1].linear +
+      vector{0, std::sqrt(1 - x(block.rows[1].linear) * x(block.rows[1].linear)), 0};
+  block.rows[0].linear = std::sqrt(k00) * block.rows[0].linear;
+  block.rows[1].linear = std::sqrt(k11) * block.rows[1].linear;
+  block.rows[0].turns = block.rows[1].turns = false;
+  block.rows[0].mass_inverse = k00;
+  block.rows[1].mass_inverse = k11;
+  block.prepare(1);
+  return block;
+}
+
 // A sliding contact's friction impulse is the point of the disk nearest to
 // the sticking impulse λ* in the metric of the rows' effective mass K:
 // on the circle, with the slip it leaves, K (λ - λ*), against it (Coulomb's
 // most dissipation), and no point of the circle nearer in K's metric.
 TEST_F(friction_test, a_sliding_impulse_is_the_disk_point_nearest_in_the_effective_mass_metric) {
   for (int trial = 0; trial < 2000; ++trial) {
-    detail::disk_block block;
     const real k00 = uniform(0.2, 3), k11 = uniform(0.2, 3);
     const real k01 = uniform(-0.9, 0.9) * std::sqrt(k00 * k11);
-    // Rows whose coupling is k01: the effective-mass matrix the block builds.
-    block.rows[0].linear = vector{1, 0, 0};
-    block.rows[1].linear = vector{k01 / std::sqrt(k00 * k11), 0, 0};
-    block.rows[1].linear = block.rows[1].linear +
-                           vector{0, std::sqrt(1 - x(block.rows[1].linear) * x(block.rows[1].linear)), 0};
-    block.rows[0].linear = std::sqrt(k00) * block.rows[0].linear;
-    block.rows[1].linear = std::sqrt(k11) * block.rows[1].linear;
-    block.rows[0].turns = block.rows[1].turns = false;
-    block.rows[0].mass_inverse = k00;
-    block.rows[1].mass_inverse = k11;
-    block.prepare(1);
+    detail::disk_block block = block_of_effective_mass(k00, k11, k01);
     ASSERT_NEAR(block.rows[0].coupling(block.rows[1], 1), k01, tolerance(1e-12, 1e-6));
     const std::array<real, 2> outside{uniform(-3, 3), uniform(-3, 3)};
     const real bound = 0.5;
@@ -387,6 +394,35 @@ TEST_F(friction_test, a_sliding_impulse_is_the_disk_point_nearest_in_the_effecti
       const real angle = 2 * pi * i / 360;
       ASSERT_LE(energy(l[0], l[1]), energy(bound * std::cos(angle), bound * std::sin(angle)) + tolerance(1e-12, 2e-5));
     }
+  }
+}
+
+// A sweep before a contact's last takes one Newton step towards the nearest
+// point (nearest_on_disk, not exact) and puts λ on the circle; the next
+// sweep starts from its root. Solved again and again from the same λ*, as
+// a contact's sweeps converge, the steps reach the nearest point: its slip
+// K (λ - λ*) against λ, as in the test above.
+TEST_F(friction_test, single_newton_steps_land_on_the_circle_and_reach_the_nearest_point) {
+  for (int trial = 0; trial < 2000; ++trial) {
+    const real k00 = uniform(0.2, 3), k11 = uniform(0.2, 3);
+    const real k01 = uniform(-0.9, 0.9) * std::sqrt(k00 * k11);
+    detail::disk_block block = block_of_effective_mass(k00, k11, k01);
+    const std::array<real, 2> outside{uniform(-3, 3), uniform(-3, 3)};
+    const real bound = uniform(0.1, 1);
+    if (outside[0] * outside[0] + outside[1] * outside[1] <= 1.01 * bound * bound) continue;
+    std::array<real, 2> l{};
+    for (int sweep = 0; sweep < 8; ++sweep) {
+      l = detail::nearest_on_disk(outside, bound, block.eigen_ratio, block.eigenbasis,
+                                  block.slip_rate, false);
+      ASSERT_NEAR(std::hypot(l[0], l[1]), bound, tolerance(1e-12, 1e-6) * bound)
+          << "trial " << trial << ", sweep " << sweep;
+    }
+    const std::array<real, 2> d{l[0] - outside[0], l[1] - outside[1]};
+    const std::array<real, 2> slip{k00 * d[0] + k01 * d[1], k01 * d[0] + k11 * d[1]};
+    EXPECT_NEAR(slip[0] * l[1] - slip[1] * l[0], 0,
+                tolerance(1e-12, 1e-5) * (1 + std::fabs(slip[0]) + std::fabs(slip[1])))
+        << "trial " << trial;
+    EXPECT_LE(slip[0] * l[0] + slip[1] * l[1], tolerance(1e-12, 1e-6)) << "trial " << trial;
   }
 }
 
@@ -447,7 +483,7 @@ TEST_F(friction_test, friction_solved_after_the_normal_impulse_is_the_same_as_so
     detail::solver_body a_with = a0, b_with = b0;
     detail::disk_block with = block;
     const real change_with =
-        with.solve_after(a_with, b_with, bound, normal, normal_impulse, coupling);
+        with.solve_after(a_with, b_with, bound, normal, normal_impulse, coupling, true);
 
     const real tolerance_ = tolerance(1e-12, 1e-5);
     ASSERT_TRUE(near(a_with.velocity, a.velocity, tolerance_)) << "trial " << trial;
