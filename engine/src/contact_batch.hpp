@@ -150,9 +150,9 @@ GAPHYS_ALWAYS_INLINE std::array<pack, 2> within_disk(const std::array<pack, 2>& 
 
 // outside_disk and nearest_on_disk (impulse_row.hpp) in the lanes of
 // `outside`, their branches as masks and Newton's method run until every
-// lane has stopped (after one step where not `exact`), each lane's root
-// frozen once it stops: each lane takes the steps, and rounds, that its
-// contact solved alone would.
+// lane has stopped (one step where not `exact`), each lane's root frozen
+// once it stops: each lane takes the steps, and rounds, that its contact
+// solved alone would.
 inline std::array<pack, 2> outside_disk(const std::array<pack, 2>& total, const pack& bound,
                                         const pack& eigen_ratio,
                                         const std::array<pack, 2>& eigenbasis, pack& slip_rate,
@@ -185,31 +185,35 @@ inline std::array<pack, 2> outside_disk(const std::array<pack, 2>& total, const 
   pack nu = slip_rate;
   where(nu < lowest, nu) = lowest;
   where(excess < nu, nu) = excess;
-  pack_mask running = newton;
+  const pack_mask precise = newton && exact, stepped = newton && !exact;
+  if (any_of(stepped)) {
+    // λ(ν) at the last sweep's root scaled onto the circle, and one Newton
+    // step for the next sweep, as nearest_on_disk does where not exact.
+    const pack at = select(slip_rate >= 0, slip_rate, lowest);
+    const pack a = w[0] * (k1 + at), b = k1 * w[1] * (1 + at);
+    const pack scale = bound / sqrt(a * a + b * b);
+    pack next = nu - disk_root_step(k1, w, nu);
+    where(next < lowest, next) = lowest;
+    slip_rate = select(stepped, next, slip_rate);
+    result[0] = select(stepped, (c * a - s * b) * scale, result[0]);
+    result[1] = select(stepped, (s * a + c * b) * scale, result[1]);
+  }
+  if (none_of(precise)) return result;
+  pack_mask running = precise;
   for (int iteration = 0; iteration < 20 && any_of(running); ++iteration) {
     const pack step = disk_root_step(k1, w, nu);
     // std::max(nu - step, lowest).
     pack next = nu - step;
     where(next < lowest, next) = lowest;
     nu = select(running, next, nu);
-    running = running && exact && abs(step) > pack(disk_root_tolerance) * (nu + 1);
+    running = running && abs(step) > pack(disk_root_tolerance) * (nu + 1);
   }
-  slip_rate = select(newton, nu, slip_rate);
-  const pack_mask precise = newton && exact, stepped = newton && !exact;
-  if (any_of(precise)) {
-    const std::array<pack, 2> l = disk_point(k1, w, nu);
-    const std::array<pack, 2> on_disk =
-        within_disk({(c * l[0] - s * l[1]) * bound, (s * l[0] + c * l[1]) * bound}, bound, precise);
-    result[0] = select(precise, on_disk[0], result[0]);
-    result[1] = select(precise, on_disk[1], result[1]);
-  }
-  if (any_of(stepped)) {
-    // λ(ν) scaled onto the circle, as nearest_on_disk does after one step.
-    const pack a = w[0] * (k1 + nu), b = k1 * w[1] * (1 + nu);
-    const pack scale = bound / sqrt(a * a + b * b);
-    result[0] = select(stepped, (c * a - s * b) * scale, result[0]);
-    result[1] = select(stepped, (s * a + c * b) * scale, result[1]);
-  }
+  slip_rate = select(precise, nu, slip_rate);
+  const std::array<pack, 2> l = disk_point(k1, w, nu);
+  const std::array<pack, 2> on_disk = within_disk(
+      {(c * l[0] - s * l[1]) * bound, (s * l[0] + c * l[1]) * bound}, bound, precise);
+  result[0] = select(precise, on_disk[0], result[0]);
+  result[1] = select(precise, on_disk[1], result[1]);
   return result;
 }
 

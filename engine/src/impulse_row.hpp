@@ -186,12 +186,17 @@ inline constexpr real disk_root_tolerance = by_precision(1e-5, 3e-4);
 // which is nearly linear in ν, converges in a few steps.
 //
 // `eigen_ratio` (k1) and `eigenbasis` are K's (disk_block), `slip_rate` the
-// last sweep's root (in units of the larger eigenvalue), updated. Unless
-// `exact`, one Newton step only, and λ(ν) scaled onto the circle: a sweep
-// before a contact's last needs no exact root, the next sweep starts from
-// this one's and takes it on, and the last iterates to disk_root_tolerance.
-// (The root's steps, a square root and a division each, were a third of
-// the sweeps over 1,000 boxes; a sliding solve took 1.76 of them.)
+// last sweep's root (in units of the larger eigenvalue), updated.
+//
+// Unless `exact`, λ is λ(ν) at the last sweep's root, scaled onto the
+// circle, and the root takes one Newton step for the next sweep: a sweep
+// before a contact's last needs no exact root, and from sweep to sweep the
+// steps converge as Newton's iteration does (the sweeps' speeds change
+// little from one to the next). λ then waits on one square root and one
+// division, the step being off its path. The last sweep iterates to
+// disk_root_tolerance. (The root's steps, a square root and a division
+// each, had been a third of the sweeps over 1,000 boxes; a sliding solve
+// took 1.76 of them, all on the path of the contact's update.)
 inline std::array<real, 2> nearest_on_disk(const std::array<real, 2>& outside, real bound,
                                            real eigen_ratio, const std::array<real, 2>& eigenbasis,
                                            real& slip_rate, bool exact) {
@@ -216,11 +221,11 @@ inline std::array<real, 2> nearest_on_disk(const std::array<real, 2>& outside, r
   // clamp does not allow.)
   real nu = std::min(std::max(slip_rate, lowest), excess);
   if (!exact) {
-    nu = std::max(nu - disk_root_step(k1, w, nu), lowest);
-    slip_rate = nu;
     // λ(ν) (disk_point) is along (w0 d1, k1 w1 d0).
-    const real a = w[0] * (k1 + nu), b = k1 * w[1] * (1 + nu);
+    const real at = slip_rate >= 0 ? slip_rate : lowest;
+    const real a = w[0] * (k1 + at), b = k1 * w[1] * (1 + at);
     const real scale = bound / std::sqrt(a * a + b * b);
+    slip_rate = std::max(nu - disk_root_step(k1, w, nu), lowest);
     return {(c * a - s * b) * scale, (s * a + c * b) * scale};
   }
   for (int iteration = 0; iteration < 20; ++iteration) {
