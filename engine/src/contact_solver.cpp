@@ -483,39 +483,24 @@ void contact_solver::solve_contacts(const world_settings& settings) {
 void contact_solver::solve_runs(std::size_t first_run, std::size_t end_run, const sweep_kind& kind,
                                 sweep_result& result) {
   if (!settling_) {
-    for (std::size_t run = first_run; run < end_run; ++run) solve_run(run, kind, result);
+    const std::size_t first = colouring_.run_starts[first_run];
+    const std::size_t end = colouring_.run_starts[end_run];
+    for (std::size_t i = first; i < end; ++i) solve_contact(constraints_[i], kind, result);
     return;
   }
   for (std::size_t run = first_run; run < end_run; ++run) {
     if (settled_run(run)) continue;
     sweep_result mine;
-    solve_run(run, kind, mine);
+    for (std::size_t i = colouring_.run_starts[run]; i < colouring_.run_starts[run + 1]; ++i) {
+      solve_contact(constraints_[i], kind, mine);
+    }
     record_run(run, kind.stamps + run + 1, mine.largest_change);
     result.any = result.any || mine.any;
     result.largest_change = std::max(result.largest_change, mine.largest_change);
   }
 }
 
-// A run's contacts share their two bodies: they are solved on copies, which
-// stay in registers from contact to contact, and written back once. (Through
-// references into solver_bodies_, every store of an impulse into a
-// constraint might have changed a velocity, and the compiler read the
-// velocities again after each.)
-GAPHYS_ALWAYS_INLINE void contact_solver::solve_run(std::size_t run, const sweep_kind& kind,
-                                                    sweep_result& result) {
-  const std::size_t first = colouring_.run_starts[run], end = colouring_.run_starts[run + 1];
-  solver_body& stored_a = solver_bodies_[constraints_[first].body_a];
-  solver_body& stored_b = solver_bodies_[constraints_[first].body_b];
-  solver_body a = stored_a, b = stored_b;
-  for (std::size_t i = first; i < end; ++i) solve_contact(constraints_[i], a, b, kind, result);
-  // Only a body with mass changes (impulse_row::apply): static and
-  // kinematic ones may be read by runs on other threads at once.
-  if (a.inverse_mass > 0) stored_a = a;
-  if (b.inverse_mass > 0) stored_b = b;
-}
-
-GAPHYS_ALWAYS_INLINE void contact_solver::solve_contact(constraint& k, solver_body& a,
-                                                        solver_body& b, const sweep_kind& kind,
+GAPHYS_ALWAYS_INLINE void contact_solver::solve_contact(constraint& k, const sweep_kind& kind,
                                                         sweep_result& result) {
   if (!(k.normal.mass_inverse > 0) || (k.waits && !k.struck)) return;
   // The extra sweeps are for stacks, whose contacts push: one that turns a
@@ -525,6 +510,8 @@ GAPHYS_ALWAYS_INLINE void contact_solver::solve_contact(constraint& k, solver_bo
   result.any = true;
   real& largest_change = result.largest_change;
   const bool last = k.normal.turns ? kind.last_of_turning : kind.last_of_all;
+  solver_body& a = solver_bodies_[k.body_a];
+  solver_body& b = solver_bodies_[k.body_b];
   const real relaxation = last ? real(1) : k.relaxation;
   const real wanted = relaxation * (k.target_speed - k.normal.speed(a, b)) * k.normal_mass;
   const real total = std::max(k.accumulated + wanted, real(0));

@@ -191,11 +191,8 @@ class contact_solver {
   }
   void solve_runs(std::size_t first_run, std::size_t end_run, const sweep_kind& kind,
                   sweep_result& result);
-  // One run's contacts, on its bodies a and b.
-  GAPHYS_ALWAYS_INLINE void solve_run(std::size_t run, const sweep_kind& kind,
-                                      sweep_result& result);
-  GAPHYS_ALWAYS_INLINE void solve_contact(constraint& k, solver_body& a, solver_body& b,
-                                          const sweep_kind& kind, sweep_result& result);
+  GAPHYS_ALWAYS_INLINE void solve_contact(constraint& k, const sweep_kind& kind,
+                                          sweep_result& result);
   void store_impulses(std::vector<contact>& contacts, int threads) const;
   void correct_turning(const world_settings& settings, std::vector<body>& bodies,
                        const std::vector<contact>& contacts, real h);
