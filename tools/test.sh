@@ -13,3 +13,7 @@ ctest --test-dir build --output-on-failure -j2
 # variants, and algebra_variants_agree, built once with ASan + UBSan and run
 # there (tools/configure.sh leaves them out of the build above).
 bash tools/test-sanitized.sh
+
+# The engine's optimized suite built with -march=native: the contact batches
+# as wide as this machine's vectors, and fused multiply-adds within reach.
+bash tools/test-native.sh
