@@ -37,31 +37,10 @@ bool central(const body& b) {
   return round && s.offset.e1() == 0 && s.offset.e2() == 0 && s.offset.e3() == 0;
 }
 
-// Where a body touches the other, from its centre: a central (`is_central`) sphere's
-// surface point along the normal (towards -n for A, which the normal points
-// to, +n for B), a central point's centre; for every other shape the
-// contact point, midway between the two surfaces.
-vector contact_offset(const body& x, bool is_central, const contact& c, const vector& n,
-                      real side) {
-  if (is_central) {
-    const shape& s = *x.shape();
-    return s.kind() == shape_kind::sphere ? (side * s.radius()) * n : vector{};
-  }
-  return c.geometry.point - x.position();
-}
-
 // The radius a touching shape rolls on: a sphere's or a capsule's; 0 for
 // flat shapes.
 real rolling_radius_of(const shape& s) {
   return s.kind() == shape_kind::sphere || s.kind() == shape_kind::capsule ? s.radius() : 0;
-}
-
-// The smaller rolling radius of the contact's two shapes; 0 when neither rolls.
-real rolling_radius(const body& a, const body& b, const contact& c) {
-  const real ra = rolling_radius_of(a.shapes()[c.shape_a].shape);
-  const real rb = rolling_radius_of(b.shapes()[c.shape_b].shape);
-  if (ra > 0 && rb > 0) return std::min(ra, rb);
-  return ra > 0 ? ra : rb;
 }
 
 // The last step's contact at the same point as c, searched in the run of
@@ -127,10 +106,40 @@ std::optional<timed_impact> contact_solver::time_impact(const body& a, const bod
   return impact_of_centres(e3ga::norm(motion.offset) + c.geometry.depth, motion, h);
 }
 
+contact_solver::shape_summary contact_solver::summarize(const body& b) {
+  shape_summary s;
+  s.central = central(b);
+  s.plane = is_plane(b);
+  s.sphere = s.central && b.shape()->kind() == shape_kind::sphere;
+  if (s.sphere) s.radius = b.shape()->radius();
+  if (b.shapes().size() == 1) s.rolling_radius = rolling_radius_of(b.shapes().front().shape);
+  return s;
+}
+
+// Where a body touches the other, from its centre: a central sphere's
+// surface point along the normal (towards -n for A, which the normal points
+// to, +n for B), a central point's centre; for every other shape the
+// contact point, midway between the two surfaces.
+vector contact_solver::contact_offset(const body& x, const shape_summary& shapes, const contact& c,
+                                      const vector& n, real side) {
+  if (shapes.central) return shapes.sphere ? (side * shapes.radius) * n : vector{};
+  return c.geometry.point - x.position();
+}
+
+// The smaller rolling radius of the contact's two shapes; 0 when neither rolls.
+real contact_solver::rolling_radius(const body& a, const body& b, const contact& c) const {
+  const real own_a = shape_summaries_[c.body_a].rolling_radius;
+  const real own_b = shape_summaries_[c.body_b].rolling_radius;
+  const real ra = own_a >= 0 ? own_a : rolling_radius_of(a.shapes()[c.shape_a].shape);
+  const real rb = own_b >= 0 ? own_b : rolling_radius_of(b.shapes()[c.shape_b].shape);
+  if (ra > 0 && rb > 0) return std::min(ra, rb);
+  return ra > 0 ? ra : rb;
+}
+
 // Which of a contact's optional terms it has: friction, rolling or spinning
 // (surface terms), and of them rolling or spinning (resistance terms).
 contact_solver::term_counts contact_solver::terms_of(const body& a, const body& b,
-                                                     const contact& c) {
+                                                     const contact& c) const {
   const material& m = c.material;
   const real radius = rolling_radius(a, b, c);
   const bool resists = (m.rolling_resistance > 0 || m.spinning_friction > 0) && radius > 0;
@@ -158,13 +167,15 @@ void contact_solver::build_constraint(const world_settings& settings, const body
   k.gap = -c.geometry.depth;
   k.bounces = k.restitution > 0 &&
               approach_speed(a, b, start_a, start_b, c) < -settings.restitution_threshold;
-  const bool round_a = central(a), round_b = central(b);
+  const shape_summary& shapes_a = shape_summaries_[c.body_a];
+  const shape_summary& shapes_b = shape_summaries_[c.body_b];
+  const bool round_a = shapes_a.central, round_b = shapes_b.central;
   const bool central_a = round_a || a.is_static();
   const bool central_b = round_b || b.is_static();
   vector n = c.geometry.normal;
   // (Only a sphere or point about its centre, or a plane, moves with its
   // body's centre as timed_impact assumes.)
-  if (k.bounces && (round_a || is_plane(a)) && (round_b || is_plane(b))) {
+  if (k.bounces && (round_a || shapes_a.plane) && (round_b || shapes_b.plane)) {
     // Bounced at the moment the surfaces meet, along the normal then.
     impact.timing = time_impact(a, b, c, start_a, start_b, h);
     if (impact.timing) n = impact.timing->normal;
@@ -172,8 +183,8 @@ void contact_solver::build_constraint(const world_settings& settings, const body
   // A bounce whose surfaces meet only in a later step waits for it.
   k.waits = k.bounces && k.gap > 0 && !impact.timing;
 
-  const vector r_a = contact_offset(a, round_a, c, n, -1);
-  const vector r_b = contact_offset(b, round_b, c, n, 1);
+  const vector r_a = contact_offset(a, shapes_a, c, n, -1);
+  const vector r_b = contact_offset(b, shapes_b, c, n, 1);
   // The denominator of eq. 3.20 / 4.7, with the inertias as linear maps:
   // 1/mA + 1/mB + n . (rA ⌋ I_A⁻¹(rA ∧ n)) + n . (rB ⌋ I_B⁻¹(rB ∧ n)).
   if (central_a && central_b) {
@@ -583,9 +594,20 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   // (A few hundred contacts per thread: fewer are not worth a barrier per colour.)
   sweep_threads_ = detail::threads_for(settings.threads, count, 256);
   if (sweep_threads_ > 1) detail::split_colours(bodies, contacts, sweep_threads_, colouring_);
+  // What the rows read of each body in a contact (row_body), and what the
+  // constraints read of its shapes, once.
+  row_bodies_.resize(bodies.size());
+  shape_summaries_.resize(bodies.size());
+  in_contact_.assign(bodies.size(), 0);
+  for (const contact& c : contacts) in_contact_[c.body_a] = in_contact_[c.body_b] = 1;
+  detail::parallel_for(settings.threads, bodies.size(), 2048, [&](std::size_t i) {
+    if (!in_contact_[i]) return;
+    row_bodies_[i] = detail::row_body::of(bodies[i]);
+    shape_summaries_[i] = summarize(bodies[i]);
+  });
   slot_.resize(count);
   terms_at_.resize(count);
-  // Each constraint's own terms (reading its shapes), then where they go.
+  // Each constraint's own terms, then where they go.
   detail::parallel_for(settings.threads, count, 512, [&](std::size_t s) {
     const std::size_t i = colouring_.order[s];
     slot_[i] = s;
@@ -598,13 +620,6 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
     total.surfaces += own.surfaces;
     total.resistances += own.resistances;
   }
-  // What the rows read of each body in a contact (row_body), once.
-  row_bodies_.resize(bodies.size());
-  in_contact_.assign(bodies.size(), 0);
-  for (const contact& c : contacts) in_contact_[c.body_a] = in_contact_[c.body_b] = 1;
-  detail::parallel_for(settings.threads, bodies.size(), 2048, [&](std::size_t i) {
-    if (in_contact_[i]) row_bodies_[i] = detail::row_body::of(bodies[i]);
-  });
   constraints_.resize(count);
   impacts_.resize(count);
   surfaces_.resize(total.surfaces);

@@ -123,12 +123,24 @@ class contact_solver {
     vector timed_impulse{};  // and was this impulse (N s); correct_positions moves the bodies by it
   };
 
+  // What building a constraint reads of a body's shapes (summarize).
+  struct shape_summary {
+    bool central = false;      // central(): a sphere or point about its centre
+    bool sphere = false;       // and it is a sphere
+    bool plane = false;        // is_plane()
+    real radius = 0;           // the central sphere's
+    real rolling_radius = -1;  // its one shape's rolling radius; < 0: several shapes
+  };
   // How many surface and resistance terms: a contact's own (0 or 1 each),
   // or where its own go in surfaces_ and resistances_.
   struct term_counts {
     std::size_t surfaces = 0, resistances = 0;
   };
-  static term_counts terms_of(const body& a, const body& b, const contact& c);
+  static shape_summary summarize(const body& b);
+  static vector contact_offset(const body& x, const shape_summary& shapes, const contact& c,
+                               const vector& n, real side);
+  real rolling_radius(const body& a, const body& b, const contact& c) const;
+  term_counts terms_of(const body& a, const body& b, const contact& c) const;
   void build_constraint(const world_settings& settings, const body& a, const body& b,
                         const contact& c, const body_velocity& start_a,
                         const body_velocity& start_b, real h, std::size_t slot,
@@ -210,8 +222,11 @@ class contact_solver {
   std::vector<int> contacts_per_body_;
   std::vector<solver_body> solver_bodies_;  // the velocities after the step's forces, as solved
   // Per body, for the bodies in contact (in_contact_): what building the
-  // rows reads (row_body).
+  // rows reads (row_body), and what building a constraint reads of its
+  // shapes (summarize): read once per body, not once per contact
+  // (in a pile each body has several, and its shapes lie elsewhere in memory).
   std::vector<detail::row_body> row_bodies_;
+  std::vector<shape_summary> shape_summaries_;
   std::vector<char> in_contact_;
   std::vector<solver_body> impact_bodies_;  // the start velocities plus the impact phase's impulses
   std::vector<char> impacted_;              // bodies the impact phase has changed
