@@ -97,10 +97,11 @@ std::array<vector, 2> tangents(const vector& n) {
 std::optional<timed_impact> contact_solver::time_impact(const body& a, const body& b,
                                                         const contact& c,
                                                         const body_velocity& start_a,
-                                                        const body_velocity& start_b, real h) {
+                                                        const body_velocity& start_b,
+                                                        real h) const {
   const relative_motion motion{a.position() - b.position(), start_a.linear - start_b.linear,
                                a.velocity_ - b.velocity_};
-  if (is_plane(a) || is_plane(b)) {
+  if (shape_summaries_[c.body_a].plane || shape_summaries_[c.body_b].plane) {
     return impact_across_plane(-c.geometry.depth, c.geometry.normal, motion, h);
   }
   return impact_of_centres(e3ga::norm(motion.offset) + c.geometry.depth, motion, h);

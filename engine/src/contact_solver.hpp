@@ -145,9 +145,9 @@ class contact_solver {
                         const contact& c, const body_velocity& start_a,
                         const body_velocity& start_b, real h, std::size_t slot,
                         const term_counts& at);
-  static std::optional<timed_impact> time_impact(const body& a, const body& b, const contact& c,
-                                                 const body_velocity& start_a,
-                                                 const body_velocity& start_b, real h);
+  std::optional<timed_impact> time_impact(const body& a, const body& b, const contact& c,
+                                          const body_velocity& start_a,
+                                          const body_velocity& start_b, real h) const;
   void set_relaxation(const world_settings& settings, const std::vector<body>& bodies);
   void resolve_impacts(const world_settings& settings, real h);
   bool impact(std::size_t index, real threshold, real h);
