@@ -170,11 +170,24 @@ void contact_solver::solve_group(const batch_group& group, const sweep_kind& kin
 }
 
 void contact_solver::solve_block(std::size_t block, const sweep_kind& kind, sweep_result& result) {
-  for (std::size_t g = block_groups_[block]; g < block_groups_[block + 1]; ++g) {
-    solve_group(groups_[g], kind, result);
+  solve_block_items(block, 0, block_items(block), kind, result);
+}
+
+std::size_t contact_solver::block_items(std::size_t block) const {
+  return block_groups_[block + 1] - block_groups_[block] + block_singles_[block + 1] -
+         block_singles_[block];
+}
+
+void contact_solver::solve_block_items(std::size_t block, std::size_t first, std::size_t end,
+                                       const sweep_kind& kind, sweep_result& result) {
+  // Its batches first, then its single runs.
+  const std::size_t groups = block_groups_[block + 1] - block_groups_[block];
+  for (std::size_t item = first; item < std::min(end, groups); ++item) {
+    solve_group(groups_[block_groups_[block] + item], kind, result);
   }
-  for (std::size_t s = block_singles_[block]; s < block_singles_[block + 1]; ++s) {
-    solve_runs(single_runs_[s], single_runs_[s] + 1, kind, result);
+  for (std::size_t item = std::max(first, groups); item < end; ++item) {
+    const std::size_t run = single_runs_[block_singles_[block] + item - groups];
+    solve_runs(run, run + 1, kind, result);
   }
 }
 

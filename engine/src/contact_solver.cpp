@@ -252,16 +252,32 @@ void contact_solver::build_constraint(const world_settings& settings, const body
 // into a geometric approach.
 void contact_solver::set_relaxation(const world_settings& settings, const std::vector<body>& bodies) {
   contacts_per_body_.assign(bodies.size(), 0);
-  // (colour_contacts read which bodies have mass: the dynamic ones.)
-  for (const constraint& k : constraints_) {
-    if (colouring_.moves[k.body_a]) ++contacts_per_body_[k.body_a];
-    if (colouring_.moves[k.body_b]) ++contacts_per_body_[k.body_b];
+  // (colour_contacts read which bodies have mass: the dynamic ones. The
+  // counts are the same whatever order the threads add them in.)
+  const int threads = detail::threads_for(settings.threads, constraints_.size(), 4096);
+  if (threads == 1) {
+    for (const constraint& k : constraints_) {
+      if (colouring_.moves[k.body_a]) ++contacts_per_body_[k.body_a];
+      if (colouring_.moves[k.body_b]) ++contacts_per_body_[k.body_b];
+    }
+  } else {
+    const auto count = static_cast<std::ptrdiff_t>(constraints_.size());
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (std::ptrdiff_t i = 0; i < count; ++i) {
+      const constraint& k = constraints_[static_cast<std::size_t>(i)];
+      for (const std::size_t x : {k.body_a, k.body_b}) {
+        if (!colouring_.moves[x]) continue;
+#pragma omp atomic
+        ++contacts_per_body_[x];
+      }
+    }
   }
-  for (constraint& k : constraints_) {
+  detail::parallel_for(settings.threads, constraints_.size(), 4096, [&](std::size_t i) {
+    constraint& k = constraints_[i];
     if (contacts_per_body_[k.body_a] > 1 || contacts_per_body_[k.body_b] > 1) {
       k.relaxation = settings.solver_relaxation;
     }
-  }
+  });
 }
 
 // One impact of one contact, if it has one now: a bouncing contact takes the
@@ -357,21 +373,44 @@ void contact_solver::resolve_impacts(const world_settings& settings, real h) {
 // vectors and bivectors and read in the new contact frame.
 void contact_solver::warm_start(const std::vector<body>& bodies,
                                 const std::vector<contact>& contacts,
-                                const std::vector<contact>& previous) {
+                                const std::vector<contact>& previous, int threads) {
   // Each old contact warm starts one new one at most: two new points near
   // one old one would both take its whole impulse.
   previous_used_.assign(previous.size(), 0);
-  std::size_t run = 0;
-  for (std::size_t i = 0; i < contacts.size(); ++i) {
-    const contact& c = contacts[i];
-    const auto key = std::make_pair(c.body_a, c.body_b);
-    while (run < previous.size() &&
-           std::make_pair(previous[run].body_a, previous[run].body_b) < key) {
-      ++run;
+  matches_.resize(contacts.size());
+  // The matches on the threads, for many contacts: the list is cut before
+  // the same pairs in both lists, and a contact only matches old ones of
+  // its own pair, so each share marks only its own old contacts used.
+  const int shares = detail::threads_for(threads, contacts.size(), 2048);
+  const auto key_of = [](const contact& c) { return std::make_pair(c.body_a, c.body_b); };
+#pragma omp parallel for num_threads(shares) schedule(static, 1) if (shares > 1)
+  for (int share = 0; share < shares; ++share) {
+    const auto cut = [&](int at) {
+      std::size_t i =
+          contacts.size() * static_cast<std::size_t>(at) / static_cast<std::size_t>(shares);
+      while (i > 0 && i < contacts.size() && key_of(contacts[i - 1]) == key_of(contacts[i])) --i;
+      return i;
+    };
+    const std::size_t first = cut(share), end = cut(share + 1);
+    if (first >= end) continue;
+    std::size_t run = static_cast<std::size_t>(
+        std::lower_bound(previous.begin(), previous.end(), key_of(contacts[first]),
+                         [&](const contact& c, const std::pair<std::size_t, std::size_t>& key) {
+                           return key_of(c) < key;
+                         }) -
+        previous.begin());
+    for (std::size_t i = first; i < end; ++i) {
+      const auto key = key_of(contacts[i]);
+      while (run < previous.size() && key_of(previous[run]) < key) ++run;
+      const std::size_t match = same_point(contacts[i], run, previous, previous_used_, bodies);
+      matches_[i] = match;
+      if (match != previous.size()) previous_used_[match] = 1;
     }
-    const std::size_t match = same_point(c, run, previous, previous_used_, bodies);
+  }
+  // The old impulses, in contact order: they add up on each body in it.
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const std::size_t match = matches_[i];
     if (match == previous.size()) continue;
-    previous_used_[match] = 1;
     const contact* old = &previous[match];
     constraint& k = constraints_[slot_[i]];
     if (!(k.normal.mass_inverse > 0) || k.waits) continue;
@@ -462,15 +501,41 @@ void contact_solver::solve_contacts(const world_settings& settings) {
   // sweeps: a thread may write the next sweep's while another still reads
   // this one's.
   thread_results_.assign(2 * threads, sweep_result{});
+  // A thread solves its own block of each colour (split_colours), a chunk
+  // of items at a time, and then helps with the others' blocks of the colour
+  // where they are not done: where one core runs slower than the other (a
+  // machine shared with other programs), the faster takes on more. The runs
+  // of a colour share no body the solver changes, so which thread solves
+  // which changes nothing in the result.
+  const std::size_t blocks = colours * static_cast<std::size_t>(threads);
+  if (claim_count_ < 2 * blocks) {
+    claims_ = std::make_unique<block_claim[]>(2 * blocks);
+    claim_count_ = 2 * blocks;
+  }
+  for (std::size_t c = 0; c < 2 * blocks; ++c) claims_[c].next.store(0, std::memory_order_relaxed);
+  constexpr std::size_t chunk = 32;  // items per claim: a few microseconds of work
 #pragma omp parallel num_threads(threads)
   {
     const int thread = omp_get_thread_num();
     for (int sweep = 0; sweep < sweeps; ++sweep) {
       const sweep_kind kind = kind_of(sweep);
+      block_claim* claims = &claims_[static_cast<std::size_t>(sweep % 2) * blocks];
+      block_claim* next_claims = &claims_[static_cast<std::size_t>((sweep + 1) % 2) * blocks];
       sweep_result mine;
       for (std::size_t colour = 0; colour < colours; ++colour) {
-        // This thread's block of the colour (split_colours).
-        solve_block(colour * threads + thread, kind, mine);
+        for (int k = 0; k < threads; ++k) {
+          const std::size_t block = colour * threads + (thread + k) % threads;
+          const std::size_t items = block_items(block);
+          std::atomic<std::size_t>& next = claims[block].next;
+          for (;;) {
+            const std::size_t first = next.fetch_add(chunk, std::memory_order_relaxed);
+            if (first >= items) break;
+            solve_block_items(block, first, std::min(first + chunk, items), kind, mine);
+          }
+        }
+        // This block's claims in the next sweep: every thread is done with
+        // them since the last sweep's barrier after this colour.
+        next_claims[colour * threads + thread].next.store(0, std::memory_order_relaxed);
         // The next colour's runs may change the bodies this one's changed.
 #pragma omp barrier
       }
@@ -643,7 +708,7 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   impacted_.assign(bodies.size(), 0);
 
   resolve_impacts(settings, h);
-  warm_start(bodies, contacts, previous);
+  warm_start(bodies, contacts, previous, settings.threads);
   pack_batches(settings);
   solve_contacts(settings);
   unpack_batches();

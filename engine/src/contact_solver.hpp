@@ -13,7 +13,9 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -152,7 +154,7 @@ class contact_solver {
   void resolve_impacts(const world_settings& settings, real h);
   bool impact(std::size_t index, real threshold, real h);
   void warm_start(const std::vector<body>& bodies, const std::vector<contact>& contacts,
-                  const std::vector<contact>& previous);
+                  const std::vector<contact>& previous, int threads);
   // Which contacts a sweep solves, and which of its sweeps are plain.
   struct sweep_kind {
     bool turning_only;     // past solver_iterations: only contacts that turn a body
@@ -172,6 +174,10 @@ class contact_solver {
   void add_batch_group(const std::array<std::size_t, detail::contact_lanes>& runs, int filled);
   bool batchable(std::size_t run, contact_batching batching) const;
   void solve_block(std::size_t block, const sweep_kind& kind, sweep_result& result);
+  // A block's items are its batch groups, then its single runs.
+  std::size_t block_items(std::size_t block) const;
+  void solve_block_items(std::size_t block, std::size_t first, std::size_t end,
+                         const sweep_kind& kind, sweep_result& result);
   void solve_group(const batch_group& group, const sweep_kind& kind, sweep_result& result);
   void scatter_bodies(const std::array<std::size_t, detail::contact_lanes>& index, bool angular,
                       const detail::body_pack& x);
@@ -231,9 +237,17 @@ class contact_solver {
   std::vector<solver_body> impact_bodies_;  // the start velocities plus the impact phase's impulses
   std::vector<char> impacted_;              // bodies the impact phase has changed
   std::vector<char> previous_used_;         // the last step's contacts already warm starting one
+  std::vector<std::size_t> matches_;        // per contact, the last step's it starts from (or none)
   std::vector<solver_body> pseudo_bodies_;  // correct_turning's pseudo velocities
   std::vector<real> pseudo_targets_, pseudo_accumulated_, pseudo_depths_;  // per contact
   std::vector<sweep_result> thread_results_;  // one per thread of the contact phase
+  // Per block, in two rows used by alternate sweeps, the next of its items
+  // not yet claimed by a thread (solve_contacts); one cache line each.
+  struct alignas(64) block_claim {
+    std::atomic<std::size_t> next{0};
+  };
+  std::unique_ptr<block_claim[]> claims_;
+  std::size_t claim_count_ = 0;
 
   // The sweeps' batches. Block b is what one thread solves of one colour:
   // colour b / T, thread b % T of the sweep's T threads (the whole colour

@@ -35,7 +35,7 @@ bool uniform_grid::find_pairs(const std::vector<body>& bodies, const std::vector
                               real lookahead, real margin, std::vector<index_pair>& pairs,
                               int threads) {
   pairs.clear();
-  collect(bodies, shaped, lookahead, margin);
+  collect(bodies, shaped, lookahead, margin, threads);
   plane_margin_ = margin / 2;
   if (!sort_into_cells()) return false;
   pair_cells(pairs, threads);
@@ -64,16 +64,18 @@ void uniform_grid::sort_pairs(std::size_t body_count, std::vector<index_pair>& p
 // Bounds of the shaped bodies, and the cell size: the widest bound that
 // is not "large" (wider than twice the median width).
 void uniform_grid::collect(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped,
-                           real lookahead, real margin) {
-  bounds_.clear();
+                           real lookahead, real margin, int threads) {
   planes_.clear();
   large_.clear();
-  widths_.clear();
-  for (std::size_t index : shaped) {
+  // Each body's bound on its own (on the threads, for many), a plane's
+  // marked by a radius < 0; then the planes taken out, the rest kept in order.
+  bounds_.resize(shaped.size());
+  parallel_for(threads, shaped.size(), 1024, [&](std::size_t at) {
+    const std::size_t index = shaped[at];
     const body& b = bodies[index];
     if (b.shape()->kind() == shape_kind::plane) {
-      planes_.push_back(index);
-      continue;
+      bounds_[at] = bound{vector{}, -1, index, motion::fixed};
+      return;
     }
     const vector& c = b.position();
     const real r = b.bounding_radius();
@@ -82,9 +84,19 @@ void uniform_grid::collect(const std::vector<body>& bodies, const std::vector<st
     const real sweep =
         lookahead * (e3ga::norm(b.velocity()) + e3ga::norm(b.angular_velocity()) * r) + margin / 2;
     const real reach = r + sweep + relative_margin * (1 + largest_magnitude(c) + r + sweep);
-    bounds_.push_back(bound{c, reach, index, motion_of(b)});
-    widths_.push_back(2 * reach);
+    bounds_[at] = bound{c, reach, index, motion_of(b)};
+  });
+  std::size_t kept = 0;
+  for (std::size_t at = 0; at < bounds_.size(); ++at) {
+    if (bounds_[at].radius < 0) {
+      planes_.push_back(bounds_[at].body);
+    } else {
+      bounds_[kept++] = bounds_[at];
+    }
   }
+  bounds_.resize(kept);
+  widths_.resize(kept);
+  for (std::size_t i = 0; i < kept; ++i) widths_[i] = 2 * bounds_[i].radius;
   if (bounds_.empty()) return;
   const auto middle = widths_.begin() + static_cast<std::ptrdiff_t>(widths_.size() / 2);
   std::nth_element(widths_.begin(), middle, widths_.end());

@@ -189,6 +189,10 @@ body_id world::create_body(const body_definition& definition) {
 
 body_id world::id_of(std::size_t index) const {
   if (index >= bodies_.size()) detail::reject("no body at index ", index);
+  return id_at(index);
+}
+
+body_id world::id_at(std::size_t index) const {
   const std::size_t slot = slot_of_index_[index];
   return slot | (static_cast<std::size_t>(generation_of_slot_[slot]) << slot_bits);
 }
@@ -349,18 +353,37 @@ void world::step(real h) {
   ++geometry_version_;
   merged_current_ = false;
   const auto start = clock::now();
+  // One pass over the bodies (on the threads, for many): the velocities
+  // before this step's forces (waking changes none), whether any body may
+  // meet another (else no pair at all), whether the user woke a sleeping
+  // one, and whether any sleeps.
+  start_velocities_.resize(bodies_.size());
+  bool any_moves = false, any_woken = false, any_asleep = false;
+  {
+    const int threads = detail::threads_for(settings_.threads, bodies_.size(), 1024);
+    const auto count = static_cast<std::ptrdiff_t>(bodies_.size());
+    // clang-format off
+#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1) \
+    reduction(|| : any_moves, any_woken, any_asleep)
+    // clang-format on
+    for (std::ptrdiff_t i = 0; i < count; ++i) {
+      const body& b = bodies_[static_cast<std::size_t>(i)];
+      start_velocities_[static_cast<std::size_t>(i)] = {b.velocity_, b.angular_velocity_};
+      const detail::motion m = detail::motion_of(b);
+      any_moves = any_moves || m == detail::motion::awake || m == detail::motion::mover;
+      any_woken = any_woken || (b.woken_ && b.island_ != 0);
+      any_asleep = any_asleep || b.asleep_;
+    }
+  }
   // The islands of the bodies the user woke since the last step wake whole.
   std::vector<std::uint64_t> islands;
-  bool any_moves = false;  // a body that may meet another: else no pair at all
-  for (const body& b : bodies_) {
-    if (b.woken_ && b.island_ != 0) islands.push_back(b.island_);
-    const detail::motion m = detail::motion_of(b);
-    any_moves = any_moves || m == detail::motion::awake || m == detail::motion::mover;
+  if (any_woken) {
+    for (const body& b : bodies_) {
+      if (b.woken_ && b.island_ != 0) islands.push_back(b.island_);
+    }
   }
   wake_islands(islands);
   any_moves = any_moves || !woken_bodies_.empty();
-  start_velocities_.clear();
-  for (const body& b : bodies_) start_velocities_.push_back({b.velocity_, b.angular_velocity_});
   integrate_velocities(h);
   const auto integrated = clock::now();
   // Pairs that may touch by the end of the step: contacts up to h |v| apart
@@ -372,6 +395,7 @@ void world::step(real h) {
   pairs_.clear();
   while (any_moves) {
     space_.candidate_pairs(bodies_, pairs_, h, settings_.contact_margin, settings_.threads);
+    if (!any_asleep) break;  // no island to wake
     islands.clear();
     for (const auto& [a, b] : pairs_) {
       const std::size_t sleeper = bodies_[a].asleep_ ? a : bodies_[b].asleep_ ? b : no_index;
@@ -406,7 +430,10 @@ void world::step(real h) {
   detail::find_events(previous_contacts_, contacts_, events_, settings_.threads);
   // Contacts name bodies by index; the events and sensor overlaps by id.
   for (std::vector<contact_event>* list : {&events_.began, &events_.persisted, &events_.ended}) {
-    for (contact_event& e : *list) e.body_a = id_of(e.body_a), e.body_b = id_of(e.body_b);
+    detail::parallel_for(settings_.threads, list->size(), 4096, [&](std::size_t i) {
+      contact_event& e = (*list)[i];
+      e.body_a = id_at(e.body_a), e.body_b = id_at(e.body_b);
+    });
   }
   for (sensor_overlap& o : sensor_overlaps_) o.sensor = id_of(o.sensor), o.other = id_of(o.other);
   const auto reported = clock::now();

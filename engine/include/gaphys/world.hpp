@@ -214,6 +214,7 @@ class world {
 
   world_settings settings_;
   std::size_t index_of(body_id id) const;  // or throws invalid_input
+  body_id id_at(std::size_t index) const;  // id_of for an index known to be live
 
   std::vector<body> bodies_;
   // Ids: a slot (the low 32 bits) and its generation (the high 32), which

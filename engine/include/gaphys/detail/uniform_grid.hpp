@@ -64,7 +64,7 @@ class uniform_grid {
   };
 
   void collect(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped,
-               real lookahead, real margin);
+               real lookahead, real margin, int threads);
   bool sort_into_cells();
   void sort_dense(std::size_t cells);
   void sort_hashed();
