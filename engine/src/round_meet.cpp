@@ -131,7 +131,9 @@ void batched_terms(const std::pair<const placed_shape*, const placed_shape*>* pa
                    std::size_t count, round_terms<real>* terms) {
   // The pairs of each kind, batch by batch: sphere-sphere, sphere-plane,
   // plane-sphere.
-  std::array<std::vector<std::size_t>, 3> of_kind;
+  // (Each thread's, kept from call to call.)
+  static thread_local std::array<std::vector<std::size_t>, 3> of_kind;
+  for (std::vector<std::size_t>& list : of_kind) list.clear();
   for (std::size_t k = 0; k < count; ++k) {
     const bool plane_a = pairs[k].first->kind == shape_kind::plane;
     const bool plane_b = pairs[k].second->kind == shape_kind::plane;

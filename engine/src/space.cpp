@@ -131,32 +131,52 @@ void space::find_contacts(const std::vector<body>& bodies, const std::vector<bod
                           const material_combine_rules& rules, real margin,
                           std::vector<sensor_overlap>* sensors, int threads) {
   place_shapes(bodies, pairs, threads);
-  contacts.clear();
   if (sensors) sensors->clear();
   // (A few hundred pairs per thread: a box pair takes about a microsecond.)
   const int shares = detail::threads_for(threads, pairs.size(), 256);
   if (shares == 1) {
+    contacts.clear();
     meet_pairs(bodies, pairs.data(), pairs.data() + pairs.size(), contacts, lookahead, rules,
                margin, sensors);
     return;
   }
-  // Each thread meets a contiguous share of the pairs into its own lists;
-  // joined in share order they are what one thread makes.
-  thread_contacts_.resize(shares);
-  thread_sensors_.resize(shares);
-#pragma omp parallel for num_threads(shares) schedule(static, 1)
-  for (int share = 0; share < shares; ++share) {
-    const body_pair* first = pairs.data() + pairs.size() * share / shares;
-    const body_pair* end = pairs.data() + pairs.size() * (share + 1) / shares;
-    thread_contacts_[share].clear();
-    thread_sensors_[share].clear();
-    meet_pairs(bodies, first, end, thread_contacts_[share], lookahead, rules, margin,
-               sensors ? &thread_sensors_[share] : nullptr);
+  // The pairs in contiguous shares, four per thread, taken by the threads as
+  // they finish (a core slowed by other programs takes fewer); each share is
+  // met into its own lists, and joined in share order they are what one
+  // thread makes.
+  const int share_count = 4 * shares;
+  thread_contacts_.resize(static_cast<std::size_t>(share_count));
+  thread_sensors_.resize(static_cast<std::size_t>(share_count));
+#pragma omp parallel for num_threads(shares) schedule(dynamic, 1)
+  for (int share = 0; share < share_count; ++share) {
+    const auto at = static_cast<std::size_t>(share);
+    const body_pair* first = pairs.data() + pairs.size() * at / share_count;
+    const body_pair* end = pairs.data() + pairs.size() * (at + 1) / share_count;
+    thread_contacts_[at].clear();
+    thread_sensors_[at].clear();
+    meet_pairs(bodies, first, end, thread_contacts_[at], lookahead, rules, margin,
+               sensors ? &thread_sensors_[at] : nullptr);
   }
-  for (int share = 0; share < shares; ++share) {
-    contacts.insert(contacts.end(), thread_contacts_[share].begin(), thread_contacts_[share].end());
-    if (sensors) {
-      sensors->insert(sensors->end(), thread_sensors_[share].begin(), thread_sensors_[share].end());
+  // The join, each share copied to its place on the threads. (The list
+  // comes from two steps ago, about as long: resized, not cleared, it
+  // constructs only the contacts it lacks; and given room to grow, it is
+  // not allocated anew in every step that has more contacts.)
+  share_starts_.assign(thread_contacts_.size() + 1, 0);
+  for (std::size_t at = 0; at < thread_contacts_.size(); ++at) {
+    share_starts_[at + 1] = share_starts_[at] + thread_contacts_[at].size();
+  }
+  const std::size_t total = share_starts_.back();
+  if (contacts.capacity() < total) contacts.reserve(total + total / 4);
+  contacts.resize(total);
+#pragma omp parallel for num_threads(shares) schedule(dynamic, 1)
+  for (int share = 0; share < share_count; ++share) {
+    const auto at = static_cast<std::size_t>(share);
+    std::copy(thread_contacts_[at].begin(), thread_contacts_[at].end(),
+              contacts.begin() + static_cast<std::ptrdiff_t>(share_starts_[at]));
+  }
+  if (sensors) {
+    for (const std::vector<sensor_overlap>& part : thread_sensors_) {
+      sensors->insert(sensors->end(), part.begin(), part.end());
     }
   }
 }
@@ -195,8 +215,19 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
   // The meets of single spheres and planes first, their algebra on batches
   // of pairs; then every pair in order, those from their terms.
   constexpr std::size_t none = ~std::size_t{0};
-  std::vector<std::pair<const placed_shape*, const placed_shape*>> round_pairs;
-  std::vector<std::size_t> round_slot(static_cast<std::size_t>(end - first), none);
+  // (Each thread's lists, kept from call to call: allocated anew, they cost
+  // a page fault every few pairs.)
+  struct scratch_lists {
+    std::vector<std::pair<const placed_shape*, const placed_shape*>> round_pairs;
+    std::vector<std::size_t> round_slot;
+    std::vector<detail::round_terms<real>> terms;
+  };
+  static thread_local scratch_lists scratch;
+  std::vector<std::pair<const placed_shape*, const placed_shape*>>& round_pairs =
+      scratch.round_pairs;
+  std::vector<std::size_t>& round_slot = scratch.round_slot;
+  round_pairs.clear();
+  round_slot.assign(static_cast<std::size_t>(end - first), none);
   for (const body_pair* pair = first; pair != end; ++pair) {
     const auto [a, b] = *pair;
     const placed_shape* shape_a = placed_.data() + first_shape_[a];
@@ -205,7 +236,8 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
     round_slot[static_cast<std::size_t>(pair - first)] = round_pairs.size();
     round_pairs.emplace_back(shape_a, shape_b);
   }
-  std::vector<detail::round_terms<real>> terms(round_pairs.size());
+  std::vector<detail::round_terms<real>>& terms = scratch.terms;
+  terms.resize(round_pairs.size());
   detail::batched_terms(round_pairs.data(), round_pairs.size(), terms.data());
 
   contact_manifold manifold;

@@ -218,12 +218,16 @@ void uniform_grid::pair_cells(std::vector<index_pair>& pairs, int threads) {
     pair_cell_range(0, entries_.size(), pairs);
     return;
   }
-  thread_pairs_.resize(shares);
-#pragma omp parallel for num_threads(shares) schedule(static, 1)
-  for (int share = 0; share < shares; ++share) {
-    thread_pairs_[share].clear();
-    pair_cell_range(entries_.size() * share / shares, entries_.size() * (share + 1) / shares,
-                    thread_pairs_[share]);
+  // Four shares per thread, taken as the threads finish (a core slowed by
+  // other programs takes fewer).
+  const int share_count = 4 * shares;
+  thread_pairs_.resize(static_cast<std::size_t>(share_count));
+#pragma omp parallel for num_threads(shares) schedule(dynamic, 1)
+  for (int share = 0; share < share_count; ++share) {
+    const auto at = static_cast<std::size_t>(share);
+    thread_pairs_[at].clear();
+    pair_cell_range(entries_.size() * at / share_count, entries_.size() * (at + 1) / share_count,
+                    thread_pairs_[at]);
   }
   for (const std::vector<index_pair>& found : thread_pairs_) {
     pairs.insert(pairs.end(), found.begin(), found.end());

@@ -83,9 +83,10 @@ class space {
   std::vector<placed_shape> placed_;  // reused between steps
   std::vector<std::size_t> first_shape_;
   std::vector<unsigned char> in_pairs_;  // whether each body is in some pair
-  // Each thread's share of the contacts and sensor overlaps, in pair order.
+  // Each share's contacts and sensor overlaps (find_contacts), in pair order.
   std::vector<std::vector<contact>> thread_contacts_;
   std::vector<std::vector<sensor_overlap>> thread_sensors_;
+  std::vector<std::size_t> share_starts_;  // where each share's contacts go in the list
 };
 
 }  // namespace gaphys
