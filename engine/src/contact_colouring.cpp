@@ -2,42 +2,48 @@
 
 #include <algorithm>
 
+#include "thread_count.hpp"
+
 namespace gaphys::detail {
 
 void colour_contacts(const std::vector<body>& bodies, const std::vector<contact>& contacts,
-                     contact_colouring& out) {
+                     contact_colouring& out, int threads) {
   constexpr int sequential = contact_colouring::most_colours;
+  // Each contact's bodies, and which bodies have mass, read in one pass
+  // each on the threads (contacts and bodies are large objects, and the
+  // greedy colouring below cannot be shared out).
+  out.pairs.resize(contacts.size());
+  parallel_for(threads, contacts.size(), 4096, [&](std::size_t i) {
+    out.pairs[i] = {contacts[i].body_a, contacts[i].body_b};
+  });
+  out.moves.resize(bodies.size());
+  parallel_for(threads, bodies.size(), 4096,
+               [&](std::size_t i) { out.moves[i] = bodies[i].inverse_mass() > 0; });
   // The runs, in contact order.
   std::vector<std::size_t>& begins = out.run_begins;
   begins.clear();
   for (std::size_t i = 0; i < contacts.size(); ++i) {
-    const bool same_pair = i > 0 && contacts[i].body_a == contacts[i - 1].body_a &&
-                           contacts[i].body_b == contacts[i - 1].body_b;
-    if (!same_pair) begins.push_back(i);
+    if (i == 0 || out.pairs[i] != out.pairs[i - 1]) begins.push_back(i);
   }
   const std::size_t runs = begins.size();
   begins.push_back(contacts.size());
 
-  // Which bodies have mass, read in one pass (a body is a large object;
-  // the contacts visit them in no order).
-  out.moves.resize(bodies.size());
-  for (std::size_t i = 0; i < bodies.size(); ++i) out.moves[i] = bodies[i].inverse_mass() > 0;
   // Greedy colours: the lowest one neither dynamic body has yet.
   out.body_colours.assign(bodies.size(), 0);
   out.run_colours.resize(runs);
   out.colour_counts.assign(sequential + 1, 0);
   for (std::size_t r = 0; r < runs; ++r) {
-    const contact& c = contacts[begins[r]];
+    const auto [body_a, body_b] = out.pairs[begins[r]];
     // The bodies the solver changes (impulse_row::apply): those with mass.
-    const bool moves_a = out.moves[c.body_a], moves_b = out.moves[c.body_b];
-    const std::uint32_t taken = (moves_a ? out.body_colours[c.body_a] : 0) |
-                                (moves_b ? out.body_colours[c.body_b] : 0);
+    const bool moves_a = out.moves[body_a], moves_b = out.moves[body_b];
+    const std::uint32_t taken =
+        (moves_a ? out.body_colours[body_a] : 0) | (moves_b ? out.body_colours[body_b] : 0);
     int colour = sequential;
     if (taken != ~std::uint32_t{0}) {
       colour = __builtin_ctz(~taken);  // the lowest free colour
       const std::uint32_t bit = std::uint32_t{1} << colour;
-      if (moves_a) out.body_colours[c.body_a] |= bit;
-      if (moves_b) out.body_colours[c.body_b] |= bit;
+      if (moves_a) out.body_colours[body_a] |= bit;
+      if (moves_b) out.body_colours[body_b] |= bit;
     }
     out.run_colours[r] = colour;
     ++out.colour_counts[colour];
@@ -72,16 +78,16 @@ void colour_contacts(const std::vector<body>& bodies, const std::vector<contact>
   out.run_starts.push_back(out.order.size());
 }
 
-void split_colours(const std::vector<body>& bodies, const std::vector<contact>& contacts,
-                   int threads, contact_colouring& out) {
+void split_colours(const std::vector<body>& bodies, int threads, contact_colouring& out) {
   const std::size_t coloured_runs = out.colour_starts.back();
-  // Each run's moving body's position (colour_contacts left out.moves).
-  out.positions.resize(bodies.size());
-  for (std::size_t i = 0; i < bodies.size(); ++i) out.positions[i] = bodies[i].position();
-  const auto position_of = [&](std::size_t run) {
-    const contact& c = contacts[out.order[out.run_starts[run]]];
-    return out.positions[out.moves[c.body_a] ? c.body_a : c.body_b];
-  };
+  // Each run's moving body's position (colour_contacts left out.moves), on
+  // the threads: a look-up in the contacts and one in the bodies per run.
+  out.positions.resize(coloured_runs);
+  parallel_for(threads, coloured_runs, 2048, [&](std::size_t run) {
+    const auto [body_a, body_b] = out.pairs[out.order[out.run_starts[run]]];
+    out.positions[run] = bodies[out.moves[body_a] ? body_a : body_b].position();
+  });
+  const auto position_of = [&](std::size_t run) { return out.positions[run]; };
   // The axis along which the runs' bodies spread most.
   vector low = coloured_runs > 0 ? position_of(0) : vector{};
   vector high = low;

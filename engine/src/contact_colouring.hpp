@@ -19,6 +19,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "gaphys/body.hpp"
@@ -51,8 +52,9 @@ struct contact_colouring {
   static constexpr std::size_t fewest_runs = 32;
 
   // Scratch, kept to reuse its memory from step to step.
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;  // per contact: its bodies
   std::vector<char> moves;                   // per body: it has mass
-  std::vector<vector> positions;             // per body, for split_colours
+  std::vector<vector> positions;             // per coloured run, its moving body's (split_colours)
   std::vector<std::uint32_t> body_colours;  // bit c: the body has a run of colour c
   std::vector<int> run_colours;             // per run in contact order
   std::vector<std::size_t> run_begins;      // per run in contact order, and the end
@@ -62,8 +64,10 @@ struct contact_colouring {
 };
 
 // `contacts` sorted by body pair, as the narrow phase makes them.
+// `threads` (world_settings::threads) reads the contacts and bodies; the
+// colours are the same with any number.
 void colour_contacts(const std::vector<body>& bodies, const std::vector<contact>& contacts,
-                     contact_colouring& out);
+                     contact_colouring& out, int threads);
 
 // Reorders the runs within each colour (which changes no result) so that
 // each of `threads` threads solves a contiguous block of them: the runs
@@ -76,7 +80,6 @@ void colour_contacts(const std::vector<body>& bodies, const std::vector<contact>
 // list instead, bodies, whose indices say nothing of where they are,
 // changed cores at every colour: 10,000 spheres stepped slower on two
 // threads than on one.)
-void split_colours(const std::vector<body>& bodies, const std::vector<contact>& contacts,
-                   int threads, contact_colouring& colouring);
+void split_colours(const std::vector<body>& bodies, int threads, contact_colouring& colouring);
 
 }  // namespace gaphys::detail

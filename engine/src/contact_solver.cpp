@@ -655,11 +655,11 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   // The constraints in the sweeps' order, so that each sweep reads them
   // front to back; where each one's optional terms go, then the terms (on
   // several threads for many contacts: a box's take about 0.2 µs).
-  detail::colour_contacts(bodies, contacts, colouring_);
+  detail::colour_contacts(bodies, contacts, colouring_, settings.threads);
   const std::size_t count = contacts.size();
   // (A few hundred contacts per thread: fewer are not worth a barrier per colour.)
   sweep_threads_ = detail::threads_for(settings.threads, count, 256);
-  if (sweep_threads_ > 1) detail::split_colours(bodies, contacts, sweep_threads_, colouring_);
+  if (sweep_threads_ > 1) detail::split_colours(bodies, sweep_threads_, colouring_);
   // What the rows read of each body in a contact (row_body), and what the
   // constraints read of its shapes, once.
   row_bodies_.resize(bodies.size());
