@@ -352,13 +352,26 @@ bool contact_solver::impact(std::size_t index, real threshold, real h) {
 // the contacts are ordered; sweeps that meet the row against its order
 // need one sweep per ball.
 void contact_solver::resolve_impacts(const world_settings& settings, real h) {
+  // What impact() first asks of each contact, in contact order and packed
+  // (the constraints lie in the sweeps' order, a cache line each): whether
+  // it can bounce at all, and whether it bounces from the start velocities.
+  impact_filters_.resize(constraints_.size());
+  detail::parallel_for(settings.threads, constraints_.size(), 4096, [&](std::size_t i) {
+    const constraint& k = constraints_[slot_[i]];
+    impact_filters_[i] = {k.body_a, k.body_b, k.restitution > 0 && k.normal.mass_inverse > 0,
+                          k.bounces && !k.waits};
+  });
   // Impacts start only at contacts that bounce from the start velocities.
-  const bool any_bounce = std::any_of(constraints_.begin(), constraints_.end(),
-                                      [](const constraint& k) { return k.bounces && !k.waits; });
+  const bool any_bounce = std::any_of(impact_filters_.begin(), impact_filters_.end(),
+                                      [](const impact_filter& f) { return f.starts; });
   if (!any_bounce) return;
   for (int sweep = 0; sweep < settings.impact_iterations; ++sweep) {
     bool any = false;
     for (std::size_t i = 0; i < constraints_.size(); ++i) {
+      // (impact() would return false: no restitution, or neither body struck
+      // yet and the contact does not bounce by itself.)
+      const impact_filter& f = impact_filters_[i];
+      if (!f.can_bounce || (!f.starts && !impacted_[f.body_a] && !impacted_[f.body_b])) continue;
       any = impact(slot_[i], settings.restitution_threshold, h) || any;
     }
     if (!any) break;
@@ -723,36 +736,59 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
 
 void contact_solver::correct_positions(const world_settings& settings, std::vector<body>& bodies,
                                        const std::vector<contact>& contacts, real h) {
+  // Each contact's correction on the threads (reading only velocities,
+  // which nothing here changes); then the bodies moved in contact order, as
+  // the shifts add up on each body in that order.
+  constexpr real timed = -1, turning = -2;  // corrections that are not a push
+  corrections_.resize(contacts.size());
+  detail::parallel_for(settings.threads, contacts.size(), 4096, [&](std::size_t i) {
+    const contact& c = contacts[i];
+    const body& a = bodies[c.body_a];
+    const body& b = bodies[c.body_b];
+    real& push = corrections_[i];
+    push = 0;
+    if (!(a.inverse_mass_ + b.inverse_mass_ > 0)) return;
+    if (impacts_[slot_[i]].timed) {
+      push = timed;
+      return;
+    }
+    // A speculative contact had a gap when the step began; if its bodies
+    // overlap now (one left to bounce in a later step), the next step meets
+    // them for real.
+    if (c.geometry.depth < 0) return;
+    if (constraints_[slot_[i]].normal.turns) {
+      push = turning;  // corrected below, turning the bodies too
+      return;
+    }
+    // The depth now, to first order: the positions moved by h v since the
+    // narrow phase measured it.
+    const real depth =
+        c.geometry.depth - h * e3ga::scp(a.velocity_ - b.velocity_, c.geometry.normal);
+    const real wanted = settings.position_correction * (depth - settings.linear_slop);
+    push = wanted > 0 ? wanted : 0;
+  });
   bool any_turning = false;
   for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const real push = corrections_[i];
+    if (push == 0) continue;
+    if (push == turning) {
+      any_turning = true;
+      continue;
+    }
     const contact& c = contacts[i];
     body& a = bodies[c.body_a];
     body& b = bodies[c.body_b];
-    const real inverse_masses = a.inverse_mass_ + b.inverse_mass_;
-    if (!(inverse_masses > 0)) continue;
-    const impact_terms& record = impacts_[slot_[i]];
-    if (record.timed) {
+    if (push == timed) {
       // The impulse J came at impact_time into the step, not at its start:
       // each body moved with its old velocity until then, t ΔV less far.
+      const impact_terms& record = impacts_[slot_[i]];
       const vector shift = record.timing->time * record.timed_impulse;
       a.position_ = a.position_ - a.inverse_mass_ * shift;
       b.position_ = b.position_ + b.inverse_mass_ * shift;
       continue;
     }
-    // A speculative contact had a gap when the step began; if its bodies
-    // overlap now (one left to bounce in a later step), the next step meets
-    // them for real.
-    if (c.geometry.depth < 0) continue;
-    if (constraints_[slot_[i]].normal.turns) {
-      any_turning = true;  // corrected below, turning the bodies too
-      continue;
-    }
-    // The depth now, to first order: the positions moved by h v since the
-    // narrow phase measured it.
+    const real inverse_masses = a.inverse_mass_ + b.inverse_mass_;
     const vector& n = c.geometry.normal;
-    const real depth = c.geometry.depth - h * e3ga::scp(a.velocity_ - b.velocity_, n);
-    const real push = settings.position_correction * (depth - settings.linear_slop);
-    if (!(push > 0)) continue;
     a.position_ = a.position_ + (push * a.inverse_mass_ / inverse_masses) * n;
     b.position_ = b.position_ - (push * b.inverse_mass_ / inverse_masses) * n;
   }

@@ -222,6 +222,13 @@ class contact_solver {
   std::vector<term_counts> terms_at_;  // per constraint: where its optional terms go
   std::vector<constraint> constraints_;
   std::vector<impact_terms> impacts_;        // one per constraint
+  // Per contact (in contact order): resolve_impacts' first test.
+  struct impact_filter {
+    std::size_t body_a, body_b;
+    bool can_bounce;  // restitution, and a normal impulse that moves something
+    bool starts;      // bounces from the start velocities (and meets within the step)
+  };
+  std::vector<impact_filter> impact_filters_;
   std::vector<surface_terms> surfaces_;      // for the constraints that have them
   std::vector<surface_frame> frames_;        // one per surface
   std::vector<resistance_terms> resistances_;  // for the surfaces that have them
@@ -238,6 +245,7 @@ class contact_solver {
   std::vector<char> impacted_;              // bodies the impact phase has changed
   std::vector<char> previous_used_;         // the last step's contacts already warm starting one
   std::vector<std::size_t> matches_;        // per contact, the last step's it starts from (or none)
+  std::vector<real> corrections_;           // per contact: correct_positions' push, or its kind
   std::vector<solver_body> pseudo_bodies_;  // correct_turning's pseudo velocities
   std::vector<real> pseudo_targets_, pseudo_accumulated_, pseudo_depths_;  // per contact
   std::vector<sweep_result> thread_results_;  // one per thread of the contact phase
