@@ -1,0 +1,91 @@
+// One world stepped on 1 and on T threads in turn (docs/benchmarks.md,
+// "Threads"): M6's N spheres falling into the open box
+// (scenes::falling_spheres_in_box) and B5's boxes (falling_boxes_in_box),
+// sleeping off as in the comparison.
+//
+// Why in turn: on a machine shared with other programs, a run on one thread
+// and a later run on two see different machines (here the same one-thread
+// step took 23 to 39 ms from one minute to the next), and their ratio says
+// more about the neighbours than about the threads. A step computes the same
+// bits on any number of threads, so one world can alternate: blocks of
+// `block` steps on one thread, then on T, and so on, timing each step but
+// the first of each block (whose data the other thread count's caches
+// still hold). Both counts then share the machine's good and bad moments.
+//
+// Counters: the median ms per step on one thread and on T, and their
+// ratio (T / 1). One benchmark iteration is the whole alternating run.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <vector>
+
+#include "bench_common.hpp"
+#include "gaphys/scenes.hpp"
+
+namespace {
+
+constexpr gaphys::real h = gaphys::scenes::time_step;
+constexpr int warm_up_steps = 120;  // M6's: the spheres have landed
+constexpr int block = 4;            // steps per thread count in a row
+
+double median_ms(std::vector<double> seconds) {
+  std::sort(seconds.begin(), seconds.end());
+  return 1e3 * seconds[seconds.size() / 2];
+}
+
+void alternate(benchmark::State& state, bool boxes) {
+  const int count = static_cast<int>(state.range(0));
+  const int threads = static_cast<int>(state.range(1));
+  const int blocks = static_cast<int>(state.range(2));
+  std::vector<double> one, many;
+  for (auto _ : state) {
+    gaphys::world w = boxes ? gaphys::scenes::falling_boxes_in_box(count)
+                            : gaphys::scenes::falling_spheres_in_box(count);
+    w.set_sleeping(false);
+    w.set_threads(1);
+    for (int i = 0; i < warm_up_steps; ++i) w.step(h);
+    one.clear(), many.clear();
+    for (int b = 0; b < 2 * blocks; ++b) {
+      // 1, T, T, 1, 1, T, ...: each count follows the other as often.
+      const bool on_one = (b % 4 == 0) || (b % 4 == 3);
+      w.set_threads(on_one ? 1 : threads);
+      for (int i = 0; i < block; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        w.step(h);
+        const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
+        if (i > 0) (on_one ? one : many).push_back(took.count());
+      }
+    }
+  }
+  const double one_ms = median_ms(one), many_ms = median_ms(many);
+  state.counters["one_thread_ms"] = one_ms;
+  state.counters["threads_ms"] = many_ms;
+  state.counters["ratio"] = many_ms / one_ms;
+}
+
+void spheres(benchmark::State& state) { alternate(state, false); }
+void boxes(benchmark::State& state) { alternate(state, true); }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return gaphys_bench::run_main(argc, argv, [] {
+    // {bodies, threads, blocks per thread count}
+    for (const auto& args : std::vector<std::vector<std::int64_t>>{{1000, 2, 60}, {10000, 2, 20}}) {
+      benchmark::RegisterBenchmark("threads/falling_spheres", spheres)
+          ->Args(args)
+          ->ArgNames({"", "threads", "blocks"})
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+    }
+    benchmark::RegisterBenchmark("threads/falling_boxes", boxes)
+        ->Args({1000, 2, 30})
+        ->ArgNames({"", "threads", "blocks"})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+  });
+}
