@@ -355,11 +355,12 @@ void contact_solver::resolve_impacts(const world_settings& settings, real h) {
   // What impact() first asks of each contact, in contact order and packed
   // (the constraints lie in the sweeps' order, a cache line each): whether
   // it can bounce at all, and whether it bounces from the start velocities.
+  // (Read in the constraints' order, written to each one's contact.)
   impact_filters_.resize(constraints_.size());
-  detail::parallel_for(settings.threads, constraints_.size(), 4096, [&](std::size_t i) {
-    const constraint& k = constraints_[slot_[i]];
-    impact_filters_[i] = {k.body_a, k.body_b, k.restitution > 0 && k.normal.mass_inverse > 0,
-                          k.bounces && !k.waits};
+  detail::parallel_for(settings.threads, constraints_.size(), 4096, [&](std::size_t s) {
+    const constraint& k = constraints_[s];
+    impact_filters_[colouring_.order[s]] = {
+        k.body_a, k.body_b, k.restitution > 0 && k.normal.mass_inverse > 0, k.bounces && !k.waits};
   });
   // Impacts start only at contacts that bounce from the start velocities.
   const bool any_bounce = std::any_of(impact_filters_.begin(), impact_filters_.end(),
