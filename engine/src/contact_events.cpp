@@ -4,15 +4,12 @@
 #include <cstddef>
 #include <utility>
 
+#include "pair_cuts.hpp"
 #include "thread_count.hpp"
 
 namespace gaphys::detail {
 
 namespace {
-
-using pair_key = std::pair<std::size_t, std::size_t>;
-
-pair_key key_of(const contact& c) { return {c.body_a, c.body_b}; }
 
 // Whether the run of contacts from `i` sharing its pair touches; advances i
 // past the run.
@@ -69,24 +66,9 @@ void find_events(const std::vector<contact>& previous, const std::vector<contact
     merge_events(previous, 0, previous.size(), current, 0, current.size(), events);
     return;
   }
-  // Cut both lists before the same pairs: at even places of the current
-  // list, moved to the start of their pair, and where that pair would
-  // stand in the previous one.
-  std::vector<std::size_t> cuts_now(shares + 1, current.size()), cuts_old(shares + 1, previous.size());
-  cuts_now[0] = cuts_old[0] = 0;
-  for (int s = 1; s < shares; ++s) {
-    std::size_t at = current.size() * s / shares;
-    while (at > 0 && at < current.size() && key_of(current[at - 1]) == key_of(current[at])) --at;
-    at = std::max(at, cuts_now[s - 1]);
-    cuts_now[s] = at;
-    const pair_key cut_key = at < current.size() ? key_of(current[at])
-                                                 : pair_key{~std::size_t{0}, ~std::size_t{0}};
-    cuts_old[s] = static_cast<std::size_t>(
-        std::lower_bound(previous.begin(), previous.end(), cut_key,
-                         [](const contact& c, const pair_key& k) { return key_of(c) < k; }) -
-        previous.begin());
-    cuts_old[s] = std::max(cuts_old[s], cuts_old[s - 1]);
-  }
+  // Cut both lists before the same pairs (pair_cuts.hpp).
+  pair_cuts cuts;
+  cut_at_pairs(previous, current, shares, cuts);
   // The shares' lists, kept from call to call by the calling thread (grown
   // anew each step, they cost a step of 10,000 balls a page fault every few
   // events); referred to by `parts`, as inside the parallel region the
@@ -98,7 +80,7 @@ void find_events(const std::vector<contact>& previous, const std::vector<contact
   for (int s = 0; s < shares; ++s) {
     contact_events& part = parts[static_cast<std::size_t>(s)];
     part.began.clear(), part.persisted.clear(), part.ended.clear();
-    merge_events(previous, cuts_old[s], cuts_old[s + 1], current, cuts_now[s], cuts_now[s + 1],
+    merge_events(previous, cuts.old[s], cuts.old[s + 1], current, cuts.now[s], cuts.now[s + 1],
                  part);
   }
   for (const contact_events& part : parts) {

@@ -359,8 +359,8 @@ void contact_solver::resolve_impacts(const world_settings& settings, real h) {
   impact_filters_.resize(constraints_.size());
   detail::parallel_for(settings.threads, constraints_.size(), 4096, [&](std::size_t s) {
     const constraint& k = constraints_[s];
-    impact_filters_[colouring_.order[s]] = {
-        k.body_a, k.body_b, k.restitution > 0 && k.normal.mass_inverse > 0, k.bounces && !k.waits};
+    impact_filters_[colouring_.order[s]] = {k.restitution > 0 && k.normal.mass_inverse > 0,
+                                            k.bounces && !k.waits};
   });
   // Impacts start only at contacts that bounce from the start velocities.
   const bool any_bounce = std::any_of(impact_filters_.begin(), impact_filters_.end(),
@@ -372,7 +372,9 @@ void contact_solver::resolve_impacts(const world_settings& settings, real h) {
       // (impact() would return false: no restitution, or neither body struck
       // yet and the contact does not bounce by itself.)
       const impact_filter& f = impact_filters_[i];
-      if (!f.can_bounce || (!f.starts && !impacted_[f.body_a] && !impacted_[f.body_b])) continue;
+      if (!f.can_bounce) continue;
+      const auto [body_a, body_b] = colouring_.pairs[i];
+      if (!f.starts && !impacted_[body_a] && !impacted_[body_b]) continue;
       any = impact(slot_[i], settings.restitution_threshold, h) || any;
     }
     if (!any) break;
@@ -392,30 +394,17 @@ void contact_solver::warm_start(const std::vector<body>& bodies,
   // one old one would both take its whole impulse.
   previous_used_.assign(previous.size(), 0);
   matches_.resize(contacts.size());
-  // The matches on the threads, for many contacts: the list is cut before
-  // the same pairs in both lists, and a contact only matches old ones of
+  // The matches on the threads, for many contacts: both lists cut before
+  // the same pairs (pair_cuts.hpp), and a contact only matches old ones of
   // its own pair, so each share marks only its own old contacts used.
   const int shares = detail::threads_for(threads, contacts.size(), 2048);
-  const auto key_of = [](const contact& c) { return std::make_pair(c.body_a, c.body_b); };
+  detail::cut_at_pairs(previous, contacts, shares, warm_cuts_);
 #pragma omp parallel for num_threads(shares) schedule(static, 1) if (shares > 1)
   for (int share = 0; share < shares; ++share) {
-    const auto cut = [&](int at) {
-      std::size_t i =
-          contacts.size() * static_cast<std::size_t>(at) / static_cast<std::size_t>(shares);
-      while (i > 0 && i < contacts.size() && key_of(contacts[i - 1]) == key_of(contacts[i])) --i;
-      return i;
-    };
-    const std::size_t first = cut(share), end = cut(share + 1);
-    if (first >= end) continue;
-    std::size_t run = static_cast<std::size_t>(
-        std::lower_bound(previous.begin(), previous.end(), key_of(contacts[first]),
-                         [&](const contact& c, const std::pair<std::size_t, std::size_t>& key) {
-                           return key_of(c) < key;
-                         }) -
-        previous.begin());
-    for (std::size_t i = first; i < end; ++i) {
-      const auto key = key_of(contacts[i]);
-      while (run < previous.size() && key_of(previous[run]) < key) ++run;
+    std::size_t run = warm_cuts_.old[share];
+    for (std::size_t i = warm_cuts_.now[share]; i < warm_cuts_.now[share + 1]; ++i) {
+      const detail::pair_key key = detail::key_of(contacts[i]);
+      while (run < previous.size() && detail::key_of(previous[run]) < key) ++run;
       const std::size_t match = same_point(contacts[i], run, previous, previous_used_, bodies);
       matches_[i] = match;
       if (match != previous.size()) previous_used_[match] = 1;

@@ -25,6 +25,7 @@
 #include "gaphys/contact.hpp"
 #include "gaphys/world.hpp"
 #include "impulse_row.hpp"
+#include "pair_cuts.hpp"
 #include "timed_impact.hpp"
 
 namespace gaphys {
@@ -222,9 +223,9 @@ class contact_solver {
   std::vector<term_counts> terms_at_;  // per constraint: where its optional terms go
   std::vector<constraint> constraints_;
   std::vector<impact_terms> impacts_;        // one per constraint
-  // Per contact (in contact order): resolve_impacts' first test.
+  // Per contact (in contact order): resolve_impacts' first test (its bodies
+  // are colouring_.pairs').
   struct impact_filter {
-    std::size_t body_a, body_b;
     bool can_bounce;  // restitution, and a normal impulse that moves something
     bool starts;      // bounces from the start velocities (and meets within the step)
   };
@@ -245,6 +246,7 @@ class contact_solver {
   std::vector<char> impacted_;              // bodies the impact phase has changed
   std::vector<char> previous_used_;         // the last step's contacts already warm starting one
   std::vector<std::size_t> matches_;        // per contact, the last step's it starts from (or none)
+  detail::pair_cuts warm_cuts_;             // the warm start's shares of both lists
   std::vector<real> corrections_;           // per contact: correct_positions' push, or its kind
   std::vector<solver_body> pseudo_bodies_;  // correct_turning's pseudo velocities
   std::vector<real> pseudo_targets_, pseudo_accumulated_, pseudo_depths_;  // per contact
