@@ -142,8 +142,8 @@ real contact_solver::rolling_radius(const body& a, const body& b, const contact&
 contact_solver::term_counts contact_solver::terms_of(const body& a, const body& b,
                                                      const contact& c) const {
   const material& m = c.material;
-  const real radius = rolling_radius(a, b, c);
-  const bool resists = (m.rolling_resistance > 0 || m.spinning_friction > 0) && radius > 0;
+  const bool resists =
+      (m.rolling_resistance > 0 || m.spinning_friction > 0) && rolling_radius(a, b, c) > 0;
   return {m.friction > 0 || resists ? 1u : 0u, resists ? 1u : 0u};
 }
 
@@ -200,7 +200,9 @@ void contact_solver::build_constraint(const world_settings& settings, const body
   k.target_speed = k.gap > 0 ? -k.gap / h : real(0);
 
   const material& m = c.material;
-  const real radius = rolling_radius(a, b, c);
+  // (The radius only where something resists rolling or spinning.)
+  const real radius =
+      m.rolling_resistance > 0 || m.spinning_friction > 0 ? rolling_radius(a, b, c) : real(0);
   const bool rolls = m.rolling_resistance > 0 && radius > 0;
   const bool spins = m.spinning_friction > 0 && radius > 0;
   if (m.friction > 0 || rolls || spins) {
@@ -676,11 +678,14 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   });
   slot_.resize(count);
   terms_at_.resize(count);
-  // Each constraint's own terms, then where they go.
-  detail::parallel_for(settings.threads, count, 512, [&](std::size_t s) {
-    const std::size_t i = colouring_.order[s];
-    slot_[i] = s;
-    terms_at_[s] = terms_of(bodies[contacts[i].body_a], bodies[contacts[i].body_b], contacts[i]);
+  for (std::size_t s = 0; s < count; ++s) slot_[colouring_.order[s]] = s;
+  // Each constraint's own terms, then where they go. (Both passes walk the
+  // contacts in their own order, by body pair, and write each constraint to
+  // its slot: read in the sweeps' order, the contacts and their bodies were
+  // a scattered read each, a third of this function's time at 10,000 spheres.)
+  detail::parallel_for(settings.threads, count, 512, [&](std::size_t i) {
+    const contact& c = contacts[i];
+    terms_at_[slot_[i]] = terms_of(bodies[c.body_a], bodies[c.body_b], c);
   });
   term_counts total;
   for (term_counts& at : terms_at_) {
@@ -694,8 +699,9 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   surfaces_.resize(total.surfaces);
   frames_.resize(total.surfaces);
   resistances_.resize(total.resistances);
-  detail::parallel_for(settings.threads, count, 512, [&](std::size_t s) {
-    const contact& c = contacts[colouring_.order[s]];
+  detail::parallel_for(settings.threads, count, 512, [&](std::size_t i) {
+    const contact& c = contacts[i];
+    const std::size_t s = slot_[i];
     build_constraint(settings, bodies[c.body_a], bodies[c.body_b], c, start[c.body_a],
                      start[c.body_b], h, s, terms_at_[s]);
   });
