@@ -21,7 +21,7 @@ bool contact_solver::batchable(std::size_t run, contact_batching batching) const
   for (std::size_t i = colouring_.run_starts[run]; i < colouring_.run_starts[run + 1]; ++i) {
     const constraint& k = constraints_[i];
     if (k.surface >= 0 && surfaces_[k.surface].resistance >= 0) return false;
-    if (k.normal.turns || (k.surface >= 0 && surfaces_[k.surface].friction.active())) plain = false;
+    if (k.turns || (k.surface >= 0 && surfaces_[k.surface].friction.active())) plain = false;
   }
   return detail::batches_take(batching, plain);
 }
@@ -91,14 +91,14 @@ void contact_solver::add_batch_group(const std::array<std::size_t, lanes>& runs,
       if (i >= colouring_.run_starts[runs[lane] + 1]) continue;
       const constraint& k = constraints_[i];
       slots[lane] = static_cast<std::ptrdiff_t>(i);
-      normal.row.set_lane(lane, k.normal);
+      normal.row.set_lane(lane, normal_row(i));
       normal.normal_mass[lane] = k.normal_mass;
       normal.target_speed[lane] = k.target_speed;
       normal.relaxation[lane] = k.relaxation;
       normal.accumulated[lane] = k.accumulated;
-      normal.solvable[lane] = k.normal.mass_inverse > 0 && !(k.waits && !k.struck);
-      normal.turns[lane] = k.normal.turns;
-      group.angular = group.angular || k.normal.turns;
+      normal.solvable[lane] = k.mass_inverse > 0 && !(k.waits && !k.struck);
+      normal.turns[lane] = k.turns;
+      group.angular = group.angular || k.turns;
       if (k.surface < 0 || !surfaces_[k.surface].friction.active()) continue;
       const surface_terms& t = surfaces_[k.surface];
       friction.set_lane(lane, t.friction, t.friction_coefficient, t.normal_coupling);

@@ -190,13 +190,15 @@ void contact_solver::build_constraint(const world_settings& settings, const body
   // 1/mA + 1/mB + n . (rA ⌋ I_A⁻¹(rA ∧ n)) + n . (rB ⌋ I_B⁻¹(rB ∧ n)).
   if (central_a && central_b) {
     // Both arms zero (r_a and r_b along n): the impulse turns neither body.
-    k.normal.linear = n;
-    k.normal.turns = false;
-    k.normal.mass_inverse = a.inverse_mass() + b.inverse_mass();
+    k.normal = n;
+    k.turns = false;
+    k.mass_inverse = a.inverse_mass() + b.inverse_mass();
   } else {
-    detail::set_linear_row(k.normal, n, r_a, r_b, row_a, row_b);
+    k.normal = n;
+    k.turns = true;
+    detail::set_linear_row(normal_arms_[slot], k.mass_inverse, n, r_a, r_b, row_a, row_b);
   }
-  k.normal_mass = k.normal.mass_inverse > 0 ? 1 / k.normal.mass_inverse : real(0);
+  k.normal_mass = k.mass_inverse > 0 ? 1 / k.mass_inverse : real(0);
   k.target_speed = k.gap > 0 ? -k.gap / h : real(0);
 
   const material& m = c.material;
@@ -219,8 +221,12 @@ void contact_solver::build_constraint(const world_settings& settings, const body
       detail::set_linear_row(block.rows[1], f.frame[1], r_a, r_b, row_a, row_b);
       block.prepare(inverse_masses);
       block.accumulated = {};
-      t.normal_coupling = {block.rows[0].coupling(k.normal, inverse_masses),
-                           block.rows[1].coupling(k.normal, inverse_masses)};
+      // (A normal row that turns nothing couples through its zero arms.)
+      static const detail::row_arms no_arms{};
+      const detail::row_arms& arms = k.turns ? normal_arms_[slot] : no_arms;
+      t.normal_coupling = {
+          detail::row_coupling(block.rows[0].linear, block.rows[0], n, arms, inverse_masses),
+          detail::row_coupling(block.rows[1].linear, block.rows[1], n, arms, inverse_masses)};
     } else {
       t.friction = detail::disk_block{};
       t.normal_coupling = {};
@@ -293,7 +299,7 @@ void contact_solver::set_relaxation(const world_settings& settings, const std::v
 // order.
 bool contact_solver::impact(std::size_t index, real threshold, real h) {
   constraint& k = constraints_[index];
-  if (!(k.restitution > 0) || !(k.normal.mass_inverse > 0)) return false;
+  if (!(k.restitution > 0) || !(k.mass_inverse > 0)) return false;
   impact_terms& record = impacts_[index];
   solver_body& a = impact_bodies_[k.body_a];
   solver_body& b = impact_bodies_[k.body_b];
@@ -308,26 +314,26 @@ bool contact_solver::impact(std::size_t index, real threshold, real h) {
       speed = record.timing->speed;
       timed_now = true;
     } else {
-      speed = -k.normal.speed(a, b);
+      speed = -normal_speed(index, a, b);
     }
   } else {
     // Struck by an earlier impact: a contact that now approaches faster than
     // the threshold, and touches or closes its gap within the step, bounces.
-    const real normal_speed = k.normal.speed(a, b);
-    if (!(normal_speed < -threshold)) return false;
-    if (k.gap > 0 && !(k.gap <= -normal_speed * h)) return false;
-    speed = -normal_speed;
+    const real approach = normal_speed(index, a, b);
+    if (!(approach < -threshold)) return false;
+    if (k.gap > 0 && !(k.gap <= -approach * h)) return false;
+    speed = -approach;
   }
   if (!(speed > 0)) return false;
 
-  const real j = (1 + k.restitution) * speed / k.normal.mass_inverse;
+  const real j = (1 + k.restitution) * speed / k.mass_inverse;
   solver_body& solved_a = solver_bodies_[k.body_a];
   solver_body& solved_b = solver_bodies_[k.body_b];
-  k.normal.apply(a, b, j);
-  k.normal.apply(solved_a, solved_b, j);
+  apply_normal(index, a, b, j);
+  apply_normal(index, solved_a, solved_b, j);
   record.normal += j;
   k.struck = true;
-  vector linear_impulse = j * k.normal.linear;
+  vector linear_impulse = j * k.normal;
   if (k.surface >= 0 && surfaces_[k.surface].friction.active()) {
     surface_terms& t = surfaces_[k.surface];
     surface_frame& f = frames_[k.surface];
@@ -361,7 +367,7 @@ void contact_solver::resolve_impacts(const world_settings& settings, real h) {
   impact_filters_.resize(constraints_.size());
   detail::parallel_for(settings.threads, constraints_.size(), 4096, [&](std::size_t s) {
     const constraint& k = constraints_[s];
-    impact_filters_[colouring_.order[s]] = {k.restitution > 0 && k.normal.mass_inverse > 0,
+    impact_filters_[colouring_.order[s]] = {k.restitution > 0 && k.mass_inverse > 0,
                                             k.bounces && !k.waits};
   });
   // Impacts start only at contacts that bounce from the start velocities.
@@ -417,13 +423,14 @@ void contact_solver::warm_start(const std::vector<body>& bodies,
     const std::size_t match = matches_[i];
     if (match == previous.size()) continue;
     const contact* old = &previous[match];
-    constraint& k = constraints_[slot_[i]];
-    if (!(k.normal.mass_inverse > 0) || k.waits) continue;
+    const std::size_t s = slot_[i];
+    constraint& k = constraints_[s];
+    if (!(k.mass_inverse > 0) || k.waits) continue;
     solver_body& a = solver_bodies_[k.body_a];
     solver_body& b = solver_bodies_[k.body_b];
     const contact_impulse& resting = old->resting;
     k.accumulated = resting.normal;
-    k.normal.apply(a, b, k.accumulated);
+    apply_normal(s, a, b, k.accumulated);
     if (k.surface < 0) continue;
     surface_terms& t = surfaces_[k.surface];
     const surface_frame& f = frames_[k.surface];
@@ -480,7 +487,7 @@ void contact_solver::solve_contacts(const world_settings& settings) {
   // spheres), passing settled runs by made the sweeps run 40% more
   // instructions, so there every run is solved in every sweep.
   settling_ = std::any_of(constraints_.begin(), constraints_.end(),
-                          [](const constraint& k) { return k.normal.turns || k.surface >= 0; });
+                          [](const constraint& k) { return k.turns || k.surface >= 0; });
   if (settling_) {
     run_states_.resize(runs);
     for (std::size_t run = 0; run < runs; ++run) {
@@ -567,14 +574,14 @@ void contact_solver::solve_runs(std::size_t first_run, std::size_t end_run, cons
   if (!settling_) {
     const std::size_t first = colouring_.run_starts[first_run];
     const std::size_t end = colouring_.run_starts[end_run];
-    for (std::size_t i = first; i < end; ++i) solve_contact(constraints_[i], kind, result);
+    for (std::size_t i = first; i < end; ++i) solve_contact(i, kind, result);
     return;
   }
   for (std::size_t run = first_run; run < end_run; ++run) {
     if (settled_run(run)) continue;
     sweep_result mine;
     for (std::size_t i = colouring_.run_starts[run]; i < colouring_.run_starts[run + 1]; ++i) {
-      solve_contact(constraints_[i], kind, mine);
+      solve_contact(i, kind, mine);
     }
     record_run(run, kind.stamps + run + 1, mine.largest_change);
     result.any = result.any || mine.any;
@@ -582,24 +589,27 @@ void contact_solver::solve_runs(std::size_t first_run, std::size_t end_run, cons
   }
 }
 
-GAPHYS_ALWAYS_INLINE void contact_solver::solve_contact(constraint& k, const sweep_kind& kind,
+GAPHYS_ALWAYS_INLINE void contact_solver::solve_contact(std::size_t s, const sweep_kind& kind,
                                                         sweep_result& result) {
-  if (!(k.normal.mass_inverse > 0) || (k.waits && !k.struck)) return;
+  constraint& k = constraints_[s];
+  if (!(k.mass_inverse > 0) || (k.waits && !k.struck)) return;
   // The extra sweeps are for stacks, whose contacts push: one that turns a
   // body but holds no impulse after solver_iterations sweeps (mostly a
   // speculative contact a body does not reach in this step) keeps that.
-  if (kind.turning_only && (!k.normal.turns || !(k.accumulated > 0))) return;
+  if (kind.turning_only && (!k.turns || !(k.accumulated > 0))) return;
   result.any = true;
   real& largest_change = result.largest_change;
-  const bool last = k.normal.turns ? kind.last_of_turning : kind.last_of_all;
+  const bool last = k.turns ? kind.last_of_turning : kind.last_of_all;
+  const detail::row_arms* arms = k.turns ? &normal_arms_[s] : nullptr;
   solver_body& a = solver_bodies_[k.body_a];
   solver_body& b = solver_bodies_[k.body_b];
   const real relaxation = last ? real(1) : k.relaxation;
-  const real wanted = relaxation * (k.target_speed - k.normal.speed(a, b)) * k.normal_mass;
+  const real wanted =
+      relaxation * (k.target_speed - detail::row_speed(k.normal, arms, a, b)) * k.normal_mass;
   const real total = std::max(k.accumulated + wanted, real(0));
   const real j = total - k.accumulated;
   k.accumulated = total;
-  largest_change = std::max(largest_change, std::fabs(j) * k.normal.mass_inverse);
+  largest_change = std::max(largest_change, std::fabs(j) * k.mass_inverse);
   surface_terms* rubbing = k.surface < 0 ? nullptr : &surfaces_[k.surface];
   // Nothing pushes and nothing is held: nothing to rub (a speculative contact).
   if (rubbing && !(k.accumulated > 0) && holds_nothing(*rubbing)) rubbing = nullptr;
@@ -607,11 +617,11 @@ GAPHYS_ALWAYS_INLINE void contact_solver::solve_contact(constraint& k, const swe
     // The normal impulse goes with friction's (disk_block::solve_after).
     surface_terms& t = *rubbing;
     const real change = t.friction.solve_after(a, b, t.friction_coefficient * k.accumulated,
-                                               k.normal, j, t.normal_coupling, last);
+                                               k.normal, arms, j, t.normal_coupling, last);
     largest_change = std::max(largest_change, change * t.friction.rows[0].mass_inverse);
   } else if (j != 0) {
     // (Most speculative contacts hold no impulse and get none.)
-    k.normal.apply(a, b, j);
+    detail::row_apply(k.normal, arms, a, b, j);
   }
   if (!rubbing) return;
   surface_terms& t = *rubbing;
@@ -695,6 +705,7 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
     total.resistances += own.resistances;
   }
   constraints_.resize(count);
+  normal_arms_.resize(count);
   impacts_.resize(count);
   surfaces_.resize(total.surfaces);
   frames_.resize(total.surfaces);
@@ -752,7 +763,7 @@ void contact_solver::correct_positions(const world_settings& settings, std::vect
     // overlap now (one left to bounce in a later step), the next step meets
     // them for real.
     if (c.geometry.depth < 0) return;
-    if (constraints_[slot_[i]].normal.turns) {
+    if (constraints_[slot_[i]].turns) {
       push = turning;  // corrected below, turning the bodies too
       return;
     }
@@ -813,14 +824,14 @@ void contact_solver::correct_turning(const world_settings& settings, std::vector
   std::vector<real>& depths = pseudo_depths_;
   depths.assign(contacts.size(), -1);
   for (std::size_t i = 0; i < contacts.size(); ++i) {
-    const constraint& k = constraints_[slot_[i]];
+    const std::size_t s = slot_[i];
+    const constraint& k = constraints_[s];
     const contact& c = contacts[i];
-    if (!k.normal.turns || impacts_[slot_[i]].timed || c.geometry.depth < 0 ||
-        !(k.normal.mass_inverse > 0)) {
+    if (!k.turns || impacts_[s].timed || c.geometry.depth < 0 || !(k.mass_inverse > 0)) {
       continue;
     }
-    depths[i] = c.geometry.depth -
-                h * k.normal.speed(solver_bodies_[k.body_a], solver_bodies_[k.body_b]);
+    depths[i] =
+        c.geometry.depth - h * normal_speed(s, solver_bodies_[k.body_a], solver_bodies_[k.body_b]);
   }
   bool any = false;
   for (std::size_t i = 0; i < contacts.size(); ++i) {
@@ -834,15 +845,16 @@ void contact_solver::correct_turning(const world_settings& settings, std::vector
     real largest_change = 0;
     for (std::size_t i = 0; i < contacts.size(); ++i) {
       if (!(pseudo_targets_[i] > 0)) continue;
-      const constraint& k = constraints_[slot_[i]];
+      const std::size_t s = slot_[i];
+      const constraint& k = constraints_[s];
       solver_body& a = pseudo_bodies_[k.body_a];
       solver_body& b = pseudo_bodies_[k.body_b];
-      const real wanted = (pseudo_targets_[i] - k.normal.speed(a, b)) / k.normal.mass_inverse;
+      const real wanted = (pseudo_targets_[i] - normal_speed(s, a, b)) / k.mass_inverse;
       const real total = std::max(pseudo_accumulated_[i] + wanted, real(0));
       const real j = total - pseudo_accumulated_[i];
-      k.normal.apply(a, b, j);
+      apply_normal(s, a, b, j);
       pseudo_accumulated_[i] = total;
-      largest_change = std::max(largest_change, std::fabs(j) * k.normal.mass_inverse);
+      largest_change = std::max(largest_change, std::fabs(j) * k.mass_inverse);
     }
     if (largest_change <= settings.solver_tolerance) break;
   }

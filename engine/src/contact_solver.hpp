@@ -69,16 +69,22 @@ class contact_solver {
 
   // What every sweep reads of a contact, kept small: the sweeps walk all of
   // them, the rest of a contact's terms are looked up only where it has them.
+  // Its normal row's arms, too, are apart (normal_arms_): a contact through
+  // both centres (spheres, points, planes) has none, and with them inside,
+  // 200 bytes a constraint, the sweeps over 10,000 spheres streamed twice
+  // the memory.
   struct constraint {
     std::size_t body_a, body_b;
-    impulse_row normal;      // n, from B to A
-    real normal_mass = 0;    // 1 / normal.mass_inverse (0 when left out)
+    vector normal;           // n, from B to A: the normal row's direction
+    real mass_inverse = 0;   // the normal row's speed change per unit impulse; 0: left out
+    real normal_mass = 0;    // 1 / mass_inverse (0 when left out)
     real target_speed = 0;   // normal separation speed wanted after the contact phase
     real relaxation = 1;     // settings' over-relaxation where the contact shares a body, else 1
     real accumulated = 0;    // the contact phase's normal impulse
     real restitution = 0;
     real gap = 0;            // m, > 0 for a speculative contact
     int surface = -1;        // its friction and resistance terms in surfaces_, or -1: none
+    bool turns = false;      // the normal row turns a body: its arms are normal_arms_[slot]
     bool bounces = false;    // approached faster than the threshold at the start of the step
     bool waits = false;      // a bounce whose surfaces meet only in a later step: left out
     bool struck = false;     // the impact phase gave it an impulse
@@ -210,7 +216,7 @@ class contact_solver {
   }
   void solve_runs(std::size_t first_run, std::size_t end_run, const sweep_kind& kind,
                   sweep_result& result);
-  GAPHYS_ALWAYS_INLINE void solve_contact(constraint& k, const sweep_kind& kind,
+  GAPHYS_ALWAYS_INLINE void solve_contact(std::size_t s, const sweep_kind& kind,
                                           sweep_result& result);
   void store_impulses(std::vector<contact>& contacts, int threads) const;
   void correct_turning(const world_settings& settings, std::vector<body>& bodies,
@@ -222,6 +228,27 @@ class contact_solver {
   std::vector<std::size_t> slot_;
   std::vector<term_counts> terms_at_;  // per constraint: where its optional terms go
   std::vector<constraint> constraints_;
+  std::vector<detail::row_arms> normal_arms_;  // per constraint, where it turns a body
+  // Constraint s's normal arms, or null where its normal row turns nothing.
+  const detail::row_arms* normal_arms(std::size_t s) const {
+    return constraints_[s].turns ? &normal_arms_[s] : nullptr;
+  }
+  real normal_speed(std::size_t s, const solver_body& a, const solver_body& b) const {
+    return detail::row_speed(constraints_[s].normal, normal_arms(s), a, b);
+  }
+  void apply_normal(std::size_t s, solver_body& a, solver_body& b, real j) const {
+    detail::row_apply(constraints_[s].normal, normal_arms(s), a, b, j);
+  }
+  // The whole row (its arms zero where it turns nothing), for the batches.
+  impulse_row normal_row(std::size_t s) const {
+    const constraint& k = constraints_[s];
+    impulse_row row;
+    if (k.turns) static_cast<detail::row_arms&>(row) = normal_arms_[s];
+    row.linear = k.normal;
+    row.turns = k.turns;
+    row.mass_inverse = k.mass_inverse;
+    return row;
+  }
   std::vector<impact_terms> impacts_;        // one per constraint
   // Per contact (in contact order): resolve_impacts' first test (its bodies
   // are colouring_.pairs').

@@ -31,40 +31,65 @@ struct solver_body {
   real inverse_mass;
 };
 
+// A row's angular terms: the speed's (arms) and the turns its impulse
+// gives. Kept apart from the rest where most rows turn nothing: a contact's
+// normal row (contact_solver::constraint), which the sweeps stream.
+struct row_arms {
+  bivector arm_a{}, arm_b{};    // the speed's angular terms
+  bivector turn_a{}, turn_b{};  // ΔΩ of A (and -ΔΩ of B) per unit impulse
+};
+
+// The speed a row along d reads, and its impulse j: `arms` null where the
+// row turns neither body (both arms zero).
+GAPHYS_ALWAYS_INLINE real row_speed(const vector& d, const row_arms* arms, const solver_body& a,
+                                    const solver_body& b) {
+  const real linear_speed = e3ga::scp(d, a.velocity - b.velocity);
+  if (!arms) return linear_speed;
+  return linear_speed + e3ga::lc(arms->arm_a, a.angular_velocity) -
+         e3ga::lc(arms->arm_b, b.angular_velocity);
+}
+// Only a body with mass changes: static and kinematic ones are only read,
+// so contacts solved at once on several threads may share them.
+GAPHYS_ALWAYS_INLINE void row_apply(const vector& d, const row_arms* arms, solver_body& a,
+                                    solver_body& b, real j) {
+  if (a.inverse_mass > 0) {
+    a.velocity = a.velocity + (j * a.inverse_mass) * d;
+    if (arms) a.angular_velocity = a.angular_velocity + j * arms->turn_a;
+  }
+  if (b.inverse_mass > 0) {
+    b.velocity = b.velocity - (j * b.inverse_mass) * d;
+    if (arms) b.angular_velocity = b.angular_velocity - j * arms->turn_b;
+  }
+}
+// How much a unit impulse of the row (d, arms) changes the speed of the
+// row (other, other_arms) (arms zero where null): an entry of the
+// effective-mass matrix K of a block.
+inline real row_coupling(const vector& d, const row_arms& arms, const vector& other,
+                         const row_arms& other_arms, real inverse_masses) {
+  return inverse_masses * e3ga::scp(d, other) + e3ga::lc(arms.arm_a, other_arms.turn_a) +
+         e3ga::lc(arms.arm_b, other_arms.turn_b);
+}
+
 // The sweeps' hot path (speed, apply, the friction block's solve) is forced
 // inline: split into solve_contact, GCC 12 stopped inlining it and a step
 // of 1,000 boxes took 5% longer.
-struct impulse_row {
-  vector linear{};            // d, unit; zero for an angular row
-  bivector arm_a{}, arm_b{};  // the speed's angular terms
-  bivector turn_a{}, turn_b{};  // ΔΩ of A (and -ΔΩ of B) per unit impulse
-  bool turns = true;          // false: both arms zero, the row turns neither body
-  real mass_inverse = 0;      // speed change per unit impulse; 0: left out
+struct impulse_row : row_arms {
+  vector linear{};        // d, unit; zero for an angular row
+  bool turns = true;      // false: both arms zero, the row turns neither body
+  real mass_inverse = 0;  // speed change per unit impulse; 0: left out
 
+  const row_arms* arms() const { return turns ? this : nullptr; }
   GAPHYS_ALWAYS_INLINE real speed(const solver_body& a, const solver_body& b) const {
-    const real linear_speed = e3ga::scp(linear, a.velocity - b.velocity);
-    if (!turns) return linear_speed;
-    return linear_speed + e3ga::lc(arm_a, a.angular_velocity) - e3ga::lc(arm_b, b.angular_velocity);
+    return row_speed(linear, arms(), a, b);
   }
-
-  // Only a body with mass changes: static and kinematic ones are only read,
-  // so contacts solved at once on several threads may share them.
   GAPHYS_ALWAYS_INLINE void apply(solver_body& a, solver_body& b, real j) const {
-    if (a.inverse_mass > 0) {
-      a.velocity = a.velocity + (j * a.inverse_mass) * linear;
-      if (turns) a.angular_velocity = a.angular_velocity + j * turn_a;
-    }
-    if (b.inverse_mass > 0) {
-      b.velocity = b.velocity - (j * b.inverse_mass) * linear;
-      if (turns) b.angular_velocity = b.angular_velocity - j * turn_b;
-    }
+    row_apply(linear, arms(), a, b, j);
   }
 
   // How much this row's impulse changes another row's speed: the entries of
   // the effective-mass matrix K of a block (K_ii is mass_inverse).
   real coupling(const impulse_row& other, real inverse_masses) const {
-    return inverse_masses * e3ga::scp(linear, other.linear) + e3ga::lc(arm_a, other.turn_a) +
-           e3ga::lc(arm_b, other.turn_b);
+    return row_coupling(linear, *this, other.linear, other, inverse_masses);
   }
 };
 
@@ -107,12 +132,12 @@ struct row_body {
 };
 
 // The row along d at offsets r_a, r_b of two bodies (a static body's arm
-// counts for nothing: its Ω stays zero).
-// Written into `row`, every field: the contact phase builds thousands of
+// counts for nothing: its Ω stays zero): its arms into `row` and its speed
+// change per unit impulse into `mass_inverse`, or (below) the whole row.
+// Written in place, every field: the contact phase builds thousands of
 // rows a step, and a row built aside and copied in cost a copy each.
-inline void set_linear_row(impulse_row& row, const vector& d, const vector& r_a, const vector& r_b,
-                           const row_body& a, const row_body& b) {
-  row.linear = d;
+inline void set_linear_row(row_arms& row, real& mass_inverse, const vector& d, const vector& r_a,
+                           const vector& r_b, const row_body& a, const row_body& b) {
   if (!a.is_static) {
     row.arm_a = e3ga::op(d, r_a);
     row.turn_a = a.inverse_inertia(e3ga::op(r_a, d));
@@ -125,9 +150,14 @@ inline void set_linear_row(impulse_row& row, const vector& d, const vector& r_a,
   } else {
     row.arm_b = row.turn_b = bivector{};
   }
+  mass_inverse = a.inverse_mass + b.inverse_mass + e3ga::lc(row.arm_a, row.turn_a) +
+                 e3ga::lc(row.arm_b, row.turn_b);
+}
+inline void set_linear_row(impulse_row& row, const vector& d, const vector& r_a, const vector& r_b,
+                           const row_body& a, const row_body& b) {
+  row.linear = d;
   row.turns = true;
-  row.mass_inverse = a.inverse_mass + b.inverse_mass + e3ga::lc(row.arm_a, row.turn_a) +
-                     e3ga::lc(row.arm_b, row.turn_b);
+  set_linear_row(row, row.mass_inverse, d, r_a, r_b, a, b);
 }
 
 // The row that turns A by U and B by -U.
@@ -363,31 +393,32 @@ struct disk_block {
   }
 
   // solve, for friction's block, after its contact's normal impulse
-  // `normal_impulse` along `normal`, which is applied with the block's: the
+  // `normal_impulse` along `normal` (its arms `normal_arms`, null where it
+  // turns neither body), which is applied with the block's: the
   // rows' speeds are read before it, and moved by what it changes them
   // (`normal_coupling`, per unit impulse). The speeds are then read at once,
   // not after the normal impulse reaches the velocities, and the bodies
   // change once: the sweeps wait on each contact's updates. `exact`: see
   // nearest_on_disk.
   GAPHYS_ALWAYS_INLINE real solve_after(solver_body& a, solver_body& b, real bound,
-                                        const impulse_row& normal, real normal_impulse,
+                                        const vector& normal, const row_arms* normal_arms,
+                                        real normal_impulse,
                                         const std::array<real, 2>& normal_coupling, bool exact) {
     const std::array<real, 2> speeds{rows[0].speed(a, b) + normal_coupling[0] * normal_impulse,
                                      rows[1].speed(a, b) + normal_coupling[1] * normal_impulse};
     const std::array<real, 2> total = stopping_total(speeds, accumulated, bound, exact);
     const std::array<real, 2> j{total[0] - accumulated[0], total[1] - accumulated[1]};
-    const vector linear =
-        normal_impulse * normal.linear + (j[0] * rows[0].linear + j[1] * rows[1].linear);
+    const vector linear = normal_impulse * normal + (j[0] * rows[0].linear + j[1] * rows[1].linear);
     if (a.inverse_mass > 0) {
       a.velocity = a.velocity + a.inverse_mass * linear;
       bivector turn = j[0] * rows[0].turn_a + j[1] * rows[1].turn_a;
-      if (normal.turns) turn = normal_impulse * normal.turn_a + turn;
+      if (normal_arms) turn = normal_impulse * normal_arms->turn_a + turn;
       a.angular_velocity = a.angular_velocity + turn;
     }
     if (b.inverse_mass > 0) {
       b.velocity = b.velocity - b.inverse_mass * linear;
       bivector turn = j[0] * rows[0].turn_b + j[1] * rows[1].turn_b;
-      if (normal.turns) turn = normal_impulse * normal.turn_b + turn;
+      if (normal_arms) turn = normal_impulse * normal_arms->turn_b + turn;
       b.angular_velocity = b.angular_velocity - turn;
     }
     accumulated = total;

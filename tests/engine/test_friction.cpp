@@ -482,8 +482,8 @@ TEST_F(friction_test, friction_solved_after_the_normal_impulse_is_the_same_as_so
 
     detail::solver_body a_with = a0, b_with = b0;
     detail::disk_block with = block;
-    const real change_with =
-        with.solve_after(a_with, b_with, bound, normal, normal_impulse, coupling, true);
+    const real change_with = with.solve_after(a_with, b_with, bound, normal.linear, normal.arms(),
+                                              normal_impulse, coupling, true);
 
     const real tolerance_ = tolerance(1e-12, 1e-5);
     ASSERT_TRUE(near(a_with.velocity, a.velocity, tolerance_)) << "trial " << trial;
