@@ -63,9 +63,9 @@ GAPHYS_ALWAYS_INLINE void row_apply(const vector& d, const row_arms* arms, solve
     if (arms) b.angular_velocity = b.angular_velocity - j * arms->turn_b;
   }
 }
-// How much a unit impulse of the row (d, arms) changes the speed of the
-// row (other, other_arms) (arms zero where null): an entry of the
-// effective-mass matrix K of a block.
+// How much a unit impulse of the row (other, other_arms) changes the speed
+// of the row (d, arms), an entry of the effective-mass matrix K of a block
+// (a row that turns nothing is given zero arms).
 inline real row_coupling(const vector& d, const row_arms& arms, const vector& other,
                          const row_arms& other_arms, real inverse_masses) {
   return inverse_masses * e3ga::scp(d, other) + e3ga::lc(arms.arm_a, other_arms.turn_a) +
