@@ -188,15 +188,14 @@ void contact_solver::build_constraint(const world_settings& settings, const body
   const vector r_b = contact_offset(b, shapes_b, c, n, 1);
   // The denominator of eq. 3.20 / 4.7, with the inertias as linear maps:
   // 1/mA + 1/mB + n . (rA ⌋ I_A⁻¹(rA ∧ n)) + n . (rB ⌋ I_B⁻¹(rB ∧ n)).
-  if (central_a && central_b) {
-    // Both arms zero (r_a and r_b along n): the impulse turns neither body.
-    k.normal = n;
-    k.turns = false;
-    k.mass_inverse = a.inverse_mass() + b.inverse_mass();
-  } else {
-    k.normal = n;
-    k.turns = true;
+  // Where both are central, both arms are zero (r_a and r_b along n): the
+  // impulse turns neither body.
+  k.normal = n;
+  k.turns = !(central_a && central_b);
+  if (k.turns) {
     detail::set_linear_row(normal_arms_[slot], k.mass_inverse, n, r_a, r_b, row_a, row_b);
+  } else {
+    k.mass_inverse = a.inverse_mass() + b.inverse_mass();
   }
   k.normal_mass = k.mass_inverse > 0 ? 1 / k.mass_inverse : real(0);
   k.target_speed = k.gap > 0 ? -k.gap / h : real(0);
@@ -223,7 +222,8 @@ void contact_solver::build_constraint(const world_settings& settings, const body
       block.accumulated = {};
       // (A normal row that turns nothing couples through its zero arms.)
       static const detail::row_arms no_arms{};
-      const detail::row_arms& arms = k.turns ? normal_arms_[slot] : no_arms;
+      const detail::row_arms* turning = normal_arms(slot);
+      const detail::row_arms& arms = turning ? *turning : no_arms;
       t.normal_coupling = {
           detail::row_coupling(block.rows[0].linear, block.rows[0], n, arms, inverse_masses),
           detail::row_coupling(block.rows[1].linear, block.rows[1], n, arms, inverse_masses)};
@@ -600,7 +600,7 @@ GAPHYS_ALWAYS_INLINE void contact_solver::solve_contact(std::size_t s, const swe
   result.any = true;
   real& largest_change = result.largest_change;
   const bool last = k.turns ? kind.last_of_turning : kind.last_of_all;
-  const detail::row_arms* arms = k.turns ? &normal_arms_[s] : nullptr;
+  const detail::row_arms* arms = normal_arms(s);
   solver_body& a = solver_bodies_[k.body_a];
   solver_body& b = solver_bodies_[k.body_b];
   const real relaxation = last ? real(1) : k.relaxation;

@@ -230,7 +230,7 @@ class contact_solver {
   std::vector<constraint> constraints_;
   std::vector<detail::row_arms> normal_arms_;  // per constraint, where it turns a body
   // Constraint s's normal arms, or null where its normal row turns nothing.
-  const detail::row_arms* normal_arms(std::size_t s) const {
+  GAPHYS_ALWAYS_INLINE const detail::row_arms* normal_arms(std::size_t s) const {
     return constraints_[s].turns ? &normal_arms_[s] : nullptr;
   }
   real normal_speed(std::size_t s, const solver_body& a, const solver_body& b) const {
@@ -243,7 +243,7 @@ class contact_solver {
   impulse_row normal_row(std::size_t s) const {
     const constraint& k = constraints_[s];
     impulse_row row;
-    if (k.turns) static_cast<detail::row_arms&>(row) = normal_arms_[s];
+    if (const detail::row_arms* arms = normal_arms(s)) static_cast<detail::row_arms&>(row) = *arms;
     row.linear = k.normal;
     row.turns = k.turns;
     row.mass_inverse = k.mass_inverse;
