@@ -60,7 +60,15 @@ void contact_solver::pack_batches(const world_settings& settings) {
     }
     if (filled > 0) add_batch_group(runs, filled);
     block_groups_.push_back(groups_.size());
-    block_singles_.push_back(single_runs_.size());
+    // Where each single run's stretch of consecutive ones ends (without
+    // batches, the whole block is one).
+    const std::size_t begin = block_singles_.back(), stop = single_runs_.size();
+    stretch_ends_.resize(stop);
+    for (std::size_t at = stop; at-- > begin;) {
+      const bool joins = at + 1 < stop && single_runs_[at + 1] == single_runs_[at] + 1;
+      stretch_ends_[at] = joins ? stretch_ends_[at + 1] : at + 1;
+    }
+    block_singles_.push_back(stop);
   }
 }
 
@@ -185,16 +193,14 @@ void contact_solver::solve_block_items(std::size_t block, std::size_t first, std
   for (std::size_t item = first; item < std::min(end, groups); ++item) {
     solve_group(groups_[block_groups_[block] + item], kind, result);
   }
-  // The single runs in stretches of consecutive ones (without batches, the
-  // whole block is one): solve_runs per run cost a call and its set-up per
-  // contact, a third of the instructions of a plain contact's solve.
-  const auto single = [&](std::size_t item) {
-    return single_runs_[block_singles_[block] + item - groups];
-  };
+  // The single runs a stretch of consecutive ones at a time: solve_runs per
+  // run cost a call and its set-up per contact, a third of the instructions
+  // of a plain contact's solve.
+  const std::size_t base = block_singles_[block];  // item `groups`
   for (std::size_t item = std::max(first, groups); item < end;) {
-    std::size_t stop = item + 1;
-    while (stop < end && single(stop) == single(stop - 1) + 1) ++stop;
-    solve_runs(single(item), single(stop - 1) + 1, kind, result);
+    const std::size_t at = base + item - groups;
+    const std::size_t stop = std::min(end, stretch_ends_[at] - base + groups);
+    solve_runs(single_runs_[at], single_runs_[at] + (stop - item), kind, result);
     item = stop;
   }
 }

@@ -300,6 +300,10 @@ class contact_solver {
   };
   std::vector<batch_group> groups_;
   std::vector<std::size_t> single_runs_, block_groups_, block_singles_;
+  // Per single run (as single_runs_), one past the last single run of its
+  // block that follows it without a gap: single_runs_ from it to there are
+  // consecutive runs.
+  std::vector<std::size_t> stretch_ends_;
   std::vector<detail::normal_pack> normal_packs_;
   std::vector<detail::friction_pack> friction_packs_;
   // Per normal pack, each lane's constraint (index into constraints_), or -1.
