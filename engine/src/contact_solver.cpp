@@ -572,9 +572,8 @@ void contact_solver::solve_contacts(const world_settings& settings) {
 void contact_solver::solve_runs(std::size_t first_run, std::size_t end_run, const sweep_kind& kind,
                                 sweep_result& result) {
   if (!settling_) {
-    const std::size_t first = colouring_.run_starts[first_run];
-    const std::size_t end = colouring_.run_starts[end_run];
-    for (std::size_t i = first; i < end; ++i) solve_contact(i, kind, result);
+    solve_plain_contacts(colouring_.run_starts[first_run], colouring_.run_starts[end_run], kind,
+                         result);
     return;
   }
   for (std::size_t run = first_run; run < end_run; ++run) {
@@ -587,6 +586,38 @@ void contact_solver::solve_runs(std::size_t first_run, std::size_t end_run, cons
     result.any = result.any || mine.any;
     result.largest_change = std::max(result.largest_change, mine.largest_change);
   }
+}
+
+// solve_contact for contacts s in [first, end) where no contact turns a body
+// or rubs (settling_ is false): only the normal row, through the centres.
+// The same operations on the same numbers as solve_contact; without its
+// checks for turning, friction and resistance, and with the sweep's result
+// kept in registers, a sphere pile's contact took a third fewer
+// instructions.
+void contact_solver::solve_plain_contacts(std::size_t first, std::size_t end,
+                                          const sweep_kind& kind, sweep_result& result) {
+  // (Past solver_iterations only contacts that turn a body are solved.)
+  if (kind.turning_only) return;
+  real largest_change = 0;
+  bool any = false;
+  for (std::size_t s = first; s < end; ++s) {
+    constraint& k = constraints_[s];
+    if (!(k.mass_inverse > 0) || (k.waits && !k.struck)) continue;
+    any = true;
+    solver_body& a = solver_bodies_[k.body_a];
+    solver_body& b = solver_bodies_[k.body_b];
+    const real relaxation = kind.last_of_all ? real(1) : k.relaxation;
+    const real wanted =
+        relaxation * (k.target_speed - detail::row_speed(k.normal, nullptr, a, b)) * k.normal_mass;
+    const real total = std::max(k.accumulated + wanted, real(0));
+    const real j = total - k.accumulated;
+    k.accumulated = total;
+    largest_change = std::max(largest_change, std::fabs(j) * k.mass_inverse);
+    // (Most speculative contacts hold no impulse and get none.)
+    if (j != 0) detail::row_apply(k.normal, nullptr, a, b, j);
+  }
+  result.any = result.any || any;
+  result.largest_change = std::max(result.largest_change, largest_change);
 }
 
 GAPHYS_ALWAYS_INLINE void contact_solver::solve_contact(std::size_t s, const sweep_kind& kind,

@@ -218,6 +218,8 @@ class contact_solver {
                   sweep_result& result);
   GAPHYS_ALWAYS_INLINE void solve_contact(std::size_t s, const sweep_kind& kind,
                                           sweep_result& result);
+  void solve_plain_contacts(std::size_t first, std::size_t end, const sweep_kind& kind,
+                            sweep_result& result);
   void store_impulses(std::vector<contact>& contacts, int threads) const;
   void correct_turning(const world_settings& settings, std::vector<body>& bodies,
                        const std::vector<contact>& contacts, real h);
