@@ -40,24 +40,36 @@ bool uniform_grid::find_pairs(const std::vector<body>& bodies, const std::vector
   if (!sort_into_cells()) return false;
   pair_cells(pairs, threads);
   pair_large(pairs);
-  pair_planes(bodies, pairs);
-  sort_pairs(bodies.size(), pairs);
+  pair_planes(bodies, pairs, threads);
+  sort_pairs(bodies.size(), pairs, threads);
   return true;
 }
 
 // All pairs' order, which the solver (and its warm starting) relies on: a
 // counting sort on the first body, then each (short) run by the second.
-void uniform_grid::sort_pairs(std::size_t body_count, std::vector<index_pair>& pairs) {
+// (The runs on the threads, for many bodies; each is a few pairs, sorted by
+// insertion.)
+void uniform_grid::sort_pairs(std::size_t body_count, std::vector<index_pair>& pairs, int threads) {
   starts_.assign(body_count + 1, 0);
   for (const index_pair& p : pairs) ++starts_[p.first + 1];
   for (std::size_t i = 0; i < body_count; ++i) starts_[i + 1] += starts_[i];
   sorted_.resize(pairs.size());
   fill_ = starts_;
   for (const index_pair& p : pairs) sorted_[fill_[p.first]++] = p;
-  for (std::size_t i = 0; i < body_count; ++i) {
-    std::sort(sorted_.begin() + static_cast<std::ptrdiff_t>(starts_[i]),
-              sorted_.begin() + static_cast<std::ptrdiff_t>(starts_[i + 1]));
-  }
+  parallel_for(threads, body_count, 4096, [&](std::size_t i) {
+    index_pair* first = sorted_.data() + starts_[i];
+    index_pair* last = sorted_.data() + starts_[i + 1];
+    if (last - first > 16) {
+      std::sort(first, last);
+      return;
+    }
+    for (index_pair* at = first + 1; at < last; ++at) {
+      const index_pair moving = *at;
+      index_pair* to = at;
+      for (; to > first && moving < to[-1]; --to) *to = to[-1];
+      *to = moving;
+    }
+  });
   pairs.swap(sorted_);
 }
 
@@ -322,18 +334,45 @@ void uniform_grid::pair_large(std::vector<index_pair>& pairs) const {
 // A plane against each dynamic bound, exactly: the sphere reaches the
 // solid side n . x <= d when n . c - r <= d; within the contact margin when
 // n . c - r <= d + margin (the bound holds half of it already).
-void uniform_grid::pair_planes(const std::vector<body>& bodies, std::vector<index_pair>& pairs) const {
+// (On the threads for many bounds, each taking shares of the bounds; the
+// pairs are sorted afterwards.)
+void uniform_grid::pair_planes(const std::vector<body>& bodies, std::vector<index_pair>& pairs,
+                               int threads) {
+  plane_tests_.clear();
   for (std::size_t index : planes_) {
     const body& p = bodies[index];
-    const motion plane_moves = motion_of(p);
     const vector n = e3ga::apply(p.attitude(), p.shape()->normal());
     const real d = p.shape()->offset() + e3ga::scp(n, p.position());
-    for (const bound& b : bounds_) {
-      if (!may_meet(plane_moves, b.moves)) continue;
-      if (e3ga::scp(n, b.centre) - b.radius <= d + plane_margin_) {
-        pairs.emplace_back(std::min(index, b.body), std::max(index, b.body));
+    plane_tests_.push_back(plane_test{n, d + plane_margin_, index, motion_of(p)});
+  }
+  if (plane_tests_.empty()) return;
+  const auto test = [&](std::size_t begin, std::size_t end, std::vector<index_pair>& out) {
+    for (const plane_test& plane : plane_tests_) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const bound& b = bounds_[i];
+        if (!may_meet(plane.moves, b.moves)) continue;
+        if (e3ga::scp(plane.normal, b.centre) - b.radius <= plane.reach) {
+          out.emplace_back(std::min(plane.body, b.body), std::max(plane.body, b.body));
+        }
       }
     }
+  };
+  const int shares = threads_for(threads, bounds_.size(), 4096);
+  if (shares == 1) {
+    test(0, bounds_.size(), pairs);
+    return;
+  }
+  const int share_count = 4 * shares;
+  thread_pairs_.resize(static_cast<std::size_t>(share_count));
+#pragma omp parallel for num_threads(shares) schedule(dynamic, 1)
+  for (int share = 0; share < share_count; ++share) {
+    const auto at = static_cast<std::size_t>(share);
+    thread_pairs_[at].clear();
+    test(bounds_.size() * at / share_count, bounds_.size() * (at + 1) / share_count,
+         thread_pairs_[at]);
+  }
+  for (const std::vector<index_pair>& found : thread_pairs_) {
+    pairs.insert(pairs.end(), found.begin(), found.end());
   }
 }
 

@@ -73,9 +73,9 @@ class uniform_grid {
   void pair_cells(std::vector<index_pair>& pairs, int threads);
   void pair_cell_range(std::size_t begin, std::size_t end, std::vector<index_pair>& pairs) const;
   void pair_large(std::vector<index_pair>& pairs) const;
-  void pair_planes(const std::vector<body>& bodies, std::vector<index_pair>& pairs) const;
+  void pair_planes(const std::vector<body>& bodies, std::vector<index_pair>& pairs, int threads);
   void add_if_overlapping(const bound& a, const bound& b, std::vector<index_pair>& pairs) const;
-  void sort_pairs(std::size_t body_count, std::vector<index_pair>& pairs);
+  void sort_pairs(std::size_t body_count, std::vector<index_pair>& pairs, int threads);
 
   // Scratch, kept between steps so a step allocates nothing once warm.
   std::vector<bound> bounds_;
@@ -89,6 +89,13 @@ class uniform_grid {
   std::vector<std::size_t> starts_, fill_;
   std::vector<index_pair> sorted_;
   std::vector<std::vector<index_pair>> thread_pairs_;  // each thread's share of pair_cells
+  struct plane_test {  // a plane: a bound reaches it where normal . c - r <= reach
+    vector normal;
+    real reach;
+    std::size_t body;
+    motion moves;
+  };
+  std::vector<plane_test> plane_tests_;
   real cell_size_ = 1;
   real plane_margin_ = 0;  // the half of the contact margin bounds do not hold against planes
 };
