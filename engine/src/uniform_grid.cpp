@@ -272,6 +272,14 @@ void uniform_grid::pair_cell_range(std::size_t begin, std::size_t end,
     return a.x == b.x && a.y == b.y && a.z == b.z;
   };
   while (begin < end && begin > 0 && same_cell(entries_[begin - 1], entries_[begin])) ++begin;
+  // A cell's bounds with each other, and with another cell's.
+  const auto pair_within = [&](const run& here) {
+    for (std::size_t i = here.begin; i < here.end; ++i) {
+      for (std::size_t j = i + 1; j < here.end; ++j) {
+        add_if_overlapping(bounds_[entries_[i].bound], bounds_[entries_[j].bound], pairs);
+      }
+    }
+  };
   const auto pair_runs = [&](const run& here, const run& there) {
     for (std::size_t i = here.begin; i < here.end; ++i) {
       for (std::size_t j = there.begin; j < there.end; ++j) {
@@ -291,11 +299,7 @@ void uniform_grid::pair_cell_range(std::size_t begin, std::size_t end,
       const entry& first = entries_[begin];
       const std::size_t cell = dense_index(first.x, first.y, first.z);
       const run here{cell_starts_[cell], cell_starts_[cell + 1]};
-      for (std::size_t i = here.begin; i < here.end; ++i) {
-        for (std::size_t j = i + 1; j < here.end; ++j) {
-          add_if_overlapping(bounds_[entries_[i].bound], bounds_[entries_[j].bound], pairs);
-        }
-      }
+      pair_within(here);
       for (const std::ptrdiff_t k : step) {
         const std::size_t next = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(cell) + k);
         pair_runs(here, run{cell_starts_[next], cell_starts_[next + 1]});
@@ -307,11 +311,7 @@ void uniform_grid::pair_cell_range(std::size_t begin, std::size_t end,
   while (begin < end) {
     const entry& first = entries_[begin];
     const run here = find_cell(first.x, first.y, first.z);
-    for (std::size_t i = here.begin; i < here.end; ++i) {
-      for (std::size_t j = i + 1; j < here.end; ++j) {
-        add_if_overlapping(bounds_[entries_[i].bound], bounds_[entries_[j].bound], pairs);
-      }
-    }
+    pair_within(here);
     for (const auto& offset : forward) {
       pair_runs(here, find_cell(first.x + offset[0], first.y + offset[1], first.z + offset[2]));
     }
