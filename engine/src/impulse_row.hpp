@@ -406,8 +406,10 @@ struct disk_block {
                                         const vector& normal, const row_arms* normal_arms,
                                         real normal_impulse,
                                         const std::array<real, 2>& normal_coupling, bool exact) {
-    const std::array<real, 2> speeds{rows[0].speed(a, b) + normal_coupling[0] * normal_impulse,
-                                     rows[1].speed(a, b) + normal_coupling[1] * normal_impulse};
+    // (A block's rows always turn: no test of each row's `turns`.)
+    const std::array<real, 2> speeds{
+        row_speed(rows[0].linear, &rows[0], a, b) + normal_coupling[0] * normal_impulse,
+        row_speed(rows[1].linear, &rows[1], a, b) + normal_coupling[1] * normal_impulse};
     const std::array<real, 2> total = stopping_total(speeds, accumulated, bound, exact);
     const std::array<real, 2> j{total[0] - accumulated[0], total[1] - accumulated[1]};
     const vector linear = normal_impulse * normal + (j[0] * rows[0].linear + j[1] * rows[1].linear);
