@@ -83,6 +83,26 @@ TEST_F(broad_phase_test, the_grid_finds_exactly_the_contacts_of_all_pairs) {
   }
 }
 
+// Above a few thousand bounds the grid pairs cells, tests planes and sorts
+// each body's pairs on the threads: the candidates are the same, in the
+// same order, on any number.
+TEST_F(broad_phase_test, the_grid_finds_the_same_pairs_on_any_number_of_threads) {
+  const std::vector<body> bodies = random_scene(9000, 6);
+  std::vector<body_pair> one_thread;
+  for (const int threads : {1, 2, 8}) {
+    space grid(broad_phase_kind::uniform_grid);
+    for (std::size_t i = 0; i < bodies.size(); ++i) grid.add(i);
+    std::vector<body_pair> pairs;
+    grid.candidate_pairs(bodies, pairs, real(1) / 240, real(0.001), threads);
+    if (threads == 1) {
+      one_thread = pairs;
+      EXPECT_GT(pairs.size(), bodies.size());
+      continue;
+    }
+    EXPECT_TRUE(pairs == one_thread) << threads << " threads";
+  }
+}
+
 TEST_F(broad_phase_test, touching_spheres_on_cell_boundaries_are_found) {
   // Spheres of one size in a row, each just touching the next (1e-9 m
   // overlap), so centres sit on cell boundaries (cells are one diameter).
