@@ -22,6 +22,34 @@ real largest_magnitude(const vector& v) {
   return std::max({std::fabs(v.e1()), std::fabs(v.e2()), std::fabs(v.e3())});
 }
 
+// Calls find(begin, end, out) over [0, count), appending what it finds to
+// `pairs`: on one thread directly; on several (no fewer than per_thread
+// items each) in four shares per thread, taken as the threads finish (a
+// core slowed by other programs takes fewer), each into its own list of
+// `scratch`. The pairs are sorted afterwards (sort_pairs), so the order in
+// which the shares find them changes nothing.
+template <class Find>
+void find_in_shares(std::size_t count, std::size_t per_thread, int threads,
+                    std::vector<std::vector<index_pair>>& scratch, std::vector<index_pair>& pairs,
+                    const Find& find) {
+  const int shares = threads_for(threads, count, per_thread);
+  if (shares == 1) {
+    find(std::size_t{0}, count, pairs);
+    return;
+  }
+  const int share_count = 4 * shares;
+  scratch.resize(static_cast<std::size_t>(share_count));
+#pragma omp parallel for num_threads(shares) schedule(dynamic, 1)
+  for (int share = 0; share < share_count; ++share) {
+    const auto at = static_cast<std::size_t>(share);
+    scratch[at].clear();
+    find(count * at / share_count, count * (at + 1) / share_count, scratch[at]);
+  }
+  for (const std::vector<index_pair>& found : scratch) {
+    pairs.insert(pairs.end(), found.begin(), found.end());
+  }
+}
+
 std::uint64_t hash(std::int64_t x, std::int64_t y, std::int64_t z) {
   std::uint64_t h = static_cast<std::uint64_t>(x) * 0x9e3779b97f4a7c15ull;
   h ^= static_cast<std::uint64_t>(y) * 0xc2b2ae3d27d4eb4full + (h << 6) + (h >> 2);
@@ -236,29 +264,13 @@ GAPHYS_ALWAYS_INLINE void uniform_grid::add_if_overlapping(const bound& a, const
 // (x, y, z) order, so every two adjacent cells meet once.
 // With several threads, each pairs the cells that start in its share of the
 // sorted entries (a share's first cell may begin before it: that cell is
-// the previous share's). The pairs are sorted afterwards (sort_pairs), so
-// the order in which the shares find them changes nothing.
+// the previous share's).
 void uniform_grid::pair_cells(std::vector<index_pair>& pairs, int threads) {
   // (A few hundred bounds per thread: a box's cells take about 0.1 µs.)
-  const int shares = threads_for(threads, entries_.size(), 256);
-  if (shares == 1) {
-    pair_cell_range(0, entries_.size(), pairs);
-    return;
-  }
-  // Four shares per thread, taken as the threads finish (a core slowed by
-  // other programs takes fewer).
-  const int share_count = 4 * shares;
-  thread_pairs_.resize(static_cast<std::size_t>(share_count));
-#pragma omp parallel for num_threads(shares) schedule(dynamic, 1)
-  for (int share = 0; share < share_count; ++share) {
-    const auto at = static_cast<std::size_t>(share);
-    thread_pairs_[at].clear();
-    pair_cell_range(entries_.size() * at / share_count, entries_.size() * (at + 1) / share_count,
-                    thread_pairs_[at]);
-  }
-  for (const std::vector<index_pair>& found : thread_pairs_) {
-    pairs.insert(pairs.end(), found.begin(), found.end());
-  }
+  find_in_shares(entries_.size(), 256, threads, thread_pairs_, pairs,
+                 [this](std::size_t begin, std::size_t end, std::vector<index_pair>& out) {
+                   pair_cell_range(begin, end, out);
+                 });
 }
 
 // The cells whose first entry lies in [begin, end) of the sorted entries.
@@ -334,8 +346,7 @@ void uniform_grid::pair_large(std::vector<index_pair>& pairs) const {
 // A plane against each dynamic bound, exactly: the sphere reaches the
 // solid side n . x <= d when n . c - r <= d; within the contact margin when
 // n . c - r <= d + margin (the bound holds half of it already).
-// (On the threads for many bounds, each taking shares of the bounds; the
-// pairs are sorted afterwards.)
+// (On the threads for many bounds, each taking shares of them.)
 void uniform_grid::pair_planes(const std::vector<body>& bodies, std::vector<index_pair>& pairs,
                                int threads) {
   plane_tests_.clear();
@@ -357,23 +368,7 @@ void uniform_grid::pair_planes(const std::vector<body>& bodies, std::vector<inde
       }
     }
   };
-  const int shares = threads_for(threads, bounds_.size(), 4096);
-  if (shares == 1) {
-    test(0, bounds_.size(), pairs);
-    return;
-  }
-  const int share_count = 4 * shares;
-  thread_pairs_.resize(static_cast<std::size_t>(share_count));
-#pragma omp parallel for num_threads(shares) schedule(dynamic, 1)
-  for (int share = 0; share < share_count; ++share) {
-    const auto at = static_cast<std::size_t>(share);
-    thread_pairs_[at].clear();
-    test(bounds_.size() * at / share_count, bounds_.size() * (at + 1) / share_count,
-         thread_pairs_[at]);
-  }
-  for (const std::vector<index_pair>& found : thread_pairs_) {
-    pairs.insert(pairs.end(), found.begin(), found.end());
-  }
+  find_in_shares(bounds_.size(), 4096, threads, thread_pairs_, pairs, test);
 }
 
 }  // namespace gaphys::detail

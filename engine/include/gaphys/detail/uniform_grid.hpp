@@ -88,7 +88,7 @@ class uniform_grid {
   std::vector<real> widths_;
   std::vector<std::size_t> starts_, fill_;
   std::vector<index_pair> sorted_;
-  std::vector<std::vector<index_pair>> thread_pairs_;  // each thread's share of pair_cells
+  std::vector<std::vector<index_pair>> thread_pairs_;  // the shares of pair_cells, pair_planes
   struct plane_test {  // a plane: a bound reaches it where normal . c - r <= reach
     vector normal;
     real reach;
