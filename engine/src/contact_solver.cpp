@@ -606,13 +606,7 @@ void contact_solver::solve_plain_contacts(std::size_t first, std::size_t end,
     any = true;
     solver_body& a = solver_bodies_[k.body_a];
     solver_body& b = solver_bodies_[k.body_b];
-    const real relaxation = kind.last_of_all ? real(1) : k.relaxation;
-    const real wanted =
-        relaxation * (k.target_speed - detail::row_speed(k.normal, nullptr, a, b)) * k.normal_mass;
-    const real total = std::max(k.accumulated + wanted, real(0));
-    const real j = total - k.accumulated;
-    k.accumulated = total;
-    largest_change = std::max(largest_change, std::fabs(j) * k.mass_inverse);
+    const real j = normal_impulse(k, nullptr, a, b, kind.last_of_all, largest_change);
     // (Most speculative contacts hold no impulse and get none.)
     if (j != 0) detail::row_apply(k.normal, nullptr, a, b, j);
   }
@@ -634,13 +628,7 @@ GAPHYS_ALWAYS_INLINE void contact_solver::solve_contact(std::size_t s, const swe
   const detail::row_arms* arms = normal_arms(s);
   solver_body& a = solver_bodies_[k.body_a];
   solver_body& b = solver_bodies_[k.body_b];
-  const real relaxation = last ? real(1) : k.relaxation;
-  const real wanted =
-      relaxation * (k.target_speed - detail::row_speed(k.normal, arms, a, b)) * k.normal_mass;
-  const real total = std::max(k.accumulated + wanted, real(0));
-  const real j = total - k.accumulated;
-  k.accumulated = total;
-  largest_change = std::max(largest_change, std::fabs(j) * k.mass_inverse);
+  const real j = normal_impulse(k, arms, a, b, last, largest_change);
   surface_terms* rubbing = k.surface < 0 ? nullptr : &surfaces_[k.surface];
   // Nothing pushes and nothing is held: nothing to rub (a speculative contact).
   if (rubbing && !(k.accumulated > 0) && holds_nothing(*rubbing)) rubbing = nullptr;

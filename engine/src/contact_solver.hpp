@@ -220,6 +220,21 @@ class contact_solver {
                                           sweep_result& result);
   void solve_plain_contacts(std::size_t first, std::size_t end, const sweep_kind& kind,
                             sweep_result& result);
+  // One sweep's normal impulse of constraint k (arms: normal_arms), its
+  // total kept >= 0 and over-relaxed unless `last`: accumulates it, raises
+  // largest_change by its speed change, and returns it, not yet applied.
+  static GAPHYS_ALWAYS_INLINE real normal_impulse(constraint& k, const detail::row_arms* arms,
+                                                  const solver_body& a, const solver_body& b,
+                                                  bool last, real& largest_change) {
+    const real relaxation = last ? real(1) : k.relaxation;
+    const real wanted =
+        relaxation * (k.target_speed - detail::row_speed(k.normal, arms, a, b)) * k.normal_mass;
+    const real total = std::max(k.accumulated + wanted, real(0));
+    const real j = total - k.accumulated;
+    k.accumulated = total;
+    largest_change = std::max(largest_change, std::fabs(j) * k.mass_inverse);
+    return j;
+  }
   void store_impulses(std::vector<contact>& contacts, int threads) const;
   void correct_turning(const world_settings& settings, std::vector<body>& bodies,
                        const std::vector<contact>& contacts, real h);
