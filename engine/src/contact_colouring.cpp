@@ -6,8 +6,17 @@
 
 namespace gaphys::detail {
 
+namespace {
+
+// Each coloured run's block (contact_colouring.hpp): the thread whose slab
+// of space holds its moving body; 0 for the sequential group's.
+void assign_blocks(const std::vector<body>& bodies, int colours, int blocks, int threads,
+                   contact_colouring& out);
+
+}  // namespace
+
 void colour_contacts(const std::vector<body>& bodies, const std::vector<contact>& contacts,
-                     contact_colouring& out, int threads) {
+                     contact_colouring& out, int threads, int blocks) {
   constexpr int sequential = contact_colouring::most_colours;
   // Each contact's bodies, and which bodies have mass, read in one pass
   // each on the threads (contacts and bodies are large objects, and the
@@ -54,45 +63,74 @@ void colour_contacts(const std::vector<body>& bodies, const std::vector<contact>
   for (int colour = 0; colour < sequential; ++colour) {
     if (out.colour_counts[colour] >= contact_colouring::fewest_runs) renamed[colour] = kept++;
   }
-  for (int& colour : out.run_colours) colour = renamed[colour];
+  for (int& colour : out.run_colours) colour = std::min(renamed[colour], kept);
 
-  // Counting sort of the runs by colour, stable.
-  std::vector<std::size_t>& counts = out.colour_counts;
-  counts.assign(kept + 2, 0);
-  for (const int colour : out.run_colours) {
-    ++counts[std::min(colour, kept) + 1];
+  // Each run's block (0 on one), then one stable counting sort of the runs
+  // by (colour, block): runs stay in contact order within a block, and the
+  // sequential group (colour `kept`, one block) keeps contact order.
+  if (blocks > 1) {
+    assign_blocks(bodies, kept, blocks, threads, out);
+  } else {
+    out.run_blocks.assign(runs, 0);
   }
-  for (int colour = 0; colour <= kept; ++colour) counts[colour + 1] += counts[colour];
-  out.colour_starts.assign(counts.begin(), counts.begin() + kept + 1);
+  const std::size_t stride = static_cast<std::size_t>(blocks) + 1;
+  const auto key_of = [&](std::size_t r) {
+    return static_cast<std::size_t>(out.run_colours[r]) * blocks + out.run_blocks[r];
+  };
+  std::vector<std::size_t>& counts = out.colour_counts;
+  counts.assign(static_cast<std::size_t>(kept + 1) * blocks + 1, 0);
+  for (std::size_t r = 0; r < runs; ++r) ++counts[key_of(r) + 1];
+  for (std::size_t k = 1; k < counts.size(); ++k) counts[k] += counts[k - 1];
+  out.colour_starts.resize(static_cast<std::size_t>(kept) + 1);
+  for (int colour = 0; colour <= kept; ++colour) {
+    out.colour_starts[colour] = counts[static_cast<std::size_t>(colour) * blocks];
+  }
+  out.thread_starts.assign(blocks > 1 ? static_cast<std::size_t>(kept) * stride : 0, 0);
+  for (std::size_t colour = 0; blocks > 1 && colour < static_cast<std::size_t>(kept); ++colour) {
+    for (std::size_t b = 0; b <= static_cast<std::size_t>(blocks); ++b) {
+      out.thread_starts[colour * stride + b] = counts[colour * blocks + b];
+    }
+  }
   std::vector<std::size_t>& sorted_runs = out.sorted_runs;
   sorted_runs.resize(runs);
-  for (std::size_t r = 0; r < runs; ++r) {
-    sorted_runs[counts[std::min(out.run_colours[r], kept)]++] = r;
+  for (std::size_t r = 0; r < runs; ++r) sorted_runs[counts[key_of(r)]++] = r;
+
+  // Where each run starts in the order, then the order itself (on the
+  // threads: each run's contacts are written to their own places).
+  out.run_starts.resize(runs + 1);
+  out.run_starts[0] = 0;
+  for (std::size_t at = 0; at < runs; ++at) {
+    const std::size_t r = sorted_runs[at];
+    out.run_starts[at + 1] = out.run_starts[at] + (begins[r + 1] - begins[r]);
   }
-  out.order.clear();
-  out.run_starts.clear();
-  for (const std::size_t r : sorted_runs) {
-    out.run_starts.push_back(out.order.size());
-    for (std::size_t i = begins[r]; i < begins[r + 1]; ++i) out.order.push_back(i);
-  }
-  out.run_starts.push_back(out.order.size());
+  out.order.resize(contacts.size());
+  parallel_for(threads, runs, 4096, [&](std::size_t at) {
+    const std::size_t r = sorted_runs[at];
+    std::size_t to = out.run_starts[at];
+    for (std::size_t i = begins[r]; i < begins[r + 1]; ++i) out.order[to++] = i;
+  });
 }
 
-void split_colours(const std::vector<body>& bodies, int threads, contact_colouring& out) {
-  const std::size_t coloured_runs = out.colour_starts.back();
-  // Each run's moving body's position (colour_contacts left out.moves), on
-  // the threads: a look-up in the contacts and one in the bodies per run.
-  out.positions.resize(coloured_runs);
-  parallel_for(threads, coloured_runs, 2048, [&](std::size_t run) {
-    const auto [body_a, body_b] = out.pairs[out.order[out.run_starts[run]]];
-    out.positions[run] = bodies[out.moves[body_a] ? body_a : body_b].position();
+namespace {
+
+void assign_blocks(const std::vector<body>& bodies, int colours, int blocks, int threads,
+                   contact_colouring& out) {
+  const std::size_t runs = out.run_colours.size();
+  const auto coloured = [&](std::size_t r) { return out.run_colours[r] < colours; };
+  // Each run's moving body's position, on the threads: a look-up in the
+  // contacts and one in the bodies per run.
+  out.positions.resize(runs);
+  parallel_for(threads, runs, 2048, [&](std::size_t r) {
+    const auto [body_a, body_b] = out.pairs[out.run_begins[r]];
+    out.positions[r] = bodies[out.moves[body_a] ? body_a : body_b].position();
   });
-  const auto position_of = [&](std::size_t run) { return out.positions[run]; };
-  // The axis along which the runs' bodies spread most.
-  vector low = coloured_runs > 0 ? position_of(0) : vector{};
-  vector high = low;
-  for (std::size_t run = 0; run < coloured_runs; ++run) {
-    const vector p = position_of(run);
+  // The axis along which the coloured runs' bodies spread most.
+  bool first = true;
+  vector low, high;
+  for (std::size_t r = 0; r < runs; ++r) {
+    if (!coloured(r)) continue;
+    const vector& p = out.positions[r];
+    if (first) low = high = p, first = false;
     low = vector{std::min(low.e1(), p.e1()), std::min(low.e2(), p.e2()), std::min(low.e3(), p.e3())};
     high = vector{std::max(high.e1(), p.e1()), std::max(high.e2(), p.e2()), std::max(high.e3(), p.e3())};
   }
@@ -104,65 +142,42 @@ void split_colours(const std::vector<body>& bodies, int threads, contact_colouri
     return axis == 0 ? v.e1() : axis == 1 ? v.e2() : v.e3();
   };
   // The contacts in each of `bins` slices of the axis, then each run's
-  // thread: the share its slice falls in.
+  // block: the share its slice falls in.
   constexpr std::size_t bins = 1024;
   const real start = along(low), span = along(extent);
   std::vector<std::size_t>& weight = out.bin_weights;
   weight.assign(bins + 1, 0);
-  out.run_bins.resize(coloured_runs);
-  for (std::size_t run = 0; run < coloured_runs; ++run) {
+  out.run_bins.resize(runs);
+  for (std::size_t r = 0; r < runs; ++r) {
+    if (!coloured(r)) continue;
     std::size_t bin = 0;
     if (span > 0) {
       // (Written so that a NaN or an infinity, from a world that has blown
       // up, lands in a bin instead of an undefined conversion.)
-      const real x = (along(position_of(run)) - start) / span * real(bins - 1);
+      const real x = (along(out.positions[r]) - start) / span * real(bins - 1);
       if (!(x < real(bins - 1))) {
         bin = x > 0 ? bins - 1 : 0;
       } else if (x > 0) {
         bin = static_cast<std::size_t>(x);
       }
     }
-    out.run_bins[run] = bin;
-    weight[bin + 1] += out.run_starts[run + 1] - out.run_starts[run];
+    out.run_bins[r] = bin;
+    weight[bin + 1] += out.run_begins[r + 1] - out.run_begins[r];
   }
   for (std::size_t b = 1; b <= bins; ++b) weight[b] += weight[b - 1];
   const std::size_t total = weight.back();
-  const auto thread_of = [&](std::size_t run) {
-    const std::size_t share = total == 0 ? 0 : weight[out.run_bins[run]] * threads / total;
-    return std::min<std::size_t>(share, threads - 1);
-  };
-
-  // Each colour's runs by thread (a stable counting sort), in contact order
-  // within a thread; the sequential group as it was.
-  out.run_threads.resize(coloured_runs);
-  for (std::size_t run = 0; run < coloured_runs; ++run) out.run_threads[run] = thread_of(run);
-  const std::size_t stride = static_cast<std::size_t>(threads) + 1;
-  out.thread_starts.assign(out.colours() * stride, 0);
-  out.sorted_runs.resize(coloured_runs);
-  for (std::size_t colour = 0; colour < out.colours(); ++colour) {
-    const std::size_t first = out.colour_starts[colour], end = out.colour_starts[colour + 1];
-    std::size_t* starts = &out.thread_starts[colour * stride];
-    for (std::size_t run = first; run < end; ++run) ++starts[out.run_threads[run] + 1];
-    starts[0] = first;
-    for (int t = 0; t < threads; ++t) starts[t + 1] += starts[t];
-    weight.assign(starts, starts + threads);  // each thread's next place
-    for (std::size_t run = first; run < end; ++run) {
-      out.sorted_runs[weight[out.run_threads[run]]++] = run;
+  out.run_blocks.resize(runs);
+  for (std::size_t r = 0; r < runs; ++r) {
+    // (The sequential group is one block.)
+    if (!coloured(r) || total == 0) {
+      out.run_blocks[r] = 0;
+      continue;
     }
+    const std::size_t share = weight[out.run_bins[r]] * blocks / total;
+    out.run_blocks[r] = std::min<std::size_t>(share, blocks - 1);
   }
-  out.split_order.clear();
-  out.split_run_starts.clear();
-  const auto append = [&](std::size_t run) {
-    out.split_run_starts.push_back(out.split_order.size());
-    for (std::size_t i = out.run_starts[run]; i < out.run_starts[run + 1]; ++i) {
-      out.split_order.push_back(out.order[i]);
-    }
-  };
-  for (std::size_t at = 0; at < coloured_runs; ++at) append(out.sorted_runs[at]);
-  for (std::size_t run = coloured_runs; run < out.runs(); ++run) append(run);
-  out.split_run_starts.push_back(out.split_order.size());
-  out.order.swap(out.split_order);
-  out.run_starts.swap(out.split_run_starts);
 }
+
+}  // namespace
 
 }  // namespace gaphys::detail

@@ -8,13 +8,24 @@
 // floor). The runs of one colour can then be solved in any order, or at
 // once on several threads, with the same result to the bit; colours are
 // solved one after the other. The colours depend on the contacts only,
-// never on the number of threads (split_colours only reorders runs within
-// a colour): a step is the same with 1, 2 or 8.
+// never on the number of threads (the blocks below only reorder runs
+// within a colour): a step is the same with 1, 2 or 8.
 //
 // Colours with few runs would cost a thread barrier each for little work:
 // runs that find no colour among the first `most_colours`, and the runs of
 // colours smaller than `fewest_runs` (both fixed, so the order stays
 // independent of the threads), go to a last, sequential group.
+//
+// For T threads, each colour's runs are ordered in T blocks, one per
+// thread: the runs whose moving body (for two, body_a) lies in the thread's
+// slab of space. The slabs are cut across the axis along which those
+// bodies spread most, into shares of about equal numbers of contacts. A
+// body then stays with one thread from colour to colour and from sweep to
+// sweep, its velocities in that core's cache, but for bodies touching
+// across a cut; and each thread reads its contacts front to back. (Split by
+// position in each colour's list instead, bodies, whose indices say nothing
+// of where they are, changed cores at every colour: 10,000 spheres stepped
+// slower on two threads than on one.)
 #pragma once
 
 #include <cstddef>
@@ -40,9 +51,9 @@ struct contact_colouring {
   // thread (it may be empty).
   std::vector<std::size_t> colour_starts;
 
-  // After split_colours for T threads: thread t solves runs
+  // For T > 1 blocks: thread t solves runs
   // thread_starts[c * (T + 1) + t] .. thread_starts[c * (T + 1) + t + 1] - 1
-  // of colour c.
+  // of colour c. (Empty for one.)
   std::vector<std::size_t> thread_starts;
 
   std::size_t runs() const { return run_starts.size() - 1; }
@@ -53,33 +64,21 @@ struct contact_colouring {
 
   // Scratch, kept to reuse its memory from step to step.
   std::vector<std::pair<std::size_t, std::size_t>> pairs;  // per contact: its bodies
-  std::vector<char> moves;                   // per body: it has mass
-  std::vector<vector> positions;             // per coloured run, its moving body's (split_colours)
+  std::vector<char> moves;                                 // per body: it has mass
   std::vector<std::uint32_t> body_colours;  // bit c: the body has a run of colour c
-  std::vector<int> run_colours;             // per run in contact order
-  std::vector<std::size_t> run_begins;      // per run in contact order, and the end
-  std::vector<std::size_t> colour_counts;
-  std::vector<std::size_t> sorted_runs;
-  std::vector<std::size_t> run_bins, run_threads, bin_weights, split_order, split_run_starts;
+  // Per run, in contact order:
+  std::vector<std::size_t> run_begins;  // its first contact (and then the end)
+  std::vector<int> run_colours;         // its colour (the sequential group: colours())
+  std::vector<vector> positions;        // its moving body's position
+  std::vector<std::size_t> run_bins, run_blocks;
+  std::vector<std::size_t> colour_counts, bin_weights, sorted_runs;
 };
 
-// `contacts` sorted by body pair, as the narrow phase makes them.
-// `threads` (world_settings::threads) reads the contacts and bodies; the
-// colours are the same with any number.
+// `contacts` sorted by body pair, as the narrow phase makes them. `threads`
+// (world_settings::threads) reads the contacts and bodies; the colours are
+// the same with any number. `blocks`: the threads that will solve the
+// colours (thread_starts), 1 for none.
 void colour_contacts(const std::vector<body>& bodies, const std::vector<contact>& contacts,
-                     contact_colouring& out, int threads);
-
-// Reorders the runs within each colour (which changes no result) so that
-// each of `threads` threads solves a contiguous block of them: the runs
-// whose moving body (for two, body_a) lies in its slab of space. The slabs
-// are cut across the axis along which those bodies spread most, into
-// shares of about equal numbers of contacts. A body then stays with one
-// thread from colour to colour and from sweep to sweep, its velocities in
-// that core's cache, but for bodies touching across a cut; and each thread
-// reads its contacts front to back. (Split by position in each colour's
-// list instead, bodies, whose indices say nothing of where they are,
-// changed cores at every colour: 10,000 spheres stepped slower on two
-// threads than on one.)
-void split_colours(const std::vector<body>& bodies, int threads, contact_colouring& colouring);
+                     contact_colouring& out, int threads, int blocks);
 
 }  // namespace gaphys::detail

@@ -513,7 +513,7 @@ void contact_solver::solve_contacts(const world_settings& settings) {
   // sweeps: a thread may write the next sweep's while another still reads
   // this one's.
   thread_results_.assign(2 * threads, sweep_result{});
-  // A thread solves its own block of each colour (split_colours), a chunk
+  // A thread solves its own block of each colour (contact_colouring.hpp), a chunk
   // of items at a time, and then helps with the others' blocks of the colour
   // where they are not done: where one core runs slower than the other (a
   // machine shared with other programs), the faster takes on more. The runs
@@ -689,11 +689,10 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   // The constraints in the sweeps' order, so that each sweep reads them
   // front to back; where each one's optional terms go, then the terms (on
   // several threads for many contacts: a box's take about 0.2 µs).
-  detail::colour_contacts(bodies, contacts, colouring_, settings.threads);
   const std::size_t count = contacts.size();
   // (A few hundred contacts per thread: fewer are not worth a barrier per colour.)
   sweep_threads_ = detail::threads_for(settings.threads, count, 256);
-  if (sweep_threads_ > 1) detail::split_colours(bodies, sweep_threads_, colouring_);
+  detail::colour_contacts(bodies, contacts, colouring_, settings.threads, sweep_threads_);
   // What the rows read of each body in a contact (row_body), and what the
   // constraints read of its shapes, once.
   row_bodies_.resize(bodies.size());
