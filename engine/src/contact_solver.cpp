@@ -395,9 +395,9 @@ void contact_solver::resolve_impacts(const world_settings& settings, real h) {
 // to zero), so the result does not depend on them, only how fast the sweeps
 // get there. Friction and resistance impulses are kept as world-frame
 // vectors and bivectors and read in the new contact frame.
-void contact_solver::warm_start(const std::vector<body>& bodies,
-                                const std::vector<contact>& contacts,
-                                const std::vector<contact>& previous, int threads) {
+void contact_solver::match_previous(const std::vector<body>& bodies,
+                                    const std::vector<contact>& contacts,
+                                    const std::vector<contact>& previous, int threads) {
   // Each old contact warm starts one new one at most: two new points near
   // one old one would both take its whole impulse.
   previous_used_.assign(previous.size(), 0);
@@ -418,6 +418,10 @@ void contact_solver::warm_start(const std::vector<body>& bodies,
       if (match != previous.size()) previous_used_[match] = 1;
     }
   }
+}
+
+void contact_solver::warm_start(const std::vector<contact>& contacts,
+                                const std::vector<contact>& previous) {
   // The old impulses, in contact order: they add up on each body in it.
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const std::size_t match = matches_[i];
@@ -682,6 +686,31 @@ void contact_solver::store_impulses(std::vector<contact>& contacts, int threads)
   });
 }
 
+void contact_solver::prepare_bodies(const std::vector<body>& bodies,
+                                    const std::vector<body_velocity>& start,
+                                    const std::vector<contact>& contacts,
+                                    const std::vector<contact>& previous, int threads) {
+  // What the rows read of each body in a contact (row_body), and what the
+  // constraints read of its shapes, once.
+  row_bodies_.resize(bodies.size());
+  shape_summaries_.resize(bodies.size());
+  in_contact_.assign(bodies.size(), 0);
+  for (const contact& c : contacts) in_contact_[c.body_a] = in_contact_[c.body_b] = 1;
+  detail::parallel_for(threads, bodies.size(), 2048, [&](std::size_t i) {
+    if (!in_contact_[i]) return;
+    row_bodies_[i] = detail::row_body::of(bodies[i]);
+    shape_summaries_[i] = summarize(bodies[i]);
+  });
+  solver_bodies_.resize(bodies.size());
+  impact_bodies_.resize(bodies.size());
+  detail::parallel_for(threads, bodies.size(), 2048, [&](std::size_t i) {
+    const body& b = bodies[i];
+    solver_bodies_[i] = {b.velocity_, b.angular_velocity_, b.inverse_mass_};
+    impact_bodies_[i] = {start[i].linear, start[i].angular, b.inverse_mass_};
+  });
+  match_previous(bodies, contacts, previous, threads);
+}
+
 void contact_solver::solve_velocities(const world_settings& settings, std::vector<body>& bodies,
                                       const std::vector<body_velocity>& start,
                                       std::vector<contact>& contacts,
@@ -692,18 +721,22 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   const std::size_t count = contacts.size();
   // (A few hundred contacts per thread: fewer are not worth a barrier per colour.)
   sweep_threads_ = detail::threads_for(settings.threads, count, 256);
-  detail::colour_contacts(bodies, contacts, colouring_, settings.threads, sweep_threads_);
-  // What the rows read of each body in a contact (row_body), and what the
-  // constraints read of its shapes, once.
-  row_bodies_.resize(bodies.size());
-  shape_summaries_.resize(bodies.size());
-  in_contact_.assign(bodies.size(), 0);
-  for (const contact& c : contacts) in_contact_[c.body_a] = in_contact_[c.body_b] = 1;
-  detail::parallel_for(settings.threads, bodies.size(), 2048, [&](std::size_t i) {
-    if (!in_contact_[i]) return;
-    row_bodies_[i] = detail::row_body::of(bodies[i]);
-    shape_summaries_[i] = summarize(bodies[i]);
-  });
+  // The colouring is mostly serial (its greedy pass); on two threads or
+  // more, one colours while another prepares what needs no colouring.
+  // (One after the other, each on the threads, the colouring left the
+  // second thread idle for half a millisecond of a 10,000-sphere step.)
+  if (sweep_threads_ > 1) {
+#pragma omp parallel sections num_threads(2)
+    {
+#pragma omp section
+      detail::colour_contacts(bodies, contacts, colouring_, 1, sweep_threads_);
+#pragma omp section
+      prepare_bodies(bodies, start, contacts, previous, 1);
+    }
+  } else {
+    detail::colour_contacts(bodies, contacts, colouring_, settings.threads, sweep_threads_);
+    prepare_bodies(bodies, start, contacts, previous, settings.threads);
+  }
   slot_.resize(count);
   terms_at_.resize(count);
   for (std::size_t s = 0; s < count; ++s) slot_[colouring_.order[s]] = s;
@@ -736,17 +769,10 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   });
   set_relaxation(settings, bodies);
 
-  solver_bodies_.resize(bodies.size());
-  impact_bodies_.resize(bodies.size());
-  detail::parallel_for(settings.threads, bodies.size(), 2048, [&](std::size_t i) {
-    const body& b = bodies[i];
-    solver_bodies_[i] = {b.velocity_, b.angular_velocity_, b.inverse_mass_};
-    impact_bodies_[i] = {start[i].linear, start[i].angular, b.inverse_mass_};
-  });
   impacted_.assign(bodies.size(), 0);
 
   resolve_impacts(settings, h);
-  warm_start(bodies, contacts, previous, settings.threads);
+  warm_start(contacts, previous);
   pack_batches(settings);
   solve_contacts(settings);
   unpack_batches();

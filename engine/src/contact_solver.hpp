@@ -160,8 +160,18 @@ class contact_solver {
   void set_relaxation(const world_settings& settings, const std::vector<body>& bodies);
   void resolve_impacts(const world_settings& settings, real h);
   bool impact(std::size_t index, real threshold, real h);
-  void warm_start(const std::vector<body>& bodies, const std::vector<contact>& contacts,
-                  const std::vector<contact>& previous, int threads);
+  // The warm start in two parts: which old contact each new one starts from
+  // (matches_; needs neither the colouring nor the constraints), then their
+  // impulses applied.
+  void match_previous(const std::vector<body>& bodies, const std::vector<contact>& contacts,
+                      const std::vector<contact>& previous, int threads);
+  void warm_start(const std::vector<contact>& contacts, const std::vector<contact>& previous);
+  // What solve_velocities prepares from the bodies and contacts alone,
+  // before the constraints: the rows' and shapes' summaries of the bodies
+  // in contact, the solver's bodies, the warm start's matches.
+  void prepare_bodies(const std::vector<body>& bodies, const std::vector<body_velocity>& start,
+                      const std::vector<contact>& contacts, const std::vector<contact>& previous,
+                      int threads);
   // Which contacts a sweep solves, and which of its sweeps are plain.
   struct sweep_kind {
     bool turning_only;     // past solver_iterations: only contacts that turn a body
