@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <tuple>
 
+#include "counting_sort.hpp"
 #include "precision.hpp"
 #include "thread_count.hpp"
 
@@ -65,7 +67,7 @@ bool uniform_grid::find_pairs(const std::vector<body>& bodies, const std::vector
   pairs.clear();
   collect(bodies, shaped, lookahead, margin, threads);
   plane_margin_ = margin / 2;
-  if (!sort_into_cells()) return false;
+  if (!sort_into_cells(threads)) return false;
   pair_cells(pairs, threads);
   pair_large(pairs);
   pair_planes(bodies, pairs, threads);
@@ -78,12 +80,10 @@ bool uniform_grid::find_pairs(const std::vector<body>& bodies, const std::vector
 // (The runs on the threads, for many bodies; each is a few pairs, sorted by
 // insertion.)
 void uniform_grid::sort_pairs(std::size_t body_count, std::vector<index_pair>& pairs, int threads) {
-  starts_.assign(body_count + 1, 0);
-  for (const index_pair& p : pairs) ++starts_[p.first + 1];
-  for (std::size_t i = 0; i < body_count; ++i) starts_[i + 1] += starts_[i];
   sorted_.resize(pairs.size());
-  fill_ = starts_;
-  for (const index_pair& p : pairs) sorted_[fill_[p.first]++] = p;
+  counting_sort(
+      threads, 8192, pairs.size(), body_count, [&](std::size_t i) { return pairs[i].first; },
+      starts_, fill_, [&](std::size_t i, std::size_t at) { sorted_[at] = pairs[i]; });
   parallel_for(threads, body_count, 4096, [&](std::size_t i) {
     index_pair* first = sorted_.data() + starts_[i];
     index_pair* last = sorted_.data() + starts_[i + 1];
@@ -156,26 +156,49 @@ void uniform_grid::collect(const std::vector<body>& bodies, const std::vector<st
 // cells' runs: in a dense array over the occupied block of cells when it is
 // not much larger than the number of bounds (a counting sort, and lookups
 // by index), else in a hash table.
-bool uniform_grid::sort_into_cells() {
-  unsorted_.clear();
-  std::int64_t low[3] = {0, 0, 0}, high[3] = {0, 0, 0};
-  std::size_t next_large = 0;
-  for (std::size_t i = 0; i < bounds_.size(); ++i) {
-    if (next_large < large_.size() && large_[next_large] == i) {
-      ++next_large;
+bool uniform_grid::sort_into_cells(int threads) {
+  // Each ordinary bound's cell on its own (on the threads, for many), and
+  // the block they occupy; then the large bounds' places taken out.
+  const std::size_t count = bounds_.size();
+  unsorted_.resize(count);
+  large_marks_.assign(large_.empty() ? 0 : count, 0);
+  for (const std::size_t i : large_) large_marks_[i] = 1;
+  constexpr std::int64_t none = std::numeric_limits<std::int64_t>::max();
+  std::int64_t low_x = none, low_y = none, low_z = none;
+  std::int64_t high_x = -none, high_y = -none, high_z = -none;
+  bool too_far = false;
+  const int shares = threads_for(threads, count, 4096);
+  const auto end = static_cast<std::ptrdiff_t>(count);
+#pragma omp parallel for num_threads(shares) schedule(static) if (shares > 1)         \
+    reduction(min                                                                     \
+              : low_x, low_y, low_z) reduction(max                                    \
+                                               : high_x, high_y, high_z) reduction(|| \
+                                                                                   : too_far)
+  for (std::ptrdiff_t k = 0; k < end; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    if (!large_marks_.empty() && large_marks_[i]) continue;
+    const vector scaled = bounds_[i].centre / cell_size_;
+    if (!(largest_magnitude(scaled) < largest_cell_coordinate)) {
+      too_far = true;
       continue;
     }
-    const vector scaled = bounds_[i].centre / cell_size_;
-    if (!(largest_magnitude(scaled) < largest_cell_coordinate)) return false;
-    const std::int64_t at[3] = {static_cast<std::int64_t>(std::floor(scaled.e1())),
-                                static_cast<std::int64_t>(std::floor(scaled.e2())),
-                                static_cast<std::int64_t>(std::floor(scaled.e3()))};
-    for (int axis = 0; axis < 3; ++axis) {
-      low[axis] = unsorted_.empty() ? at[axis] : std::min(low[axis], at[axis]);
-      high[axis] = unsorted_.empty() ? at[axis] : std::max(high[axis], at[axis]);
-    }
-    unsorted_.push_back(entry{at[0], at[1], at[2], i});
+    const entry e{static_cast<std::int64_t>(std::floor(scaled.e1())),
+                  static_cast<std::int64_t>(std::floor(scaled.e2())),
+                  static_cast<std::int64_t>(std::floor(scaled.e3())), i};
+    unsorted_[i] = e;
+    low_x = std::min(low_x, e.x), low_y = std::min(low_y, e.y), low_z = std::min(low_z, e.z);
+    high_x = std::max(high_x, e.x), high_y = std::max(high_y, e.y), high_z = std::max(high_z, e.z);
   }
+  if (too_far) return false;
+  if (!large_.empty()) {
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+      if (!large_marks_[i]) unsorted_[kept++] = unsorted_[i];
+    }
+    unsorted_.resize(kept);
+  }
+  if (unsorted_.empty()) low_x = low_y = low_z = high_x = high_y = high_z = 0;
+  const std::int64_t low[3] = {low_x, low_y, low_z}, high[3] = {high_x, high_y, high_z};
   // One empty cell more on each side: every neighbour of an occupied cell
   // is then inside the block, and the dense pairing finds it by index
   // without a bounds check (pair_cell_range).
@@ -186,7 +209,7 @@ bool uniform_grid::sort_into_cells() {
   const double cells = double(extent_[0]) * double(extent_[1]) * double(extent_[2]);
   dense_ = cells <= 8.0 * double(unsorted_.size()) + 4096;
   if (dense_) {
-    sort_dense(static_cast<std::size_t>(cells));
+    sort_dense(static_cast<std::size_t>(cells), threads);
   } else {
     sort_hashed();
   }
@@ -199,13 +222,15 @@ std::size_t uniform_grid::dense_index(std::int64_t x, std::int64_t y, std::int64
 }
 
 // A counting sort by cell index; within a cell the bounds keep their order.
-void uniform_grid::sort_dense(std::size_t cells) {
-  cell_starts_.assign(cells + 1, 0);
-  for (const entry& e : unsorted_) ++cell_starts_[dense_index(e.x, e.y, e.z) + 1];
-  for (std::size_t c = 0; c < cells; ++c) cell_starts_[c + 1] += cell_starts_[c];
-  cell_fill_.assign(cell_starts_.begin(), cell_starts_.end() - 1);
+// (On the threads for many bounds.)
+void uniform_grid::sort_dense(std::size_t cells, int threads) {
   entries_.resize(unsorted_.size());
-  for (const entry& e : unsorted_) entries_[cell_fill_[dense_index(e.x, e.y, e.z)]++] = e;
+  const auto cell_of = [&](std::size_t i) {
+    const entry& e = unsorted_[i];
+    return dense_index(e.x, e.y, e.z);
+  };
+  counting_sort(threads, 4096, unsorted_.size(), cells, cell_of, cell_starts_, cell_fill_,
+                [&](std::size_t i, std::size_t at) { entries_[at] = unsorted_[i]; });
 }
 
 void uniform_grid::sort_hashed() {

@@ -65,8 +65,8 @@ class uniform_grid {
 
   void collect(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped,
                real lookahead, real margin, int threads);
-  bool sort_into_cells();
-  void sort_dense(std::size_t cells);
+  bool sort_into_cells(int threads);
+  void sort_dense(std::size_t cells, int threads);
   void sort_hashed();
   std::size_t dense_index(std::int64_t x, std::int64_t y, std::int64_t z) const;
   run find_cell(std::int64_t x, std::int64_t y, std::int64_t z) const;
@@ -80,10 +80,11 @@ class uniform_grid {
   // Scratch, kept between steps so a step allocates nothing once warm.
   std::vector<bound> bounds_;
   std::vector<std::size_t> large_, planes_;
+  std::vector<char> large_marks_;  // per bound, whether it is large (when some are)
   std::vector<entry> unsorted_, entries_;
   bool dense_ = true;
   std::int64_t origin_[3] = {0, 0, 0}, extent_[3] = {0, 0, 0};  // the occupied block of cells
-  std::vector<std::size_t> cell_starts_, cell_fill_;            // dense: runs by cell index
+  std::vector<std::size_t> cell_starts_, cell_fill_;  // dense: runs by cell index, scratch
   std::vector<cell> table_;  // sparse: open addressing, power-of-two size
   std::vector<real> widths_;
   std::vector<std::size_t> starts_, fill_;

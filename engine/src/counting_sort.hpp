@@ -1,0 +1,79 @@
+// A stable counting sort on the threads: the order is the one thread's
+// (items of one key in index order), whatever the number of threads, so
+// what is built from it is the same on any number (docs/engine.md,
+// "Threads").
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+#include <omp.h>
+
+#include "thread_count.hpp"
+
+#ifndef _OPENMP
+#error "counting_sort.hpp needs OpenMP (without it the threads' shares would be skipped)"
+#endif
+
+namespace gaphys::detail {
+
+// Calls place(i, at) once for every item i in [0, count), `at` being its
+// place in the order by key(i) (in [0, keys)); sets starts[k] (keys + 1
+// entries) to where key k's items begin. On threads_for(threads, count,
+// per_thread) threads, each counting and placing a contiguous share of the
+// items, and adding up the counts of a share of the keys; `offsets` is
+// scratch. key(i) is asked twice per item.
+template <class Key, class Place>
+void counting_sort(int threads, std::size_t per_thread, std::size_t count, std::size_t keys,
+                   const Key& key, std::vector<std::size_t>& starts,
+                   std::vector<std::size_t>& offsets, const Place& place) {
+  starts.assign(keys + 1, 0);
+  const int parts = threads_for(threads, count, per_thread);
+  if (parts == 1) {
+    for (std::size_t i = 0; i < count; ++i) ++starts[key(i) + 1];
+    for (std::size_t k = 0; k < keys; ++k) starts[k + 1] += starts[k];
+    offsets.assign(starts.begin(), starts.end() - 1);
+    for (std::size_t i = 0; i < count; ++i) place(i, offsets[key(i)]++);
+    return;
+  }
+  const auto shares = static_cast<std::size_t>(parts);
+  // Part p's count of key k at p * keys + k; then, for each thread's share
+  // of the keys, how many items they have.
+  offsets.assign(shares * keys + shares + 1, 0);
+  std::size_t* key_share_totals = &offsets[shares * keys];
+#pragma omp parallel num_threads(parts)
+  {
+    const auto part = static_cast<std::size_t>(omp_get_thread_num());
+    const std::size_t first = count * part / shares, end = count * (part + 1) / shares;
+    std::size_t* counts = &offsets[part * keys];
+    for (std::size_t i = first; i < end; ++i) ++counts[key(i)];
+#pragma omp barrier
+    // This thread's share of the keys: their items over all parts...
+    const std::size_t first_key = keys * part / shares, end_key = keys * (part + 1) / shares;
+    std::size_t total = 0;
+    for (std::size_t k = first_key; k < end_key; ++k) {
+      for (std::size_t p = 0; p < shares; ++p) total += offsets[p * keys + k];
+    }
+    key_share_totals[part + 1] = total;
+#pragma omp barrier
+#pragma omp single
+    for (std::size_t p = 0; p < shares; ++p) key_share_totals[p + 1] += key_share_totals[p];
+    // (single's barrier) ...then where each key, and each part's items of
+    // it, begin.
+    std::size_t at = key_share_totals[part];
+    for (std::size_t k = first_key; k < end_key; ++k) {
+      starts[k] = at;
+      for (std::size_t p = 0; p < shares; ++p) {
+        const std::size_t items = offsets[p * keys + k];
+        offsets[p * keys + k] = at;
+        at += items;
+      }
+    }
+#pragma omp barrier
+    for (std::size_t i = first; i < end; ++i) place(i, counts[key(i)]++);
+  }
+  starts[keys] = count;
+}
+
+}  // namespace gaphys::detail
