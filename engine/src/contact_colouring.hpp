@@ -41,7 +41,7 @@ namespace gaphys::detail {
 struct contact_colouring {
   // The contacts (indices into the contact list) in solving order: colour
   // by colour, runs kept whole and in contact order within a colour (or
-  // within each thread's block of it, after split_colours), the sequential
+  // within each thread's block of it, for several blocks), the sequential
   // group last.
   std::vector<std::size_t> order;
   // Run r is order[run_starts[r]] .. order[run_starts[r + 1] - 1].
