@@ -532,7 +532,7 @@ void contact_solver::solve_contacts(const world_settings& settings) {
   constexpr std::size_t chunk = 32;  // items per claim: a few microseconds of work
 #pragma omp parallel num_threads(threads)
   {
-    const int thread = omp_get_thread_num();
+    const int thread = omp_get_thread_num(), team = omp_get_num_threads();
     for (int sweep = 0; sweep < sweeps; ++sweep) {
       const sweep_kind kind = kind_of(sweep);
       block_claim* claims = &claims_[static_cast<std::size_t>(sweep % 2) * blocks];
@@ -550,8 +550,12 @@ void contact_solver::solve_contacts(const world_settings& settings) {
           }
         }
         // This block's claims in the next sweep: every thread is done with
-        // them since the last sweep's barrier after this colour.
-        next_claims[colour * threads + thread].next.store(0, std::memory_order_relaxed);
+        // them since the last sweep's barrier after this colour. (And those
+        // of blocks no thread owns, where OpenMP gave fewer threads than
+        // asked: inside an application's own parallel region, one.)
+        for (int owned = thread; owned < threads; owned += team) {
+          next_claims[colour * threads + owned].next.store(0, std::memory_order_relaxed);
+        }
         // The next colour's runs may change the bodies this one's changed.
 #pragma omp barrier
       }

@@ -37,13 +37,16 @@ void counting_sort(int threads, std::size_t per_thread, std::size_t count, std::
     for (std::size_t i = 0; i < count; ++i) place(i, offsets[key(i)]++);
     return;
   }
-  const auto shares = static_cast<std::size_t>(parts);
+  const auto most = static_cast<std::size_t>(parts);
   // Part p's count of key k at p * keys + k; then, for each thread's share
   // of the keys, how many items they have.
-  offsets.assign(shares * keys + shares + 1, 0);
-  std::size_t* key_share_totals = &offsets[shares * keys];
+  offsets.assign(most * keys + most + 1, 0);
+  std::size_t* key_share_totals = &offsets[most * keys];
 #pragma omp parallel num_threads(parts)
   {
+    // (As many parts as the threads OpenMP gives: inside an application's
+    // own parallel region, one.)
+    const auto shares = static_cast<std::size_t>(omp_get_num_threads());
     const auto part = static_cast<std::size_t>(omp_get_thread_num());
     const std::size_t first = count * part / shares, end = count * (part + 1) / shares;
     std::size_t* counts = &offsets[part * keys];

@@ -101,6 +101,17 @@ TEST_F(broad_phase_test, the_grid_finds_the_same_pairs_on_any_number_of_threads)
     }
     EXPECT_TRUE(pairs == one_thread) << threads << " threads";
   }
+  // Asked for two threads inside an application's own parallel region
+  // (where OpenMP gives a nested region one thread): the same pairs.
+  std::vector<body_pair> nested;
+#pragma omp parallel num_threads(2)
+#pragma omp single
+  {
+    space grid(broad_phase_kind::uniform_grid);
+    for (std::size_t i = 0; i < bodies.size(); ++i) grid.add(i);
+    grid.candidate_pairs(bodies, nested, real(1) / 240, real(0.001), 2);
+  }
+  EXPECT_TRUE(nested == one_thread);
 }
 
 TEST_F(broad_phase_test, touching_spheres_on_cell_boundaries_are_found) {

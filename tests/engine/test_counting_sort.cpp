@@ -66,6 +66,14 @@ TEST(counting_sort_test, orders_as_a_stable_sort_on_any_number_of_threads) {
           EXPECT_EQ(got.starts, expected.starts)
               << count << " items, " << key_count << " keys, " << threads << " threads";
         }
+        // Inside an outer parallel region, where a nested region gets one
+        // thread whatever it asks for.
+        sorted nested;
+#pragma omp parallel num_threads(2)
+#pragma omp single
+        nested = by_counting_sort(keys, key_count, threads, 1);
+        EXPECT_EQ(nested.order, expected.order) << count << " items, nested";
+        EXPECT_EQ(nested.starts, expected.starts) << count << " items, nested";
       }
     }
   }

@@ -151,6 +151,20 @@ TEST_F(determinism_test, every_part_of_a_large_step_is_the_same_on_any_number_of
   EXPECT_FALSE(one.events().persisted.empty());
 }
 
+TEST_F(determinism_test, a_world_stepped_inside_an_applications_parallel_region_steps_the_same) {
+  // An application stepping its worlds on its own threads: a world set to
+  // two threads then gets one from OpenMP in each of its parallel parts.
+  world one = ball_layer(1);
+  world nested = ball_layer(2);
+  for (int i = 0; i < 5; ++i) {
+    one.step(h);
+#pragma omp parallel num_threads(2)
+#pragma omp single
+    nested.step(h);
+    ASSERT_EQ(one.state_hash(), nested.state_hash()) << "step " << i + 1;
+  }
+}
+
 TEST_F(determinism_test, threads_are_a_setting_of_the_machine_not_of_the_state) {
   EXPECT_EQ(world_settings{}.threads, 0);  // every core
   world_settings negative;
