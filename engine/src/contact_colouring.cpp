@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "counting_sort.hpp"
 #include "thread_count.hpp"
 
 namespace gaphys::detail {
@@ -77,23 +78,22 @@ void colour_contacts(const std::vector<body>& bodies, const std::vector<contact>
   const auto key_of = [&](std::size_t r) {
     return static_cast<std::size_t>(out.run_colours[r]) * blocks + out.run_blocks[r];
   };
-  std::vector<std::size_t>& counts = out.colour_counts;
-  counts.assign(static_cast<std::size_t>(kept + 1) * blocks + 1, 0);
-  for (std::size_t r = 0; r < runs; ++r) ++counts[key_of(r) + 1];
-  for (std::size_t k = 1; k < counts.size(); ++k) counts[k] += counts[k - 1];
+  std::vector<std::size_t>& key_starts = out.colour_counts;
+  out.sorted_runs.resize(runs);
+  counting_sort(threads, 8192, runs, static_cast<std::size_t>(kept + 1) * blocks, key_of,
+                key_starts, out.sort_scratch,
+                [&](std::size_t r, std::size_t at) { out.sorted_runs[at] = r; });
   out.colour_starts.resize(static_cast<std::size_t>(kept) + 1);
   for (int colour = 0; colour <= kept; ++colour) {
-    out.colour_starts[colour] = counts[static_cast<std::size_t>(colour) * blocks];
+    out.colour_starts[colour] = key_starts[static_cast<std::size_t>(colour) * blocks];
   }
   out.thread_starts.assign(blocks > 1 ? static_cast<std::size_t>(kept) * stride : 0, 0);
   for (std::size_t colour = 0; blocks > 1 && colour < static_cast<std::size_t>(kept); ++colour) {
     for (std::size_t b = 0; b <= static_cast<std::size_t>(blocks); ++b) {
-      out.thread_starts[colour * stride + b] = counts[colour * blocks + b];
+      out.thread_starts[colour * stride + b] = key_starts[colour * blocks + b];
     }
   }
-  std::vector<std::size_t>& sorted_runs = out.sorted_runs;
-  sorted_runs.resize(runs);
-  for (std::size_t r = 0; r < runs; ++r) sorted_runs[counts[key_of(r)]++] = r;
+  const std::vector<std::size_t>& sorted_runs = out.sorted_runs;
 
   // Where each run starts in the order, then the order itself (on the
   // threads: each run's contacts are written to their own places).

@@ -71,7 +71,7 @@ struct contact_colouring {
   std::vector<int> run_colours;         // its colour (the sequential group: colours())
   std::vector<vector> positions;        // its moving body's position
   std::vector<std::size_t> run_bins, run_blocks;
-  std::vector<std::size_t> colour_counts, bin_weights, sorted_runs;
+  std::vector<std::size_t> colour_counts, bin_weights, sorted_runs, sort_scratch;
 };
 
 // `contacts` sorted by body pair, as the narrow phase makes them. `threads`
