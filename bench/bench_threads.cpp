@@ -13,7 +13,10 @@
 // still hold). Both counts then share the machine's good and bad moments.
 //
 // Counters: the median ms per step on one thread and on T, and their
-// ratio (T / 1). One benchmark iteration is the whole alternating run.
+// ratio (T / 1); handoff_ns, the median round trip of a cache line between
+// two threads, measured before each block of T (core_handoff.hpp: above
+// about 400 ns the two cores share no cache, and the ratio says so). One
+// benchmark iteration is the whole alternating run.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -22,6 +25,7 @@
 #include <vector>
 
 #include "bench_common.hpp"
+#include "core_handoff.hpp"
 #include "gaphys/scenes.hpp"
 
 namespace {
@@ -30,26 +34,27 @@ constexpr gaphys::real h = gaphys::scenes::time_step;
 constexpr int warm_up_steps = 120;  // M6's: the spheres have landed
 constexpr int block = 4;            // steps per thread count in a row
 
-double median_ms(std::vector<double> seconds) {
-  std::sort(seconds.begin(), seconds.end());
-  return 1e3 * seconds[seconds.size() / 2];
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
 }
 
 void alternate(benchmark::State& state, bool boxes) {
   const int count = static_cast<int>(state.range(0));
   const int threads = static_cast<int>(state.range(1));
   const int blocks = static_cast<int>(state.range(2));
-  std::vector<double> one, many;
+  std::vector<double> one, many, handoffs;
   for (auto _ : state) {
     gaphys::world w = boxes ? gaphys::scenes::falling_boxes_in_box(count)
                             : gaphys::scenes::falling_spheres_in_box(count);
     w.set_sleeping(false);
     w.set_threads(1);
     for (int i = 0; i < warm_up_steps; ++i) w.step(h);
-    one.clear(), many.clear();
+    one.clear(), many.clear(), handoffs.clear();
     for (int b = 0; b < 2 * blocks; ++b) {
       // 1, T, T, 1, 1, T, ...: each count follows the other as often.
       const bool on_one = (b % 4 == 0) || (b % 4 == 3);
+      if (b % 4 == 1) handoffs.push_back(gaphys_bench::handoff_round_trip_ns());
       w.set_threads(on_one ? 1 : threads);
       for (int i = 0; i < block; ++i) {
         const auto start = std::chrono::steady_clock::now();
@@ -59,10 +64,11 @@ void alternate(benchmark::State& state, bool boxes) {
       }
     }
   }
-  const double one_ms = median_ms(one), many_ms = median_ms(many);
+  const double one_ms = 1e3 * median(one), many_ms = 1e3 * median(many);
   state.counters["one_thread_ms"] = one_ms;
   state.counters["threads_ms"] = many_ms;
   state.counters["ratio"] = many_ms / one_ms;
+  state.counters["handoff_ns"] = median(handoffs);
 }
 
 void spheres(benchmark::State& state) { alternate(state, false); }
