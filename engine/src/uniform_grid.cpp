@@ -1,9 +1,13 @@
 #include "gaphys/detail/uniform_grid.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <tuple>
+#include <type_traits>
 
 #include "counting_sort.hpp"
 #include "precision.hpp"
@@ -50,6 +54,30 @@ void find_in_shares(std::size_t count, std::size_t per_thread, int threads,
   for (const std::vector<index_pair>& found : scratch) {
     pairs.insert(pairs.end(), found.begin(), found.end());
   }
+}
+
+// A histogram bucket of widths > 0: the binary exponent and three leading
+// bits of the mantissa (positive reals order as their bits do), so a
+// bucket's widths are within 1/8 of each other.
+using real_bits = std::conditional_t<sizeof(real) == 8, std::uint64_t, std::uint32_t>;
+constexpr int width_bucket_shift = sizeof(real) == 8 ? 49 : 20;
+
+std::size_t width_bucket(real width) {
+  real_bits bits;
+  std::memcpy(&bits, &width, sizeof bits);
+  return static_cast<std::size_t>(bits >> width_bucket_shift);
+}
+
+// The least width above every width of `bucket` (infinity from the largest
+// finite widths' bucket on).
+real width_bucket_end(std::size_t bucket) {
+  if (bucket >= width_bucket(std::numeric_limits<real>::max())) {
+    return std::numeric_limits<real>::infinity();
+  }
+  const real_bits bits = static_cast<real_bits>(bucket + 1) << width_bucket_shift;
+  real end;
+  std::memcpy(&end, &bits, sizeof end);
+  return end;
 }
 
 std::uint64_t hash(std::int64_t x, std::int64_t y, std::int64_t z) {
@@ -102,53 +130,110 @@ void uniform_grid::sort_pairs(std::size_t body_count, std::vector<index_pair>& p
 }
 
 // Bounds of the shaped bodies, and the cell size: the widest bound that
-// is not "large" (wider than twice the median width).
+// is not "large" (wider than twice the median width, rounded up to the end
+// of its bucket below). On threads_for(threads, count, 1024) threads, each
+// taking a contiguous share of the bodies: their bounds, and a histogram of
+// the widths; then the median's bucket (a function of the widths alone, so
+// the same on any number of threads); then each share's bounds moved to
+// their places without the planes, the large ones listed and the widest
+// other one found. (Which bounds are large, and the cell size, change which
+// candidates the grid tests, not the pairs it finds.)
 void uniform_grid::collect(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped,
                            real lookahead, real margin, int threads) {
-  planes_.clear();
-  large_.clear();
-  // Each body's bound on its own (on the threads, for many), a plane's
-  // marked by a radius < 0; then the planes taken out, the rest kept in order.
-  bounds_.resize(shaped.size());
-  parallel_for(threads, shaped.size(), 1024, [&](std::size_t at) {
-    const std::size_t index = shaped[at];
+  // (A bucket for every pattern of the bits below the sign.)
+  static_assert(width_buckets == std::size_t{1} << (8 * sizeof(real) - 1 - width_bucket_shift));
+  const std::size_t count = shaped.size();
+  // A body's bound, a plane's marked by a radius < 0: as far as the body can
+  // move or turn within the lookahead, and half the margin (two bounds then
+  // overlap when their gap is up to it).
+  const auto bound_of = [&](std::size_t index) {
     const body& b = bodies[index];
-    if (b.shape()->kind() == shape_kind::plane) {
-      bounds_[at] = bound{vector{}, -1, index, motion::fixed};
-      return;
-    }
+    if (b.shape()->kind() == shape_kind::plane) return bound{vector{}, -1, index, motion::fixed};
     const vector& c = b.position();
     const real r = b.bounding_radius();
-    // As far as the body can move or turn within the lookahead, and half
-    // the margin (two bounds then overlap when their gap is up to it).
     const real sweep =
         lookahead * (e3ga::norm(b.velocity()) + e3ga::norm(b.angular_velocity()) * r) + margin / 2;
     const real reach = r + sweep + relative_margin * (1 + largest_magnitude(c) + r + sweep);
-    bounds_[at] = bound{c, reach, index, motion_of(b)};
-  });
-  std::size_t kept = 0;
-  for (std::size_t at = 0; at < bounds_.size(); ++at) {
-    if (bounds_[at].radius < 0) {
-      planes_.push_back(bounds_[at].body);
-    } else {
-      bounds_[kept++] = bounds_[at];
+    return bound{c, reach, index, motion_of(b)};
+  };
+  const int parts = threads_for(threads, count, 1024);
+  const auto most = static_cast<std::size_t>(parts);
+  unplaced_.resize(count);
+  width_counts_.resize(most * width_buckets);
+  part_planes_.assign(most + 1, 0);
+  part_lowest_.resize(most);
+  part_large_.resize(most);
+  part_widest_.assign(most, 0);
+  std::size_t ordinary = 0, planes = 0;
+  real large_width = 0;
+#pragma omp parallel num_threads(parts) if (parts > 1)
+  {
+    // (As many parts as the threads OpenMP gives: inside an application's
+    // own parallel region, one.)
+    const auto shares = static_cast<std::size_t>(omp_get_num_threads());
+    const auto part = static_cast<std::size_t>(omp_get_thread_num());
+    const std::size_t first = count * part / shares, end = count * (part + 1) / shares;
+    // (The histograms are all zero between calls: each share clears the
+    // buckets it used.)
+    std::uint32_t* counts = &width_counts_[part * width_buckets];
+    std::size_t own_planes = 0, lowest = width_buckets, highest = 0;
+    for (std::size_t at = first; at < end; ++at) {
+      const bound b = bound_of(shaped[at]);
+      unplaced_[at] = b;
+      if (b.radius < 0) {
+        ++own_planes;
+        continue;
+      }
+      const std::size_t bucket = width_bucket(2 * b.radius);
+      ++counts[bucket];
+      lowest = std::min(lowest, bucket), highest = std::max(highest, bucket);
     }
+    part_planes_[part + 1] = own_planes;
+    part_lowest_[part] = lowest;
+#pragma omp barrier
+#pragma omp single
+    {
+      for (std::size_t p = 0; p < shares; ++p) part_planes_[p + 1] += part_planes_[p];
+      planes = part_planes_[shares];
+      ordinary = count - planes;
+      // The bucket of the width std::nth_element would put in the middle.
+      std::size_t bucket = *std::min_element(part_lowest_.begin(), part_lowest_.begin() + shares);
+      std::size_t below = 0;
+      for (; bucket < width_buckets; ++bucket) {
+        for (std::size_t p = 0; p < shares; ++p) below += width_counts_[p * width_buckets + bucket];
+        if (below > ordinary / 2) break;
+      }
+      large_width = 2 * width_bucket_end(bucket);
+      planes_.resize(planes);
+      bounds_.resize(ordinary);
+    }
+    // (single's barrier) This share's planes and other bounds in order.
+    std::size_t plane_at = part_planes_[part], bound_at = first - part_planes_[part];
+    std::vector<std::size_t>& large = part_large_[part];
+    large.clear();
+    real widest = 0;
+    for (std::size_t at = first; at < end; ++at) {
+      const bound& b = unplaced_[at];
+      if (b.radius < 0) {
+        planes_[plane_at++] = b.body;
+        continue;
+      }
+      const real width = 2 * b.radius;
+      if (width > large_width) {
+        large.push_back(bound_at);
+      } else {
+        widest = std::max(widest, width);
+      }
+      bounds_[bound_at++] = b;
+    }
+    part_widest_[part] = widest;
+    if (lowest <= highest) std::fill(counts + lowest, counts + highest + 1, 0);
   }
-  bounds_.resize(kept);
-  widths_.resize(kept);
-  for (std::size_t i = 0; i < kept; ++i) widths_[i] = 2 * bounds_[i].radius;
-  if (bounds_.empty()) return;
-  const auto middle = widths_.begin() + static_cast<std::ptrdiff_t>(widths_.size() / 2);
-  std::nth_element(widths_.begin(), middle, widths_.end());
-  const real large_width = 2 * *middle;
+  large_.clear();
   cell_size_ = 0;
-  for (std::size_t i = 0; i < bounds_.size(); ++i) {
-    const real width = 2 * bounds_[i].radius;
-    if (width > large_width) {
-      large_.push_back(i);
-    } else {
-      cell_size_ = std::max(cell_size_, width);
-    }
+  for (std::size_t p = 0; p < most; ++p) {
+    large_.insert(large_.end(), part_large_[p].begin(), part_large_[p].end());
+    cell_size_ = std::max(cell_size_, part_widest_[p]);
   }
 }
 

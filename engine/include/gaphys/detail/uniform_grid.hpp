@@ -8,8 +8,9 @@
 // the widest ordinary bound, so two bounds that overlap have their centres
 // in the same or adjacent cells: each cell is compared with itself and its
 // 13 "forward" neighbours, and every two bounds that overlap make a
-// candidate. Bounds wider than twice the median would make the cells coarse,
-// so they are "large" and tested against every bound directly. Planes
+// candidate. Bounds wider than twice the median (rounded up by at most
+// an eighth) would make the cells coarse, so they are "large" and tested
+// against every bound directly. Planes
 // (static, unbounded) are tested exactly against each bound: a sphere
 // reaches the half-space n . x <= d when n . c - r <= d.
 //
@@ -86,7 +87,16 @@ class uniform_grid {
   std::int64_t origin_[3] = {0, 0, 0}, extent_[3] = {0, 0, 0};  // the occupied block of cells
   std::vector<std::size_t> cell_starts_, cell_fill_;  // dense: runs by cell index, scratch
   std::vector<cell> table_;  // sparse: open addressing, power-of-two size
-  std::vector<real> widths_;
+  // collect's: the bounds before the planes are taken out; per share of
+  // the bodies, a histogram of widths (width_buckets each, all zero between
+  // calls), its planes (a running count from [1]), its lowest bucket, its
+  // large bounds and its widest other bound.
+  std::vector<bound> unplaced_;
+  static constexpr std::size_t width_buckets = std::size_t{1} << (sizeof(real) == 8 ? 14 : 11);
+  std::vector<std::uint32_t> width_counts_;
+  std::vector<std::size_t> part_planes_, part_lowest_;
+  std::vector<std::vector<std::size_t>> part_large_;
+  std::vector<real> part_widest_;
   std::vector<std::size_t> starts_, fill_;
   std::vector<index_pair> sorted_;
   std::vector<std::vector<index_pair>> thread_pairs_;  // the shares of pair_cells, pair_planes
