@@ -28,9 +28,9 @@ template <class Key, class Place>
 void counting_sort(int threads, std::size_t per_thread, std::size_t count, std::size_t keys,
                    const Key& key, std::vector<std::size_t>& starts,
                    std::vector<std::size_t>& offsets, const Place& place) {
-  starts.assign(keys + 1, 0);
   const int parts = threads_for(threads, count, per_thread);
   if (parts == 1) {
+    starts.assign(keys + 1, 0);
     for (std::size_t i = 0; i < count; ++i) ++starts[key(i) + 1];
     for (std::size_t k = 0; k < keys; ++k) starts[k + 1] += starts[k];
     offsets.assign(starts.begin(), starts.end() - 1);
@@ -39,8 +39,10 @@ void counting_sort(int threads, std::size_t per_thread, std::size_t count, std::
   }
   const auto most = static_cast<std::size_t>(parts);
   // Part p's count of key k at p * keys + k; then, for each thread's share
-  // of the keys, how many items they have.
-  offsets.assign(most * keys + most + 1, 0);
+  // of the keys, how many items they have. (Each thread clears its own
+  // counts, on the threads: the grid's sort has up to 8 keys per item.)
+  starts.resize(keys + 1);
+  offsets.resize(most * keys + most + 1);
   std::size_t* key_share_totals = &offsets[most * keys];
 #pragma omp parallel num_threads(parts)
   {
@@ -50,6 +52,7 @@ void counting_sort(int threads, std::size_t per_thread, std::size_t count, std::
     const auto part = static_cast<std::size_t>(omp_get_thread_num());
     const std::size_t first = count * part / shares, end = count * (part + 1) / shares;
     std::size_t* counts = &offsets[part * keys];
+    std::fill(counts, counts + keys, std::size_t{0});
     for (std::size_t i = first; i < end; ++i) ++counts[key(i)];
 #pragma omp barrier
     // This thread's share of the keys: their items over all parts...
@@ -61,7 +64,10 @@ void counting_sort(int threads, std::size_t per_thread, std::size_t count, std::
     key_share_totals[part + 1] = total;
 #pragma omp barrier
 #pragma omp single
-    for (std::size_t p = 0; p < shares; ++p) key_share_totals[p + 1] += key_share_totals[p];
+    {
+      key_share_totals[0] = 0;
+      for (std::size_t p = 0; p < shares; ++p) key_share_totals[p + 1] += key_share_totals[p];
+    }
     // (single's barrier) ...then where each key, and each part's items of
     // it, begin.
     std::size_t at = key_share_totals[part];

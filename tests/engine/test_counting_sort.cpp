@@ -79,5 +79,29 @@ TEST(counting_sort_test, orders_as_a_stable_sort_on_any_number_of_threads) {
   }
 }
 
+// The engine keeps the starts and the scratch between steps: whatever they
+// hold from a sort of other sizes (or garbage), the next sort is right.
+TEST(counting_sort_test, leftovers_in_the_starts_and_scratch_change_nothing) {
+  std::mt19937 random(11);
+  std::vector<std::size_t> starts(90000, 12345), scratch(200000, 54321);
+  for (const int threads : {2, 3, 1, 8}) {
+    for (const std::size_t count : {50000, 1000, 20000}) {
+      for (const std::size_t key_count : {40000, 7, 3000}) {
+        std::vector<std::size_t> keys(count);
+        for (std::size_t& k : keys) k = random() % key_count;
+        const sorted expected = by_stable_sort(keys, key_count);
+        sorted got;
+        got.order.assign(count, count);
+        detail::counting_sort(
+            threads, 1, count, key_count, [&](std::size_t i) { return keys[i]; }, starts, scratch,
+            [&](std::size_t i, std::size_t at) { got.order[at] = i; });
+        EXPECT_EQ(got.order, expected.order) << count << " items, " << key_count << " keys";
+        EXPECT_EQ(starts, expected.starts) << count << " items, " << key_count << " keys";
+        std::fill(scratch.begin(), scratch.end(), 54321);
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace gaphys::testing
