@@ -161,17 +161,28 @@ class contact_solver {
   void resolve_impacts(const world_settings& settings, real h);
   bool impact(std::size_t index, real threshold, real h);
   // The warm start in two parts: which old contact each new one starts from
-  // (matches_; needs neither the colouring nor the constraints), then their
-  // impulses applied.
-  void match_previous(const std::vector<body>& bodies, const std::vector<contact>& contacts,
-                      const std::vector<contact>& previous, int threads);
+  // (matches_, in shares of both lists cut before the same pairs; needs
+  // neither the colouring nor the constraints), then their impulses applied.
+  void cut_for_matches(const std::vector<contact>& contacts, const std::vector<contact>& previous,
+                       int shares);
+  void match_share(int share, const std::vector<body>& bodies, const std::vector<contact>& contacts,
+                   const std::vector<contact>& previous);
   void warm_start(const std::vector<contact>& contacts, const std::vector<contact>& previous);
   // What solve_velocities prepares from the bodies and contacts alone,
   // before the constraints: the rows' and shapes' summaries of the bodies
-  // in contact, the solver's bodies, the warm start's matches.
+  // in contact, the solver's bodies, the warm start's matches. Sized and
+  // marked on one thread first, then body by body and share by share.
+  void mark_bodies_in_contact(const std::vector<body>& bodies,
+                              const std::vector<contact>& contacts);
+  void prepare_body(std::size_t i, const std::vector<body>& bodies,
+                    const std::vector<body_velocity>& start);
   void prepare_bodies(const std::vector<body>& bodies, const std::vector<body_velocity>& start,
                       const std::vector<contact>& contacts, const std::vector<contact>& previous,
                       int threads);
+  void colour_beside_preparation(const std::vector<body>& bodies,
+                                 const std::vector<body_velocity>& start,
+                                 const std::vector<contact>& contacts,
+                                 const std::vector<contact>& previous);
   // Which contacts a sweep solves, and which of its sweeps are plain.
   struct sweep_kind {
     bool turning_only;     // past solver_iterations: only contacts that turn a body
