@@ -411,20 +411,27 @@ void uniform_grid::pair_cell_range(std::size_t begin, std::size_t end,
   };
   if (dense_) {
     // A neighbour's index is the cell's plus a fixed step (the block has
-    // an empty cell around the occupied ones): two loads, where find_cell's
-    // bounds checks and index took a tenth of a sphere pile's step.
-    std::ptrdiff_t step[13];
-    for (int k = 0; k < 13; ++k) {
-      step[k] = (forward[k][0] * extent_[1] + forward[k][1]) * extent_[2] + forward[k][2];
-    }
+    // an empty cell around the occupied ones), where find_cell's bounds
+    // checks and index took a tenth of a sphere pile's step. And z is the
+    // fastest index, so the 13 forward neighbours are 5 runs of consecutive
+    // cells, whose entries are consecutive too: (1, -1, -1..1), (1, 0,
+    // -1..1), (1, 1, -1..1), (0, 1, -1..1) and (0, 0, 1). (One cell at a
+    // time, the pairing was 8% of a one-thread step of 10,000 spheres.)
+    const std::ptrdiff_t along_y = extent_[2], along_x = extent_[1] * extent_[2];
+    const std::ptrdiff_t spans[5][2] = {{along_x - along_y - 1, along_x - along_y + 1},
+                                        {along_x - 1, along_x + 1},
+                                        {along_x + along_y - 1, along_x + along_y + 1},
+                                        {along_y - 1, along_y + 1},
+                                        {1, 1}};  // first and last cell, from this one
     while (begin < end) {
       const entry& first = entries_[begin];
       const std::size_t cell = dense_index(first.x, first.y, first.z);
       const run here{cell_starts_[cell], cell_starts_[cell + 1]};
       pair_within(here);
-      for (const std::ptrdiff_t k : step) {
-        const std::size_t next = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(cell) + k);
-        pair_runs(here, run{cell_starts_[next], cell_starts_[next + 1]});
+      for (const auto& span : spans) {
+        const auto at = static_cast<std::ptrdiff_t>(cell);
+        pair_runs(here, run{cell_starts_[static_cast<std::size_t>(at + span[0])],
+                            cell_starts_[static_cast<std::size_t>(at + span[1] + 1)]});
       }
       begin = here.end;
     }
