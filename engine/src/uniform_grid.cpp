@@ -314,8 +314,12 @@ void uniform_grid::sort_dense(std::size_t cells, int threads) {
     const entry& e = unsorted_[i];
     return dense_index(e.x, e.y, e.z);
   };
+  sorted_bounds_.resize(unsorted_.size());
   counting_sort(threads, 4096, unsorted_.size(), cells, cell_of, cell_starts_, cell_fill_,
-                [&](std::size_t i, std::size_t at) { entries_[at] = unsorted_[i]; });
+                [&](std::size_t i, std::size_t at) {
+                  entries_[at] = unsorted_[i];
+                  sorted_bounds_[at] = bounds_[unsorted_[i].bound];
+                });
 }
 
 void uniform_grid::sort_hashed() {
@@ -323,6 +327,9 @@ void uniform_grid::sort_hashed() {
   std::sort(entries_.begin(), entries_.end(), [](const entry& a, const entry& b) {
     return std::tie(a.x, a.y, a.z, a.bound) < std::tie(b.x, b.y, b.z, b.bound);
   });
+  sorted_bounds_.resize(entries_.size());
+  for (std::size_t at = 0; at < entries_.size(); ++at)
+    sorted_bounds_[at] = bounds_[entries_[at].bound];
   std::size_t size = 16;
   while (size < 2 * entries_.size()) size *= 2;
   table_.assign(size, cell{0, 0, 0, 0, 0});
@@ -398,14 +405,14 @@ void uniform_grid::pair_cell_range(std::size_t begin, std::size_t end,
   const auto pair_within = [&](const run& here) {
     for (std::size_t i = here.begin; i < here.end; ++i) {
       for (std::size_t j = i + 1; j < here.end; ++j) {
-        add_if_overlapping(bounds_[entries_[i].bound], bounds_[entries_[j].bound], pairs);
+        add_if_overlapping(sorted_bounds_[i], sorted_bounds_[j], pairs);
       }
     }
   };
   const auto pair_runs = [&](const run& here, const run& there) {
     for (std::size_t i = here.begin; i < here.end; ++i) {
       for (std::size_t j = there.begin; j < there.end; ++j) {
-        add_if_overlapping(bounds_[entries_[i].bound], bounds_[entries_[j].bound], pairs);
+        add_if_overlapping(sorted_bounds_[i], sorted_bounds_[j], pairs);
       }
     }
   };

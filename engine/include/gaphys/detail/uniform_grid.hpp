@@ -83,6 +83,9 @@ class uniform_grid {
   std::vector<std::size_t> large_, planes_;
   std::vector<char> large_marks_;  // per bound, whether it is large (when some are)
   std::vector<entry> unsorted_, entries_;
+  // entries_' bounds in their order: the pairing reads them front to back
+  // (through entries_, each was a scattered read).
+  std::vector<bound> sorted_bounds_;
   bool dense_ = true;
   std::int64_t origin_[3] = {0, 0, 0}, extent_[3] = {0, 0, 0};  // the occupied block of cells
   std::vector<std::size_t> cell_starts_, cell_fill_;  // dense: runs by cell index, scratch
