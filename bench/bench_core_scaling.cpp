@@ -18,13 +18,13 @@
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <utility>
 #include <vector>
 
 #include "core_handoff.hpp"
+#include "median.hpp"
 
 namespace {
 
@@ -51,11 +51,6 @@ double throughput_share(long n, double seed) {
   return sum;
 }
 
-double median_ms(std::vector<double> seconds) {
-  std::sort(seconds.begin(), seconds.end());
-  return 1e3 * seconds[seconds.size() / 2];
-}
-
 template <class Pass>
 void alternate(benchmark::State& state, const Pass& pass) {
   std::vector<double> one, two;
@@ -68,7 +63,7 @@ void alternate(benchmark::State& state, const Pass& pass) {
       (on_one ? one : two).push_back(took.count());
     }
   }
-  const double one_ms = median_ms(one), two_ms = median_ms(two);
+  const double one_ms = 1e3 * gaphys_bench::median(one), two_ms = 1e3 * gaphys_bench::median(two);
   state.counters["one_thread_ms"] = one_ms;
   state.counters["threads_ms"] = two_ms;
   state.counters["ratio"] = two_ms / one_ms;

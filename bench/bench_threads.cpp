@@ -19,7 +19,6 @@
 // benchmark iteration is the whole alternating run.
 #include <benchmark/benchmark.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <vector>
@@ -27,17 +26,13 @@
 #include "bench_common.hpp"
 #include "core_handoff.hpp"
 #include "gaphys/scenes.hpp"
+#include "median.hpp"
 
 namespace {
 
 constexpr gaphys::real h = gaphys::scenes::time_step;
 constexpr int warm_up_steps = 120;  // M6's: the spheres have landed
 constexpr int block = 4;            // steps per thread count in a row
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
 
 void alternate(benchmark::State& state, bool boxes) {
   const int count = static_cast<int>(state.range(0));
@@ -64,11 +59,11 @@ void alternate(benchmark::State& state, bool boxes) {
       }
     }
   }
-  const double one_ms = 1e3 * median(one), many_ms = 1e3 * median(many);
+  const double one_ms = 1e3 * gaphys_bench::median(one), many_ms = 1e3 * gaphys_bench::median(many);
   state.counters["one_thread_ms"] = one_ms;
   state.counters["threads_ms"] = many_ms;
   state.counters["ratio"] = many_ms / one_ms;
-  state.counters["handoff_ns"] = median(handoffs);
+  state.counters["handoff_ns"] = gaphys_bench::median(handoffs);
 }
 
 void spheres(benchmark::State& state) { alternate(state, false); }

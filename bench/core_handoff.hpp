@@ -9,10 +9,11 @@
 
 #include <omp.h>
 
-#include <algorithm>
 #include <atomic>
 #include <limits>
 #include <vector>
+
+#include "median.hpp"
 
 namespace gaphys_bench {
 
@@ -50,8 +51,7 @@ inline double handoff_round_trip_ns(int samples = 9, int round_trips = 2000) {
     if (two) ns.push_back((end - start) * 1e9 / round_trips);
   }
   if (!two) return std::numeric_limits<double>::quiet_NaN();
-  std::sort(ns.begin(), ns.end());
-  return ns[ns.size() / 2];
+  return median(ns);
 }
 
 }  // namespace gaphys_bench
