@@ -90,14 +90,31 @@ def map_signs(x: SymMV, sign_of) -> SymMV:
     return {b: (p if sign_of(b) > 0 else -p) for b, p in x.items()}
 
 
+def _exact(value):
+    """An integer as a Python int (its arithmetic is many times Fraction's), else the Fraction."""
+    return value.numerator if value.denominator == 1 else value
+
+
 def product(algebra: BladeAlgebra, kind: str, x: SymMV, y: SymMV) -> SymMV:
-    result: SymMV = {}
+    # Each result blade's terms summed in place, a coefficient pair's product
+    # once for all the blades it reaches, integers as ints (the result's
+    # coefficients may be either; they compare and hash alike): a new Poly
+    # per term and Fraction arithmetic throughout made expanding c3ga take
+    # 2.5 times as long (1.43 against 0.57 s).
+    sums: dict[int, dict[Monomial, Fraction | int]] = {}
     for bx, px in x.items():
         for by, py in y.items():
-            for bz, coefficient in algebra.product(kind, bx, by).items():
-                term = (px * py).scale(coefficient)
-                result[bz] = result.get(bz, Poly()) + term
-    return clean(result)
+            blades = algebra.product(kind, bx, by)
+            if not blades:
+                continue
+            pairs = [(tuple(sorted(m1 + m2)), _exact(c1) * _exact(c2))
+                     for m1, c1 in px.terms.items() for m2, c2 in py.terms.items()]
+            for bz, coefficient in blades.items():
+                terms = sums.setdefault(bz, {})
+                coefficient = _exact(coefficient)
+                for monomial, c in pairs:
+                    terms[monomial] = terms.get(monomial, 0) + c * coefficient
+    return clean({bz: Poly(terms) for bz, terms in sums.items()})
 
 
 def from_constant(value: Multivector) -> SymMV:
