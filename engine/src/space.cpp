@@ -56,6 +56,7 @@ void space::place_shapes(const std::vector<body>& bodies, const std::vector<body
   placed_.resize(first_shape_.back());
   in_pairs_.assign(bodies.size(), 0);
   for (const auto& [a, b] : pairs) in_pairs_[a] = in_pairs_[b] = 1;
+  singles_.resize(bodies.size());
   // Each body's shapes on their own: on the threads for many bodies.
   detail::parallel_for(threads, shaped_bodies_.size(), 256, [&](std::size_t at) {
     const std::size_t index = shaped_bodies_[at];
@@ -63,6 +64,11 @@ void space::place_shapes(const std::vector<body>& bodies, const std::vector<body
     const body& b = bodies[index];
     placed_shape* out = &placed_[first_shape_[index]];
     for (const attached_shape& s : b.shapes()) *out++ = placed(b, s);
+    single_shape_facts& facts = singles_[index];
+    facts.plain = b.shapes().size() == 1 && !b.shapes()[0].shape.is_sensor();
+    if (!facts.plain) return;
+    const shape& only = b.shapes()[0].shape;
+    facts = {b.velocity(), only.material(), only.filter(), true};
   });
 }
 
@@ -184,13 +190,11 @@ void space::find_contacts(const std::vector<body>& bodies, const std::vector<bod
 // Whether the pair is one of single round shapes whose meet runs on
 // batches (detail::batched_terms), and whose contact find_contacts would
 // look for (no sensor, filters that meet).
-static bool meets_on_batches(const body& body_a, const body& body_b, const placed_shape* shape_a,
+template <class Facts>
+static bool meets_on_batches(const Facts& a, const Facts& b, const placed_shape* shape_a,
                              const placed_shape* shape_b) {
-  if (body_a.shapes().size() != 1 || body_b.shapes().size() != 1) return false;
-  if (!detail::meets_on_batches(shape_a->kind, shape_b->kind)) return false;
-  const shape& a = body_a.shapes()[0].shape;
-  const shape& b = body_b.shapes()[0].shape;
-  return a.filter().meets(b.filter()) && !a.is_sensor() && !b.is_sensor();
+  return a.plain && b.plain && detail::meets_on_batches(shape_a->kind, shape_b->kind) &&
+         a.filter.meets(b.filter);
 }
 
 // What meet finds for a pair that meets_on_batches, from its meet's terms:
@@ -232,7 +236,7 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
     const auto [a, b] = *pair;
     const placed_shape* shape_a = placed_.data() + first_shape_[a];
     const placed_shape* shape_b = placed_.data() + first_shape_[b];
-    if (!meets_on_batches(bodies[a], bodies[b], shape_a, shape_b)) continue;
+    if (!meets_on_batches(singles_[a], singles_[b], shape_a, shape_b)) continue;
     round_slot[static_cast<std::size_t>(pair - first)] = round_pairs.size();
     round_pairs.emplace_back(shape_a, shape_b);
   }
@@ -243,24 +247,35 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
   contact_manifold manifold;
   for (const body_pair* pair = first; pair != end; ++pair) {
     const auto [a, b] = *pair;
+    const std::size_t slot = round_slot[static_cast<std::size_t>(pair - first)];
+    if (slot != none) {
+      // One shape each, met on batches: from the placed shapes and the facts alone.
+      const single_shape_facts& facts_a = singles_[a];
+      const single_shape_facts& facts_b = singles_[b];
+      if (!contact_from_terms(placed_[first_shape_[a]], placed_[first_shape_[b]], terms[slot],
+                              lookahead, facts_a.velocity, facts_b.velocity, manifold)) {
+        continue;
+      }
+      contact c{};
+      c.body_a = a;
+      c.body_b = b;
+      c.geometry = manifold.points[0].geometry;
+      c.feature = manifold.points[0].feature;
+      c.material = combine(rules, facts_a.surface, facts_b.surface);
+      contacts.push_back(c);
+      continue;
+    }
     const body& body_a = bodies[a];
     const body& body_b = bodies[b];
     const std::size_t shapes_a = body_a.shapes().size(), shapes_b = body_b.shapes().size();
-    const std::size_t slot = round_slot[static_cast<std::size_t>(pair - first)];
-    // (The meet of rounds sees speeds through the lookahead alone.)
-    const real reach = slot == none ? closing_reach(body_a, body_b, lookahead, margin) : 0;
+    const real reach = closing_reach(body_a, body_b, lookahead, margin);
     for (std::size_t i = 0; i < shapes_a; ++i) {
       const placed_shape& shape_a = placed_[first_shape_[a] + i];
       const attached_shape& attached_a = body_a.shapes()[i];
       for (std::size_t j = 0; j < shapes_b; ++j) {
         const placed_shape& shape_b = placed_[first_shape_[b] + j];
         const attached_shape& attached_b = body_b.shapes()[j];
-        const met what =
-            slot == none ? meet(body_a, body_b, i, j, shape_a, shape_b, lookahead, reach, manifold)
-            : contact_from_terms(shape_a, shape_b, terms[slot], lookahead, body_a.velocity(),
-                                 body_b.velocity(), manifold)
-                ? met::contacts
-                : met::nothing;
+        const met what = meet(body_a, body_b, i, j, shape_a, shape_b, lookahead, reach, manifold);
         if (what == met::sensed && sensors) {
           const bool a_senses = attached_a.shape.is_sensor();
           sensors->push_back(a_senses ? sensor_overlap{a, i, b, j} : sensor_overlap{b, j, a, i});
