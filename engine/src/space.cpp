@@ -66,9 +66,10 @@ void space::place_shapes(const std::vector<body>& bodies, const std::vector<body
     for (const attached_shape& s : b.shapes()) *out++ = placed(b, s);
     single_shape_facts& facts = singles_[index];
     facts.plain = b.shapes().size() == 1 && !b.shapes()[0].shape.is_sensor();
-    if (!facts.plain) return;
-    const shape& only = b.shapes()[0].shape;
-    facts = {b.velocity(), only.material(), only.filter(), true};
+    if (facts.plain) {
+      const shape& only = b.shapes()[0].shape;
+      facts = {b.velocity(), only.material(), only.filter(), true};
+    }
   });
 }
 
@@ -212,6 +213,21 @@ static bool contact_from_terms(const placed_shape& shape_a, const placed_shape& 
   return true;
 }
 
+// Point p of the manifold of shape i of body a and shape j of body b.
+static GAPHYS_ALWAYS_INLINE contact contact_of(std::size_t a, std::size_t b, std::size_t i,
+                                               std::size_t j, const contact_point& p,
+                                               const material& m) {
+  contact c{};
+  c.body_a = a;
+  c.body_b = b;
+  c.geometry = p.geometry;
+  c.shape_a = static_cast<std::uint32_t>(i);
+  c.shape_b = static_cast<std::uint32_t>(j);
+  c.feature = p.feature;
+  c.material = m;
+  return c;
+}
+
 void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
                        const body_pair* end, std::vector<contact>& contacts, real lookahead,
                        const material_combine_rules& rules, real margin,
@@ -252,17 +268,11 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
       // One shape each, met on batches: from the placed shapes and the facts alone.
       const single_shape_facts& facts_a = singles_[a];
       const single_shape_facts& facts_b = singles_[b];
-      if (!contact_from_terms(placed_[first_shape_[a]], placed_[first_shape_[b]], terms[slot],
-                              lookahead, facts_a.velocity, facts_b.velocity, manifold)) {
-        continue;
+      if (contact_from_terms(placed_[first_shape_[a]], placed_[first_shape_[b]], terms[slot],
+                             lookahead, facts_a.velocity, facts_b.velocity, manifold)) {
+        contacts.push_back(contact_of(a, b, 0, 0, manifold.points[0],
+                                      combine(rules, facts_a.surface, facts_b.surface)));
       }
-      contact c{};
-      c.body_a = a;
-      c.body_b = b;
-      c.geometry = manifold.points[0].geometry;
-      c.feature = manifold.points[0].feature;
-      c.material = combine(rules, facts_a.surface, facts_b.surface);
-      contacts.push_back(c);
       continue;
     }
     const body& body_a = bodies[a];
@@ -283,15 +293,7 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
         if (what != met::contacts) continue;
         const material m = combine(rules, attached_a.shape.material(), attached_b.shape.material());
         for (int k = 0; k < manifold.count; ++k) {
-          contact c{};
-          c.body_a = a;
-          c.body_b = b;
-          c.geometry = manifold.points[k].geometry;
-          c.shape_a = static_cast<std::uint32_t>(i);
-          c.shape_b = static_cast<std::uint32_t>(j);
-          c.feature = manifold.points[k].feature;
-          c.material = m;
-          contacts.push_back(c);
+          contacts.push_back(contact_of(a, b, i, j, manifold.points[k], m));
         }
       }
     }
