@@ -23,20 +23,17 @@ placed_shape place(const shape& s, const vector& position, const rotor& attitude
   placed.attitude = attitude;
   switch (s.kind()) {
     case shape_kind::sphere:  // σ = c - r^2/2 ni, c = no + x + x^2/2 ni
-      placed.dual = detail::dual_sphere_of(placed);
+      placed.dual = detail::dual_sphere_of(placed, vector{});
       break;
     case shape_kind::plane: {  // -(n + d ni), n and d in the world frame
       placed.normal = e3ga::apply(attitude, s.normal());
       placed.offset = s.offset() + e3ga::scp(placed.normal, position);
-      placed.dual = detail::dual_plane_of(placed);
+      placed.dual = detail::dual_plane_of(placed, vector{});
       break;
     }
-    case shape_kind::point: {  // the dual of the flat point x ^ ni
-      const real half_square = real(0.5) * e3ga::scp(position, position);
-      const conformal::normalized_point x{position.e1(), position.e2(), position.e3(), half_square};
-      placed.dual = c3ga::dual(c3ga::op(x, c3ga::ni<real>()));
+    case shape_kind::point:  // the dual of the flat point x ^ ni
+      placed.dual = detail::dual_of(placed, vector{});
       break;
-    }
     case shape_kind::capsule:
       placed.half_height = s.half_height();
       placed.axis = e3ga::apply(attitude, vector{0, 0, 1});
@@ -55,16 +52,19 @@ placed_shape place(const shape& s, const vector& position, const rotor& attitude
 std::optional<contact_geometry> find_contact(const placed_shape& a, const placed_shape& b,
                                              real lookahead, const vector& velocity_a,
                                              const vector& velocity_b) {
+  // (In the frame at the pair: detail::meet_origin.)
+  const vector origin = detail::meet_origin(a, b);
   const auto with = [&](const auto& dual_a, const auto& dual_b) {
-    return detail::contact_from(a, b, detail::terms_of(dual_a, dual_b), lookahead, velocity_a,
-                                velocity_b);
+    return detail::contact_from(a, b, detail::terms_of(dual_a, dual_b), origin, lookahead,
+                                velocity_a, velocity_b);
   };
   const bool sphere_a = a.kind == shape_kind::sphere, sphere_b = b.kind == shape_kind::sphere;
   const bool plane_a = a.kind == shape_kind::plane, plane_b = b.kind == shape_kind::plane;
-  if (sphere_a && sphere_b) return with(detail::dual_sphere_of(a), detail::dual_sphere_of(b));
-  if (sphere_a && plane_b) return with(detail::dual_sphere_of(a), detail::dual_plane_of(b));
-  if (plane_a && sphere_b) return with(detail::dual_plane_of(a), detail::dual_sphere_of(b));
-  return with(a.dual, b.dual);
+  using detail::dual_plane_of, detail::dual_sphere_of;
+  if (sphere_a && sphere_b) return with(dual_sphere_of(a, origin), dual_sphere_of(b, origin));
+  if (sphere_a && plane_b) return with(dual_sphere_of(a, origin), dual_plane_of(b, origin));
+  if (plane_a && sphere_b) return with(dual_plane_of(a, origin), dual_sphere_of(b, origin));
+  return with(detail::dual_of(a, origin), detail::dual_of(b, origin));
 }
 
 void find_contacts(const placed_shape& a, const placed_shape& b, real lookahead,

@@ -26,11 +26,29 @@ struct round_terms {
   T centre_weight;             // -ni . (C ni C)
 };
 
-// A sphere's and a plane's duals as their named c3ga types (place() stores
-// them in placed_shape::dual, widened to mv): the meet's products then run
-// the generated kernels of those types (straight-line code, no mv dispatch).
-conformal::dual_sphere dual_sphere_of(const placed_shape& s);
-conformal::dual_plane dual_plane_of(const placed_shape& s);
+// Where a pair's meet is computed: at the centre of its first shape that is
+// not a plane (a sphere's or a point's), else at the world's origin. A
+// translation T commutes with the meet, T(A ∩ B)T~ = TAT~ ∩ TBT~, but the
+// meet's terms are products of duals that carry |x|^2 / 2 of each centre x:
+// in the world frame they lost precision with the square of the pair's
+// distance from the origin, and two spheres 10 km out (double), or 100 m out
+// (float), that overlapped by 1 mm met nothing. At the pair, the terms are of
+// the size of the shapes wherever the pair is.
+inline const vector& meet_origin(const placed_shape& a, const placed_shape& b) {
+  static const vector world_origin{};
+  if (a.kind != shape_kind::plane) return a.center;
+  if (b.kind != shape_kind::plane) return b.center;
+  return world_origin;
+}
+
+// A sphere's and a plane's duals, in the frame whose origin is `origin` (the
+// world's: place() stores them in placed_shape::dual, widened to mv), as
+// their named c3ga types: the meet's products then run the generated kernels
+// of those types (straight-line code, no mv dispatch).
+conformal::dual_sphere dual_sphere_of(const placed_shape& s, const vector& origin);
+conformal::dual_plane dual_plane_of(const placed_shape& s, const vector& origin);
+// Any round shape's dual (a point's has no named type), in that frame.
+conformal::mv dual_of(const placed_shape& s, const vector& origin);
 
 // The Euclidean part (e1, e2, e3) of a c3ga value, named type or mv.
 template <class X>
@@ -91,18 +109,20 @@ auto terms_of(const DualA& dual_a, const DualB& dual_b) {
                              -c3ga::scp(ni, centre)};
 }
 
-// The contact of two round shapes whose meet has terms t (find_contact's
-// rules: contact.hpp).
+// The contact of two round shapes whose meet, computed in the frame at
+// `origin` (meet_origin), has terms t (find_contact's rules: contact.hpp).
 std::optional<contact_geometry> contact_from(const placed_shape& a, const placed_shape& b,
-                                             const round_terms<real>& t, real lookahead,
-                                             const vector& velocity_a, const vector& velocity_b);
+                                             const round_terms<real>& t, const vector& origin,
+                                             real lookahead, const vector& velocity_a,
+                                             const vector& velocity_b);
 
 // Two round shapes that terms_of meets on batches: a sphere and a sphere,
 // or a sphere and a plane, in either order.
 bool meets_on_batches(shape_kind a, shape_kind b);
 
-// terms[k] = the terms of pairs[k], for pairs of shapes that
-// meets_on_batches: W pairs of one kind of pair at a time.
+// terms[k] = the terms of pairs[k] in the frame at their meet_origin, for
+// pairs of shapes that meets_on_batches: W pairs of one kind of pair at a
+// time.
 void batched_terms(const std::pair<const placed_shape*, const placed_shape*>* pairs,
                    std::size_t count, round_terms<real>* terms);
 

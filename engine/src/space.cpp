@@ -206,7 +206,8 @@ static bool contact_from_terms(const placed_shape& shape_a, const placed_shape& 
                                contact_manifold& manifold) {
   manifold.count = 0;
   const auto geometry =
-      detail::contact_from(shape_a, shape_b, terms, lookahead, velocity_a, velocity_b);
+      detail::contact_from(shape_a, shape_b, terms, detail::meet_origin(shape_a, shape_b),
+                           lookahead, velocity_a, velocity_b);
   if (!geometry) return false;
   manifold.points[0] = contact_point{*geometry, 0};
   manifold.count = 1;

@@ -151,12 +151,20 @@ TEST_F(broad_phase_test, coincident_and_far_away_bodies_are_handled) {
   const auto from_grid = contacts_of(grid, bodies, grid_pairs);
   const auto from_all = contacts_of(all, bodies, all_pairs);
   ASSERT_EQ(from_grid.size(), from_all.size());
-  // Every two of the ten coincident spheres. The far pair touches, but at
-  // far_away the conformal embedding (|x|^2 / 2) overflows, so the meet sees
-  // nothing: finite, never NaN, and the same with either broad phase.
-  EXPECT_EQ(from_all.size(), 45u);
+  // Every two of the ten coincident spheres, and the far pair: its meet is
+  // computed at the pair (detail::meet_origin), where the conformal
+  // embedding's |x|^2 / 2 would overflow in the world frame. The same with
+  // either broad phase.
+  ASSERT_EQ(from_all.size(), 46u);
   for (std::size_t i = 0; i < from_all.size(); ++i)
     EXPECT_TRUE(same_bits(from_grid[i], from_all[i]));
+  const contact& far = from_all.back();
+  EXPECT_EQ(far.body_a, 10u);
+  EXPECT_EQ(far.body_b, 11u);
+  EXPECT_TRUE(near(far.geometry.normal, vector{0, 0, -1}, tolerance(1e-15, 1e-6)));
+  EXPECT_NEAR(far.geometry.depth, 0.5, tolerance(1e-15, 1e-6));
+  EXPECT_EQ(far.geometry.point.e1(), far_away);
+  EXPECT_NEAR(far.geometry.point.e3(), 0.25, tolerance(1e-15, 1e-6));
 }
 
 // Whole runs: 100 spheres falling into the box for 1.5 s, with either broad

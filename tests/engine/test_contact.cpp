@@ -2,15 +2,23 @@
 // sphere-plane and point-sphere configurations (apart, touching, overlapping,
 // deep, nested) the conformal meet's contact point, normal and depth must be
 // the ones elementary geometry gives.
+#include <cstring>
+#include <limits>
+
 #include "engine_test_support.hpp"
 
 namespace gaphys::testing {
 namespace {
 
-// (In float the meet's terms |x|^2 / 2 of centres 5 m out round to 1e-6,
-// and their differences lose more: 1.5e-4 m seen.)
+// (In float, coordinates 5 m out round to 5e-7 m: over the shortest
+// distances below, 1 mm, a normal turns by up to 5e-4.)
 const real geometry_tolerance = tolerance(1e-9, 5e-4);
 const rotor identity{1, 0, 0, 0};
+
+bool same_bits(real a, real b) { return std::memcmp(&a, &b, sizeof(real)) == 0; }
+bool same_bits(const vector& a, const vector& b) {
+  return same_bits(a.e1(), b.e1()) && same_bits(a.e2(), b.e2()) && same_bits(a.e3(), b.e3());
+}
 
 class contact_test : public engine_test {
  protected:
@@ -112,10 +120,11 @@ TEST_F(contact_test, touching_spheres_are_in_contact_at_the_touching_point) {
     const real ra = uniform(0.05, 2), rb = uniform(0.05, 2);
     const vector b = random_point(5);
     const vector n = random_unit_vector();
-    // Overlapping by far less than the sizes, far more than the rounding of
-    // the meet's terms 5 m out (in float, |x|^2 / 2 ε: about 1e-5 m^2 at 5 m;
-    // 1e-4 m left a 5 cm sphere's contact unseen).
-    const real overlap = for_scalar(1e-7, 1e-3);
+    // Overlapping by far less than the sizes, and in float by 20 times the
+    // rounding of coordinates 5 m out. (When the meet was computed in the
+    // world frame, its terms |x|^2 / 2 rounded to 1e-5 m^2 there, and float
+    // needed 1 mm: 0.1 mm left a 5 cm sphere's contact unseen.)
+    const real overlap = for_scalar(1e-7, 1e-5);
     const sphere_pair s{b + (ra + rb - overlap) * n, b, ra, rb};
     const auto g = find_contact(sphere_at(s.centre_a, ra), sphere_at(s.centre_b, rb));
     ASSERT_TRUE(g) << "trial " << trial;
@@ -126,6 +135,59 @@ TEST_F(contact_test, touching_spheres_are_in_contact_at_the_touching_point) {
     const real t = (d * d + rb * rb - ra * ra) / (2 * d);
     EXPECT_NEAR(g->squared_radius, rb * rb - t * t, tolerance(1e-6, 1e-4));
   }
+}
+
+// The meet is computed at the pair (detail::meet_origin), so a pair met far
+// from the world's origin gives the contact it gives near it: the same
+// normal, depth and squared radius to the bit, and the point moved with it.
+// Centres, radii and shifts on a grid of 2^-8 m, and shifts by powers of two
+// up to 2^30 m (float: 2^15): every coordinate and every difference is then
+// exact, and only the point's final shift rounds. (Met in the world frame,
+// the terms carried |x|^2 / 2: two spheres 10 km out, or 100 m out in float,
+// that overlapped by 1 mm met nothing.)
+TEST_F(contact_test, a_pair_meets_alike_wherever_it_is) {
+  const auto on_grid = [&](real low, real high) {
+    return std::round(uniform(low, high) * 256) / 256;
+  };
+  const auto grid_point = [&] { return vector{on_grid(-4, 4), on_grid(-4, 4), on_grid(-4, 4)}; };
+  const int largest_power = sizeof(real) == 8 ? 30 : 15;
+  int met = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    // A sphere and a sphere, plane (an axis-aligned one: its offset then
+    // moves exactly) or point, overlapping or not.
+    const real ra = on_grid(0.05, 2), rb = on_grid(0.05, 2);
+    const vector a = grid_point();
+    const int kind = trial % 3;
+    const vector b = kind == 0 ? a + vector{on_grid(0, real(1.2) * (ra + rb)), on_grid(-0.5, 0.5),
+                                            on_grid(-0.5, 0.5)}
+                               : grid_point();
+    const shape other = kind == 0   ? shape::sphere(rb)
+                        : kind == 1 ? shape::plane(vector{0, 0, 1}, on_grid(-1, 1))
+                                    : shape::point();
+    const auto meet_shifted = [&](const vector& shift) {
+      return find_contact(place(shape::sphere(ra), a + shift, identity),
+                          place(other, b + shift, identity));
+    };
+    const auto here = meet_shifted(vector{});
+    for (int power = 4; power <= largest_power; power += 2) {
+      const real far = std::ldexp(real(1), power);
+      const vector shift{far, -far / 2, far / 4};
+      const auto there = meet_shifted(shift);
+      ASSERT_EQ(bool(here), bool(there)) << "trial " << trial << ", 2^" << power << " m out";
+      if (!here) continue;
+      EXPECT_TRUE(same_bits(here->normal, there->normal)) << "trial " << trial;
+      EXPECT_TRUE(same_bits(here->depth, there->depth)) << "trial " << trial;
+      EXPECT_TRUE(same_bits(here->squared_radius, there->squared_radius)) << "trial " << trial;
+      // (The shift adds at most half a unit in the last place of |far|.)
+      EXPECT_TRUE(
+          near(there->point - shift, here->point, far * std::numeric_limits<real>::epsilon()))
+          << "trial " << trial;
+    }
+    met += here ? 1 : 0;
+  }
+  // Both outcomes were tried.
+  EXPECT_GT(met, 50);
+  EXPECT_LT(met, 250);
 }
 
 TEST_F(contact_test, a_sphere_inside_another_is_a_deep_contact) {

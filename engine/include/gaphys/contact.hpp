@@ -58,7 +58,9 @@ struct contact_geometry {
 // imaginary, its centre and carrier still real), with depth = -gap < 0.
 // Each body's own speed towards the other counts, not only their relative
 // speed: either may be stopped by its other contacts while the other goes
-// on (two touching balls of a stack both falling under gravity).
+// on (two touching balls of a stack both falling under gravity). The meet
+// is computed in a frame at the pair, so a pair far from the world's origin
+// meets as it would near it (docs/engine.md, "Contacts through the meet").
 std::optional<contact_geometry> find_contact(const placed_shape& a, const placed_shape& b,
                                              real lookahead = 0,
                                              const vector& velocity_a = vector{},
