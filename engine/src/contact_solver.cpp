@@ -107,6 +107,20 @@ std::optional<timed_impact> contact_solver::time_impact(const body& a, const bod
   return impact_of_centres(e3ga::norm(motion.offset) + c.geometry.depth, motion, h);
 }
 
+std::optional<timed_impact> contact_solver::time_point_impact(const body& a, const body& b,
+                                                              const contact& c,
+                                                              const body_velocity& start_a,
+                                                              const body_velocity& start_b,
+                                                              real h) {
+  const vector& p = c.geometry.point;
+  const vector r_a = p - a.position(), r_b = p - b.position();
+  const body_velocity now_a{a.velocity_, a.angular_velocity_};
+  const body_velocity now_b{b.velocity_, b.angular_velocity_};
+  const relative_motion motion{vector{}, start_a.at_offset(r_a) - start_b.at_offset(r_b),
+                               now_a.at_offset(r_a) - now_b.at_offset(r_b)};
+  return impact_across_plane(-c.geometry.depth, c.geometry.normal, motion, h);
+}
+
 contact_solver::shape_summary contact_solver::summarize(const body& b) {
   shape_summary s;
   s.central = central(b);
@@ -180,6 +194,14 @@ void contact_solver::build_constraint(const world_settings& settings, const body
     // Bounced at the moment the surfaces meet, along the normal then.
     impact.timing = time_impact(a, b, c, start_a, start_b, h);
     if (impact.timing) n = impact.timing->normal;
+  } else if (k.bounces && k.gap > 0) {
+    // Any other speculative bounce (boxes, capsules, hulls, compounds, whose
+    // contact points turn with their bodies): timed along its normal, held
+    // fixed, from its point's speeds. Left to wait for the next step like
+    // one whose gap does not close in this one, it let the bodies overlap by
+    // up to the step's travel first, and a box at 50 m/s went through a
+    // 4 cm wall (test_boxes.cpp).
+    impact.timing = time_point_impact(a, b, c, start_a, start_b, h);
   }
   // A bounce whose surfaces meet only in a later step waits for it.
   k.waits = k.bounces && k.gap > 0 && !impact.timing;
@@ -319,9 +341,11 @@ bool contact_solver::impact(std::size_t index, real threshold, real h) {
   } else {
     // Struck by an earlier impact: a contact that now approaches faster than
     // the threshold, and touches or closes its gap within the step, bounces.
+    // (A timed one touches at its impact: a box's four corners reaching a
+    // wall at once, each struck by the others' bounces.)
     const real approach = normal_speed(index, a, b);
     if (!(approach < -threshold)) return false;
-    if (k.gap > 0 && !(k.gap <= -approach * h)) return false;
+    if (k.gap > 0 && !record.timing && !(k.gap <= -approach * h)) return false;
     speed = -approach;
   }
   if (!(speed > 0)) return false;

@@ -157,6 +157,12 @@ class contact_solver {
   std::optional<timed_impact> time_impact(const body& a, const body& b, const contact& c,
                                           const body_velocity& start_a,
                                           const body_velocity& start_b, real h) const;
+  // The same for any other contact, along its normal held fixed, from its
+  // point's speeds (see build_constraint).
+  static std::optional<timed_impact> time_point_impact(const body& a, const body& b,
+                                                       const contact& c,
+                                                       const body_velocity& start_a,
+                                                       const body_velocity& start_b, real h);
   void set_relaxation(const world_settings& settings, const std::vector<body>& bodies);
   void resolve_impacts(const world_settings& settings, real h);
   bool impact(std::size_t index, real threshold, real h);
