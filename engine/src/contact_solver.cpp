@@ -310,28 +310,24 @@ void contact_solver::set_relaxation(const world_settings& settings, const std::v
   });
 }
 
-// One impact of one contact, if it has one now: a bouncing contact takes the
-// impulse that reverses its approach speed times e, read from the bodies'
-// velocities as the step's start and its earlier impacts left them (for a
-// timed bounce whose bodies nothing else has struck yet, the speed at the
-// moment of impact), with friction bounded by μ times that impulse. The
-// same impulse changes the solved velocities. Each such impulse removes
-// (1 - e²) of the kinetic energy of the pair's approach and friction only
-// takes energy away, so the impacts of a step create none, whatever their
-// order.
-bool contact_solver::impact(std::size_t index, real threshold, real h) {
-  constraint& k = constraints_[index];
-  if (!(k.restitution > 0) || !(k.mass_inverse > 0)) return false;
-  impact_terms& record = impacts_[index];
-  solver_body& a = impact_bodies_[k.body_a];
-  solver_body& b = impact_bodies_[k.body_b];
+// Whether a contact bounces now, and at what approach speed: a bouncing
+// contact's speed is read from the bodies' velocities as the step's start
+// and its earlier impacts left them (for a timed bounce whose bodies nothing
+// else has struck yet, the speed at the moment of impact; `timed_now`).
+std::optional<real> contact_solver::impact_speed(std::size_t index, real threshold, real h,
+                                                 bool& timed_now) const {
+  const constraint& k = constraints_[index];
+  timed_now = false;
+  if (!(k.restitution > 0) || !(k.mass_inverse > 0)) return std::nullopt;
+  const impact_terms& record = impacts_[index];
+  const solver_body& a = impact_bodies_[k.body_a];
+  const solver_body& b = impact_bodies_[k.body_b];
   const bool untouched = !impacted_[k.body_a] && !impacted_[k.body_b];
   real speed;
-  bool timed_now = false;
   if (untouched) {
     // Nothing has struck either body this step: the start velocities and
     // the timing decide.
-    if (!k.bounces || k.waits) return false;
+    if (!k.bounces || k.waits) return std::nullopt;
     if (record.timing) {
       speed = record.timing->speed;
       timed_now = true;
@@ -344,17 +340,44 @@ bool contact_solver::impact(std::size_t index, real threshold, real h) {
     // (A timed one touches at its impact: a box's four corners reaching a
     // wall at once, each struck by the others' bounces.)
     const real approach = normal_speed(index, a, b);
-    if (!(approach < -threshold)) return false;
-    if (k.gap > 0 && !record.timing && !(k.gap <= -approach * h)) return false;
+    if (!(approach < -threshold)) return std::nullopt;
+    if (k.gap > 0 && !record.timing && !(k.gap <= -approach * h)) return std::nullopt;
     speed = -approach;
   }
-  if (!(speed > 0)) return false;
+  if (!(speed > 0)) return std::nullopt;
+  return speed;
+}
 
-  const real j = (1 + k.restitution) * speed / k.mass_inverse;
-  solver_body& solved_a = solver_bodies_[k.body_a];
-  solver_body& solved_b = solver_bodies_[k.body_b];
-  apply_normal(index, a, b, j);
-  apply_normal(index, solved_a, solved_b, j);
+// One impact of one contact, if it has one now: the impulse that reverses
+// its approach speed times e, with friction bounded by μ times that
+// impulse. The same impulse changes the solved velocities. Each such
+// impulse removes (1 - e²) of the kinetic energy of the pair's approach and
+// friction only takes energy away, so the impacts of a step create none,
+// whatever their order.
+bool contact_solver::impact(std::size_t index, real threshold, real h) {
+  bool timed_now = false;
+  const std::optional<real> speed = impact_speed(index, threshold, h, timed_now);
+  if (!speed) return false;
+  const constraint& k = constraints_[index];
+  const real j = (1 + k.restitution) * *speed / k.mass_inverse;
+  apply_impact_normal(index, j);
+  finish_impact(index, j, timed_now);
+  return true;
+}
+
+void contact_solver::apply_impact_normal(std::size_t index, real j) {
+  const constraint& k = constraints_[index];
+  apply_normal(index, impact_bodies_[k.body_a], impact_bodies_[k.body_b], j);
+  apply_normal(index, solver_bodies_[k.body_a], solver_bodies_[k.body_b], j);
+}
+
+// What follows a contact's normal impulse j of the impact phase (applied):
+// its record, friction, and the timing of the correction.
+void contact_solver::finish_impact(std::size_t index, real j, bool timed_now) {
+  constraint& k = constraints_[index];
+  impact_terms& record = impacts_[index];
+  solver_body& a = impact_bodies_[k.body_a];
+  solver_body& b = impact_bodies_[k.body_b];
   record.normal += j;
   k.struck = true;
   vector linear_impulse = j * k.normal;
@@ -365,7 +388,7 @@ bool contact_solver::impact(std::size_t index, real threshold, real h) {
         a, b, f.impact_tangent, t.friction_coefficient * record.normal);
     const std::array<real, 2> step{total[0] - f.impact_tangent[0], total[1] - f.impact_tangent[1]};
     t.friction.apply(a, b, step);
-    t.friction.apply(solved_a, solved_b, step);
+    t.friction.apply(solver_bodies_[k.body_a], solver_bodies_[k.body_b], step);
     f.impact_tangent = total;
     linear_impulse = linear_impulse + step[0] * f.frame[0] + step[1] * f.frame[1];
   }
@@ -375,7 +398,63 @@ bool contact_solver::impact(std::size_t index, real threshold, real h) {
   }
   if (a.inverse_mass > 0) impacted_[k.body_a] = 1;
   if (b.inverse_mass > 0) impacted_[k.body_b] = 1;
-  return true;
+}
+
+// The impacts of a run of contacts between the same two bodies (contacts
+// first .. end - 1, in contact order): the points of one patch, a box's
+// corners on a floor, bounce at once. One by one, the first corner's
+// impulse turned the box and the others bounced from that: a box dropped
+// flat on a floor with e = 0.5 climbed back to 3% of its height instead of
+// e² = 25%, spinning at 14 rad/s. Together, each point's impulse is found
+// (projected Gauss-Seidel over the run, impulses >= 0) such that each
+// separates at e times the speed it approached at, where the impulses can.
+// One bouncing point alone bounces as impact() bounces it.
+bool contact_solver::impact_run(std::size_t first, std::size_t end, real threshold, real h) {
+  run_bounces_.clear();
+  real largest_target = 0;
+  for (std::size_t i = first; i < end; ++i) {
+    if (!impact_filters_[i].can_bounce) continue;
+    bool timed_now = false;
+    const std::size_t index = slot_[i];
+    if (const std::optional<real> speed = impact_speed(index, threshold, h, timed_now)) {
+      // The speed impact() would leave: its impulse's (1 + e) speed on top
+      // of the speed now (for a timed bounce, `speed` is the one at its
+      // moment, which gravity made faster than the step's start).
+      const constraint& k = constraints_[index];
+      const real now = normal_speed(index, impact_bodies_[k.body_a], impact_bodies_[k.body_b]);
+      const real target = now + (1 + k.restitution) * *speed;
+      run_bounces_.push_back({index, target, 0, timed_now});
+      largest_target = std::max(largest_target, (1 + k.restitution) * *speed);
+    }
+  }
+  if (run_bounces_.empty()) return false;
+  if (run_bounces_.size() == 1) return impact(run_bounces_[0].index, threshold, h);
+  const constraint& first_k = constraints_[run_bounces_[0].index];
+  const solver_body& a = impact_bodies_[first_k.body_a];
+  const solver_body& b = impact_bodies_[first_k.body_b];
+  // (Converged when no impulse changes any point's speed by more than
+  // 1e-12 of the speeds at stake; 64 sweeps at most.)
+  for (int sweep = 0; sweep < 64; ++sweep) {
+    real largest_change = 0;
+    for (run_bounce& x : run_bounces_) {
+      const constraint& k = constraints_[x.index];
+      const real wanted = (x.target - normal_speed(x.index, a, b)) * k.normal_mass;
+      const real total = std::max(x.total + wanted, real(0));
+      const real j = total - x.total;
+      x.total = total;
+      if (j == 0) continue;
+      apply_impact_normal(x.index, j);
+      largest_change = std::max(largest_change, std::fabs(j) * k.mass_inverse);
+    }
+    if (!(largest_change > detail::by_precision(1e-12, 1e-6) * largest_target)) break;
+  }
+  bool any = false;
+  for (const run_bounce& x : run_bounces_) {
+    if (!(x.total > 0)) continue;
+    finish_impact(x.index, x.total, x.timed);
+    any = true;
+  }
+  return any;
 }
 
 // The impact phase: sweeps over the contacts until none bounces. A row of
@@ -398,16 +477,29 @@ void contact_solver::resolve_impacts(const world_settings& settings, real h) {
   const bool any_bounce = std::any_of(impact_filters_.begin(), impact_filters_.end(),
                                       [](const impact_filter& f) { return f.starts; });
   if (!any_bounce) return;
+  const std::size_t count = constraints_.size();
   for (int sweep = 0; sweep < settings.impact_iterations; ++sweep) {
     bool any = false;
-    for (std::size_t i = 0; i < constraints_.size(); ++i) {
+    // Run by run: the contacts between the same two bodies, consecutive in
+    // contact order, bounce together (impact_run).
+    for (std::size_t i = 0; i < count;) {
+      const auto [body_a, body_b] = colouring_.pairs[i];
+      std::size_t end = i + 1;
+      while (end < count && colouring_.pairs[end] == colouring_.pairs[i]) ++end;
       // (impact() would return false: no restitution, or neither body struck
       // yet and the contact does not bounce by itself.)
-      const impact_filter& f = impact_filters_[i];
-      if (!f.can_bounce) continue;
-      const auto [body_a, body_b] = colouring_.pairs[i];
-      if (!f.starts && !impacted_[body_a] && !impacted_[body_b]) continue;
-      any = impact(slot_[i], settings.restitution_threshold, h) || any;
+      const bool struck = impacted_[body_a] || impacted_[body_b];
+      bool may_bounce = false;
+      for (std::size_t m = i; m < end && !may_bounce; ++m) {
+        const impact_filter& f = impact_filters_[m];
+        may_bounce = f.can_bounce && (f.starts || struck);
+      }
+      if (may_bounce) {
+        const real threshold = settings.restitution_threshold;
+        any = (end - i == 1 ? impact(slot_[i], threshold, h) : impact_run(i, end, threshold, h)) ||
+              any;
+      }
+      i = end;
     }
     if (!any) break;
   }

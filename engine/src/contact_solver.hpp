@@ -166,6 +166,11 @@ class contact_solver {
   void set_relaxation(const world_settings& settings, const std::vector<body>& bodies);
   void resolve_impacts(const world_settings& settings, real h);
   bool impact(std::size_t index, real threshold, real h);
+  bool impact_run(std::size_t first, std::size_t end, real threshold, real h);
+  std::optional<real> impact_speed(std::size_t index, real threshold, real h,
+                                   bool& timed_now) const;
+  void apply_impact_normal(std::size_t index, real j);
+  void finish_impact(std::size_t index, real j, bool timed_now);
   // The warm start in two parts: which old contact each new one starts from
   // (matches_, in shares of both lists cut before the same pairs; needs
   // neither the colouring nor the constraints), then their impulses applied.
@@ -301,6 +306,14 @@ class contact_solver {
     bool starts;      // bounces from the start velocities (and meets within the step)
   };
   std::vector<impact_filter> impact_filters_;
+  // impact_run's scratch: the run's bouncing contacts.
+  struct run_bounce {
+    std::size_t index;  // the constraint
+    real target;        // the normal speed wanted: about e times the approach speed
+    real total;         // the run's impulse so far
+    bool timed;
+  };
+  std::vector<run_bounce> run_bounces_;
   std::vector<surface_terms> surfaces_;      // for the constraints that have them
   std::vector<surface_frame> frames_;        // one per surface
   std::vector<resistance_terms> resistances_;  // for the surfaces that have them
