@@ -358,11 +358,16 @@ bool contact_solver::impact(std::size_t index, real threshold, real h) {
   bool timed_now = false;
   const std::optional<real> speed = impact_speed(index, threshold, h, timed_now);
   if (!speed) return false;
+  bounce(index, *speed, timed_now);
+  return true;
+}
+
+// A contact's impact at approach speed `speed` (impact_speed's).
+void contact_solver::bounce(std::size_t index, real speed, bool timed_now) {
   const constraint& k = constraints_[index];
-  const real j = (1 + k.restitution) * *speed / k.mass_inverse;
+  const real j = (1 + k.restitution) * speed / k.mass_inverse;
   apply_impact_normal(index, j);
   finish_impact(index, j, timed_now);
-  return true;
 }
 
 void contact_solver::apply_impact_normal(std::size_t index, real j) {
@@ -423,12 +428,16 @@ bool contact_solver::impact_run(std::size_t first, std::size_t end, real thresho
       const constraint& k = constraints_[index];
       const real now = normal_speed(index, impact_bodies_[k.body_a], impact_bodies_[k.body_b]);
       const real target = now + (1 + k.restitution) * *speed;
-      run_bounces_.push_back({index, target, 0, timed_now});
+      run_bounces_.push_back({index, *speed, target, 0, timed_now});
       largest_target = std::max(largest_target, (1 + k.restitution) * *speed);
     }
   }
   if (run_bounces_.empty()) return false;
-  if (run_bounces_.size() == 1) return impact(run_bounces_[0].index, threshold, h);
+  if (run_bounces_.size() == 1) {
+    const run_bounce& only = run_bounces_[0];
+    bounce(only.index, only.speed, only.timed);
+    return true;
+  }
   const constraint& first_k = constraints_[run_bounces_[0].index];
   const solver_body& a = impact_bodies_[first_k.body_a];
   const solver_body& b = impact_bodies_[first_k.body_b];

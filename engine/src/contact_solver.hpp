@@ -166,6 +166,7 @@ class contact_solver {
   void set_relaxation(const world_settings& settings, const std::vector<body>& bodies);
   void resolve_impacts(const world_settings& settings, real h);
   bool impact(std::size_t index, real threshold, real h);
+  void bounce(std::size_t index, real speed, bool timed_now);
   bool impact_run(std::size_t first, std::size_t end, real threshold, real h);
   std::optional<real> impact_speed(std::size_t index, real threshold, real h,
                                    bool& timed_now) const;
@@ -309,6 +310,7 @@ class contact_solver {
   // impact_run's scratch: the run's bouncing contacts.
   struct run_bounce {
     std::size_t index;  // the constraint
+    real speed;         // its approach speed (impact_speed)
     real target;        // the normal speed wanted: about e times the approach speed
     real total;         // the run's impulse so far
     bool timed;

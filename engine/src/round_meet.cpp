@@ -52,14 +52,14 @@ constexpr int lanes = c3ga::native_lanes;
 
 // terms_of on the pairs at[0 .. count) (count <= lanes; the rest of the
 // batch repeats the last pair), their duals made by dual_a and dual_b in the
-// frame at each pair's meet_origin: A's centre, or B's where A is a plane.
-template <bool at_b, class DualOfA, class DualOfB>
+// frame at each pair's meet_origin.
+template <class DualOfA, class DualOfB>
 void terms_of_batch(const std::pair<const placed_shape*, const placed_shape*>* pairs,
                     const std::size_t* at, int count, round_terms<real>* terms, DualOfA dual_a,
                     DualOfB dual_b) {
   const auto pair = [&](int i) { return pairs[at[std::min(i, count - 1)]]; };
   const auto origin = [&](int i) -> const vector& {
-    return at_b ? pair(i).second->center : pair(i).first->center;
+    return meet_origin(*pair(i).first, *pair(i).second);
   };
   const auto duals_a =
       c3ga::gather<lanes>([&](int i) { return dual_a(*pair(i).first, origin(i)); });
@@ -172,9 +172,9 @@ void batched_terms(const std::pair<const placed_shape*, const placed_shape*>* pa
     const std::vector<std::size_t>& at = of_kind[kind];
     for (std::size_t first = 0; first < at.size(); first += lanes) {
       const int n = static_cast<int>(std::min<std::size_t>(lanes, at.size() - first));
-      if (kind == 0) terms_of_batch<false>(pairs, &at[first], n, terms, sphere, sphere);
-      if (kind == 1) terms_of_batch<false>(pairs, &at[first], n, terms, sphere, plane);
-      if (kind == 2) terms_of_batch<true>(pairs, &at[first], n, terms, plane, sphere);
+      if (kind == 0) terms_of_batch(pairs, &at[first], n, terms, sphere, sphere);
+      if (kind == 1) terms_of_batch(pairs, &at[first], n, terms, sphere, plane);
+      if (kind == 2) terms_of_batch(pairs, &at[first], n, terms, plane, sphere);
     }
   }
 }
