@@ -53,6 +53,7 @@ void contact_batches(benchmark::State& state, const scene_kind& kind, bool batch
     total.pairs += t.pairs;
     total.narrow_phase += t.narrow_phase;
     total.response += t.response;
+    total.events += t.events;
     contacts += static_cast<double>(w.contacts().size());
   }
   const double steps = static_cast<double>(state.iterations());
@@ -60,6 +61,7 @@ void contact_batches(benchmark::State& state, const scene_kind& kind, bool batch
   state.counters["pairs_ms"] = 1e3 * total.pairs / steps;
   state.counters["narrow_ms"] = 1e3 * total.narrow_phase / steps;
   state.counters["response_ms"] = 1e3 * total.response / steps;
+  state.counters["events_ms"] = 1e3 * total.events / steps;
   state.counters["contacts"] = contacts / steps;
 }
 

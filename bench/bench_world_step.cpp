@@ -54,6 +54,7 @@ void world_step(benchmark::State& state) {
     total.pairs += t.pairs;
     total.narrow_phase += t.narrow_phase;
     total.response += t.response;
+    total.events += t.events;
     contacts += static_cast<double>(w.contacts().size());
     pairs += static_cast<double>(t.candidate_pairs);
   }
@@ -63,6 +64,7 @@ void world_step(benchmark::State& state) {
   state.counters["pairs_ms"] = 1e3 * total.pairs / steps;
   state.counters["narrow_phase_ms"] = 1e3 * total.narrow_phase / steps;
   state.counters["response_ms"] = 1e3 * total.response / steps;
+  state.counters["events_ms"] = 1e3 * total.events / steps;
   state.counters["contacts"] = contacts / steps;
   state.counters["candidate_pairs"] = pairs / steps;
   state.counters["bodies"] = static_cast<double>(w.body_count());

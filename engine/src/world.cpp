@@ -446,6 +446,7 @@ void world::step(real h) {
   timings_.pairs = seconds(integrated, paired);
   timings_.narrow_phase = seconds(paired, met);
   timings_.response = seconds(met, solved) + seconds(moved, corrected);
+  timings_.events = seconds(corrected, reported);
   timings_.candidate_pairs = pairs_.size();
   time_ += h;
 }

@@ -87,6 +87,7 @@ struct step_timings {
   double pairs = 0;         // candidate pairs (the broad phase)
   double narrow_phase = 0;  // meets
   double response = 0;      // impulses and position correction
+  double events = 0;        // contact events and sensor overlaps, named by id
   std::size_t candidate_pairs = 0;
 };
 
