@@ -57,8 +57,8 @@ const body_definition& validated(const body_definition& d) {
   if (d.density) detail::require_positive(*d.density, "body density");
   if (d.density && d.inertia) detail::reject("give a body density or an inertia, not both");
   detail::require_finite(d.position, "body position");
-  detail::require_finite(d.velocity, "body velocity");
-  detail::require_finite(d.angular_velocity, "body angular velocity");
+  detail::require_steppable(d.velocity, "body velocity");
+  detail::require_steppable(d.angular_velocity, "body angular velocity");
   detail::unit_rotor(d.attitude, "body attitude");
   detail::require_finite(d.gravity_scale, "body gravity scale");
   require_damping(d.linear_damping, "body linear damping");
@@ -160,7 +160,7 @@ void body::set_position(const vector& position) {
 }
 
 void body::set_velocity(const vector& velocity) {
-  detail::require_finite(velocity, "body velocity");
+  detail::require_steppable(velocity, "body velocity");
   require_static_at_rest(is_static_, is_zero(velocity), "velocity");
   velocity_ = velocity;
   wake_up();
@@ -176,8 +176,12 @@ void body::move_to(const vector& position, const rotor& attitude, real h) {
   if (!is_kinematic_) detail::reject("move_to needs a kinematic body");
   rotor turn = e3ga::gp(target, e3ga::reverse(attitude_));
   if (turn.c[0] < 0) turn = -turn;
-  velocity_ = (1 / h) * (position - position_);
-  angular_velocity_ = (-2 / h) * e3ga::log(turn);
+  const vector velocity = (1 / h) * (position - position_);
+  const bivector angular_velocity = (-2 / h) * e3ga::log(turn);
+  detail::require_steppable(velocity, "move_to's velocity (the distance over h)");
+  detail::require_steppable(angular_velocity, "move_to's angular velocity (the turn over h)");
+  velocity_ = velocity;
+  angular_velocity_ = angular_velocity;
   wake_up();
 }
 
@@ -188,7 +192,7 @@ void body::set_attitude(const rotor& attitude) {
 }
 
 void body::set_angular_velocity(const bivector& angular_velocity) {
-  detail::require_finite(angular_velocity, "body angular velocity");
+  detail::require_steppable(angular_velocity, "body angular velocity");
   require_static_at_rest(is_static_, is_zero(angular_velocity), "angular velocity");
   angular_velocity_ = angular_velocity;
   wake_up();
@@ -197,23 +201,30 @@ void body::set_angular_velocity(const bivector& angular_velocity) {
 void body::apply_force(const vector& force, const vector& offset) {
   detail::require_finite(force, "force");
   detail::require_finite(offset, "force offset");
-  force_ = force_ + force;
   // τ = r ∧ f with r the offset turned into the world frame.
-  torque_ = torque_ + e3ga::op(e3ga::apply(attitude_, offset), force);
-  wake_dynamic();
+  accumulate(force, e3ga::op(e3ga::apply(attitude_, offset), force));
 }
 
 void body::apply_force_at_world_point(const vector& force, const vector& world_point) {
   detail::require_finite(force, "force");
   detail::require_finite(world_point, "force point");
-  force_ = force_ + force;
-  torque_ = torque_ + e3ga::op(world_point - position_, force);
-  wake_dynamic();
+  accumulate(force, e3ga::op(world_point - position_, force));
 }
 
 void body::apply_torque(const bivector& torque) {
   detail::require_finite(torque, "torque");
-  torque_ = torque_ + torque;
+  accumulate(vector{}, torque);
+}
+
+// Adds to the force and torque the next step applies, if both stay
+// steppable (else throws, and neither changes).
+void body::accumulate(const vector& force, const bivector& torque) {
+  const vector total_force = force_ + force;
+  const bivector total_torque = torque_ + torque;
+  detail::require_steppable(total_force, "the body's total force");
+  detail::require_steppable(total_torque, "the body's total torque");
+  force_ = total_force;
+  torque_ = total_torque;
   wake_dynamic();
 }
 
@@ -223,10 +234,14 @@ void body::apply_impulse(const vector& impulse, const vector& world_point) {
   detail::require_finite(impulse, "impulse");
   detail::require_finite(world_point, "impulse point");
   if (!is_dynamic()) return;
-  wake_up();
-  velocity_ = velocity_ + inverse_mass_ * impulse;
-  angular_velocity_ =
+  const vector velocity = velocity_ + inverse_mass_ * impulse;
+  const bivector angular_velocity =
       angular_velocity_ + world_inverse_inertia(e3ga::op(world_point - position_, impulse));
+  detail::require_steppable(velocity, "the body's velocity after the impulse");
+  detail::require_steppable(angular_velocity, "the body's angular velocity after the impulse");
+  wake_up();
+  velocity_ = velocity;
+  angular_velocity_ = angular_velocity;
 }
 
 void body::set_gravity_scale(real scale) {

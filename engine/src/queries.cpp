@@ -61,13 +61,11 @@ struct ray {
 
 ray validated_ray(const vector& origin, const vector& direction, real max_distance) {
   detail::require_finite(origin, "ray origin");
-  detail::require_finite(direction, "ray direction");
-  const real length = e3ga::norm(direction);
-  if (!(length > 0)) detail::reject("ray direction must be nonzero");
+  const vector unit = detail::unit_multiple(direction, "ray direction", " must be nonzero");
   if (std::isnan(max_distance) || max_distance < 0) {
     detail::reject("ray max_distance must be >= 0 (got ", max_distance, ")");
   }
-  return {origin, (1 / length) * direction, max_distance};
+  return {origin, unit, max_distance};
 }
 
 // Orders hits by distance, then body, then shape: the same order whatever

@@ -15,12 +15,10 @@ shape shape::sphere(real radius) {
 }
 
 shape shape::plane(const vector& normal, real offset) {
-  detail::require_finite(normal, "plane normal");
+  const vector unit = detail::unit_multiple(normal, "plane normal", " must be nonzero");
   detail::require_finite(offset, "plane offset");
-  const real length = e3ga::norm(normal);
-  if (!(length > 0)) detail::reject("plane normal must be nonzero");
   shape s(shape_kind::plane);
-  s.normal_ = normal / length;
+  s.normal_ = unit;
   s.offset_ = offset;
   return s;
 }

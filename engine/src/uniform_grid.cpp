@@ -65,7 +65,10 @@ constexpr int width_bucket_shift = sizeof(real) == 8 ? 49 : 20;
 std::size_t width_bucket(real width) {
   real_bits bits;
   std::memcpy(&bits, &width, sizeof bits);
-  return static_cast<std::size_t>(bits >> width_bucket_shift);
+  // (A NaN with its sign bit set would index past the buckets: the world
+  // never holds one, but the grid must not write out of bounds if it did.)
+  constexpr std::size_t last = (std::size_t{1} << (8 * sizeof(real) - 1 - width_bucket_shift)) - 1;
+  return std::min(static_cast<std::size_t>(bits >> width_bucket_shift), last);
 }
 
 // The least width above every width of `bucket` (infinity from the largest

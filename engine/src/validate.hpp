@@ -40,18 +40,43 @@ void require_finite(const Named& value, const char* what) {
   }
 }
 
+// A speed, force or torque the step can use: finite, and not so large that
+// its square (which every norm takes) overflows, as 1e200 m/s would.
+template <class Named>
+void require_steppable(const Named& value, const char* what) {
+  require_finite(value, what);
+  if (!std::isfinite(e3ga::norm2(value))) {
+    reject(what, " is too large to step: its square overflows (got ", e3ga::basic_mv<real>(value),
+           ")");
+  }
+}
+
+// The finite nonzero value (a direction, a normal, a rotor) scaled to unit
+// length, whatever its size; else rejected with `what` and `zero`, the
+// message for a zero. One of 1e200 (whose squared norm overflows) or of
+// 1e-200 (whose squared norm underflows) is first divided by its largest
+// coefficient, both brought near 1 by a power of two (exactly) so that no
+// quotient of denormals overflows, and the largest coefficient becomes
+// exactly 1.
+template <class Named>
+Named unit_multiple(const Named& value, const char* what, const char* zero) {
+  require_finite(value, what);
+  const real length = e3ga::norm(value);
+  if (std::isfinite(length) && length > by_precision(1e-150, 1e-18)) return value / length;
+  real largest = 0;
+  for (real x : value.c) largest = std::max(largest, std::fabs(x));
+  if (!(largest > 0)) reject(what, zero);
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  const real top = std::ldexp(largest, -exponent);
+  Named scaled = value;
+  for (real& x : scaled.c) x = std::ldexp(x, -exponent) / top;
+  return scaled / e3ga::norm(scaled);
+}
+
 // The rotor scaled to unit length; a non-finite or zero rotor is rejected.
 inline rotor unit_rotor(const rotor& r, const char* what) {
-  require_finite(r, what);
-  const real length = e3ga::norm(r);
-  if (std::isfinite(length) && length > by_precision(1e-150, 1e-18)) return r / length;
-  // A rotor of 1e200 (whose squared norm overflows) or of 1e-200 (whose
-  // squared norm underflows): scaled by its largest coefficient first.
-  real largest = 0;
-  for (real x : r.c) largest = std::max(largest, std::fabs(x));
-  if (!(largest > 0)) reject(what, " must be a nonzero rotor");
-  const rotor scaled = r / largest;
-  return scaled / e3ga::norm(scaled);
+  return unit_multiple(r, what, " must be a nonzero rotor");
 }
 
 }  // namespace gaphys::detail

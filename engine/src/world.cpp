@@ -4,7 +4,9 @@
 #include <array>
 #include <chrono>
 #include <cstring>
+#include <initializer_list>
 #include <limits>
+#include <string>
 
 #include "contact_events.hpp"
 #include "contact_solver.hpp"
@@ -348,33 +350,63 @@ void world::set_material_combine(const material_combine_rules& rules) {
   settings_ = validated(changed);
 }
 
+// Whether every number in `values` is finite: 0 x is 0 for finite x and NaN
+// for infinities and NaNs (a plain sum of large finite numbers could overflow).
+static bool all_finite(std::initializer_list<real> values) {
+  real zero = 0;
+  for (const real x : values) zero += 0 * x;
+  return zero == 0;
+}
+
+// Whether b's pose and velocities are all finite.
+static bool finite_state(const body& b) {
+  const vector& x = b.position();
+  const vector& v = b.velocity();
+  const rotor& r = b.attitude();
+  const bivector& w = b.angular_velocity();
+  return all_finite({x.c[0], x.c[1], x.c[2], v.c[0], v.c[1], v.c[2], r.c[0], r.c[1], r.c[2], r.c[3],
+                     w.c[0], w.c[1], w.c[2]});
+}
+
 void world::step(real h) {
   detail::require_positive(h, "time step");
-  ++geometry_version_;
-  merged_current_ = false;
+  // (The correction of a step divides depths by h.)
+  if (!std::isfinite(1 / h))
+    detail::reject("time step is too short: 1 / h overflows (got ", h, ")");
   const auto start = clock::now();
   // One pass over the bodies (on the threads, for many): the velocities
   // before this step's forces (waking changes none), whether any body may
   // meet another (else no pair at all), whether the user woke a sleeping
-  // one, and whether any sleeps.
+  // one, whether any sleeps, and the first that cannot be stepped.
   start_velocities_.resize(bodies_.size());
   bool any_moves = false, any_woken = false, any_asleep = false;
+  std::size_t unsteppable = no_index;
   {
     const int threads = detail::threads_for(settings_.threads, bodies_.size(), 1024);
     const auto count = static_cast<std::ptrdiff_t>(bodies_.size());
     // clang-format off
 #pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1) \
-    reduction(|| : any_moves, any_woken, any_asleep)
+    reduction(|| : any_moves, any_woken, any_asleep) reduction(min : unsteppable)
     // clang-format on
     for (std::ptrdiff_t i = 0; i < count; ++i) {
       const body& b = bodies_[static_cast<std::size_t>(i)];
       start_velocities_[static_cast<std::size_t>(i)] = {b.velocity_, b.angular_velocity_};
       const detail::motion m = detail::motion_of(b);
-      any_moves = any_moves || m == detail::motion::awake || m == detail::motion::mover;
+      const bool moves = m == detail::motion::awake || m == detail::motion::mover;
+      any_moves = any_moves || moves;
       any_woken = any_woken || (b.woken_ && b.island_ != 0);
       any_asleep = any_asleep || b.asleep_;
+      if (moves && !steppable(b, h)) {
+        unsteppable = std::min(unsteppable, static_cast<std::size_t>(i));
+      }
     }
   }
+  if (unsteppable != no_index) {
+    detail::reject("step: body ", id_at(unsteppable), " would move or turn too far in h = ", h,
+                   " s (its velocities after this step's forces, or h times them, overflow)");
+  }
+  ++geometry_version_;
+  merged_current_ = false;
   // The islands of the bodies the user woke since the last step wake whole.
   std::vector<std::uint64_t> islands;
   if (any_woken) {
@@ -438,7 +470,12 @@ void world::step(real h) {
   for (sensor_overlap& o : sensor_overlaps_) o.sensor = id_of(o.sensor), o.other = id_of(o.other);
   const auto reported = clock::now();
   fall_asleep(h);
-  for (body& b : bodies_) b.woken_ = false;
+  std::size_t overflowed = no_index;
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    body& b = bodies_[i];
+    b.woken_ = false;
+    if (overflowed == no_index && !finite_state(b)) overflowed = i;
+  }
   const auto slept = clock::now();
 
   timings_.integration =
@@ -449,6 +486,7 @@ void world::step(real h) {
   timings_.events = seconds(corrected, reported);
   timings_.candidate_pairs = pairs_.size();
   time_ += h;
+  if (overflowed != no_index) report_overflow(overflowed);
 }
 
 // The sensor overlaps of the last step (ids) whose two bodies cannot meet
@@ -584,6 +622,34 @@ void world::integrate_velocity(body& b, real h) const {
 // fixed-point sweeps (the implicit midpoint rule on the rotation). Taking Ω
 // at the start of the turn instead (explicit Euler) conserves L as well but
 // pumps energy in: +93% over 10,000 steps of 1/240 s for the 1:2:3 body.
+// Whether b, moving in this step, can: its velocities after this step's
+// gravity and forces (damping only slows them), and h times them, square to
+// finite numbers, and its next position is finite. (The step squares
+// speeds in every norm it takes; past that it would make NaNs.)
+bool world::steppable(const body& b, real h) const {
+  vector v = b.velocity_;
+  bivector w = b.angular_velocity_;
+  if (b.is_dynamic()) {
+    v = v + h * (b.gravity_scale_ * settings_.gravity + b.inverse_mass_ * b.force_);
+    if (b.torque_.c != bivector{}.c) w = w + h * b.world_inverse_inertia(b.torque_);
+  }
+  // (|v| and h |v|, whichever is larger.)
+  const real longer = std::max(real(1), h);
+  const vector moved = b.position_ + h * v;
+  return all_finite(
+      {e3ga::norm2(longer * v), e3ga::norm2(longer * w), moved.e1(), moved.e2(), moved.e3()});
+}
+
+// What steppable() cannot foresee (contact impulses between bodies of
+// absurd masses or speeds; a position correction over a step so short that
+// its pseudo-velocities overflow) is caught at the end of the step, which
+// throws then rather than hand on NaNs that would poison every later step.
+void world::report_overflow(std::size_t index) const {
+  throw numeric_overflow("gaphys: step: the motion of body " + std::to_string(id_at(index)) +
+                         " overflowed in this step (its masses, speeds or forces are too large "
+                         "for real numbers); the world is left as the step left it");
+}
+
 void world::integrate_positions(real h) {
   constexpr int midpoint_sweeps = 4;
   // (Each body on its own, as integrate_velocities.)

@@ -201,6 +201,73 @@ TEST_F(bad_input_test, setters_and_forces_reject_non_finite_values_and_change_no
   EXPECT_TRUE(near(w.settings().gravity, vector{0, 0, -9.81}, 0));
 }
 
+// Finite numbers too large to step: the step squares every speed (in each
+// norm it takes), so a speed, force or torque whose square overflows would
+// turn into NaNs there (and, unchecked, once sent the broad phase's
+// histogram past its end). Each call rejects its own, or what it would add
+// up to, and changes nothing.
+TEST_F(bad_input_test, speeds_forces_and_impulses_too_large_to_step_are_rejected) {
+  body& b = w.at(ball);
+  const real huge = for_scalar(1e200, 1e25);        // its square overflows
+  const real steppable = for_scalar(1e150, 1e18);   // its square does not, nor twice it
+  const real near_limit = for_scalar(1e154, 1e19);  // its square does not; twice it, it does
+  EXPECT_TRUE(rejects([&] { b.set_velocity(vector{huge, 0, 0}); }, "body velocity"));
+  EXPECT_TRUE(rejects(
+      [&] {
+        b.set_angular_velocity(bivector{0, huge, huge});
+      },
+      "body angular velocity"));
+  EXPECT_TRUE(rejects([&] { b.apply_force(vector{0, huge, 0}); }, "total force"));
+  EXPECT_TRUE(rejects([&] { b.apply_torque(bivector{huge, 0, 0}); }, "total torque"));
+  EXPECT_TRUE(rejects(
+      [&] {
+        b.apply_impulse(vector{huge, 0, 0}, b.position());
+      },
+      "velocity after the impulse"));
+  body_definition fast = valid_sphere();
+  fast.velocity = vector{0, 0, -huge};
+  EXPECT_TRUE(rejects([&] { w.create_body(fast); }, "body velocity"));
+  expect_unchanged();
+  // What one call adds to another (on a copy: an accepted force wakes the ball).
+  world copy = w;
+  body& c = copy.at(ball);
+  c.apply_force(vector{near_limit, 0, 0});
+  EXPECT_TRUE(rejects([&] { c.apply_force(vector{near_limit, 0, 0}); }, "total force"));
+  EXPECT_EQ(x(c.accumulated_force()), near_limit) << "the rejected force is not added";
+  const vector lever = c.position() + vector{0, near_limit, 0};
+  EXPECT_TRUE(rejects(
+      [&] {
+        c.apply_force_at_world_point(vector{-near_limit, 0, 0}, lever);
+      },
+      "total torque"));
+  EXPECT_EQ(x(c.accumulated_force()), near_limit) << "nor its torque's force";
+  // Large but steppable: accepted, and stepped.
+  c.apply_force(vector{-near_limit, 0, 0});
+  c.set_velocity(vector{steppable, 0, 0});
+  copy.step(h);
+  EXPECT_EQ(x(copy.at(ball).velocity()), steppable);
+}
+
+// A step whose move would overflow: a body's velocity after the step's
+// gravity and forces, or h times it, squares to infinity (the body names
+// itself by id); or h so short that the correction's 1 / h overflows.
+TEST_F(bad_input_test, a_step_too_long_or_too_short_for_real_numbers_is_rejected) {
+  const real too_long = for_scalar(1e160, 1e20);  // h g squares to infinity
+  EXPECT_TRUE(rejects([&] { w.step(too_long); }, "body " + std::to_string(ball)));
+  expect_unchanged();
+  EXPECT_TRUE(rejects([&] { w.step(std::numeric_limits<real>::denorm_min()); }, "too short"));
+  expect_unchanged();
+  // A force the setters accept, but not over this step: h F / m overflows.
+  world copy = w;
+  const real force = for_scalar(1e150, 1e18), h_long = for_scalar(1e10, 1e5);
+  copy.at(ball).apply_force(vector{force, 0, 0});
+  const std::uint64_t before = copy.state_hash();
+  EXPECT_TRUE(rejects([&] { copy.step(h_long); }, "would move or turn too far"));
+  EXPECT_EQ(copy.state_hash(), before);
+  EXPECT_EQ(x(copy.at(ball).accumulated_force()), force) << "nothing changes, the force included";
+  EXPECT_EQ(copy.time(), w.time());
+}
+
 // Bodies placed exactly on top of each other are not an error: identical
 // spheres (a zero meet), concentric ones and a point at a sphere's centre are
 // pushed apart without a NaN anywhere.

@@ -416,6 +416,25 @@ TEST_F(query_test, overlaps_are_the_bodies_whose_shapes_touch_the_query_shape) {
   EXPECT_TRUE(above.empty());
 }
 
+// A direction need not be a unit vector, of any finite nonzero size: one of
+// 1e155 (whose squared norm overflows) missed everything, one of 1e-170
+// (whose squared norm underflows) was rejected as zero.
+TEST_F(query_test, a_ray_direction_of_any_size_is_a_direction) {
+  world w = make_world();
+  add_floor(w);
+  add_sphere(w, vector{0, 0, 1}, 0.5);
+  const vector origin{0.3, 0, 4};
+  const auto unit_hit = w.ray_cast(origin, vector{0, 0, -1}, 10);
+  ASSERT_TRUE(unit_hit);
+  for (real size : {for_scalar(1e155, 1e20), for_scalar(1e-170, 1e-23),
+                    std::numeric_limits<real>::denorm_min()}) {
+    const auto hit = w.ray_cast(origin, vector{0, 0, -size}, 10);
+    ASSERT_TRUE(hit) << size;
+    EXPECT_EQ(hit->body, unit_hit->body) << size;
+    EXPECT_NEAR(hit->distance, unit_hit->distance, tolerance(1e-15, 1e-6)) << size;
+  }
+}
+
 TEST_F(query_test, queries_reject_bad_input) {
   world w = mixed_scene(10);
   const real nan = std::numeric_limits<real>::quiet_NaN();

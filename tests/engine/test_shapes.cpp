@@ -487,6 +487,14 @@ TEST(ShapeTest, factories_keep_their_parameters) {
   EXPECT_EQ(shape::point().bounding_radius(), 0);
   EXPECT_EQ(shape::plane(vector{0, 0, 2}, 1).bounding_radius(), inf);
   EXPECT_EQ(z(shape::plane(vector{0, 0, 2}, 1).normal()), 1);
+  // A normal of any finite nonzero size: its squared norm overflowed (the
+  // normal was 0 and spheres fell through) or underflowed (rejected as zero).
+  for (real size : {for_scalar(1e155, 1e20), for_scalar(1e-170, 1e-23),
+                    std::numeric_limits<real>::denorm_min()}) {
+    const vector n = shape::plane(vector{0, 3 * size, 4 * size}, 1).normal();
+    EXPECT_NEAR(y(n), 0.6, tolerance(1e-15, 1e-7)) << size;
+    EXPECT_NEAR(z(n), 0.8, tolerance(1e-15, 1e-7)) << size;
+  }
   EXPECT_EQ(shape::sphere(0.5).polyhedron(), nullptr);
 }
 

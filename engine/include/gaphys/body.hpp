@@ -106,7 +106,10 @@ class body {
   const bivector& angular_velocity() const { return angular_velocity_; }
 
   // Setters validate first and change nothing when they throw. The attitude
-  // is normalized. Static bodies keep zero velocities.
+  // is normalized. Static bodies keep zero velocities. Speeds, forces and
+  // torques must be steppable: finite, and their squares too (below about
+  // 1e154 in double, 1e19 in float), as must what apply_force, apply_torque
+  // and apply_impulse add up to.
   void set_position(const vector& position);
   void set_velocity(const vector& velocity);
   void set_attitude(const rotor& attitude);
@@ -197,6 +200,7 @@ class body {
   std::uint64_t island_ = 0;
   bool woken_ = false;
   void wake_dynamic();
+  void accumulate(const vector& force, const bivector& torque);
 
   friend detail::motion detail::motion_of(const body& b);
 };

@@ -139,6 +139,12 @@ class world {
   void set_batch_contacts(contact_batching batching);
 
   // Advances by h seconds (finite, > 0; else invalid_input, nothing changes).
+  // A body whose velocities after this step's forces, or h times them, would
+  // overflow (body::set_velocity) is rejected the same way, naming its id.
+  // Should a body's motion overflow within the step all the same (contact
+  // impulses between bodies of absurd masses or speeds), it throws
+  // numeric_overflow, the world as the step left it, rather than go on with
+  // NaNs.
   void step(real h);
 
   // Seconds simulated, summed in double whatever the engine's scalar: summed
@@ -206,7 +212,9 @@ class world {
   friend struct detail::snapshot_access;
   void integrate_velocities(real h);
   void integrate_velocity(body& b, real h) const;
+  bool steppable(const body& b, real h) const;
   void integrate_positions(real h);
+  [[noreturn]] void report_overflow(std::size_t index) const;
   void wake_islands(std::vector<std::uint64_t>& labels);
   void wake_all();
   void fall_asleep(real h);
