@@ -90,8 +90,8 @@ def main(argv: list[str] | None = None) -> int:
         except OSError as error:
             raise UsageError(f"{arguments.spec}: cannot read: {error.strerror}") from error
         namespace = arguments.namespace or algebra.name
-        if not namespace.isidentifier():
-            raise UsageError(f"--namespace {namespace!r} is not a C++ identifier")
+        if not namespace.isidentifier() or model.is_reserved(namespace):
+            raise UsageError(f"--namespace {namespace!r} is not a C++ identifier free to use")
         formatter = None if arguments.no_format else render.find_clang_format()
         if formatter is None and not arguments.no_format:
             print("gaphys-gen: warning: clang-format not found, output is unformatted", file=sys.stderr)
@@ -114,7 +114,11 @@ def main(argv: list[str] | None = None) -> int:
         for path in stale:
             print(f"gaphys-gen: stale: {path}", file=sys.stderr)
         return 1 if stale else 0
-    output.write_all(arguments.out, files)
+    try:
+        output.write_all(arguments.out, files)
+    except OSError as error:
+        print(f"gaphys-gen: cannot write {arguments.out}: {error.strerror}", file=sys.stderr)
+        return 1
     return 0
 
 

@@ -32,8 +32,23 @@ _CPP_RESERVED = set(
     operator or or_eq private protected public register reinterpret_cast requires return short signed
     sizeof static static_assert static_cast struct switch template this thread_local throw true try
     typedef typeid typename union unsigned using virtual void volatile wchar_t while xor xor_eq
-    mv real std blade_count dimension algebra basis_names""".split()
+    mv real std blade_count dimension algebra basis_names detail gaphys grade_masks blade_names kernels
+    batch is_multivector is_multivector_v""".split()
 )
+
+# What a named type's class calls its own members (and its template
+# parameter): a coordinate accessor of one of these names would clash with it.
+_MEMBER_NAMES = set(
+    """c T size sparse bits scalar_type algebra from_array from_terms from_blades basis_blade grade_mask
+    blade_name""".split()
+)
+
+
+def is_reserved(name: str) -> bool:
+    """Whether the generated C++ cannot use `name` as an identifier of its own."""
+    return name in _CPP_RESERVED or name.startswith("basic_") or "__" in name
+
+
 _LIBRARY_NAMES = set(FUNCTION_ARITY) | {
     "norm", "unit", "grade", "general_inverse", "approx_equal", "blade_names", "blade_grades",
 }
@@ -164,7 +179,7 @@ class _Validator:
         return SpecError(location, message, self.spec.lines[location.line - 1])
 
     def check_identifier(self, name: str, location: Location, what: str) -> None:
-        if name in _CPP_RESERVED or name.startswith("basic_") or "__" in name:
+        if is_reserved(name):
             raise self.error(location, f"{what} {name!r} is reserved in the generated C++")
 
     def single(self, keyword: str, required: bool = True):
@@ -218,6 +233,9 @@ class _Validator:
         types = self.validate_types(by_bitmap)
         type_names = {t.name: t for t in types}
         aliases = self.validate_aliases(type_names)
+        # (The namespace and a class of the same name: abc::abc.)
+        if algebra.name in type_names or algebra.name in aliases:
+            raise self.error(algebra.name_location, f"algebra name {algebra.name!r} is also the name of a type")
         return Algebra(
             name=algebra.name,
             path=self.spec.path,
@@ -282,6 +300,10 @@ class _Validator:
                 blades_seen.add(bitmap)
                 name = "^".join(coordinate.blade.factors) or "1"
                 accessor = accessor_name(coordinate.blade.factors)
+                if accessor in _MEMBER_NAMES:
+                    raise self.error(coordinate.blade.location,
+                                     f"coordinate {name} of type {stmt.name!r} would be named {accessor!r} in C++, "
+                                     f"which its class uses for a member of its own")
                 if accessor in accessors:
                     raise self.error(coordinate.blade.location,
                                      f"coordinates {accessors[accessor]} and {name} of type {stmt.name!r} would both "

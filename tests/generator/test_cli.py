@@ -75,6 +75,24 @@ class CommandLine(unittest.TestCase):
         self.assertIn("namespace", result.stderr)
         self.assertEqual(files_under(self.out), [])
 
+    def test_reserved_namespace(self):
+        # A C++ keyword is an identifier to Python but not to the compiler.
+        result = run_cli("generate", spec_path("e3ga"), "--variant", "reference", "--out", self.out,
+                         "--namespace", "int", "--no-format")
+        self.assertNotEqual(result.returncode, 0)
+        self.assertIn("namespace", result.stderr)
+        self.assertEqual(files_under(self.out), [])
+
+    def test_an_out_that_cannot_be_written_is_an_error_not_a_traceback(self):
+        not_a_folder = os.path.join(self.work.name, "a_file")
+        with open(not_a_folder, "w", encoding="utf-8"):
+            pass
+        result = run_cli("generate", spec_path("e3ga"), "--variant", "reference", "--out", not_a_folder,
+                         "--no-format")
+        self.assertNotEqual(result.returncode, 0)
+        self.assertIn("cannot write", result.stderr)
+        self.assertNotIn("Traceback", result.stderr)
+
     def test_unknown_variant_is_a_usage_error(self):
         result = run_cli("generate", spec_path("e3ga"), "--variant", "fastest", "--out", self.out)
         self.assertNotEqual(result.returncode, 0)

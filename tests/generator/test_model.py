@@ -136,6 +136,19 @@ class ReservedNames(SpecErrorAssertions, unittest.TestCase):
         self.assertSpecError(E3_PRELUDE + "type basic_rotor = 1\n", 4, 6, "type name 'basic_rotor' is reserved")
         self.assertSpecError(E3_PRELUDE + "type a__b = e1\n", 4, 6, "is reserved")
 
+    def test_names_the_generated_cpp_uses_are_reserved(self):
+        self.assertSpecError(E3_PRELUDE + "type detail = e1\n", 4, 6, "type name 'detail' is reserved")
+        self.assertSpecError(E3_PRELUDE + "type grade_masks = e1\n", 4, 6, "is reserved")
+
+    def test_a_coordinate_named_like_a_member_of_its_class(self):
+        # `basis a b c`: the accessor c() of a type holding c clashed with its array c.
+        self.assertSpecError("algebra t\nbasis a b c\ntype v = a, b, c\n", 3, 16,
+                             "would be named 'c' in C++, which its class uses")
+        self.assertSpecError("algebra t\nbasis e1 T\ntype v = e1, T\n", 3, 14, "would be named 'T'")
+
+    def test_algebra_named_like_one_of_its_types(self):
+        self.assertSpecError("algebra v\nbasis e1 e2\ntype v = e1, e2\n", 1, 9, "also the name of a type")
+
     def test_alias_and_constant_keywords(self):
         self.assertSpecError(E3_PRELUDE + "type v = e1\nalias auto = v\n", 5, 7, "alias name 'auto' is reserved")
         self.assertSpecError(E3_PRELUDE + "constant this = e1\n", 4, 10, "constant name 'this' is reserved")
@@ -188,7 +201,7 @@ class ResolvedModel(SpecErrorAssertions, unittest.TestCase):
         cases = {"e2^e1": ("e1^e2", -1), "e3^e1^e2": ("e1^e2^e3", 1), "e2^e1^e3": ("e1^e2^e3", -1),
                  "e3^e2^e1": ("e1^e2^e3", -1), "e1^e3": ("e1^e3", 1), "e3^e2": ("e2^e3", -1)}
         for written, (canonical, sign) in cases.items():
-            coordinate = load_text(E3_PRELUDE + f"type t = {written}\n").types[0].coordinates[0]
+            coordinate = load_text(E3_PRELUDE + f"type u = {written}\n").types[0].coordinates[0]
             self.assertEqual((coordinate.blade.name, coordinate.sign), (canonical, sign), written)
 
     def test_duplicate_blade_check_uses_canonical_blade(self):
@@ -218,7 +231,7 @@ class ResolvedModel(SpecErrorAssertions, unittest.TestCase):
     def test_coordinates_are_named_as_declared(self):
         # Issue 16, defect 8: e3^e1 is the coordinate e31 (of -e1^e3), not e13.
         algebra = load_text("algebra t\nbasis e0 e1 e2 e3 ni\n"
-                            "type t = e3^e1, e0^e2^e1 = 1, e1^e2, 1, ni^e1, e2^e0^ni\n")
+                            "type u = e3^e1, e0^e2^e1 = 1, e1^e2, 1, ni^e1, e2^e0^ni\n")
         coordinates = algebra.types[0].coordinates
         self.assertEqual([c.accessor for c in coordinates], ["e31", "e021", "e12", "scalar", "ni_e1", "e20_ni"])
         self.assertEqual([c.blade.name for c in coordinates], ["e1^e3", "e0^e1^e2", "e1^e2", "1", "e1^ni", "e0^e2^ni"])
