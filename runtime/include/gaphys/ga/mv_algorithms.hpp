@@ -222,11 +222,13 @@ MV exp_series(const MV& x) {
   return sum;
 }
 
-// Splits a bivector B of an algebra of dimension <= 5 into commuting parts
-// B = b1 + b2 with scalar squares l1, l2 (the invariant decomposition).
+// Splits a bivector B into commuting parts B = b1 + b2 with scalar squares
+// l1, l2 (the invariant decomposition), as every bivector of up to 5
+// dimensions splits.
 // With W = <B^2>_4 / 2 = b1 b2: B^2 = l1 + l2 + 2W and W^2 = l1 l2, so l1, l2
 // solve l^2 - <B^2>_0 l + <W^2>_0 = 0, and (l1 - W) B = (l1 - l2) b1.
-// Returns false when the roots are complex or coincide.
+// Returns false when the roots are complex or coincide, or B turns in more
+// than two planes.
 // Each test compares a quantity with the rounding of the terms it is made of,
 // never with 1: a part much smaller than 1 is still a part (a c2ga bivector
 // with |W^2| = 5e-6 lost its small rotation to an absolute test, and exp(B)
@@ -238,8 +240,18 @@ bool split_bivector(const MV& b, MV& b1, MV& b2, typename MV::scalar_type& l1,
   const MV square = gp(b, b);
   const MV w = linear_combination(T(0.5), keep_grades(square, MV::grade_mask(4)), T(0), square);
   const T s0 = scalar_part(square);
-  const T w2 = scalar_part(gp(w, w));
+  const MV w_square = gp(w, w);
+  const T w2 = scalar_part(w_square);
   const T w_size = max_abs(w);
+  if constexpr (is_sparse_v<MV>) {
+    // From 6 dimensions on B may turn in three planes (or more), where W^2
+    // has a part of grade 4 and no two commuting parts make B: the caller
+    // then takes the series.
+    if (MV::algebra::dimension > 5 &&
+        max_abs(keep_grades(w_square, ~std::uint32_t(1))) > relative_tolerance(w_size * w_size)) {
+      return false;
+    }
+  }
   // W is rounded to about eps times the products of B's coefficients that
   // reach it. Those pair a part that is not null (about sqrt|<B^2>_0|) with
   // any part (at most |B|): null parts, large as they may be (a translation,
