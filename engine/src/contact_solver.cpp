@@ -280,6 +280,18 @@ void contact_solver::build_constraint(const world_settings& settings, const body
 // whose impulses disturb each other; a contact alone on its dynamic bodies
 // is met exactly by one plain impulse, which relaxation would only turn
 // into a geometric approach.
+// Two dynamic bodies whose masses differ by more than twice: there the
+// over-relaxed impulses of a stack overshoot on the lighter body, and a
+// stack of cubes of 1 and 10 kg in turn gained energy from them for as long
+// as it was stepped (a sixth cube sideways by 35 cm in 20 s); with plain
+// impulses it settles.
+static bool disparate(const body& a, const body& b) {
+  if (!a.is_dynamic() || !b.is_dynamic()) return false;
+  const real lighter = std::max(a.inverse_mass(), b.inverse_mass());
+  const real heavier = std::min(a.inverse_mass(), b.inverse_mass());
+  return lighter > 2 * heavier;
+}
+
 void contact_solver::set_relaxation(const world_settings& settings, const std::vector<body>& bodies) {
   contacts_per_body_.assign(bodies.size(), 0);
   // (colour_contacts read which bodies have mass: the dynamic ones. The
@@ -304,6 +316,7 @@ void contact_solver::set_relaxation(const world_settings& settings, const std::v
   }
   detail::parallel_for(settings.threads, constraints_.size(), 4096, [&](std::size_t i) {
     constraint& k = constraints_[i];
+    if (disparate(bodies[k.body_a], bodies[k.body_b])) return;
     if (contacts_per_body_[k.body_a] > 1 || contacts_per_body_[k.body_b] > 1) {
       k.relaxation = settings.solver_relaxation;
     }
