@@ -220,15 +220,8 @@ class _Validator:
         scalar_stmt = self.single("scalar", required=False)
         representation_stmt = self.single("representation", required=False)
         blades = canonical_blades(self.basis)
-        accessors: dict[str, str] = {}
-        for blade in blades:
-            if blade.accessor in accessors:
-                raise self.error(
-                    basis_stmt.location,
-                    f"blades {accessors[blade.accessor]} and {blade.name} would both be named "
-                    f"{blade.accessor!r} in C++; rename a basis vector",
-                )
-            accessors[blade.accessor] = blade.name
+        # (Blades whose C++ names coincide, as e1^e2 and a basis vector e12 of
+        # twelve dimensions, are an error only in a type that holds both.)
         by_bitmap = {b.bitmap: b for b in blades}
         types = self.validate_types(by_bitmap)
         type_names = {t.name: t for t in types}

@@ -224,9 +224,11 @@ class ResolvedModel(SpecErrorAssertions, unittest.TestCase):
         self.assertEqual(load_text(E3_PRELUDE + "scalar float\n").scalar, "float")
 
     def test_accessor_names_are_unique(self):
-        # A basis vector named e12 next to e1, e2 would give two `e12()` accessors.
+        # A basis vector named e12 next to e1, e2 would give a type holding
+        # both it and e1^e2 two `e12()` accessors; the basis alone is fine.
+        load_text("algebra t\nbasis e1 e2 e12\n")
         with self.assertRaises(SpecError):
-            load_text("algebra t\nbasis e1 e2 e12\n")
+            load_text("algebra t\nbasis e1 e2 e12\ntype v = e1^e2, e12\n")
 
     def test_coordinates_are_named_as_declared(self):
         # Issue 16, defect 8: e3^e1 is the coordinate e31 (of -e1^e3), not e13.
@@ -241,6 +243,15 @@ class ResolvedModel(SpecErrorAssertions, unittest.TestCase):
         # e2^e1 is named e21, as is the basis vector e21.
         self.assertSpecError("algebra t\nbasis e1 e2 e21\ntype t = e2^e1, e21\n", 3, 17,
                              "coordinates e2^e1 and e21 of type 't' would both be named 'e21' in C++")
+
+
+    def test_twelve_basis_vectors_named_e1_to_e12(self):
+        # e1^e2 and e12 share the C++ name e12: only a type holding both is an error.
+        basis = " ".join(f"e{i}" for i in range(1, 13))
+        algebra = load_text(f"algebra t\nbasis {basis}\ntype v = e1, e12\ntype b = e1^e2, e3^e4\n")
+        self.assertEqual([c.accessor for c in algebra.types[0].coordinates], ["e1", "e12"])
+        self.assertSpecError(f"algebra t\nbasis {basis}\ntype v = e1^e2, e12\n", 3, 17,
+                             "would both be named 'e12' in C++")
 
 
 def _count_statements(path: str, keyword: str) -> int:
