@@ -9,6 +9,7 @@ constant coordinates the result provably equals), else `mv`; a result that is
 only the scalar blade is a plain scalar.
 """
 
+import random
 from dataclasses import dataclass, field
 from fractions import Fraction
 
@@ -266,17 +267,24 @@ class Expander:
         return result, temporaries
 
     def blades_of_powers(self, x: SymMV) -> SymMV:
-        """Blades reachable in exp(x) = sum x^k / k!, as a symbolic mv of placeholder ones."""
+        """Blades reachable in exp(x) = sum x^k / k!, as a symbolic mv of placeholder ones.
+
+        The powers are taken of x at two generic points (its variables set to
+        fixed pseudo-random rationals): a blade whose coefficient in some power
+        is not identically zero is nonzero at one of them but with negligible
+        odds. Symbolic powers of a full bivector grow too fast: from 9
+        dimensions on they took minutes and gigabytes."""
         reached = {0: Poly.constant(1)}
-        power = {0: Poly.constant(1)}
-        stable = 0
-        for _ in range(1 << len(self.algebra.basis)):
-            power = self.prod("gp", power, x)
-            before = set(reached)
-            reached.update({b: Poly.constant(1) for b in power})
-            stable = stable + 1 if set(reached) == before else 0
-            if stable == 2 or not power:
-                break
+        for point in _generic_points(x, count=2):
+            power = {0: Poly.constant(1)}
+            stable = 0
+            for _ in range(1 << len(self.algebra.basis)):
+                power = self.prod("gp", power, point)
+                before = set(reached)
+                reached.update({b: Poly.constant(1) for b in power})
+                stable = stable + 1 if set(reached) == before else 0
+                if stable == 2 or not power:
+                    break
         return reached
 
     def exp_kernel(self, named: NamedType, x: SymMV) -> Kernel:
@@ -311,6 +319,28 @@ class Expander:
         )
         return Kernel("log", (named,), rtype, outputs, None, "log_closed", self.scalar_of(square),
                       self.scalar_of(x), size2, fallback)
+
+
+def _generic_points(x: SymMV, count: int) -> list[SymMV]:
+    """x with its variables set to fixed pseudo-random rationals, `count` times
+    (the same values on every run: the generated code must not change)."""
+    variables = sorted({name for p in x.values() for monomial in p.terms for name in monomial})
+    generator = random.Random(0x6A09E667)
+    points = []
+    for _ in range(count):
+        value = {name: Fraction(generator.randint(1, 997), generator.randint(1, 997)) for name in variables}
+        point = {}
+        for blade, p in x.items():
+            total = Fraction(0)
+            for monomial, coefficient in p.terms.items():
+                term = coefficient
+                for name in monomial:
+                    term *= value[name]
+                total += term
+            if total:
+                point[blade] = Poly.constant(total)
+        points.append(point)
+    return points
 
 
 def expand(algebra: Algebra) -> list[Kernel]:

@@ -13,6 +13,7 @@ from fractions import Fraction
 from gaphys_gen.errors import SpecError
 from gaphys_gen.expand import AUTO_BINARY_SAME_TYPE, AUTO_UNARY, Expander, cost, expand
 from gaphys_gen.model import load
+from gaphys_gen.symbolic import Poly
 
 from .support import (
     C3_PRELUDE,
@@ -552,3 +553,40 @@ class EveryPair(unittest.TestCase):
         pga = expand(load_text("algebra p\nbasis e0 e1\nmetric e1.e1 = 1\ntype ideal = e0\ntype v = e0, e1\n"))
         self.assertNotIn(("apply", ("ideal", "v")), {k.signature for k in pga})
         self.assertIn(("apply", ("v", "ideal")), {k.signature for k in pga})
+
+
+class BladesOfPowers(unittest.TestCase):
+    """exp(x)'s blades are found from powers of x at generic points: the same
+    blades as the symbolic powers give, at a fraction of their cost (9 and 10
+    dimensions took minutes and gigabytes symbolically)."""
+
+    @staticmethod
+    def symbolic_blades(expander, x, dimension):
+        reached, power, stable = {0}, {0: Poly.constant(1)}, 0
+        for _ in range(1 << dimension):
+            power = expander.prod("gp", power, x)
+            before = set(reached)
+            reached |= set(power)
+            stable = stable + 1 if reached == before else 0
+            if stable == 2 or not power:
+                break
+        return reached
+
+    def test_the_same_blades_as_the_symbolic_powers(self):
+        six = " ".join(f"e{i}" for i in range(1, 7))
+        six_metric = ", ".join(f"e{i}.e{i} = 1" for i in range(1, 7))
+        six_planes = ", ".join(f"e{i}^e{j}" for i in range(1, 7) for j in range(i + 1, 7))
+        cases = [
+            (E3_PRELUDE + "type b = e1^e2, e1^e3, e2^e3\n", "b", 3),
+            (C3_PRELUDE + "type tr = e1^ni, e2^ni, e3^ni\n", "tr", 5),  # null: stops at 1 + t
+            (C3_PRELUDE + "type l = e1^e2, e1^e3, e2^e3, e1^ni, e2^ni, e3^ni, no^ni\n", "l", 5),
+            (PGA2_TEXT + "type m = 1, e0^e1, e0^e2, e1^e2\n", "m", 3),
+            (f"algebra s\nbasis {six}\nmetric {six_metric}\ntype b = {six_planes}\n", "b", 6),
+        ]
+        for text, name, dimension in cases:
+            algebra = load_text(text)
+            expander = Expander(algebra)
+            named = {t.name: t for t in algebra.types}[name]
+            x = expander.argument(named, "a")
+            self.assertEqual(set(expander.blades_of_powers(x)), self.symbolic_blades(expander, x, dimension),
+                             (name, dimension))
