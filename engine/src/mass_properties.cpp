@@ -115,6 +115,24 @@ unit_solid unit_solid_of(const shape& s) {
   detail::reject("a plane or a point has no volume, so no solid mass properties");
 }
 
+// The unit solid of a shape whose mass properties real numbers can hold:
+// a box of half extent 1e100 m has a volume of 8e300 m^3 but moments of
+// 1e500, and one of 1e-160 m a volume of 0; either is rejected here, by
+// name, rather than as a NaN or singular inertia tensor further on.
+unit_solid solid_of(const shape& s) {
+  const unit_solid unit = unit_solid_of(s);
+  bool representable = std::isfinite(unit.volume) && unit.volume > 0;
+  for (real x : unit.inertia) representable = representable && std::isfinite(x);
+  for (int i = 0; i < 3; ++i) representable = representable && unit.inertia[4 * i] > 0;
+  if (!representable) {
+    detail::reject("a shape of bounding radius ", s.bounding_radius(),
+                   " m is too large or too small for its volume and inertia to be real numbers "
+                   "(volume ",
+                   unit.volume, " m^3); rescale the scene or give the body an inertia");
+  }
+  return unit;
+}
+
 // The tensor as an inertia: symmetric to the last bit (rounding in M J M^T
 // leaves it only nearly so).
 gaphys::inertia inertia_of(const matrix& m) {
@@ -137,7 +155,7 @@ real volume(const shape& s) { return is_solid(s) ? unit_solid_of(s).volume : 0; 
 
 mass_properties solid_mass_properties(const shape& s, real density) {
   detail::require_positive(density, "density");
-  const unit_solid unit = unit_solid_of(s);
+  const unit_solid unit = solid_of(s);
   matrix rows = unit.inertia;
   for (real& x : rows) x *= density;
   return {density * unit.volume, unit.center, inertia_of(rows)};
@@ -160,7 +178,7 @@ mass_properties solid_mass_properties(const std::vector<attached_shape>& shapes,
     detail::require_finite(s.offset, "shape offset");
     const rotor r = detail::unit_rotor(s.attitude, "shape attitude");
     if (!is_solid(s.shape) || s.shape.is_sensor()) continue;  // sensors add no mass
-    const unit_solid unit = unit_solid_of(s.shape);
+    const unit_solid unit = solid_of(s.shape);
     const vector columns[3] = {e3ga::apply(r, vector{1, 0, 0}), e3ga::apply(r, vector{0, 1, 0}),
                                e3ga::apply(r, vector{0, 0, 1})};
     matrix m;

@@ -248,6 +248,22 @@ TEST_F(bad_input_test, speeds_forces_and_impulses_too_large_to_step_are_rejected
   EXPECT_EQ(x(copy.at(ball).velocity()), steppable);
 }
 
+// Shapes too large or too small for their volume and inertia to be real
+// numbers, and a mass that scales an inertia out of range, are named as
+// such (they were reported as a NaN or a singular inertia tensor).
+TEST_F(bad_input_test, shapes_and_masses_beyond_real_numbers_are_named) {
+  body_definition d = valid_sphere();
+  for (real size : {for_scalar(1e100, 1e13), for_scalar(1e-160, 1e-20)}) {
+    d.shape = shape::box(vector{size, size, size});
+    EXPECT_TRUE(rejects([&] { w.create_body(d); }, "too large or too small for its volume"))
+        << size;
+  }
+  d.shape = shape::box(vector{0.5, 0.5, 0.5});
+  d.mass = for_scalar(1e-300, 1e-30);
+  EXPECT_TRUE(rejects([&] { w.create_body(d); }, "body mass"));
+  expect_unchanged();
+}
+
 // A step whose move would overflow: a body's velocity after the step's
 // gravity and forces, or h times it, squares to infinity (the body names
 // itself by id); or h so short that the correction's 1 / h overflows.
