@@ -335,7 +335,8 @@ class contact_solver {
   detail::pair_cuts warm_cuts_;             // the warm start's shares of both lists
   std::vector<real> corrections_;           // per contact: correct_positions' push, or its kind
   std::vector<solver_body> pseudo_bodies_;  // correct_turning's pseudo velocities
-  std::vector<real> pseudo_targets_, pseudo_accumulated_, pseudo_depths_;  // per contact
+  std::vector<real> pseudo_targets_, pseudo_accumulated_;  // per contact
+  std::vector<char> pseudo_taking_part_;                   // per contact
   std::vector<sweep_result> thread_results_;  // one per thread of the contact phase
   // Per block, in two rows used by alternate sweeps, the next of its items
   // not yet claimed by a thread (solve_contacts); one cache line each.
