@@ -1044,16 +1044,21 @@ void contact_solver::correct_turning(const world_settings& settings, std::vector
   }
   pseudo_targets_.assign(contacts.size(), 0);
   pseudo_accumulated_.assign(contacts.size(), 0);
-  // Every contact that turns a body takes part, its depth now taken to first
-  // order (the bodies moved and turned by h times their velocities since the
-  // narrow phase measured it): one deeper than the slop is pushed apart by
-  // its share of the excess, one touching within the slop may not close, and
-  // one a gap apart may close it but no more. (With the deep ones alone, the
-  // correction pushed a light box into the heavy one above it, whose contact
-  // it ignored, and back the next step: six cubes of 1 and 10 kg in turn, in
-  // float, gained energy for as long as they were stepped.)
+  // The contacts that turn a body take part, each with its depth now taken
+  // to first order (the bodies moved and turned by h times their velocities
+  // since the narrow phase measured it): one deeper than the slop is pushed
+  // apart by its share of the excess; and beside those, every other such
+  // contact of a body they push holds: one touching within the slop may not
+  // close, one a gap apart may close it but no more. (With the deep ones
+  // alone, the correction pushed a light box into the heavy one above it,
+  // whose contact it ignored, and back the next step: six cubes of 1 and
+  // 10 kg in turn, in float, gained energy for as long as they were stepped.
+  // With every contact of a pile, 1,000 boxes stepped 17% slower.)
+  constexpr char holds = 1, pushed_apart = 2;
   std::vector<char>& taking_part = pseudo_taking_part_;
   taking_part.assign(contacts.size(), 0);
+  std::vector<char>& pushed = pseudo_pushed_;
+  pushed.assign(bodies.size(), 0);
   bool any = false;
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const std::size_t s = slot_[i];
@@ -1062,16 +1067,23 @@ void contact_solver::correct_turning(const world_settings& settings, std::vector
     const contact& c = contacts[i];
     const real depth =
         c.geometry.depth - h * normal_speed(s, solver_bodies_[k.body_a], solver_bodies_[k.body_b]);
-    taking_part[i] = 1;
     const real excess = depth - settings.linear_slop;
     if (c.geometry.depth >= 0 && depth >= 0 && excess > 0) {
       pseudo_targets_[i] = settings.position_correction * excess / h;
+      taking_part[i] = pushed_apart;
+      for (const std::size_t x : {k.body_a, k.body_b}) pushed[x] = bodies[x].is_dynamic();
       any = true;
     } else {
       pseudo_targets_[i] = depth < 0 ? depth / h : real(0);
+      taking_part[i] = holds;
     }
   }
   if (!any) return;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    if (taking_part[i] != holds) continue;
+    const constraint& k = constraints_[slot_[i]];
+    if (!pushed[k.body_a] && !pushed[k.body_b]) taking_part[i] = 0;
+  }
   for (int sweep = 0; sweep < settings.solver_iterations; ++sweep) {
     real largest_change = 0;
     for (std::size_t i = 0; i < contacts.size(); ++i) {

@@ -337,6 +337,7 @@ class contact_solver {
   std::vector<solver_body> pseudo_bodies_;  // correct_turning's pseudo velocities
   std::vector<real> pseudo_targets_, pseudo_accumulated_;  // per contact
   std::vector<char> pseudo_taking_part_;                   // per contact
+  std::vector<char> pseudo_pushed_;           // per body: a dynamic body a deep contact pushes
   std::vector<sweep_result> thread_results_;  // one per thread of the contact phase
   // Per block, in two rows used by alternate sweeps, the next of its items
   // not yet claimed by a thread (solve_contacts); one cache line each.
