@@ -612,16 +612,6 @@ void world::integrate_velocity(body& b, real h) const {
   b.torque_ = bivector{};
 }
 
-// Position half (thesis eqs. 3.13, 4.5, 4.6): x' = x + h v and
-// R' = exp(-h Ω / 2) R, renormalized.
-//
-// Without torque the world-frame angular momentum L = I_w(Ω) is constant, but
-// I_w turns with the body, so Ω does not: that is the gyroscopic term of
-// Euler's equations (I Ω̇ = τ - Ω × I Ω). We keep L fixed over the turn and
-// read Ω from it through the inertia at the turn's midpoint, found by a few
-// fixed-point sweeps (the implicit midpoint rule on the rotation). Taking Ω
-// at the start of the turn instead (explicit Euler) conserves L as well but
-// pumps energy in: +93% over 10,000 steps of 1/240 s for the 1:2:3 body.
 // Whether b, moving in this step, can: its velocities after this step's
 // gravity and forces (damping only slows them), and h times them, square to
 // finite numbers, and its next position is finite. (The step squares
@@ -641,8 +631,7 @@ bool world::steppable(const body& b, real h) const {
 }
 
 // What steppable() cannot foresee (contact impulses between bodies of
-// absurd masses or speeds; a position correction over a step so short that
-// its pseudo-velocities overflow) is caught at the end of the step, which
+// absurd masses or speeds, say) is caught at the end of the step, which
 // throws then rather than hand on NaNs that would poison every later step.
 void world::report_overflow(std::size_t index) const {
   throw numeric_overflow("gaphys: step: the motion of body " + std::to_string(id_at(index)) +
@@ -650,6 +639,16 @@ void world::report_overflow(std::size_t index) const {
                          "for real numbers); the world is left as the step left it");
 }
 
+// Position half (thesis eqs. 3.13, 4.5, 4.6): x' = x + h v and
+// R' = exp(-h Ω / 2) R, renormalized.
+//
+// Without torque the world-frame angular momentum L = I_w(Ω) is constant, but
+// I_w turns with the body, so Ω does not: that is the gyroscopic term of
+// Euler's equations (I Ω̇ = τ - Ω × I Ω). We keep L fixed over the turn and
+// read Ω from it through the inertia at the turn's midpoint, found by a few
+// fixed-point sweeps (the implicit midpoint rule on the rotation). Taking Ω
+// at the start of the turn instead (explicit Euler) conserves L as well but
+// pumps energy in: +93% over 10,000 steps of 1/240 s for the 1:2:3 body.
 void world::integrate_positions(real h) {
   constexpr int midpoint_sweeps = 4;
   // (Each body on its own, as integrate_velocities.)

@@ -329,17 +329,8 @@ def _generic_points(x: SymMV, count: int) -> list[SymMV]:
     points = []
     for _ in range(count):
         value = {name: Fraction(generator.randint(1, 997), generator.randint(1, 997)) for name in variables}
-        point = {}
-        for blade, p in x.items():
-            total = Fraction(0)
-            for monomial, coefficient in p.terms.items():
-                term = coefficient
-                for name in monomial:
-                    term *= value[name]
-                total += term
-            if total:
-                point[blade] = Poly.constant(total)
-        points.append(point)
+        values = {blade: p.at(value) for blade, p in x.items()}
+        points.append({blade: Poly.constant(v) for blade, v in values.items() if v})
     return points
 
 

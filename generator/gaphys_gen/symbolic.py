@@ -54,6 +54,16 @@ class Poly:
     def is_zero(self) -> bool:
         return not self.terms
 
+    def at(self, values: dict[str, Fraction]) -> Fraction:
+        """The value with every variable set as `values` says."""
+        total = Fraction(0)
+        for monomial, coefficient in self.terms.items():
+            term = coefficient
+            for name in monomial:
+                term *= values[name]
+            total += term
+        return total
+
     def __eq__(self, other) -> bool:
         return isinstance(other, Poly) and self.terms == other.terms
 
