@@ -82,7 +82,11 @@ class contact_solver {
     real relaxation = 1;     // settings' over-relaxation where the contact shares a body, else 1
     real accumulated = 0;    // the contact phase's normal impulse
     real restitution = 0;
-    real gap = 0;            // m, > 0 for a speculative contact
+    // m, > 0 for a speculative contact: its gap, and what its bodies' turning
+    // read along the point's tangents overstates of how far their shapes
+    // really come in the step (turning_overshoot), so the rows, which read
+    // those tangents, close no more than the shapes can
+    real gap = 0;
     int surface = -1;        // its friction and resistance terms in surfaces_, or -1: none
     bool turns = false;      // the normal row turns a body: its arms are normal_arms_[slot]
     bool bounces = false;    // approached faster than the threshold at the start of the step
@@ -160,7 +164,7 @@ class contact_solver {
   // The same for any other contact, along its normal held fixed, from its
   // point's speeds (see build_constraint).
   static std::optional<timed_impact> time_point_impact(const body& a, const body& b,
-                                                       const contact& c,
+                                                       const contact& c, real gap,
                                                        const body_velocity& start_a,
                                                        const body_velocity& start_b, real h);
   void set_relaxation(const world_settings& settings, const std::vector<body>& bodies);

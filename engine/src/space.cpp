@@ -1,10 +1,13 @@
 #include "gaphys/space.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
+#include <tuple>
 
 #include "round_meet.hpp"
 #include "thread_count.hpp"
+#include "turning_reach.hpp"
 
 namespace gaphys {
 
@@ -44,6 +47,58 @@ static real turning_speed(const body& x) {
 static real closing_reach(const body& a, const body& b, real lookahead, real margin) {
   const real turning = turning_speed(a) + turning_speed(b);
   return margin + lookahead * (e3ga::norm(a.velocity()) + e3ga::norm(b.velocity()) + turning);
+}
+
+// How far the bodies' shapes can close along the normal n (from B towards
+// A) within the lookahead: their speeds along it, and what their turning
+// adds to each shape's support (turning_reach.hpp). `exact` false: the
+// turning bounded by each body's bounding sphere, as closing_reach does.
+static real closing_along(const body& a, const body& b, const placed_shape& shape_a,
+                          const placed_shape& shape_b, const vector& n, real lookahead,
+                          bool exact) {
+  const real speed = std::max(real(0), e3ga::scp(b.velocity() - a.velocity(), n));
+  if (!exact) return lookahead * (speed + turning_speed(a) + turning_speed(b));
+  return lookahead * speed +
+         detail::turning_approach(shape_a, a.position(), a.angular_velocity(), lookahead, -n) +
+         detail::turning_approach(shape_b, b.position(), b.angular_velocity(), lookahead, n);
+}
+
+// Leaves out the points of a manifold that its bodies cannot reach within
+// the lookahead: those on a normal along which the nearest of them is more
+// than `margin` plus closing_along apart. (The nearest, not each: a body
+// turning towards the other may bring a farther corner in first.) A
+// spinning body's speculative contacts with something its corners never
+// reach would otherwise stop its linearised corner speeds, and throw it.
+static void keep_reachable(const body& a, const body& b, const placed_shape& shape_a,
+                           const placed_shape& shape_b, real lookahead, real margin,
+                           contact_manifold& manifold) {
+  std::array<bool, std::tuple_size_v<decltype(manifold.points)>> reached{};
+  for (int k = 0; k < manifold.count; ++k) {
+    const vector& n = manifold.points[k].geometry.normal;
+    // The nearest point on this normal, and whether one before it decided.
+    real gap = -manifold.points[k].geometry.depth;
+    bool decided = false;
+    for (int other = 0; other < manifold.count; ++other) {
+      const contact_geometry& g = manifold.points[other].geometry;
+      if (g.normal.c != n.c) continue;
+      if (other < k) {
+        reached[k] = reached[other];
+        decided = true;
+        break;
+      }
+      gap = std::min(gap, -g.depth);
+    }
+    if (decided) continue;
+    const real beyond = gap - margin;
+    reached[k] =
+        beyond <= 0 || (beyond <= closing_along(a, b, shape_a, shape_b, n, lookahead, false) &&
+                        beyond <= closing_along(a, b, shape_a, shape_b, n, lookahead, true));
+  }
+  int kept = 0;
+  for (int k = 0; k < manifold.count; ++k) {
+    if (reached[k]) manifold.points[kept++] = manifold.points[k];
+  }
+  manifold.count = kept;
 }
 
 // Only the bodies of some pair: with most bodies asleep, the others are not
@@ -86,7 +141,7 @@ placed_shape space::placed(const body& b, const attached_shape& s) {
 // the contact manifold (count 0: none).
 space::met space::meet(const body& body_a, const body& body_b, std::size_t i, std::size_t j,
                        const placed_shape& shape_a, const placed_shape& shape_b, real lookahead,
-                       real reach, contact_manifold& manifold) {
+                       real reach, real margin, contact_manifold& manifold) {
   const attached_shape& attached_a = body_a.shapes()[i];
   const attached_shape& attached_b = body_b.shapes()[j];
   const bool compound = body_a.shapes().size() > 1 || body_b.shapes().size() > 1;
@@ -103,6 +158,7 @@ space::met space::meet(const body& body_a, const body& body_b, std::size_t i, st
   }
   gaphys::find_contacts(shape_a, shape_b, lookahead, body_a.velocity(), body_b.velocity(), reach,
                         manifold);
+  keep_reachable(body_a, body_b, shape_a, shape_b, lookahead, margin, manifold);
   return manifold.count > 0 ? met::contacts : met::nothing;
 }
 
@@ -116,7 +172,7 @@ bool space::make_contact(const std::vector<body>& bodies, std::size_t a, std::si
     const placed_shape shape_a = placed(body_a, body_a.shapes()[i]);
     for (std::size_t j = 0; j < body_b.shapes().size(); ++j) {
       const placed_shape shape_b = placed(body_b, body_b.shapes()[j]);
-      if (meet(body_a, body_b, i, j, shape_a, shape_b, lookahead, reach, manifold) ==
+      if (meet(body_a, body_b, i, j, shape_a, shape_b, lookahead, reach, margin, manifold) ==
           met::contacts) {
         return true;
       }
@@ -286,7 +342,8 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
       for (std::size_t j = 0; j < shapes_b; ++j) {
         const placed_shape& shape_b = placed_[first_shape_[b] + j];
         const attached_shape& attached_b = body_b.shapes()[j];
-        const met what = meet(body_a, body_b, i, j, shape_a, shape_b, lookahead, reach, manifold);
+        const met what =
+            meet(body_a, body_b, i, j, shape_a, shape_b, lookahead, reach, margin, manifold);
         if (what == met::sensed && sensors) {
           const bool a_senses = attached_a.shape.is_sensor();
           sensors->push_back(a_senses ? sensor_overlap{a, i, b, j} : sensor_overlap{b, j, a, i});

@@ -62,12 +62,14 @@ class space {
   bool make_contact(const std::vector<body>& bodies, std::size_t a, std::size_t b, real lookahead,
                     real margin) const;
 
+  // Shape s of body b where the body's pose puts it.
+  static placed_shape placed(const body& b, const attached_shape& s);
+
  private:
   enum class met { nothing, sensed, contacts };
-  static placed_shape placed(const body& b, const attached_shape& s);
   static met meet(const body& body_a, const body& body_b, std::size_t i, std::size_t j,
                   const placed_shape& shape_a, const placed_shape& shape_b, real lookahead,
-                  real reach, contact_manifold& manifold);
+                  real reach, real margin, contact_manifold& manifold);
   void all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs) const;
   void place_shapes(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
                     int threads = 1);
