@@ -25,6 +25,9 @@ def tokenize(text: str, path: str) -> list[Token]:
     lines = text.split("\n")
     tokens: list[Token] = []
     line, line_start, pos, depth = 1, 0, 0, 0
+    # Just after the last token: where the file "ends" for an error, rather
+    # than on an empty line past a final '\n' or a trailing comment.
+    last_end = Location(path, 1, 1)
     while pos < len(text):
         match = _TOKEN.match(text, pos)
         location = Location(path, line, pos - line_start + 1)
@@ -45,9 +48,10 @@ def tokenize(text: str, path: str) -> list[Token]:
         elif kind == "punct":
             depth += {"(": 1, ")": -1}.get(value, 0)
             tokens.append(Token("PUNCT", value, location))
+        if kind in ("number", "ident", "punct"):
+            last_end = Location(path, line, match.end() - line_start + 1)
         pos = match.end()
-    end = Location(path, line, pos - line_start + 1)
     if tokens and tokens[-1].kind != "NEWLINE":
-        tokens.append(Token("NEWLINE", "\n", end))
-    tokens.append(Token("EOF", "", end))
+        tokens.append(Token("NEWLINE", "\n", last_end))
+    tokens.append(Token("EOF", "", last_end))
     return tokens

@@ -36,6 +36,12 @@ class SyntaxErrors(SpecErrorAssertions, unittest.TestCase):
         # The last line has no '\n': the error is still placed just after its last character.
         self.assertSpecError(E3_PRELUDE + "function gp(", 4, 13, "expected an argument type, found end of line")
 
+    def test_unexpected_end_of_file_after_a_continuing_comma(self):
+        # The ',' continues the statement past the last '\n': the error is placed
+        # just after it, on the last line, not on the empty line past the end.
+        self.assertSpecError(E3_PRELUDE + "function gp(vector,\n", 4, 20, "expected an argument type")
+        self.assertSpecError(E3_PRELUDE + "type vector = e1,\n\n# done\n", 4, 18, "expected a blade")
+
     def test_trailing_tokens(self):
         self.assertSpecError(E3_PRELUDE + "type vector = e1 e2\n", 4, 18, "expected end of line, found 'e2'")
 
