@@ -50,13 +50,17 @@ static real closing_reach(const body& a, const body& b, real lookahead, real mar
 }
 
 // How far the bodies' shapes can close along the normal n (from B towards
-// A) within the lookahead: their speeds along it, and what their turning
-// adds to each shape's support (turning_reach.hpp). `exact` false: the
-// turning bounded by each body's bounding sphere, as closing_reach does.
+// A) within the lookahead: each body's own speed towards the other, -n . v_A
+// and n . v_B where positive (not their relative speed: two boxes falling
+// together close once a floor stops the lower one, as round pairs' contacts
+// reason, docs/engine.md), and what their turning adds to each shape's
+// support (turning_reach.hpp). `exact` false: the turning bounded by each
+// body's bounding sphere, as closing_reach does.
 static real closing_along(const body& a, const body& b, const placed_shape& shape_a,
                           const placed_shape& shape_b, const vector& n, real lookahead,
                           bool exact) {
-  const real speed = std::max(real(0), e3ga::scp(b.velocity() - a.velocity(), n));
+  const real speed = std::max(real(0), -e3ga::scp(a.velocity(), n)) +
+                     std::max(real(0), e3ga::scp(b.velocity(), n));
   if (!exact) return lookahead * (speed + turning_speed(a) + turning_speed(b));
   return lookahead * speed +
          detail::turning_approach(shape_a, a.position(), a.angular_velocity(), lookahead, -n) +
