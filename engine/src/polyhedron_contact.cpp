@@ -495,6 +495,33 @@ int choose_four(const buffer<candidate>& c, const vec3& normal, std::array<int, 
   return 4;
 }
 
+// Leaves out the candidates that stand above a deeper one, within 45° of the
+// plane's normal (unit, working frame): more above it than beside it. A body
+// thinner than the contact margin (a card, a coin) has all its corners
+// within the margin; its upper corners hold nothing the lower ones below
+// them do not, and choose_four, which spreads the points over the plane,
+// took them as readily as the lower ones (a plate 0.8 mm thick sank through
+// the plane, turning, its contacts on its top face).
+void drop_shadowed(buffer<candidate>& c, const vec3& normal) {
+  // (Compacted in place. A candidate overwritten before the later ones are
+  // tested was shadowed by a deeper one, which shadows whatever it did: the
+  // cones above the candidates nest.)
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < c.count; ++i) {
+    const candidate& k = c[i];
+    bool shadowed = false;
+    for (std::size_t j = 0; j < c.count && !shadowed; ++j) {
+      const real above = k.gap - c[j].gap;
+      if (!(above > 0)) continue;
+      const vec3 apart = k.position - c[j].position;
+      const vec3 beside = apart - dot(apart, normal) * normal;
+      shadowed = dot(beside, beside) < above * above;
+    }
+    if (!shadowed) c.storage[kept++] = k;
+  }
+  c.count = kept;
+}
+
 // The candidates' chosen points as contacts: each midway between its
 // incident point and that point's projection on the reference plane
 // (normal `reference_normal`, working frame), depth = -gap. `normal` is
@@ -768,6 +795,7 @@ void collide_polyhedron_plane(const placed_shape& polyhedron, const placed_shape
     k.position = v, k.gap = gap, k.feature = std::uint32_t(i);
   }
   if (s.candidates.count == 0) return;
+  drop_shadowed(s.candidates, p.normal);
   // The plane is B; its normal points out of its solid, towards A.
   emit(s.candidates, p.normal, to_vec3(plane.normal),
        frame_of(polyhedron.attitude, polyhedron.center), out);

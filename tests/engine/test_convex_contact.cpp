@@ -145,6 +145,39 @@ TEST_F(ConvexContactPlane, plane_as_a_turns_the_normal) {
   }
 }
 
+// A plate thinner than the margin (0.8 mm, margin 1 mm) lying on the floor,
+// flat or tilted a little, and a coin (a 12-sided prism 0.6 mm thick): every
+// corner is within the margin, but only the lower face's touch the floor.
+// The manifold's points are those, at depth 0 (to the tilt's share), never
+// an upper corner standing above one of them.
+TEST_F(ConvexContactPlane, a_body_thinner_than_the_margin_touches_with_its_lower_face) {
+  const real margin = 0.001;
+  for (const real tilt : {real(0), real(0.004)}) {
+    const vector h{0.05, 0.05, 0.0004};
+    const rotor attitude = about(e1, tilt);
+    // Lowest corner on the floor: the centre at h_z cos + h_y sin.
+    const vector centre{0, 0, h.e3() * std::cos(tilt) + h.e2() * std::sin(tilt)};
+    const contact_manifold m = collide(box(centre, h, attitude), floor(), margin);
+    ASSERT_EQ(m.count, 4) << "tilt " << tilt;
+    for (int i = 0; i < m.count; ++i) {
+      EXPECT_EQ(m.points[i].feature & 4u, 0u) << "an upper corner, tilt " << tilt;  // bit 2: +z
+      EXPECT_LE(-m.points[i].geometry.depth, 2 * h.e2() * std::sin(tilt) + closed_form_tolerance);
+    }
+  }
+  std::vector<vector> coin;
+  for (int k = 0; k < 12; ++k) {
+    const real angle = real(2 * 3.14159265358979323846 / 12) * k;
+    for (const real z : {real(-0.0003), real(0.0003)}) {
+      coin.push_back(vector{real(0.01) * std::cos(angle), real(0.01) * std::sin(angle), z});
+    }
+  }
+  const contact_manifold m = collide(hull(coin, vector{0, 0, 0.0003}), floor(), margin);
+  ASSERT_GT(m.count, 2);
+  for (int i = 0; i < m.count; ++i) {
+    EXPECT_NEAR(m.points[i].geometry.depth, 0, closed_form_tolerance) << "point " << i;
+  }
+}
+
 // A box above the floor within the margin: speculative, depth = -gap; beyond
 // it, nothing.
 TEST_F(ConvexContactSpeculative, box_above_plane) {
