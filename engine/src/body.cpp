@@ -107,9 +107,12 @@ initial_mass initial_mass_properties(const body_definition& d,
   std::array<real, 9> rows = solid.inertia.rows();
   for (real& x : rows) x *= d.mass / solid.mass;
   // (A mass of 1e-300 kg on a unit box scales its moments to 1e-301 kg m^2,
-  // whose determinant, and so the inverse, real numbers cannot hold.)
-  const real product = rows[0] * rows[4] * rows[8];
-  if (!(product > 0) || !std::isfinite(product)) {
+  // whose inverse real numbers cannot hold.)
+  bool invertible = true;
+  for (const int i : {0, 4, 8}) {
+    invertible = invertible && rows[i] > 0 && std::isfinite(rows[i]) && std::isfinite(1 / rows[i]);
+  }
+  if (!invertible) {
     detail::reject("body mass ", d.mass, " kg gives these shapes moments of inertia (", rows[0],
                    ", ", rows[4], ", ", rows[8],
                    " kg m^2) too small or too large to invert in real numbers; give an inertia");

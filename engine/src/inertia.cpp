@@ -42,11 +42,28 @@ inertia inertia::tensor(const matrix& m) {
       std::fabs(m[5] - m[7]) > tolerance) {
     detail::reject("inertia tensor must be symmetric");
   }
-  // Sylvester's criterion: all leading principal minors positive.
-  if (!(m[0] > 0) || !(m[0] * m[4] - m[1] * m[3] > 0) || !(determinant(m) > 0)) {
+  // Sylvester's criterion (all leading principal minors positive) and the
+  // inverse, on the tensor scaled by a power of two near 1 / its trace: the
+  // moments of a 1 mm cube of 1 g, 2e-10 kg m^2, have a determinant of 1e-29,
+  // and at the unit density the shapes' moments are first computed at, 1e-51,
+  // below a float's least number. (A power of two scales exactly: where
+  // nothing underflows the inverse has the same bits as unscaled.)
+  int exponent = 0;
+  std::frexp(scale, &exponent);
+  matrix unit;
+  for (int i = 0; i < 9; ++i) unit[i] = std::ldexp(m[i], -exponent);
+  if (!(unit[0] > 0) || !(unit[0] * unit[4] - unit[1] * unit[3] > 0) || !(determinant(unit) > 0)) {
     detail::reject("inertia tensor must be positive definite");
   }
-  return inertia(m, inverse_of(m));
+  matrix inverse = inverse_of(unit);
+  for (real& x : inverse) x = std::ldexp(x, -exponent);
+  for (real x : inverse) {
+    if (!std::isfinite(x)) {
+      detail::reject("inertia tensor of trace ", scale,
+                     " kg m^2 is too small to invert in real numbers; rescale the scene");
+    }
+  }
+  return inertia(m, inverse);
 }
 
 inertia inertia::principal(real about_x, real about_y, real about_z) {

@@ -333,6 +333,42 @@ TEST_F(box_test, fast_shapes_never_pass_through_a_thin_wall) {
   }
 }
 
+// Bodies thinner than the contact margin (1 mm) laid on a plane: a card of
+// 10 x 10 cm, 0.8 mm thick, a 1 mm cube and a coin (a 12-sided prism 0.6 mm
+// thick) rest where they lie, unturned, and go to sleep. (Their upper
+// corners, within the margin too, once made the contact points: the card
+// sank through the plane, turning, and the cube spun at 20 rad/s half
+// under it.)
+TEST_F(box_test, bodies_thinner_than_the_contact_margin_rest_on_a_plane) {
+  std::vector<vector> coin;
+  for (int k = 0; k < 12; ++k) {
+    const real angle = real(2 * pi / 12) * k;
+    for (const real z : {real(-0.0003), real(0.0003)}) {
+      coin.push_back(vector{real(0.01) * std::cos(angle), real(0.01) * std::sin(angle), z});
+    }
+  }
+  const std::vector<std::pair<shape, real>> thin = {
+      {shape::box(vector{0.05, 0.05, 0.0004}), real(0.0004)},
+      {shape::box(vector{0.0005, 0.0005, 0.0005}), real(0.0005)},
+      {shape::convex_hull(coin), real(0.0003)}};
+  for (std::size_t k = 0; k < thin.size(); ++k) {
+    world w = make_world();
+    add_floor(w);
+    body_definition d;
+    d.mass = 0.01;
+    d.shape = thin[k].first;
+    d.position = vector{0, 0, thin[k].second};
+    const body_id id = w.create_body(d);
+    real turning = 0;
+    simulate(w, 480,
+             [&](int) { turning = std::max(turning, length(w.at(id).angular_velocity())); });
+    const body& b = w.at(id);
+    EXPECT_NEAR(z(b.position()), thin[k].second, tolerance(1e-6, 1e-5)) << "shape " << k;
+    EXPECT_LT(turning, tolerance(1e-5, 1e-3)) << "shape " << k;
+    EXPECT_TRUE(b.is_sleeping()) << "shape " << k;
+  }
+}
+
 // A unit cube spinning in its xz plane (about y), without gravity, over a
 // floor its corners never reach: their circle, of radius sqrt(1/2) about
 // the centre, passes 1 to 30 mm above it. Nothing touches the cube, so it

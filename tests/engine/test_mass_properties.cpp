@@ -86,6 +86,42 @@ TEST_F(MassPropertiesTest, of_a_box) {
   EXPECT_TRUE(rows_near(p.inertia, box_inertia(mass, 1, 2, 4), tolerance(1e-14, 1e-6)));
 }
 
+// Millimetre bodies of a gram: the moments (1e-10 kg m^2) and their inverses
+// are ordinary numbers in float too, though at the unit density the shapes'
+// moments are first found at, their determinant (1e-51) is not. Every body
+// is made, with the closed-form moments where there is one, and an inverse
+// that undoes the tensor.
+TEST_F(MassPropertiesTest, of_millimetre_bodies_of_a_gram_in_either_precision) {
+  const real half = 0.0005, mass = 0.001;
+  const std::vector<vector> pyramid = {vector{-half, -half, 0}, vector{half, -half, 0},
+                                       vector{half, half, 0}, vector{-half, half, 0},
+                                       vector{0, 0, 2 * half}};
+  const std::vector<shape> shapes = {shape::box(vector{half, half, half}), shape::sphere(half),
+                                     shape::capsule(half, real(0.6) * half),
+                                     shape::convex_hull(pyramid)};
+  const real closed_form[] = {mass * (2 * half * half) / 3, real(0.4) * mass * half * half};
+  for (std::size_t k = 0; k < shapes.size(); ++k) {
+    for (const bool by_density : {false, true}) {
+      world w = make_world();
+      body_definition d;
+      d.shape = shapes[k];
+      if (by_density) {
+        d.density = 1000;
+      } else {
+        d.mass = mass;
+      }
+      const body& b = w.at(w.create_body(d));
+      const bivector turn{1, 0, 0};
+      const bivector momentum = b.body_inertia()(turn);
+      EXPECT_TRUE(near(b.body_inertia().inverse(momentum), turn, tolerance(1e-12, 1e-5)))
+          << "shape " << k << (by_density ? " by density" : "");
+      if (k < 2 && !by_density) {
+        EXPECT_NEAR(momentum.e12(), closed_form[k], tolerance(1e-12, 1e-5) * closed_form[k]) << k;
+      }
+    }
+  }
+}
+
 // The textbook capsule: a cylinder of height H and two hemispheres, each of
 // mass m_h = rho (2/3) pi r^3:
 //   about the axis:  m_c r^2 / 2 + 2 (2/5) m_h r^2
