@@ -379,14 +379,14 @@ void world::step(real h) {
   // meet another (else no pair at all), whether the user woke a sleeping
   // one, whether any sleeps, and the first that cannot be stepped.
   start_velocities_.resize(bodies_.size());
-  bool any_moves = false, any_woken = false, any_asleep = false;
+  bool any_moves = false, any_woken = false, any_asleep = false, any_fixed_woken = false;
   std::size_t unsteppable = no_index;
   {
     const int threads = detail::threads_for(settings_.threads, bodies_.size(), 1024);
     const auto count = static_cast<std::ptrdiff_t>(bodies_.size());
     // clang-format off
 #pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1) \
-    reduction(|| : any_moves, any_woken, any_asleep) reduction(min : unsteppable)
+    reduction(|| : any_moves, any_woken, any_asleep, any_fixed_woken) reduction(min : unsteppable)
     // clang-format on
     for (std::ptrdiff_t i = 0; i < count; ++i) {
       const body& b = bodies_[static_cast<std::size_t>(i)];
@@ -395,6 +395,7 @@ void world::step(real h) {
       const bool moves = m == detail::motion::awake || m == detail::motion::mover;
       any_moves = any_moves || moves;
       any_woken = any_woken || (b.woken_ && b.island_ != 0);
+      any_fixed_woken = any_fixed_woken || (b.woken_ && !b.is_dynamic());
       any_asleep = any_asleep || b.asleep_;
       if (moves && !steppable(b, h)) {
         unsteppable = std::min(unsteppable, static_cast<std::size_t>(i));
@@ -407,11 +408,23 @@ void world::step(real h) {
   }
   ++geometry_version_;
   merged_current_ = false;
-  // The islands of the bodies the user woke since the last step wake whole.
+  // The islands of the bodies the user woke since the last step wake whole;
+  // so do the sleeping islands resting on a static or kinematic body the
+  // user moved or set going (its sleeping contacts name them, as they do
+  // for remove_body): moved away, or down, it no longer reaches them, and a
+  // box left asleep on a floor lowered by 30 cm floated where it was.
   std::vector<std::uint64_t> islands;
   if (any_woken) {
     for (const body& b : bodies_) {
       if (b.woken_ && b.island_ != 0) islands.push_back(b.island_);
+    }
+  }
+  if (any_fixed_woken && any_asleep) {
+    for (const contact& c : sleeping_contacts_) {
+      const body& a = bodies_[c.body_a];
+      const body& b = bodies_[c.body_b];
+      if (a.woken_ && !a.is_dynamic()) islands.push_back(b.island_);
+      if (b.woken_ && !b.is_dynamic()) islands.push_back(a.island_);
     }
   }
   wake_islands(islands);

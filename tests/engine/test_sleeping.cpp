@@ -206,6 +206,43 @@ TEST_F(sleeping_test, removing_a_support_wakes_what_rested_on_it) {
   EXPECT_FALSE(w.at(top).is_sleeping());
 }
 
+// A box asleep on a static or kinematic slab wakes when the user moves the
+// slab with set_position, even where the slab then no longer reaches it:
+// lowered by 30 cm it lands on it again (the free fall's discrete drop),
+// moved 10 m aside it falls freely. (It once slept on where it was.)
+TEST_F(sleeping_test, moving_a_support_with_set_position_wakes_what_rested_on_it) {
+  for (const bool kinematic : {false, true}) {
+    for (const vector& move : {vector{0, 0, -0.3}, vector{10, 0, 0}}) {
+      world w = make_world();
+      body_definition slab;
+      slab.is_static = !kinematic;
+      slab.is_kinematic = kinematic;
+      slab.position = vector{0, 0, -0.5};
+      slab.shape = shape::box(vector{2, 2, 0.5});
+      const body_id support = w.create_body(slab);
+      const body_id box = add_box(w, vector{0, 0, 0.501}, vector{0.5, 0.5, 0.5});
+      ASSERT_TRUE(sleep(w));
+      const real height = z(w.at(box).position());
+      w.at(support).set_position(w.at(support).position() + move);
+      const std::string what = std::string(kinematic ? "kinematic" : "static") +
+                               " slab moved by (" + std::to_string(x(move)) + ", " +
+                               std::to_string(z(move)) + ")";
+      w.step(h);
+      EXPECT_FALSE(w.at(box).is_sleeping()) << what;
+      simulate(w, 240);
+      if (z(move) < 0) {
+        EXPECT_NEAR(z(w.at(box).position()), height + z(move), 2e-3)
+            << what << ": lands on it again";
+      } else {
+        // 241 steps of free fall from rest: x_n = g h^2 n (n + 1) / 2.
+        EXPECT_NEAR(z(w.at(box).position()), height - 9.81 * h * h * 241 * 242 / 2,
+                    tolerance(1e-6, 1e-5))
+            << what;
+      }
+    }
+  }
+}
+
 TEST_F(sleeping_test, a_moving_kinematic_body_wakes_what_it_reaches_and_keeps_riders_awake) {
   world w = make_world();
   add_floor(w);
