@@ -59,8 +59,19 @@ struct ray {
   real max_distance;
 };
 
+// A query's point: finite, and near enough for its squared distances to
+// real numbers (every shape's test squares them: from 1e160 m a ray "hit" a
+// sphere at an infinite distance, at a NaN point).
+void require_within_reach(const vector& point, const char* what) {
+  detail::require_finite(point, what);
+  if (!std::isfinite(e3ga::norm2(point))) {
+    detail::reject(what, " is too far out for its squared distances to be real numbers (got ",
+                   e3ga::basic_mv<real>(point), ")");
+  }
+}
+
 ray validated_ray(const vector& origin, const vector& direction, real max_distance) {
-  detail::require_finite(origin, "ray origin");
+  require_within_reach(origin, "ray origin");
   const vector unit = detail::unit_multiple(direction, "ray direction", " must be nonzero");
   if (std::isnan(max_distance) || max_distance < 0) {
     detail::reject("ray max_distance must be >= 0 (got ", max_distance, ")");
@@ -176,7 +187,7 @@ std::vector<body_id> overlapping(const detail::query_index& index, const placed_
 }  // namespace
 
 std::vector<body_id> world::overlap_sphere(const vector& centre, real radius) const {
-  detail::require_finite(centre, "overlap sphere centre");
+  require_within_reach(centre, "overlap sphere centre");
   detail::require_positive(radius, "overlap sphere radius");
   const detail::query_index& index = current(queries_, bodies_, geometry_version_);
   std::vector<body_id> found =
@@ -187,7 +198,7 @@ std::vector<body_id> world::overlap_sphere(const vector& centre, real radius) co
 
 std::vector<body_id> world::overlap_box(const vector& centre, const vector& half_extents,
                                         const rotor& attitude) const {
-  detail::require_finite(centre, "overlap box centre");
+  require_within_reach(centre, "overlap box centre");
   const shape box = shape::box(half_extents);  // validates the half extents
   const rotor unit = detail::unit_rotor(attitude, "overlap box attitude");
   const detail::query_index& index = current(queries_, bodies_, geometry_version_);

@@ -463,6 +463,20 @@ TEST_F(query_test, queries_reject_bad_input) {
         (void)w.overlap_box(vector{}, vector{1, 1, 1}, rotor{0, 0, 0, 0});
       },
       "attitude"));
+  // Points whose squared distances overflow: from 1e160 m a ray once "hit"
+  // a sphere at an infinite distance, at a NaN point.
+  const real far = for_scalar(1e160, 1e20);
+  EXPECT_TRUE(rejects(
+      [&] {
+        (void)w.ray_cast(vector{-far, 0, 0}, vector{1, 0, 0}, infinity);
+      },
+      "ray origin is too far out"));
+  EXPECT_TRUE(rejects([&] { (void)w.overlap_sphere(vector{0, far, 0}, 1); }, "too far out"));
+  EXPECT_TRUE(rejects(
+      [&] {
+        (void)w.overlap_box(vector{0, 0, far}, vector{1, 1, 1});
+      },
+      "too far out"));
 }
 
 }  // namespace
