@@ -114,7 +114,10 @@ class world {
   // Removes the body, its contacts and their warm-start data; the others
   // step on as if it had never been there. Its id, and every reference to
   // it, is dead: at() throws invalid_input for the id, and ids given later
-  // never equal it. Throws invalid_input for an id of no body.
+  // never equal it. Events never name a dead id: the last step's events of
+  // the body are dropped, and its touches end with no `ended` event (one
+  // counting a sensor's or a plate's touches subtracts the removed body's
+  // itself). Throws invalid_input for an id of no body.
   void remove_body(body_id id);
   // The body of a live id; invalid_input for a removed or unknown one. A
   // reference stays valid until the next create_body or remove_body.
