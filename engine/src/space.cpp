@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <tuple>
 
+#include "convex_contact.hpp"
 #include "round_meet.hpp"
 #include "thread_count.hpp"
 #include "turning_reach.hpp"
@@ -67,15 +68,51 @@ static real closing_along(const body& a, const body& b, const placed_shape& shap
          detail::turning_approach(shape_b, b.position(), b.angular_velocity(), lookahead, n);
 }
 
+static bool is_round(shape_kind kind) {
+  return kind == shape_kind::sphere || kind == shape_kind::plane || kind == shape_kind::point;
+}
+
+// Shape s of body b where its velocities take it in `time` seconds: moved by
+// time v, turned by exp(-time Ω / 2) about its centre (as a step moves it).
+static placed_shape placed_after(const body& b, const attached_shape& s, real time) {
+  const rotor attitude = e3ga::gp(e3ga::exp((-time / 2) * b.angular_velocity()), b.attitude());
+  const vector position = b.position() + time * b.velocity() + e3ga::apply(attitude, s.offset);
+  return place(s.shape, position, e3ga::gp(attitude, s.attitude));
+}
+
+// Whether shape i of a dynamic body, moving on at its velocities, comes
+// within `margin` of a static body's shape within the lookahead, by
+// conservative advancement: no point of it moves faster than
+// |v| + |Ω| r, so after a separation d it may advance by d / that. (A box
+// corner's normal at the start says where the static shape's face plane
+// is, not where the face ends: a ball flying past a pillar's edge 2 cm off
+// bounced off the face's plane beyond the edge.)
+static bool sweeps_into(const body& mover, std::size_t i, const placed_shape& fixed, real lookahead,
+                        real margin) {
+  const real bound = e3ga::norm(mover.velocity()) + turning_speed(mover);
+  if (!(bound > 0)) return false;
+  const attached_shape& s = mover.shapes()[i];
+  real t = 0;
+  for (int round = 0; round < 64; ++round) {
+    const real d = detail::convex_separation(placed_after(mover, s, t), fixed).distance;
+    if (d <= margin) return true;
+    t += d / bound;
+    if (t > lookahead) return false;
+  }
+  // (A path passing d from the shape, from D away, takes about 2 log2(D / d)
+  // rounds: 16 left a hull at 100 m/s, 1 cm off, to be thrown.)
+  return true;  // still closing in after 64 rounds: kept
+}
+
 // Leaves out the points of a manifold that its bodies cannot reach within
 // the lookahead: those on a normal along which the nearest of them is more
 // than `margin` plus closing_along apart. (The nearest, not each: a body
 // turning towards the other may bring a farther corner in first.) A
 // spinning body's speculative contacts with something its corners never
 // reach would otherwise stop its linearised corner speeds, and throw it.
-static void keep_reachable(const body& a, const body& b, const placed_shape& shape_a,
-                           const placed_shape& shape_b, real lookahead, real margin,
-                           contact_manifold& manifold) {
+static void keep_reachable(const body& a, const body& b, std::size_t i, std::size_t j,
+                           const placed_shape& shape_a, const placed_shape& shape_b, real lookahead,
+                           real margin, contact_manifold& manifold) {
   std::array<bool, std::tuple_size_v<decltype(manifold.points)>> reached{};
   for (int k = 0; k < manifold.count; ++k) {
     const vector& n = manifold.points[k].geometry.normal;
@@ -97,6 +134,17 @@ static void keep_reachable(const body& a, const body& b, const placed_shape& sha
     reached[k] =
         beyond <= 0 || (beyond <= closing_along(a, b, shape_a, shape_b, n, lookahead, false) &&
                         beyond <= closing_along(a, b, shape_a, shape_b, n, lookahead, true));
+    // A dynamic body apart from a static box, hull or capsule (a plane's
+    // normal holds everywhere; round pairs are timed from their centres):
+    // its path must bring it within the margin in this step.
+    if (reached[k] && beyond > 0 && !(is_round(shape_a.kind) && is_round(shape_b.kind)) &&
+        shape_a.kind != shape_kind::plane && shape_b.kind != shape_kind::plane) {
+      if (a.is_dynamic() && b.is_static()) {
+        reached[k] = sweeps_into(a, i, shape_b, lookahead, margin);
+      } else if (b.is_dynamic() && a.is_static()) {
+        reached[k] = sweeps_into(b, j, shape_a, lookahead, margin);
+      }
+    }
   }
   int kept = 0;
   for (int k = 0; k < manifold.count; ++k) {
@@ -162,7 +210,7 @@ space::met space::meet(const body& body_a, const body& body_b, std::size_t i, st
   }
   gaphys::find_contacts(shape_a, shape_b, lookahead, body_a.velocity(), body_b.velocity(), reach,
                         manifold);
-  keep_reachable(body_a, body_b, shape_a, shape_b, lookahead, margin, manifold);
+  keep_reachable(body_a, body_b, i, j, shape_a, shape_b, lookahead, margin, manifold);
   return manifold.count > 0 ? met::contacts : met::nothing;
 }
 

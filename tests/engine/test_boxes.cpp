@@ -438,6 +438,62 @@ TEST_F(box_test, a_spinning_box_whose_corner_reaches_the_floor_strikes_it) {
   }
 }
 
+// A ball, a box, a capsule and a hull flying at 20 and 100 m/s (up to 1.7 m
+// a step) past the vertical edge of a static box, and past a static
+// capsule, missing each by 1 cm: nothing touches them, so they fly on
+// unchanged. (The target's speculative contact read its face's plane, or
+// its surface's tangent plane, as the obstacle: a ball 2 cm past a box's
+// edge bounced off the face's plane beyond the edge at e = 0.5.) Aimed
+// 1 cm into the edge instead, each is deflected.
+TEST_F(box_test, fast_shapes_flying_past_an_edge_fly_on_and_those_aimed_at_it_are_deflected) {
+  const real s = 0.05;
+  // Each with how far it reaches towards the target, along -(1, 1, 0): a
+  // box's and the hull's corner (-s, -s), a capsule's radius (its axis is z).
+  const std::vector<std::pair<shape, real>> projectiles = {
+      {shape::sphere(s), s},
+      {shape::box(vector{s, s, s}), s * std::sqrt(real(2))},
+      {shape::capsule(s, s / 2), s / 2},
+      {shape::convex_hull({vector{s, 0, 0}, vector{-s, s, 0}, vector{-s, -s, 0}, vector{0, 0, s}}),
+       s * std::sqrt(real(2))}};
+  const real diagonal = std::sqrt(real(0.5));
+  const vector across{diagonal, -diagonal, 0};  // the path's direction, past the edge at (1/2, 1/2)
+  for (const bool capsule_target : {false, true}) {
+    // From the target's axis (z) to its nearest feature, along (1, 1, 0).
+    const real target_reach = capsule_target ? real(0.5) : diagonal;
+    for (std::size_t k = 0; k < projectiles.size(); ++k) {
+      for (const real speed : {real(20), real(100)}) {
+        for (const real step : {real(1) / 240, real(1) / 60}) {
+          for (const real offset : {real(0.01), real(-0.01)}) {
+            world w = make_world(vector{});
+            body_definition target;
+            target.is_static = true;
+            target.shape =
+                capsule_target ? shape::capsule(0.5, 0.5) : shape::box(vector{0.5, 0.5, 0.5});
+            w.create_body(target);
+            const real apart = target_reach + projectiles[k].second + offset;
+            body_definition thrown;
+            thrown.shape = projectiles[k].first;
+            thrown.position = vector{apart * diagonal, apart * diagonal, 0} - real(3) * across;
+            thrown.velocity = speed * across;
+            const body_id id = w.create_body(thrown);
+            for (int i = 0; i * step * speed < 6; ++i) w.step(step);
+            const real change = length(w.at(id).velocity() - speed * across);
+            const std::string what = std::string(capsule_target ? "capsule" : "box") +
+                                     " target, projectile " + std::to_string(k) + ", " +
+                                     std::to_string(int(speed)) + " m/s, 1/" +
+                                     std::to_string(int(1 / step + real(0.5))) + " s";
+            if (offset > 0) {
+              EXPECT_EQ(change, 0) << what << ": flies past";
+            } else {
+              EXPECT_GT(change, real(0.01) * speed) << what << ": strikes the edge";
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
 // A table (a top and four legs, one compound body) dropped a little onto
 // the floor lands on its four legs and stands level and still.
 TEST_F(box_test, a_compound_table_lands_on_its_legs_and_stands_level) {
