@@ -83,9 +83,11 @@ constexpr real degree = real(3.14159265358979323846) / 180;
 
 }  // namespace
 
-world falling_spheres_in_box(int count, std::uint64_t seed, real friction) {
+world falling_spheres_in_box(int count, std::uint64_t seed, real friction,
+                             real rolling_resistance) {
   constexpr real radius = real(0.1), spacing = 3 * radius;
-  const material m = surface(real(0.3), friction);
+  material m = surface(real(0.3), friction);
+  m.rolling_resistance = rolling_resistance;
   const int side = std::max(1, static_cast<int>(std::ceil(std::sqrt(real(count) / 4))));
   const real half_width = side * spacing / 2;
   world w;

@@ -121,8 +121,10 @@ std::optional<timed_impact> contact_solver::time_impact(const body& a, const bod
                                                         const body_velocity& start_a,
                                                         const body_velocity& start_b,
                                                         real h) const {
+  const body_velocity now_a = timing_velocity(a, c.body_a, c.body_b, start_a);
+  const body_velocity now_b = timing_velocity(b, c.body_b, c.body_a, start_b);
   const relative_motion motion{a.position() - b.position(), start_a.linear - start_b.linear,
-                               a.velocity_ - b.velocity_};
+                               now_a.linear - now_b.linear};
   if (shape_summaries_[c.body_a].plane || shape_summaries_[c.body_b].plane) {
     return impact_across_plane(-c.geometry.depth, c.geometry.normal, motion, h);
   }
@@ -133,14 +135,40 @@ std::optional<timed_impact> contact_solver::time_point_impact(const body& a, con
                                                               const contact& c, real gap,
                                                               const body_velocity& start_a,
                                                               const body_velocity& start_b,
-                                                              real h) {
+                                                              real h) const {
   const vector& p = c.geometry.point;
   const vector r_a = p - a.position(), r_b = p - b.position();
-  const body_velocity now_a{a.velocity_, a.angular_velocity_};
-  const body_velocity now_b{b.velocity_, b.angular_velocity_};
+  const body_velocity now_a = timing_velocity(a, c.body_a, c.body_b, start_a);
+  const body_velocity now_b = timing_velocity(b, c.body_b, c.body_a, start_b);
   const relative_motion motion{vector{}, start_a.at_offset(r_a) - start_b.at_offset(r_b),
                                now_a.at_offset(r_a) - now_b.at_offset(r_b)};
   return impact_across_plane(gap, c.geometry.normal, motion, h);
+}
+
+body_velocity contact_solver::timing_velocity(const body& x, std::size_t index, std::size_t other,
+                                              const body_velocity& start) const {
+  const std::array<std::size_t, 2>& near = near_partners_[index];
+  const bool rests =
+      (near[0] != no_partner && near[0] != other) || (near[1] != no_partner && near[1] != other);
+  return rests ? start : body_velocity{x.velocity_, x.angular_velocity_};
+}
+
+void contact_solver::find_near_partners(const world_settings& settings, std::size_t body_count,
+                                        const std::vector<contact>& contacts) {
+  near_partners_.assign(body_count, {no_partner, no_partner});
+  const auto add = [&](std::size_t x, std::size_t partner) {
+    std::array<std::size_t, 2>& near = near_partners_[x];
+    if (near[0] == no_partner) {
+      near[0] = partner;
+    } else if (near[0] != partner && near[1] == no_partner) {
+      near[1] = partner;
+    }
+  };
+  for (const contact& c : contacts) {
+    if (!(c.geometry.depth >= -settings.contact_margin)) continue;
+    add(c.body_a, c.body_b);
+    add(c.body_b, c.body_a);
+  }
 }
 
 contact_solver::shape_summary contact_solver::summarize(const body& b) {
@@ -953,6 +981,7 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
     const contact& c = contacts[i];
     terms_at_[slot_[i]] = terms_of(bodies[c.body_a], bodies[c.body_b], c);
   });
+  find_near_partners(settings, bodies.size(), contacts);
   term_counts total;
   for (term_counts& at : terms_at_) {
     const term_counts own = at;

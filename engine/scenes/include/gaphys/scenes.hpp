@@ -16,8 +16,10 @@ inline constexpr real time_step = real(1) / 240;
 
 // count spheres (radius 0.1 m, 1 kg, e = 0.3) on a jittered grid above an
 // open box of five static planes sized to hold them, falling under gravity.
-// Friction (every shape's) 0 by default: the thesis's frictionless world.
-world falling_spheres_in_box(int count, std::uint64_t seed = 1, real friction = 0);
+// Friction and rolling resistance (every shape's) 0 by default: the
+// thesis's frictionless world.
+world falling_spheres_in_box(int count, std::uint64_t seed = 1, real friction = 0,
+                             real rolling_resistance = 0);
 
 // count cubes (half extent 0.25 m, 1 kg, e = 0) in falling_spheres_in_box's
 // pattern, spaced by their circumradius and turned at random, falling into
