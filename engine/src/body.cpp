@@ -106,8 +106,8 @@ initial_mass initial_mass_properties(const body_definition& d,
   if (d.density) return {1 / solid.mass, solid.inertia, solid.center};
   std::array<real, 9> rows = solid.inertia.rows();
   for (real& x : rows) x *= d.mass / solid.mass;
-  // (A mass of 1e-300 kg on a unit box scales its moments to 1e-301 kg m^2,
-  // whose inverse real numbers cannot hold.)
+  // (A mass of 1e-308 kg on a unit box scales its moments to 2e-309 kg m^2,
+  // whose inverses real numbers cannot hold.)
   bool invertible = true;
   for (const int i : {0, 4, 8}) {
     invertible = invertible && rows[i] > 0 && std::isfinite(rows[i]) && std::isfinite(1 / rows[i]);

@@ -25,24 +25,40 @@ real approach_speed(const body& a, const body& b, const body_velocity& start_a,
                    c.geometry.normal);
 }
 
-// How much farther a speculative contact's point closes in a step of h
-// seconds by its bodies' turning read along its tangents, r ⌋ ω (as the
-// solver's rows read it), than their shapes can come by turning for real
-// (turning_reach.hpp): a box spinning at 50 rad/s whose corner sweeps past
-// a floor 1 mm below it would otherwise be stopped by its corner's tangent
-// speed, and thrown. 0 where the tangents understate it (another corner
-// leads) or the bodies do not turn.
-real turning_overshoot(const body& a, const body& b, const contact& c, real h) {
+// For a speculative contact whose shapes cannot meet in a step of h seconds
+// (each body's own speed towards the other and its turning, the support's
+// real growth (turning_reach.hpp), close less than the gap): how much
+// farther its point closes by its bodies' turning read along its tangents,
+// r ⌋ ω, as the solver's rows read it, than the shapes come. A box spinning
+// at 50 rad/s whose corner sweeps past a floor 1 mm below it was otherwise
+// stopped by its corner's tangent speed, and thrown. 0 where the shapes can
+// meet (then the row must hold them: an impulse that slows the turning
+// would let them close more than the gap), where the tangents understate
+// it (another corner leads), and where the turning is too slow to matter:
+// the tangent departs from the arc by r (h |ω|)^2 / 2 at most.
+real turning_overshoot(const body& a, const body& b, const contact& c, real gap, real margin,
+                       real h) {
   const vector& p = c.geometry.point;
   const vector& n = c.geometry.normal;
   const vector r_a = p - a.position(), r_b = p - b.position();
   const real tangential = h * (e3ga::scp(e3ga::lc(r_b, b.angular_velocity()), n) -
                                e3ga::scp(e3ga::lc(r_a, a.angular_velocity()), n));
   if (!(tangential > 0)) return 0;
+  // (A plane's bounding radius is infinite, and a plane does not turn.)
+  const auto departure_of = [h](const body& x) {
+    const real turn = h * e3ga::norm(x.angular_velocity());
+    return turn > 0 ? x.bounding_radius() * turn * turn / 2 : real(0);
+  };
+  const real departure = departure_of(a) + departure_of(b);
+  if (!(departure > real(1e-3) * margin)) return 0;
+  const real linear = h * (std::max(real(0), -e3ga::scp(a.velocity(), n)) +
+                           std::max(real(0), e3ga::scp(b.velocity(), n)));
+  if (linear >= gap) return 0;
   const real swept = detail::turning_approach(space::placed(a, a.shapes()[c.shape_a]), a.position(),
                                               a.angular_velocity(), h, -n) +
                      detail::turning_approach(space::placed(b, b.shapes()[c.shape_b]), b.position(),
                                               b.angular_velocity(), h, n);
+  if (linear + swept >= gap) return 0;
   return std::max(real(0), tangential - swept);
 }
 
@@ -147,27 +163,31 @@ std::optional<timed_impact> contact_solver::time_point_impact(const body& a, con
 
 body_velocity contact_solver::timing_velocity(const body& x, std::size_t index, std::size_t other,
                                               const body_velocity& start) const {
-  const std::array<std::size_t, 2>& near = near_partners_[index];
-  const bool rests =
-      (near[0] != no_partner && near[0] != other) || (near[1] != no_partner && near[1] != other);
+  const std::array<std::size_t, 2>& under = supports_[index];
+  const bool rests = (under[0] != no_support && under[0] != other) ||
+                     (under[1] != no_support && under[1] != other);
   return rests ? start : body_velocity{x.velocity_, x.angular_velocity_};
 }
 
-void contact_solver::find_near_partners(const world_settings& settings, std::size_t body_count,
-                                        const std::vector<contact>& contacts) {
-  near_partners_.assign(body_count, {no_partner, no_partner});
-  const auto add = [&](std::size_t x, std::size_t partner) {
-    std::array<std::size_t, 2>& near = near_partners_[x];
-    if (near[0] == no_partner) {
-      near[0] = partner;
-    } else if (near[0] != partner && near[1] == no_partner) {
-      near[1] = partner;
+void contact_solver::find_supports(const world_settings& settings, const std::vector<body>& bodies,
+                                   const std::vector<body_velocity>& start,
+                                   const std::vector<contact>& contacts) {
+  supports_.assign(bodies.size(), {no_support, no_support});
+  // (x rests on `support` if the contact's normal towards x, `towards`,
+  // opposes the velocity the step's forces gave x.)
+  const auto add = [&](std::size_t x, std::size_t support, const vector& towards) {
+    if (!(e3ga::scp(bodies[x].velocity_ - start[x].linear, towards) < 0)) return;
+    std::array<std::size_t, 2>& under = supports_[x];
+    if (under[0] == no_support) {
+      under[0] = support;
+    } else if (under[0] != support && under[1] == no_support) {
+      under[1] = support;
     }
   };
   for (const contact& c : contacts) {
     if (!(c.geometry.depth >= -settings.contact_margin)) continue;
-    add(c.body_a, c.body_b);
-    add(c.body_b, c.body_a);
+    add(c.body_a, c.body_b, c.geometry.normal);
+    add(c.body_b, c.body_a, -c.geometry.normal);
   }
 }
 
@@ -230,7 +250,7 @@ void contact_solver::build_constraint(const world_settings& settings, const body
   k.body_b = c.body_b;
   k.restitution = c.material.restitution;
   k.gap = -c.geometry.depth;
-  if (k.gap > 0) k.gap += turning_overshoot(a, b, c, h);
+  if (k.gap > 0) k.gap += turning_overshoot(a, b, c, k.gap, settings.contact_margin, h);
   k.bounces = k.restitution > 0 &&
               approach_speed(a, b, start_a, start_b, c) < -settings.restitution_threshold;
   const shape_summary& shapes_a = shape_summaries_[c.body_a];
@@ -981,7 +1001,7 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
     const contact& c = contacts[i];
     terms_at_[slot_[i]] = terms_of(bodies[c.body_a], bodies[c.body_b], c);
   });
-  find_near_partners(settings, bodies.size(), contacts);
+  find_supports(settings, bodies, start, contacts);
   term_counts total;
   for (term_counts& at : terms_at_) {
     const term_counts own = at;

@@ -173,12 +173,14 @@ class contact_solver {
   // than it came (an apex 24% low at 60 Hz with e = 0.5).
   body_velocity timing_velocity(const body& x, std::size_t index, std::size_t other,
                                 const body_velocity& start) const;
-  // The first two bodies each body touches or nearly does (within the
-  // contact margin), for timing_velocity; `no_partner` where it has fewer.
-  static constexpr std::size_t no_partner = ~std::size_t{0};
-  void find_near_partners(const world_settings& settings, std::size_t body_count,
-                          const std::vector<contact>& contacts);
-  std::vector<std::array<std::size_t, 2>> near_partners_;
+  // The first two bodies each body rests on, for timing_velocity: touching
+  // it, or nearly (within the contact margin), on the side the step's
+  // forces press it towards (a floor under gravity, not a wall beside it);
+  // `no_support` where it has fewer.
+  static constexpr std::size_t no_support = ~std::size_t{0};
+  void find_supports(const world_settings& settings, const std::vector<body>& bodies,
+                     const std::vector<body_velocity>& start, const std::vector<contact>& contacts);
+  std::vector<std::array<std::size_t, 2>> supports_;
   void set_relaxation(const world_settings& settings, const std::vector<body>& bodies);
   void resolve_impacts(const world_settings& settings, real h);
   bool impact(std::size_t index, real threshold, real h);

@@ -44,8 +44,8 @@ inertia inertia::tensor(const matrix& m) {
   }
   // Sylvester's criterion (all leading principal minors positive) and the
   // inverse, on the tensor scaled by a power of two near 1 / its trace: the
-  // moments of a 1 mm cube of 1 g, 2e-10 kg m^2, have a determinant of 1e-29,
-  // and at the unit density the shapes' moments are first computed at, 1e-51,
+  // moments of a 1 mm cube of 1 g, 2e-10 kg m^2, have a determinant of 5e-30,
+  // and at the unit density the shapes' moments are first computed at, 5e-48,
   // below a float's least number. (A power of two scales exactly: where
   // nothing underflows the inverse has the same bits as unscaled.)
   int exponent = 0;
@@ -59,8 +59,9 @@ inertia inertia::tensor(const matrix& m) {
   for (real& x : inverse) x = std::ldexp(x, -exponent);
   for (real x : inverse) {
     if (!std::isfinite(x)) {
-      detail::reject("inertia tensor of trace ", scale,
-                     " kg m^2 is too small to invert in real numbers; rescale the scene");
+      detail::reject(
+          "inertia tensor of trace ", scale,
+          " kg m^2 is too small or too large to invert in real numbers; rescale the scene");
     }
   }
   return inertia(m, inverse);

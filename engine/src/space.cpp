@@ -82,25 +82,26 @@ static placed_shape placed_after(const body& b, const attached_shape& s, real ti
 
 // Whether shape i of a dynamic body, moving on at its velocities, comes
 // within `margin` of a static body's shape within the lookahead, by
-// conservative advancement: no point of it moves faster than
-// |v| + |Ω| r, so after a separation d it may advance by d / that. (A box
-// corner's normal at the start says where the static shape's face plane
-// is, not where the face ends: a ball flying past a pillar's edge 2 cm off
-// bounced off the face's plane beyond the edge.)
+// conservative advancement: apart by d along the unit normal n of their
+// nearest points (from the static shape), the shapes' separation along n
+// shrinks no faster than the body's speed against n plus its turning,
+// -v . n + |Ω| r, so it may advance by d over that. (A box corner's normal at
+// the start says where the static shape's face plane is, not where the face
+// ends: a ball flying past a pillar's edge 2 cm off bounced off the face's
+// plane beyond the edge.)
 static bool sweeps_into(const body& mover, std::size_t i, const placed_shape& fixed, real lookahead,
                         real margin) {
-  const real bound = e3ga::norm(mover.velocity()) + turning_speed(mover);
-  if (!(bound > 0)) return false;
   const attached_shape& s = mover.shapes()[i];
   real t = 0;
   for (int round = 0; round < 64; ++round) {
-    const real d = detail::convex_separation(placed_after(mover, s, t), fixed).distance;
-    if (d <= margin) return true;
-    t += d / bound;
+    const detail::separation apart = detail::convex_separation(placed_after(mover, s, t), fixed);
+    if (apart.distance <= margin) return true;
+    const real closing =
+        std::max(real(0), -e3ga::scp(mover.velocity(), apart.normal)) + turning_speed(mover);
+    if (!(closing > 0)) return false;
+    t += apart.distance / closing;
     if (t > lookahead) return false;
   }
-  // (A path passing d from the shape, from D away, takes about 2 log2(D / d)
-  // rounds: 16 left a hull at 100 m/s, 1 cm off, to be thrown.)
   return true;  // still closing in after 64 rounds: kept
 }
 
@@ -162,7 +163,12 @@ void space::place_shapes(const std::vector<body>& bodies, const std::vector<body
   for (std::size_t i = 0; i < bodies.size(); ++i) first_shape_[i + 1] += first_shape_[i];
   placed_.resize(first_shape_.back());
   in_pairs_.assign(bodies.size(), 0);
-  for (const auto& [a, b] : pairs) in_pairs_[a] = in_pairs_[b] = 1;
+  jostled_.assign(bodies.size(), 0);
+  for (const auto& [a, b] : pairs) {
+    in_pairs_[a] = in_pairs_[b] = 1;
+    if (bodies[a].is_dynamic() && !bodies[b].is_static()) jostled_[a] = 1;
+    if (bodies[b].is_dynamic() && !bodies[a].is_static()) jostled_[b] = 1;
+  }
   singles_.resize(bodies.size());
   // Each body's shapes on their own: on the threads for many bodies.
   detail::parallel_for(threads, shaped_bodies_.size(), 256, [&](std::size_t at) {
@@ -193,7 +199,7 @@ placed_shape space::placed(const body& b, const attached_shape& s) {
 // the contact manifold (count 0: none).
 space::met space::meet(const body& body_a, const body& body_b, std::size_t i, std::size_t j,
                        const placed_shape& shape_a, const placed_shape& shape_b, real lookahead,
-                       real reach, real margin, contact_manifold& manifold) {
+                       real reach, real margin, bool alone, contact_manifold& manifold) {
   const attached_shape& attached_a = body_a.shapes()[i];
   const attached_shape& attached_b = body_b.shapes()[j];
   const bool compound = body_a.shapes().size() > 1 || body_b.shapes().size() > 1;
@@ -210,7 +216,7 @@ space::met space::meet(const body& body_a, const body& body_b, std::size_t i, st
   }
   gaphys::find_contacts(shape_a, shape_b, lookahead, body_a.velocity(), body_b.velocity(), reach,
                         manifold);
-  keep_reachable(body_a, body_b, i, j, shape_a, shape_b, lookahead, margin, manifold);
+  if (alone) keep_reachable(body_a, body_b, i, j, shape_a, shape_b, lookahead, margin, manifold);
   return manifold.count > 0 ? met::contacts : met::nothing;
 }
 
@@ -224,7 +230,7 @@ bool space::make_contact(const std::vector<body>& bodies, std::size_t a, std::si
     const placed_shape shape_a = placed(body_a, body_a.shapes()[i]);
     for (std::size_t j = 0; j < body_b.shapes().size(); ++j) {
       const placed_shape shape_b = placed(body_b, body_b.shapes()[j]);
-      if (meet(body_a, body_b, i, j, shape_a, shape_b, lookahead, reach, margin, manifold) ==
+      if (meet(body_a, body_b, i, j, shape_a, shape_b, lookahead, reach, margin, false, manifold) ==
           met::contacts) {
         return true;
       }
@@ -388,6 +394,7 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
     const body& body_b = bodies[b];
     const std::size_t shapes_a = body_a.shapes().size(), shapes_b = body_b.shapes().size();
     const real reach = closing_reach(body_a, body_b, lookahead, margin);
+    const bool alone = !jostled_[a] && !jostled_[b];
     for (std::size_t i = 0; i < shapes_a; ++i) {
       const placed_shape& shape_a = placed_[first_shape_[a] + i];
       const attached_shape& attached_a = body_a.shapes()[i];
@@ -395,7 +402,7 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
         const placed_shape& shape_b = placed_[first_shape_[b] + j];
         const attached_shape& attached_b = body_b.shapes()[j];
         const met what =
-            meet(body_a, body_b, i, j, shape_a, shape_b, lookahead, reach, margin, manifold);
+            meet(body_a, body_b, i, j, shape_a, shape_b, lookahead, reach, margin, alone, manifold);
         if (what == met::sensed && sensors) {
           const bool a_senses = attached_a.shape.is_sensor();
           sensors->push_back(a_senses ? sensor_overlap{a, i, b, j} : sensor_overlap{b, j, a, i});

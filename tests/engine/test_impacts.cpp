@@ -191,5 +191,39 @@ TEST_F(impact_test, a_ball_bounces_off_a_heavy_body_resting_on_the_floor_as_off_
   }
 }
 
+// The ball that strikes rests on nothing: dropped onto the floor beside a
+// wall or a twin ball it touches, it bounces to e^2 of its drop as it does
+// alone. (What a body touches beside it does not hold its gravity; taken
+// for a support, it made the ball rise 24% low at 60 Hz.)
+TEST_F(impact_test, a_ball_bouncing_beside_a_wall_or_a_twin_rises_to_e_squared) {
+  const real e = 0.5, radius = 0.1;
+  for (const real step : {real(1) / 240, real(1) / 60}) {
+    for (const bool twin : {false, true}) {
+      world w = make_world();
+      add_floor(w, 0, e);
+      if (twin) {
+        add_sphere(w, vector{2 * radius, 0, 1 + radius}, radius, 1, vector{}, e, 0);
+      } else {
+        body_definition wall;
+        wall.is_static = true;
+        wall.shape = shape::plane(vector{-1, 0, 0}, -radius).with_restitution(e).with_friction(0);
+        w.create_body(wall);
+      }
+      const body_id ball = add_sphere(w, vector{0, 0, 1 + radius}, radius, 1, vector{}, e, 0);
+      real apex = 0, last_speed = 0;
+      int bounces = 0;
+      for (int i = 0; i * step < 1.5; ++i) {
+        w.step(step);
+        const real vz = z(w.at(ball).velocity());
+        if (last_speed < 0 && vz > 0) ++bounces;
+        if (bounces == 1) apex = std::max(apex, z(w.at(ball).position()) - radius);
+        last_speed = vz;
+      }
+      EXPECT_NEAR(apex, e * e, 1e-3) << (twin ? "beside a twin" : "beside a wall") << ", 1/"
+                                     << int(1 / step + real(0.5)) << " s";
+    }
+  }
+}
+
 }  // namespace
 }  // namespace gaphys::testing

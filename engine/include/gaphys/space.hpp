@@ -67,9 +67,12 @@ class space {
 
  private:
   enum class met { nothing, sensed, contacts };
+  // `alone`: neither body can be pushed in this step by another that moves
+  // (jostled_), so the speculative contacts their velocities cannot reach
+  // are left out (space.cpp, keep_reachable).
   static met meet(const body& body_a, const body& body_b, std::size_t i, std::size_t j,
                   const placed_shape& shape_a, const placed_shape& shape_b, real lookahead,
-                  real reach, real margin, contact_manifold& manifold);
+                  real reach, real margin, bool alone, contact_manifold& manifold);
   void all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs) const;
   void place_shapes(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
                     int threads = 1);
@@ -85,6 +88,9 @@ class space {
   std::vector<placed_shape> placed_;  // reused between steps
   std::vector<std::size_t> first_shape_;
   std::vector<unsigned char> in_pairs_;  // whether each body is in some pair
+  // Whether each dynamic body is in a pair with another dynamic or a
+  // kinematic body, which may push it anywhere within the step.
+  std::vector<unsigned char> jostled_;
   // What the meets on batches read of a body with one shape, written as its
   // shape is placed: read from the bodies and their shapes, pair by pair,
   // they were a scattered read each and 40% of meet_pairs' own time.
