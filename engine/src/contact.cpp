@@ -12,10 +12,6 @@ namespace {
 
 using conformal::mv;
 
-bool is_round(shape_kind kind) {
-  return kind == shape_kind::sphere || kind == shape_kind::plane || kind == shape_kind::point;
-}
-
 }  // namespace
 
 placed_shape place(const shape& s, const vector& position, const rotor& attitude) {
@@ -71,7 +67,7 @@ void find_contacts(const placed_shape& a, const placed_shape& b, real lookahead,
                    const vector& velocity_a, const vector& velocity_b, real margin,
                    contact_manifold& out) {
   out.count = 0;
-  if (!is_round(a.kind) || !is_round(b.kind)) {
+  if (!detail::is_round(a.kind) || !detail::is_round(b.kind)) {
     detail::collide_convex(a, b, margin, out);
     return;
   }

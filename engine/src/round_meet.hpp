@@ -116,6 +116,12 @@ std::optional<contact_geometry> contact_from(const placed_shape& a, const placed
                                              real lookahead, const vector& velocity_a,
                                              const vector& velocity_b);
 
+// The shapes the conformal meet takes whole (find_contact): spheres, planes
+// and points; the others go to the convex narrow phase.
+inline bool is_round(shape_kind kind) {
+  return kind == shape_kind::sphere || kind == shape_kind::plane || kind == shape_kind::point;
+}
+
 // Two round shapes that terms_of meets on batches: a sphere and a sphere,
 // or a sphere and a plane, in either order.
 bool meets_on_batches(shape_kind a, shape_kind b);

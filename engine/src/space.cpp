@@ -68,16 +68,11 @@ static real closing_along(const body& a, const body& b, const placed_shape& shap
          detail::turning_approach(shape_b, b.position(), b.angular_velocity(), lookahead, n);
 }
 
-static bool is_round(shape_kind kind) {
-  return kind == shape_kind::sphere || kind == shape_kind::plane || kind == shape_kind::point;
-}
-
 // Shape s of body b where its velocities take it in `time` seconds: moved by
 // time v, turned by exp(-time Ω / 2) about its centre (as a step moves it).
 static placed_shape placed_after(const body& b, const attached_shape& s, real time) {
-  const rotor attitude = e3ga::gp(e3ga::exp((-time / 2) * b.angular_velocity()), b.attitude());
-  const vector position = b.position() + time * b.velocity() + e3ga::apply(attitude, s.offset);
-  return place(s.shape, position, e3ga::gp(attitude, s.attitude));
+  return space::placed(s, b.position() + time * b.velocity(),
+                       e3ga::gp(e3ga::exp((-time / 2) * b.angular_velocity()), b.attitude()));
 }
 
 // Whether shape i of a dynamic body, moving on at its velocities, comes
@@ -138,7 +133,8 @@ static void keep_reachable(const body& a, const body& b, std::size_t i, std::siz
     // A dynamic body apart from a static box, hull or capsule (a plane's
     // normal holds everywhere; round pairs are timed from their centres):
     // its path must bring it within the margin in this step.
-    if (reached[k] && beyond > 0 && !(is_round(shape_a.kind) && is_round(shape_b.kind)) &&
+    if (reached[k] && beyond > 0 &&
+        !(detail::is_round(shape_a.kind) && detail::is_round(shape_b.kind)) &&
         shape_a.kind != shape_kind::plane && shape_b.kind != shape_kind::plane) {
       if (a.is_dynamic() && b.is_static()) {
         reached[k] = sweeps_into(a, i, shape_b, lookahead, margin);
@@ -187,11 +183,14 @@ void space::place_shapes(const std::vector<body>& bodies, const std::vector<body
 }
 
 placed_shape space::placed(const body& b, const attached_shape& s) {
+  return placed(s, b.position(), b.attitude());
+}
+
+placed_shape space::placed(const attached_shape& s, const vector& position, const rotor& attitude) {
   const bool centred = s.offset.e1() == 0 && s.offset.e2() == 0 && s.offset.e3() == 0;
-  const vector position = centred ? b.position() : b.to_world(s.offset);
+  const vector at = centred ? position : position + e3ga::apply(attitude, s.offset);
   const bool turned = s.attitude.c[1] != 0 || s.attitude.c[2] != 0 || s.attitude.c[3] != 0;
-  const rotor attitude = turned ? e3ga::gp(b.attitude(), s.attitude) : b.attitude();
-  return place(s.shape, position, attitude);
+  return place(s.shape, at, turned ? e3ga::gp(attitude, s.attitude) : attitude);
 }
 
 // Shape i of A against shape j of B, as find_contacts meets them: culled

@@ -21,6 +21,17 @@ inline body_id add_box(world& w, const vector& position, const vector& half_exte
   return w.create_body(box);
 }
 
+// The height of a box body's lowest corner (half extents `half`, centred).
+inline real lowest_corner(const body& b, const vector& half) {
+  real lowest = INFINITY;
+  for (int corner = 0; corner < 8; ++corner) {
+    const auto side = [&](int bit, real h) { return corner & bit ? h : -h; };
+    const vector offset{side(1, half.e1()), side(2, half.e2()), side(4, half.e3())};
+    lowest = std::min(lowest, z(b.to_world(offset)));
+  }
+  return lowest;
+}
+
 // How far a body's e3 axis leans from the world's, in radians.
 inline real tilt(const body& b) {
   const vector up = e3ga::apply(b.attitude(), vector{0, 0, 1});

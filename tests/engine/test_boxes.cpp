@@ -424,12 +424,7 @@ TEST_F(box_test, a_spinning_box_whose_corner_reaches_the_floor_strikes_it) {
     const real energy = w.at(id).kinetic_energy();
     real lowest = INFINITY;
     simulate(w, 60, [&](int) {
-      const body& b = w.at(id);
-      for (int corner = 0; corner < 8; ++corner) {
-        const auto side = [&](int bit) { return corner & bit ? real(0.5) : real(-0.5); };
-        const vector offset{side(1), side(2), side(4)};
-        lowest = std::min(lowest, z(b.to_world(offset)));
-      }
+      lowest = std::min(lowest, lowest_corner(w.at(id), vector{0.5, 0.5, 0.5}));
     });
     const body& b = w.at(id);
     EXPECT_GT(z(b.velocity()), 0) << rate << " rad/s";
@@ -538,10 +533,7 @@ TEST_F(box_test, a_box_spinning_face_down_over_the_floor_does_not_sink_into_it) 
       real lowest = INFINITY;
       for (int i = 0; i < 10; ++i) {
         w.step(step);
-        for (int corner = 0; corner < 8; ++corner) {
-          const auto side = [&](int bit) { return corner & bit ? real(0.5) : real(-0.5); };
-          lowest = std::min(lowest, z(w.at(id).to_world(vector{side(1), side(2), side(4)})));
-        }
+        lowest = std::min(lowest, lowest_corner(w.at(id), vector{0.5, 0.5, 0.5}));
       }
       EXPECT_GT(lowest, -0.002) << rate << " rad/s, 1/" << int(1 / step + real(0.5)) << " s";
     }

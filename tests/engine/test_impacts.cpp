@@ -2,6 +2,7 @@
 // struck rows against the sequential (event-driven, vanishing gaps) closed
 // form, and the energy of impacts that chain through a wall, checked on a
 // gas of elastic spheres.
+#include <algorithm>
 #include <vector>
 
 #include "engine_test_support.hpp"
@@ -11,6 +12,21 @@ namespace {
 
 class impact_test : public engine_test {
  protected:
+  // Steps the world for `seconds` in steps of `step`: the highest the ball
+  // rises above `rest` (its centre's height when it touches what it falls
+  // on) between its first bounce and its second.
+  static real first_rebound_apex(world& w, body_id ball, real step, real seconds, real rest) {
+    real apex = 0, last_speed = 0;
+    int bounces = 0;
+    for (int i = 0; i * step < seconds; ++i) {
+      w.step(step);
+      const real vz = z(w.at(ball).velocity());
+      if (last_speed < 0 && vz > 0) ++bounces;
+      if (bounces == 1) apex = std::max(apex, z(w.at(ball).position()) - rest);
+      last_speed = vz;
+    }
+    return apex;
+  }
   static vector momentum(const world& w) {
     vector p{};
     for (const body& b : w.bodies()) {
@@ -174,15 +190,7 @@ TEST_F(impact_test, a_ball_bounces_off_a_heavy_body_resting_on_the_floor_as_off_
         w.create_body(struck);
         const body_id ball =
             add_sphere(w, vector{box ? real(0.2) : real(0), 0, 2.01}, 0.01, 0.001, vector{}, e);
-        real apex = 0, last_speed = 0;
-        int bounces = 0;
-        for (int i = 0; i * step < 2; ++i) {
-          w.step(step);
-          const real vz = z(w.at(ball).velocity());
-          if (last_speed < 0 && vz > 0) ++bounces;
-          if (bounces == 1) apex = std::max(apex, z(w.at(ball).position()) - real(1.01));
-          last_speed = vz;
-        }
+        const real apex = first_rebound_apex(w, ball, step, 2, real(1.01));
         EXPECT_NEAR(apex, e * e, 1e-3)
             << (box ? "box" : "ball") << (is_static ? ", static" : ", 1e6 kg") << ", 1/"
             << int(1 / step + real(0.5)) << " s";
@@ -210,15 +218,7 @@ TEST_F(impact_test, a_ball_bouncing_beside_a_wall_or_a_twin_rises_to_e_squared) 
         w.create_body(wall);
       }
       const body_id ball = add_sphere(w, vector{0, 0, 1 + radius}, radius, 1, vector{}, e, 0);
-      real apex = 0, last_speed = 0;
-      int bounces = 0;
-      for (int i = 0; i * step < 1.5; ++i) {
-        w.step(step);
-        const real vz = z(w.at(ball).velocity());
-        if (last_speed < 0 && vz > 0) ++bounces;
-        if (bounces == 1) apex = std::max(apex, z(w.at(ball).position()) - radius);
-        last_speed = vz;
-      }
+      const real apex = first_rebound_apex(w, ball, step, 1.5, radius);
       EXPECT_NEAR(apex, e * e, 1e-3) << (twin ? "beside a twin" : "beside a wall") << ", 1/"
                                      << int(1 / step + real(0.5)) << " s";
     }

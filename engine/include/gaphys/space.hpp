@@ -62,8 +62,11 @@ class space {
   bool make_contact(const std::vector<body>& bodies, std::size_t a, std::size_t b, real lookahead,
                     real margin) const;
 
-  // Shape s of body b where the body's pose puts it.
+  // Shape s of body b where the body's pose puts it; or where a body at
+  // `position` and `attitude` would.
   static placed_shape placed(const body& b, const attached_shape& s);
+  static placed_shape placed(const attached_shape& s, const vector& position,
+                             const rotor& attitude);
 
  private:
   enum class met { nothing, sensed, contacts };
