@@ -21,6 +21,7 @@ EXPECTED = {  # (function, arguments, result): count per run
     ("gp", (E1_E2, E1_E2), SCALAR): 1,
     ("gp", (ROTOR, ROTOR), ROTOR): 1,
     ("op", (VECTOR, VECTOR), 0): 1,
+    **{("reverse", (blades,), blades): 1 for blades in range(1, 256)},
 }
 
 

@@ -62,7 +62,7 @@ class profile_recorder {
 
   void record(int function, std::uint32_t a, std::uint32_t b, std::uint32_t result) {
     const std::lock_guard<std::mutex> lock(mutex_);
-    ++counts_[key{function, a, b, result}];
+    counts_.add(key{function, a, b, result});
   }
 
   // Adds the counts so far to the profile file and starts counting afresh.
@@ -74,10 +74,10 @@ class profile_recorder {
     const std::string path = std::string(folder) + "/" + file_stem_ + ".json";
     std::map<std::tuple<std::string, std::uint32_t, std::uint32_t, std::uint32_t>, unsigned long long> merged;
     if (!read_existing(path, merged)) return false;
-    for (const auto& [k, count] : counts_) {
+    counts_.for_each([&](const key& k, unsigned long long count) {
       const auto& [function, a, b, result] = k;
       merged[{functions_[function].first, a, b, result}] += count;
-    }
+    });
     const std::string temporary = path + ".tmp" + std::to_string(::getpid());
     {
       std::ofstream out(temporary, std::ios::trunc);
@@ -178,8 +178,62 @@ class profile_recorder {
 
   std::string algebra_, file_stem_, spec_hash_, generator_version_;
   std::vector<std::pair<std::string, int>> functions_;  // name, number of mv arguments
+  // The counts so far: an open-addressing hash table, as every library call
+  // of the instrumented variant adds one (with a std::map, its look-up took
+  // a third of an instrumented engine's time). flush() writes them in order,
+  // through a std::map.
+  class count_table {
+   public:
+    void add(const key& k) {
+      if (2 * (used_ + 1) > slots_.size()) grow();
+      ++slots_[find(k)].count;
+    }
+    bool empty() const { return used_ == 0; }
+    void clear() {
+      slots_.clear();
+      used_ = 0;
+    }
+    template <class F>
+    void for_each(F&& f) const {
+      for (const slot& s : slots_)
+        if (s.count) f(s.k, s.count);
+    }
+
+   private:
+    struct slot {
+      key k{};
+      unsigned long long count = 0;  // 0: empty
+    };
+    static std::size_t hash(const key& k) {
+      const auto& [function, a, b, result] = k;
+      std::uint64_t h = (std::uint64_t(std::uint32_t(function)) << 32 | a) * 0x9E3779B97F4A7C15ull;
+      h ^= (std::uint64_t(b) << 32 | result) * 0xC2B2AE3D27D4EB4Full;
+      return std::size_t(h ^ (h >> 31));
+    }
+    // The slot holding k, or the empty one where it goes (then taken).
+    std::size_t find(const key& k) {
+      const std::size_t mask = slots_.size() - 1;
+      for (std::size_t i = hash(k) & mask;; i = (i + 1) & mask) {
+        if (slots_[i].count == 0) {
+          slots_[i].k = k;
+          ++used_;
+          return i;
+        }
+        if (slots_[i].k == k) return i;
+      }
+    }
+    void grow() {
+      std::vector<slot> old = std::move(slots_);
+      slots_.assign(old.empty() ? 256 : 2 * old.size(), slot{});
+      used_ = 0;
+      for (const slot& s : old)
+        if (s.count) slots_[find(s.k)].count = s.count;
+    }
+    std::vector<slot> slots_;  // a power of two long, at most half full
+    std::size_t used_ = 0;
+  };
   std::mutex mutex_;
-  std::map<key, unsigned long long> counts_;
+  count_table counts_;
 };
 
 }  // namespace gaphys::ga
