@@ -19,19 +19,22 @@ void space::candidate_pairs(const std::vector<body>& bodies, std::vector<body_pa
       grid_.find_pairs(bodies, shaped_bodies_, lookahead, margin, pairs, threads)) {
     return;
   }
-  all_pairs(bodies, pairs);
+  all_pairs(bodies, pairs, lookahead, margin);
 }
 
-// The thesis's candidates: every two shaped bodies that may meet (not both
-// static, say).
-void space::all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs) const {
+// The thesis's candidates: every two shaped bodies, each pair tested as the
+// grid tests its candidates (bounds that overlap, and that may meet: not
+// both static, say), so that both broad phases hand the narrow phase the
+// same pairs. (Which bodies have a moving body near them, jostled_, is read
+// off the pairs: untested, every body had one.)
+void space::all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs,
+                      real lookahead, real margin) const {
   pairs.clear();
   for (std::size_t i = 0; i < shaped_bodies_.size(); ++i) {
     const std::size_t a = shaped_bodies_[i];
     for (std::size_t j = i + 1; j < shaped_bodies_.size(); ++j) {
       const std::size_t b = shaped_bodies_[j];
-      // Neither can move the other.
-      if (!detail::may_meet(detail::motion_of(bodies[a]), detail::motion_of(bodies[b]))) continue;
+      if (!detail::uniform_grid::pairs_bodies(bodies[a], bodies[b], lookahead, margin)) continue;
       pairs.emplace_back(std::min(a, b), std::max(a, b));
     }
   }

@@ -132,6 +132,40 @@ void uniform_grid::sort_pairs(std::size_t body_count, std::vector<index_pair>& p
   pairs.swap(sorted_);
 }
 
+// A body's bound, a plane's marked by a radius < 0: as far as the body can
+// move or turn within the lookahead, and half the margin (two bounds then
+// overlap when their gap is up to it).
+uniform_grid::bound uniform_grid::bound_of(const body& b, std::size_t index, real lookahead,
+                                           real margin) {
+  if (b.shape()->kind() == shape_kind::plane) return bound{vector{}, -1, index, motion::fixed};
+  const vector& c = b.position();
+  const real r = b.bounding_radius();
+  const real sweep =
+      lookahead * (e3ga::norm(b.velocity()) + e3ga::norm(b.angular_velocity()) * r) + margin / 2;
+  const real reach = r + sweep + relative_margin * (1 + largest_magnitude(c) + r + sweep);
+  return bound{c, reach, index, motion_of(b)};
+}
+
+// add_if_overlapping's test and pair_planes', on two bodies.
+bool uniform_grid::pairs_bodies(const body& a, const body& b, real lookahead, real margin) {
+  const bound bound_a = bound_of(a, 0, lookahead, margin);
+  const bound bound_b = bound_of(b, 1, lookahead, margin);
+  const bool plane_a = bound_a.radius < 0, plane_b = bound_b.radius < 0;
+  if (plane_a && plane_b) return false;  // (the grid tests planes against bounds only)
+  if (plane_a || plane_b) {
+    const body& p = plane_a ? a : b;
+    const bound& other = plane_a ? bound_b : bound_a;
+    if (!may_meet(motion_of(p), other.moves)) return false;
+    const vector n = e3ga::apply(p.attitude(), p.shape()->normal());
+    const real d = p.shape()->offset() + e3ga::scp(n, p.position());
+    return e3ga::scp(n, other.centre) - other.radius <= d + margin / 2;
+  }
+  if (!may_meet(bound_a.moves, bound_b.moves)) return false;
+  const vector between = bound_a.centre - bound_b.centre;
+  const real reach = bound_a.radius + bound_b.radius;
+  return e3ga::scp(between, between) <= reach * reach;
+}
+
 // Bounds of the shaped bodies, and the cell size: the widest bound that
 // is not "large" (wider than twice the median width, rounded up to the end
 // of its bucket below). On threads_for(threads, count, 1024) threads, each
@@ -146,18 +180,8 @@ void uniform_grid::collect(const std::vector<body>& bodies, const std::vector<st
   // (A bucket for every pattern of the bits below the sign.)
   static_assert(width_buckets == std::size_t{1} << (8 * sizeof(real) - 1 - width_bucket_shift));
   const std::size_t count = shaped.size();
-  // A body's bound, a plane's marked by a radius < 0: as far as the body can
-  // move or turn within the lookahead, and half the margin (two bounds then
-  // overlap when their gap is up to it).
   const auto bound_of = [&](std::size_t index) {
-    const body& b = bodies[index];
-    if (b.shape()->kind() == shape_kind::plane) return bound{vector{}, -1, index, motion::fixed};
-    const vector& c = b.position();
-    const real r = b.bounding_radius();
-    const real sweep =
-        lookahead * (e3ga::norm(b.velocity()) + e3ga::norm(b.angular_velocity()) * r) + margin / 2;
-    const real reach = r + sweep + relative_margin * (1 + largest_magnitude(c) + r + sweep);
-    return bound{c, reach, index, motion_of(b)};
+    return uniform_grid::bound_of(bodies[index], index, lookahead, margin);
   };
   const int parts = threads_for(threads, count, 1024);
   const auto most = static_cast<std::size_t>(parts);

@@ -76,7 +76,8 @@ class space {
   static met meet(const body& body_a, const body& body_b, std::size_t i, std::size_t j,
                   const placed_shape& shape_a, const placed_shape& shape_b, real lookahead,
                   real reach, real margin, bool alone, contact_manifold& manifold);
-  void all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs) const;
+  void all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs, real lookahead,
+                 real margin) const;
   void place_shapes(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
                     int threads = 1);
   void meet_pairs(const std::vector<body>& bodies, const body_pair* first, const body_pair* end,

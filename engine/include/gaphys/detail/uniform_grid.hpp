@@ -45,6 +45,11 @@ class uniform_grid {
   bool find_pairs(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped,
                   real lookahead, real margin, std::vector<index_pair>& pairs, int threads = 1);
 
+  // Whether find_pairs pairs bodies a and b: the test every candidate
+  // passes, for a broad phase that tests every two bodies (space's all
+  // pairs), so that it finds the same pairs.
+  static bool pairs_bodies(const body& a, const body& b, real lookahead, real margin);
+
  private:
   struct bound {  // a bounding sphere
     vector centre;
@@ -52,6 +57,8 @@ class uniform_grid {
     std::size_t body;
     motion moves;  // a pair is a candidate only where may_meet(moves, moves)
   };
+  // Body `index`'s bound, a plane's marked by a radius < 0.
+  static bound bound_of(const body& b, std::size_t index, real lookahead, real margin);
   struct entry {  // an ordinary bound in its cell
     std::int64_t x, y, z;
     std::size_t bound;
