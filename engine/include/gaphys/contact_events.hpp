@@ -18,7 +18,8 @@ struct contact_event {
   body_id body_a, body_b;  // ids; body_a created before body_b
   vector point;            // the pair's deepest contact point
   vector normal;           // its normal, from B towards A
-  real impulse;            // N s: the pair's total normal impulse in the step
+  real impulse;            // N s: the pair's total normal impulse in the step (a landing's
+                           // may fall in two: docs/engine.md, "Contact events")
 };
 
 // Each list in the order of the pairs in world::contacts(). An ended pair's point, normal and
