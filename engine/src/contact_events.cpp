@@ -25,13 +25,18 @@ bool run_touches(const std::vector<contact>& contacts, std::size_t& i, std::size
 // The event of the run [first, end): its deepest point, its total normal impulse.
 contact_event event_of(const std::vector<contact>& contacts, std::size_t first, std::size_t end) {
   const contact* deepest = &contacts[first];
-  real impulse = 0;
+  real impulse = 0, approach_speed = contacts[first].approach_speed;
   for (std::size_t k = first; k < end; ++k) {
     impulse += contacts[k].impulse.normal;
+    approach_speed = std::max(approach_speed, contacts[k].approach_speed);
     if (contacts[k].geometry.depth > deepest->geometry.depth) deepest = &contacts[k];
   }
-  return contact_event{contacts[first].body_a, contacts[first].body_b, deepest->geometry.point,
-                       deepest->geometry.normal, impulse};
+  return contact_event{contacts[first].body_a,
+                       contacts[first].body_b,
+                       deepest->geometry.point,
+                       deepest->geometry.normal,
+                       impulse,
+                       approach_speed};
 }
 
 // The merge of previous[i, i_end) and current[j, j_end), whole pairs. Only

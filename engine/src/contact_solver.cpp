@@ -18,8 +18,8 @@ namespace {
 
 // The normal speed n . (v_A(p) - v_B(p)) the bodies had at the start of the
 // step: < 0 while the contact approaches.
-real approach_speed(const body& a, const body& b, const body_velocity& start_a,
-                    const body_velocity& start_b, const contact& c) {
+real separation_speed(const body& a, const body& b, const body_velocity& start_a,
+                      const body_velocity& start_b, const contact& c) {
   const vector& p = c.geometry.point;
   return e3ga::scp(start_a.at_offset(p - a.position()) - start_b.at_offset(p - b.position()),
                    c.geometry.normal);
@@ -251,8 +251,9 @@ void contact_solver::build_constraint(const world_settings& settings, const body
   k.restitution = c.material.restitution;
   k.gap = -c.geometry.depth;
   if (k.gap > 0) k.gap += turning_overshoot(a, b, c, k.gap, settings.contact_margin, h);
-  k.bounces = k.restitution > 0 &&
-              approach_speed(a, b, start_a, start_b, c) < -settings.restitution_threshold;
+  const real closing = -separation_speed(a, b, start_a, start_b, c);
+  impact.approach_speed = closing;
+  k.bounces = k.restitution > 0 && closing > settings.restitution_threshold;
   const shape_summary& shapes_a = shape_summaries_[c.body_a];
   const shape_summary& shapes_b = shape_summaries_[c.body_b];
   const bool round_a = shapes_a.central, round_b = shapes_b.central;
@@ -884,6 +885,7 @@ void contact_solver::store_impulses(std::vector<contact>& contacts, int threads)
     contact_impulse& total = contacts[i].impulse;
     total = resting;
     total.normal += impacts_[slot_[i]].normal;
+    contacts[i].approach_speed = impacts_[slot_[i]].approach_speed;
     if (k.surface < 0) return;
     const surface_terms& t = surfaces_[k.surface];
     const surface_frame& f = frames_[k.surface];

@@ -134,6 +134,7 @@ class contact_solver {
     real normal = 0;                     // the impulse the impact phase gave
     bool timed = false;      // its first impact came at timing->time into the step
     vector timed_impulse{};  // and was this impulse (N s); correct_positions moves the bodies by it
+    real approach_speed = 0;  // contact::approach_speed
   };
 
   // What building a constraint reads of a body's shapes (summarize).

@@ -57,7 +57,7 @@ namespace gaphys {
 namespace {
 
 constexpr char magic[8] = {'g', 'a', 'p', 'h', 'y', 's', 'S', 'N'};
-constexpr std::uint32_t format_version = 1;
+constexpr std::uint32_t format_version = 2;
 constexpr std::size_t header_size = 8 + 4 + 1 + sizeof(real) + 8;
 constexpr std::size_t checksum_size = 8;
 constexpr std::uint64_t no_index = std::numeric_limits<std::uint64_t>::max();
@@ -74,8 +74,8 @@ const real unit_tolerance = detail::by_precision(1e-6, 1e-5);
 // Lower bounds on the bytes of one item, for the counts' checks.
 constexpr std::size_t body_bytes = 24 * sizeof(real);
 constexpr std::size_t shape_bytes = 14 * sizeof(real);
-constexpr std::size_t contact_bytes = 16 + 12 + 26 * sizeof(real);
-constexpr std::size_t event_bytes = 16 + 7 * sizeof(real);
+constexpr std::size_t contact_bytes = 16 + 12 + 27 * sizeof(real);
+constexpr std::size_t event_bytes = 16 + 8 * sizeof(real);
 
 bool same_bits(real a, real b) { return std::memcmp(&a, &b, sizeof(real)) == 0; }
 
@@ -182,7 +182,8 @@ contact_impulse read_impulse(detail::byte_reader& in) {
 }
 
 void write_contact(detail::byte_writer& out, const contact& c) {
-  const auto& [body_a, body_b, geometry, shape_a, shape_b, feature, m, impulse, resting] = c;
+  const auto& [body_a, body_b, geometry, shape_a, shape_b, feature, m, impulse, resting,
+               approach_speed] = c;
   const auto& [point, normal, depth, squared_radius] = geometry;
   out.u64(body_a);
   out.u64(body_b);
@@ -196,6 +197,7 @@ void write_contact(detail::byte_writer& out, const contact& c) {
   write_material(out, m);
   write_impulse(out, impulse);
   write_impulse(out, resting);
+  out.number(approach_speed);
 }
 
 // Contacts in pair order, body_a < body_b, naming shapes their bodies have:
@@ -227,6 +229,7 @@ std::vector<contact> read_contacts(detail::byte_reader& in, const std::vector<bo
     c.material = read_material(in);
     c.impulse = read_impulse(in);
     c.resting = read_impulse(in);
+    c.approach_speed = finite(in, "approach speed");
   }
   in.within(nullptr);
   return contacts;
@@ -235,12 +238,13 @@ std::vector<contact> read_contacts(detail::byte_reader& in, const std::vector<bo
 void write_events(detail::byte_writer& out, const std::vector<contact_event>& events) {
   out.u64(events.size());
   for (const contact_event& e : events) {
-    const auto& [body_a, body_b, point, normal, impulse] = e;
+    const auto& [body_a, body_b, point, normal, impulse, approach_speed] = e;
     out.u64(body_a);
     out.u64(body_b);
     out.numbers(point);
     out.numbers(normal);
     out.number(impulse);
+    out.number(approach_speed);
   }
 }
 
@@ -783,15 +787,26 @@ struct snapshot_access {
     return b;
   }
 
-  // As inertia::tensor checks a tensor: finite, symmetric, positive definite.
+  // As inertia::tensor checks a tensor: finite, symmetric, positive definite
+  // (on the tensor scaled by a power of two to entries near 1, exactly, so
+  // that a millimetre body's determinant does not underflow). And the
+  // inverse must be one a step can use: no entry of a positive definite
+  // tensor's inverse exceeds 1 / its smallest eigenvalue, which is at most
+  // trace^2 / (4 det). (A resealed snapshot with one inverse entry of 1e245
+  // restored, and its step overflowed.)
   static void read_inertia(byte_reader& in, inertia& out) {
     const std::size_t at = in.offset();
     for (real& x : out.tensor_) x = finite(in, "inertia tensor entry");
     for (real& x : out.inverse_) x = finite(in, "inverse inertia entry");
     out.isotropic_ = in.boolean("isotropic flag");
-    const std::array<real, 9>& m = out.tensor_;
-    const real tolerance =
-        detail::by_precision(1e-12, 1e-5) * (std::fabs(m[0]) + std::fabs(m[4]) + std::fabs(m[8]));
+    real largest = 0;
+    for (const real x : out.tensor_) largest = std::max(largest, std::fabs(x));
+    int exponent = 0;
+    std::frexp(largest, &exponent);
+    std::array<real, 9> m;
+    for (std::size_t i = 0; i < 9; ++i) m[i] = std::ldexp(out.tensor_[i], -exponent);
+    const real trace = m[0] + m[4] + m[8];
+    const real tolerance = detail::by_precision(1e-12, 1e-5) * trace;
     const bool symmetric = std::fabs(m[1] - m[3]) <= tolerance &&
                            std::fabs(m[2] - m[6]) <= tolerance &&
                            std::fabs(m[5] - m[7]) <= tolerance;
@@ -800,6 +815,14 @@ struct snapshot_access {
                              m[2] * (m[3] * m[7] - m[4] * m[6]);
     if (!symmetric || !(m[0] > 0) || !(m[0] * m[4] - m[1] * m[3] > 0) || !(determinant > 0)) {
       in.fail_at(at, "the inertia tensor must be symmetric and positive definite");
+    }
+    // (Twice the bound, for rounding; on the scaled inverse.)
+    const real bound = trace * trace / (2 * determinant);
+    for (std::size_t i = 0; i < 9; ++i) {
+      const real x = std::ldexp(out.inverse_[i], exponent);
+      if (!(std::fabs(x) <= bound) || (i % 4 == 0 && !(x > 0))) {
+        in.fail_at(at, "the inverse inertia is not the inertia tensor's inverse");
+      }
     }
     const bool isotropic = m[1] == 0 && m[2] == 0 && m[3] == 0 && m[5] == 0 && m[6] == 0 &&
                            m[7] == 0 && m[0] == m[4] && m[0] == m[8];
@@ -886,6 +909,7 @@ struct snapshot_access {
       e.point = finite_numbers<vector>(in, "point");
       e.normal = finite_numbers<vector>(in, "normal");
       e.impulse = finite(in, "impulse");
+      e.approach_speed = finite(in, "approach speed");
     }
     in.within(nullptr);
     return events;

@@ -125,6 +125,9 @@ struct contact {
   // instead of sinking while the sweeps converge.
   contact_impulse impulse{};
   contact_impulse resting{};
+  // m/s: how fast the point was closing along the normal as the step began,
+  // -n . (v_A(p) - v_B(p)) with the bodies' velocities then (> 0 closing).
+  real approach_speed = 0;
 };
 
 }  // namespace gaphys

@@ -20,6 +20,9 @@ struct contact_event {
   vector normal;           // its normal, from B towards A
   real impulse;            // N s: the pair's total normal impulse in the step (a landing's
                            // may fall in two: docs/engine.md, "Contact events")
+  // m/s: the fastest its contact points were closing as the step began
+  // (contact::approach_speed; > 0 closing): in `began`, the landing's speed.
+  real approach_speed;
 };
 
 // Each list in the order of the pairs in world::contacts(). An ended pair's point, normal and
