@@ -1109,7 +1109,8 @@ void contact_solver::correct_positions(const world_settings& settings, std::vect
 // same sequential impulses as the contact phase, on velocities that start
 // at zero, aimed at moving each contact apart by its share of the excess
 // depth within the step; the bodies then move and turn by h times them and
-// keep their real velocities (no energy comes from the correction).
+// keep their real velocities and angular momenta (no impulse comes from the
+// correction).
 void contact_solver::correct_turning(const world_settings& settings, std::vector<body>& bodies,
                                      const std::vector<contact>& contacts, real h) {
   pseudo_bodies_.resize(bodies.size());

@@ -787,46 +787,28 @@ struct snapshot_access {
     return b;
   }
 
-  // As inertia::tensor checks a tensor: finite, symmetric, positive definite
-  // (on the tensor scaled by a power of two to entries near 1, exactly, so
-  // that a millimetre body's determinant does not underflow). And the
-  // inverse must be one a step can use: no entry of a positive definite
-  // tensor's inverse exceeds 1 / its smallest eigenvalue, which is at most
-  // trace^2 / (4 det). (A resealed snapshot with one inverse entry of 1e245
-  // restored, and its step overflowed.)
+  // The tensor as inertia::tensor checks it (finite, symmetric, positive
+  // definite, invertible), and the inverse and the isotropic flag as it
+  // makes them, to the bit: every body's inertia comes from it (or is the
+  // default, its identity), so a saved inverse is the one it gives again.
+  // (Checked against a bound alone, a resealed snapshot with a tensor entry
+  // pushed up, or an inverse entry of 1e245, restored and overflowed in its
+  // first step.)
   static void read_inertia(byte_reader& in, inertia& out) {
     const std::size_t at = in.offset();
     for (real& x : out.tensor_) x = finite(in, "inertia tensor entry");
     for (real& x : out.inverse_) x = finite(in, "inverse inertia entry");
     out.isotropic_ = in.boolean("isotropic flag");
-    real largest = 0;
-    for (const real x : out.tensor_) largest = std::max(largest, std::fabs(x));
-    int exponent = 0;
-    std::frexp(largest, &exponent);
-    std::array<real, 9> m;
-    for (std::size_t i = 0; i < 9; ++i) m[i] = std::ldexp(out.tensor_[i], -exponent);
-    const real trace = m[0] + m[4] + m[8];
-    const real tolerance = detail::by_precision(1e-12, 1e-5) * trace;
-    const bool symmetric = std::fabs(m[1] - m[3]) <= tolerance &&
-                           std::fabs(m[2] - m[6]) <= tolerance &&
-                           std::fabs(m[5] - m[7]) <= tolerance;
-    const real determinant = m[0] * (m[4] * m[8] - m[5] * m[7]) -
-                             m[1] * (m[3] * m[8] - m[5] * m[6]) +
-                             m[2] * (m[3] * m[7] - m[4] * m[6]);
-    if (!symmetric || !(m[0] > 0) || !(m[0] * m[4] - m[1] * m[3] > 0) || !(determinant > 0)) {
+    inertia made;
+    try {
+      made = inertia::tensor(out.tensor_);
+    } catch (const invalid_input&) {
       in.fail_at(at, "the inertia tensor must be symmetric and positive definite");
     }
-    // (Twice the bound, for rounding; on the scaled inverse.)
-    const real bound = trace * trace / (2 * determinant);
-    for (std::size_t i = 0; i < 9; ++i) {
-      const real x = std::ldexp(out.inverse_[i], exponent);
-      if (!(std::fabs(x) <= bound) || (i % 4 == 0 && !(x > 0))) {
-        in.fail_at(at, "the inverse inertia is not the inertia tensor's inverse");
-      }
+    if (std::memcmp(made.inverse_.data(), out.inverse_.data(), sizeof(out.inverse_)) != 0) {
+      in.fail_at(at, "the inverse inertia is not the inertia tensor's inverse");
     }
-    const bool isotropic = m[1] == 0 && m[2] == 0 && m[3] == 0 && m[5] == 0 && m[6] == 0 &&
-                           m[7] == 0 && m[0] == m[4] && m[0] == m[8];
-    if (out.isotropic_ != isotropic) in.fail("the isotropic flag does not match the tensor");
+    if (out.isotropic_ != made.isotropic_) in.fail("the isotropic flag does not match the tensor");
   }
 
   static std::vector<std::size_t> read_indices(byte_reader& in, const char* what) {

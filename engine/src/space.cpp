@@ -30,11 +30,18 @@ void space::candidate_pairs(const std::vector<body>& bodies, std::vector<body_pa
 void space::all_pairs(const std::vector<body>& bodies, std::vector<body_pair>& pairs,
                       real lookahead, real margin) const {
   pairs.clear();
+  std::vector<detail::uniform_grid::bound> bounds;
+  bounds.reserve(shaped_bodies_.size());
+  for (const std::size_t a : shaped_bodies_) {
+    bounds.push_back(detail::uniform_grid::bound_of(bodies[a], a, lookahead, margin));
+  }
   for (std::size_t i = 0; i < shaped_bodies_.size(); ++i) {
     const std::size_t a = shaped_bodies_[i];
     for (std::size_t j = i + 1; j < shaped_bodies_.size(); ++j) {
       const std::size_t b = shaped_bodies_[j];
-      if (!detail::uniform_grid::pairs_bodies(bodies[a], bodies[b], lookahead, margin)) continue;
+      if (!detail::uniform_grid::pairs_bounds(bounds[i], bounds[j], bodies[a], bodies[b], margin)) {
+        continue;
+      }
       pairs.emplace_back(std::min(a, b), std::max(a, b));
     }
   }

@@ -147,9 +147,8 @@ uniform_grid::bound uniform_grid::bound_of(const body& b, std::size_t index, rea
 }
 
 // add_if_overlapping's test and pair_planes', on two bodies.
-bool uniform_grid::pairs_bodies(const body& a, const body& b, real lookahead, real margin) {
-  const bound bound_a = bound_of(a, 0, lookahead, margin);
-  const bound bound_b = bound_of(b, 1, lookahead, margin);
+bool uniform_grid::pairs_bounds(const bound& bound_a, const bound& bound_b, const body& a,
+                                const body& b, real margin) {
   const bool plane_a = bound_a.radius < 0, plane_b = bound_b.radius < 0;
   if (plane_a && plane_b) return false;  // (the grid tests planes against bounds only)
   if (plane_a || plane_b) {

@@ -4,6 +4,7 @@
 // truncated and fuzzed snapshots are invalid_input and leave the target world
 // as it was. The truth is the saved world itself, stepped on.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -493,6 +494,10 @@ TEST_F(corrupt_snapshot_test, resealed_bad_values_are_rejected_by_name) {
   ASSERT_LT(tensor, good.size());
   const real huge = sizeof(real) == 8 ? real(1e245) : real(1e35);
   EXPECT_TRUE(rejected(edited([&](bytes& b) { put_real(b, tensor + 10 * sizeof(real), huge); }),
+                       "the inverse inertia is not the inertia tensor's inverse"));
+  // A moment pushed up, its inverse left: it would turn the body by the
+  // old inverse (a reviewer's resealed snapshot overflowed in its first step).
+  EXPECT_TRUE(rejected(edited([&](bytes& b) { put_real(b, tensor, std::ldexp(rows[0], 10)); }),
                        "the inverse inertia is not the inertia tensor's inverse"));
   // A vertex moved out: the hull is no longer convex.
   EXPECT_TRUE(

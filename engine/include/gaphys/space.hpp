@@ -15,9 +15,10 @@ namespace gaphys {
 
 using body_pair = std::pair<std::size_t, std::size_t>;
 
-// How candidate pairs are found. Both give the same contacts in the same
-// order, so the same simulation to the bit; the grid is O(N), all pairs
-// (the thesis's) O(N^2) and kept as the reference the grid is tested against.
+// How candidate pairs are found. Both give the same pairs (all pairs tests
+// every two bodies as the grid tests its cells'), so the same contacts in
+// the same order and the same simulation to the bit; the grid is O(N), all
+// pairs (the thesis's) O(N^2).
 enum class broad_phase_kind { uniform_grid, all_pairs };
 
 class space {

@@ -2,7 +2,7 @@
 """Replay across reruns and variants (run by ctest as engine_replay).
 
 Runs each variant's replay executable twice for STEPS steps: the two runs must
-print the same bytes (same build, same state hash). Then compares the variants
+print the same bytes (same build, same state hash); but see --exact. Then compares the variants
 scene by scene: equal hashes mean bit-identical states; otherwise the largest
 difference in any body's position, velocity, attitude or angular velocity must
 stay within that scene's bound (see BOUNDS), and is printed.
@@ -81,6 +81,9 @@ def main():
         del arguments[at:at + 2]
     steps = int(arguments[0])
     variants = dict(argument.split("=", 1) for argument in arguments[1:])
+    if not variants or not exact <= set(variants):
+        print(f"usage: no variants, or --exact names one not given: {sorted(exact - set(variants))}")
+        return 2
     outputs, failed = {}, False
     first_name = next(iter(variants))
     for name, executable in variants.items():

@@ -45,12 +45,6 @@ class uniform_grid {
   bool find_pairs(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped,
                   real lookahead, real margin, std::vector<index_pair>& pairs, int threads = 1);
 
-  // Whether find_pairs pairs bodies a and b: the test every candidate
-  // passes, for a broad phase that tests every two bodies (space's all
-  // pairs), so that it finds the same pairs.
-  static bool pairs_bodies(const body& a, const body& b, real lookahead, real margin);
-
- private:
   struct bound {  // a bounding sphere
     vector centre;
     real radius;
@@ -59,6 +53,13 @@ class uniform_grid {
   };
   // Body `index`'s bound, a plane's marked by a radius < 0.
   static bound bound_of(const body& b, std::size_t index, real lookahead, real margin);
+  // Whether find_pairs pairs the bodies of bounds a and b (bound_of): the
+  // test every candidate passes, for a broad phase that tests every two
+  // bodies (space's all pairs), so that it finds the same pairs.
+  static bool pairs_bounds(const bound& a, const bound& b, const body& body_a, const body& body_b,
+                           real margin);
+
+ private:
   struct entry {  // an ordinary bound in its cell
     std::int64_t x, y, z;
     std::size_t bound;
