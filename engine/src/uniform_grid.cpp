@@ -97,7 +97,7 @@ bool uniform_grid::find_pairs(const std::vector<body>& bodies, const std::vector
                               int threads) {
   pairs.clear();
   collect(bodies, shaped, lookahead, margin, threads);
-  plane_margin_ = margin / 2;
+  margin_ = margin;
   if (!sort_into_cells(threads)) return false;
   pair_cells(pairs, threads);
   pair_large(pairs);
@@ -152,17 +152,35 @@ bool uniform_grid::pairs_bounds(const bound& bound_a, const bound& bound_b, cons
   const bool plane_a = bound_a.radius < 0, plane_b = bound_b.radius < 0;
   if (plane_a && plane_b) return false;  // (the grid tests planes against bounds only)
   if (plane_a || plane_b) {
-    const body& p = plane_a ? a : b;
-    const bound& other = plane_a ? bound_b : bound_a;
-    if (!may_meet(motion_of(p), other.moves)) return false;
-    const vector n = e3ga::apply(p.attitude(), p.shape()->normal());
-    const real d = p.shape()->offset() + e3ga::scp(n, p.position());
-    return e3ga::scp(n, other.centre) - other.radius <= d + margin / 2;
+    const bound& plane = plane_a ? bound_a : bound_b;
+    return reaches(plane_test_of(plane_a ? a : b, plane.body, margin), plane_a ? bound_b : bound_a);
   }
-  if (!may_meet(bound_a.moves, bound_b.moves)) return false;
-  const vector between = bound_a.centre - bound_b.centre;
-  const real reach = bound_a.radius + bound_b.radius;
-  return e3ga::scp(between, between) <= reach * reach;
+  return overlapping(bound_a, bound_b);
+}
+
+// Bounds overlap when |cA - cB| <= rA + rB (radii widened by the margin).
+// (Inline: the grid tests every candidate, and as a call the test was a
+// third of the pairing's instructions.)
+GAPHYS_ALWAYS_INLINE bool uniform_grid::overlapping(const bound& a, const bound& b) {
+  if (!may_meet(a.moves, b.moves)) return false;
+  const vector d = a.centre - b.centre;
+  const real reach = a.radius + b.radius;
+  return e3ga::scp(d, d) <= reach * reach;
+}
+
+// A plane, exactly: a bound's sphere reaches the solid side n . x <= d when
+// n . c - r <= d; within the contact margin when n . c - r <= d + margin
+// (the bound holds half of it already).
+uniform_grid::plane_test uniform_grid::plane_test_of(const body& p, std::size_t index,
+                                                     real margin) {
+  const vector n = e3ga::apply(p.attitude(), p.shape()->normal());
+  const real d = p.shape()->offset() + e3ga::scp(n, p.position());
+  return plane_test{n, d + margin / 2, index, motion_of(p)};
+}
+
+GAPHYS_ALWAYS_INLINE bool uniform_grid::reaches(const plane_test& plane, const bound& b) {
+  return may_meet(plane.moves, b.moves) &&
+         e3ga::scp(plane.normal, b.centre) - b.radius <= plane.reach;
 }
 
 // Bounds of the shaped bodies, and the cell size: the widest bound that
@@ -391,15 +409,9 @@ uniform_grid::run uniform_grid::find_cell(std::int64_t x, std::int64_t y, std::i
   return run{0, 0};
 }
 
-// Bounds overlap when |cA - cB| <= rA + rB (radii widened by the margin).
-// (Inline: the grid tests every candidate, and as a call the test was a
-// third of the pairing's instructions.)
 GAPHYS_ALWAYS_INLINE void uniform_grid::add_if_overlapping(const bound& a, const bound& b,
                                                            std::vector<index_pair>& pairs) const {
-  if (!may_meet(a.moves, b.moves)) return;
-  const vector d = a.centre - b.centre;
-  const real reach = a.radius + b.radius;
-  if (e3ga::scp(d, d) > reach * reach) return;
+  if (!overlapping(a, b)) return;
   pairs.emplace_back(std::min(a.body, b.body), std::max(a.body, b.body));
 }
 
@@ -493,28 +505,20 @@ void uniform_grid::pair_large(std::vector<index_pair>& pairs) const {
   }
 }
 
-// A plane against each dynamic bound, exactly: the sphere reaches the
-// solid side n . x <= d when n . c - r <= d; within the contact margin when
-// n . c - r <= d + margin (the bound holds half of it already).
+// A plane against each dynamic bound, exactly (plane_test_of, reaches).
 // (On the threads for many bounds, each taking shares of them.)
 void uniform_grid::pair_planes(const std::vector<body>& bodies, std::vector<index_pair>& pairs,
                                int threads) {
   plane_tests_.clear();
-  for (std::size_t index : planes_) {
-    const body& p = bodies[index];
-    const vector n = e3ga::apply(p.attitude(), p.shape()->normal());
-    const real d = p.shape()->offset() + e3ga::scp(n, p.position());
-    plane_tests_.push_back(plane_test{n, d + plane_margin_, index, motion_of(p)});
-  }
+  for (std::size_t index : planes_)
+    plane_tests_.push_back(plane_test_of(bodies[index], index, margin_));
   if (plane_tests_.empty()) return;
   const auto test = [&](std::size_t begin, std::size_t end, std::vector<index_pair>& out) {
     for (const plane_test& plane : plane_tests_) {
       for (std::size_t i = begin; i < end; ++i) {
         const bound& b = bounds_[i];
-        if (!may_meet(plane.moves, b.moves)) continue;
-        if (e3ga::scp(plane.normal, b.centre) - b.radius <= plane.reach) {
+        if (reaches(plane, b))
           out.emplace_back(std::min(plane.body, b.body), std::max(plane.body, b.body));
-        }
       }
     }
   };

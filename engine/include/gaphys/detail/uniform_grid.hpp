@@ -84,6 +84,11 @@ class uniform_grid {
   void pair_large(std::vector<index_pair>& pairs) const;
   void pair_planes(const std::vector<body>& bodies, std::vector<index_pair>& pairs, int threads);
   void add_if_overlapping(const bound& a, const bound& b, std::vector<index_pair>& pairs) const;
+  struct plane_test;
+  // The two tests every candidate passes (find_pairs and pairs_bounds).
+  static bool overlapping(const bound& a, const bound& b);
+  static plane_test plane_test_of(const body& p, std::size_t index, real margin);
+  static bool reaches(const plane_test& plane, const bound& b);
   void sort_pairs(std::size_t body_count, std::vector<index_pair>& pairs, int threads);
 
   // Scratch, kept between steps so a step allocates nothing once warm.
@@ -119,7 +124,7 @@ class uniform_grid {
   };
   std::vector<plane_test> plane_tests_;
   real cell_size_ = 1;
-  real plane_margin_ = 0;  // the half of the contact margin bounds do not hold against planes
+  real margin_ = 0;  // the contact margin: bounds hold half of it, plane tests the other half
 };
 
 }  // namespace gaphys::detail
