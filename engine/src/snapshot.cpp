@@ -175,7 +175,8 @@ void write_impulse(detail::byte_writer& out, const contact_impulse& i) {
 
 contact_impulse read_impulse(detail::byte_reader& in) {
   contact_impulse i;
-  i.normal = finite(in, "normal impulse");
+  // (The solver's contacts push, never pull.)
+  i.normal = non_negative(in, "normal impulse");
   i.tangent = finite_numbers<vector>(in, "tangent impulse");
   i.angular = finite_numbers<bivector>(in, "angular impulse");
   return i;
@@ -229,6 +230,15 @@ std::vector<contact> read_contacts(detail::byte_reader& in, const std::vector<bo
     c.material = read_material(in);
     c.impulse = read_impulse(in);
     c.resting = read_impulse(in);
+    // The next step's warm start gives the bodies this impulse again: a
+    // change of velocity it can use, as body::set_velocity asks of a
+    // velocity (a fuzzed 1e306 overflowed the step).
+    const real change =
+        c.resting.normal * (bodies[c.body_a].inverse_mass() + bodies[c.body_b].inverse_mass());
+    if (!std::isfinite(change * change)) {
+      in.fail("resting normal impulse ", c.resting.normal,
+              " is too large to step: the velocity change it gives overflows when squared");
+    }
     c.approach_speed = finite(in, "approach speed");
   }
   in.within(nullptr);
