@@ -170,8 +170,11 @@ void space::place_shapes(const std::vector<body>& bodies, const std::vector<body
   placed_.resize(first_shape_.back());
   in_pairs_.assign(bodies.size(), 0);
   jostled_.assign(bodies.size(), 0);
+  static_.resize(bodies.size());
   for (const auto& [a, b] : pairs) {
     in_pairs_[a] = in_pairs_[b] = 1;
+    static_[a] = bodies[a].is_static();
+    static_[b] = bodies[b].is_static();
     if (bodies[a].is_dynamic() && !bodies[b].is_static()) jostled_[a] = 1;
     if (bodies[b].is_dynamic() && !bodies[a].is_static()) jostled_[b] = 1;
   }
@@ -259,8 +262,19 @@ void space::remove(std::size_t body_index) {
 void space::find_contacts(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
                           std::vector<contact>& contacts, real lookahead,
                           const material_combine_rules& rules, real margin,
-                          std::vector<sensor_overlap>* sensors, int threads) {
+                          std::vector<sensor_overlap>* sensors, int threads, real slop) {
   place_shapes(bodies, pairs, threads);
+  meet_all(bodies, pairs, contacts, lookahead, rules, margin, sensors, threads);
+  if (slop > 0) {
+    detail::drop_hidden_contacts(placed_.data(), first_shape_.data(), static_, slop, contacts,
+                                 hidden_);
+  }
+}
+
+void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
+                     std::vector<contact>& contacts, real lookahead,
+                     const material_combine_rules& rules, real margin,
+                     std::vector<sensor_overlap>* sensors, int threads) {
   if (sensors) sensors->clear();
   // (A few hundred pairs per thread: a box pair takes about a microsecond.)
   const int shares = detail::threads_for(threads, pairs.size(), 256);

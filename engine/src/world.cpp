@@ -457,7 +457,8 @@ void world::step(real h) {
   previous_contacts_.swap(contacts_);
   std::vector<sensor_overlap> sleeping_overlaps = unchanged_sensor_overlaps();
   space_.find_contacts(bodies_, pairs_, contacts_, h, settings_.material_combine,
-                       settings_.contact_margin, &sensor_overlaps_, settings_.threads);
+                       settings_.contact_margin, &sensor_overlaps_, settings_.threads,
+                       settings_.linear_slop);
   merge_sensor_overlaps(sleeping_overlaps);
   const auto met = clock::now();
   if (!solver_) solver_ = std::make_unique<contact_solver>();  // a moved-from world

@@ -9,6 +9,7 @@
 #include "gaphys/body.hpp"
 #include "gaphys/contact.hpp"
 #include "gaphys/contact_events.hpp"
+#include "gaphys/detail/hidden_faces.hpp"
 #include "gaphys/detail/uniform_grid.hpp"
 
 namespace gaphys {
@@ -51,11 +52,14 @@ class space {
   // no contact but, when they overlap or touch, a sensor_overlap in
   // `sensors` (cleared first; none kept when it is null). With `threads`
   // > 1 (0: every core) the pairs are met on that many threads at once; the
-  // contacts are the same, in the same order.
+  // contacts are the same, in the same order. With `slop` > 0 (the world's
+  // linear_slop), a contact on a static shape's face that another static
+  // shape hides is left out (hidden_faces.hpp: the seams of a floor of boxes).
   void find_contacts(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
                      std::vector<contact>& contacts, real lookahead = 0,
                      const material_combine_rules& rules = {}, real margin = 0,
-                     std::vector<sensor_overlap>* sensors = nullptr, int threads = 1);
+                     std::vector<sensor_overlap>* sensors = nullptr, int threads = 1,
+                     real slop = 0);
 
   // Whether the shapes of bodies a and b make a contact (a speculative one
   // too) as find_contacts would meet them: a sleeping body wakes when one
@@ -81,6 +85,10 @@ class space {
                  real margin) const;
   void place_shapes(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
                     int threads = 1);
+  // Every pair met, on `threads`, into `contacts` (find_contacts).
+  void meet_all(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
+                std::vector<contact>& contacts, real lookahead, const material_combine_rules& rules,
+                real margin, std::vector<sensor_overlap>* sensors, int threads);
   void meet_pairs(const std::vector<body>& bodies, const body_pair* first, const body_pair* end,
                   std::vector<contact>& contacts, real lookahead,
                   const material_combine_rules& rules, real margin,
@@ -96,6 +104,8 @@ class space {
   // Whether each dynamic body is in a pair with another dynamic or a
   // kinematic body, which may push it anywhere within the step.
   std::vector<unsigned char> jostled_;
+  std::vector<unsigned char> static_;  // whether each body in a pair is static
+  detail::hidden_face_lists hidden_;
   // What the meets on batches read of a body with one shape, written as its
   // shape is placed: read from the bodies and their shapes, pair by pair,
   // they were a scattered read each and 40% of meet_pairs' own time.

@@ -1,0 +1,60 @@
+// Contacts on faces that another static shape hides: the seams of a floor
+// of static boxes laid flush (docs/engine.md, "Seams").
+//
+// A body sliding over such a floor rests a fraction of a millimetre into
+// one box, and meets the next one's side face, which the first box covers:
+// the narrow phase, seeing only that pair, finds the side the deepest
+// separating axis and makes a (speculative) contact along it, which stops
+// the body or throws it up ("ghost collisions"; a frictionless box at 3 m/s
+// kept 1.06 m/s after the first seam, hopping). Such a contact is dropped
+// where the face it lies on is hidden there by another static shape that
+// the same body touches in this step.
+#pragma once
+
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+#include "gaphys/algebra.hpp"
+#include "gaphys/contact.hpp"
+
+namespace gaphys::detail {
+
+// How far x is outside the shape (< 0 inside), and the outward normal of
+// the surface nearest it. For boxes and hulls, the largest height above a
+// face's plane: the distance where the nearest feature is a face (outside
+// an edge or a corner, less than it). A point has no inside: +infinity.
+real signed_distance(const placed_shape& s, const vector& x, vector& outward);
+
+// Whether the contact point on static shape `s` (its surface point `p`, its
+// outward normal `n` there) lies on a face that static shape `other` hides:
+// just in front of the face (p + δ n) `other` is there, within `slop` of its
+// surface; and `s` ends where the surface of `other` is: from p, δ along
+// that surface's outward normal is outside `s` by δ / 2 or more. δ is four
+// times the slop: a body resting up to the slop into the first box of a
+// seam is hidden from the second's side, and a wall standing on a floor,
+// whose face goes on above the floor, keeps its contacts there. At an edge
+// or corner of a box or hull, the faces through p that n leans towards are
+// tested (a ball rolling over a seam meets the next box's edge).
+bool hidden_by(const placed_shape& s, const vector& p, const vector& n, const placed_shape& other,
+               real slop);
+
+// The lists drop_hidden_contacts keeps between steps.
+struct hidden_face_lists {
+  std::vector<std::size_t> first_partner;  // per body: its first static shape + 1, or `several`
+  std::vector<std::size_t> touched;        // the bodies whose first_partner is set
+  std::vector<std::pair<std::size_t, std::size_t>> entries;  // (moving body, contact)
+  std::vector<unsigned char> dropped;                        // per contact
+  std::vector<std::size_t> partners;                         // one body's static shapes
+};
+
+// Drops, keeping the others' order, each contact between a static shape and
+// a body that is not static whose point lies on a face hidden (hidden_by) by
+// another static shape the same body has a contact with. `placed` holds
+// every shape of the contacts' bodies at its pose, body i's from
+// first_shape[i]; `is_static` says which bodies are static.
+void drop_hidden_contacts(const placed_shape* placed, const std::size_t* first_shape,
+                          const std::vector<unsigned char>& is_static, real slop,
+                          std::vector<contact>& contacts, hidden_face_lists& lists);
+
+}  // namespace gaphys::detail

@@ -1,0 +1,194 @@
+#include "gaphys/detail/hidden_faces.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "round_meet.hpp"
+#include "vec3.hpp"
+
+namespace gaphys::detail {
+
+namespace {
+
+constexpr std::size_t several = std::numeric_limits<std::size_t>::max();
+
+// x's distance from a ball of radius r about c, and the way out of it.
+real ball_distance(const vec3& c, real r, const vec3& x, vector& outward) {
+  const vec3 away = x - c;
+  const real length_away = length(away);
+  // (At the very centre any way is out.)
+  outward = length_away > 0 ? to_vector((1 / length_away) * away) : vector{0, 0, 1};
+  return length_away - r;
+}
+
+}  // namespace
+
+real signed_distance(const placed_shape& s, const vector& x, vector& outward) {
+  switch (s.kind) {
+    case shape_kind::sphere:
+      return ball_distance(to_vec3(s.center), s.radius, to_vec3(x), outward);
+    case shape_kind::plane:
+      outward = s.normal;
+      return e3ga::scp(s.normal, x) - s.offset;
+    case shape_kind::capsule: {
+      const vec3 axis = to_vec3(s.axis), from_center = to_vec3(x - s.center);
+      const real along = std::clamp(dot(from_center, axis), -s.half_height, s.half_height);
+      return ball_distance(to_vec3(s.center) + along * axis, s.radius, to_vec3(x), outward);
+    }
+    case shape_kind::box:
+    case shape_kind::convex_hull: {
+      const rigid_frame frame = frame_of(s.attitude, s.center);
+      const vec3 local = frame.to_local(to_vec3(x));
+      real highest = -std::numeric_limits<real>::infinity();
+      const polyhedron_face* nearest = nullptr;
+      for (const polyhedron_face& face : s.polyhedron->faces) {
+        const real height = dot(to_vec3(face.normal), local) - face.offset;
+        if (height > highest) highest = height, nearest = &face;
+      }
+      outward = to_vector(frame.rotate(to_vec3(nearest->normal)));
+      return highest;
+    }
+    case shape_kind::point:
+      break;
+  }
+  outward = vector{0, 0, 1};
+  return std::numeric_limits<real>::infinity();
+}
+
+namespace {
+
+// Whether the face of s through p with outward normal n is hidden there by
+// `other` (hidden_by).
+bool face_hidden(const placed_shape& s, const vector& p, const vector& n, const placed_shape& other,
+                 real slop) {
+  const real step = 4 * slop;
+  vector surface_normal;
+  if (!(signed_distance(other, p + step * n, surface_normal) <= slop)) return false;
+  vector unused;
+  return signed_distance(s, p + step * surface_normal, unused) >= step / 2;
+}
+
+}  // namespace
+
+bool hidden_by(const placed_shape& s, const vector& p, const vector& n, const placed_shape& other,
+               real slop) {
+  if (s.kind != shape_kind::box && s.kind != shape_kind::convex_hull) {
+    return face_hidden(s, p, n, other, slop);
+  }
+  // A contact at an edge or a corner of a box or hull (a ball rolling over
+  // a seam meets the next box's edge) has a normal between its faces': it
+  // is hidden where one of the faces through p that it leans towards is.
+  // (Leaning by more than rounding: a ball resting right above a seam
+  // touches both boxes along their top faces' normal.)
+  const rigid_frame frame = frame_of(s.attitude, s.center);
+  const vec3 local = frame.to_local(to_vec3(p));
+  for (const polyhedron_face& face : s.polyhedron->faces) {
+    if (!(std::fabs(dot(to_vec3(face.normal), local) - face.offset) <= slop)) continue;
+    const vector face_normal = to_vector(frame.rotate(to_vec3(face.normal)));
+    if (!(e3ga::scp(n, face_normal) > real(1e-3))) continue;
+    if (face_hidden(s, p, face_normal, other, slop)) return true;
+  }
+  return false;
+}
+
+void drop_hidden_contacts(const placed_shape* placed, const std::size_t* first_shape,
+                          const std::vector<unsigned char>& is_static, real slop,
+                          std::vector<contact>& contacts, hidden_face_lists& lists) {
+  // Which body is the moving one of a contact with a static shape, and that
+  // shape's index in `placed`; none for other contacts.
+  struct sides {
+    std::size_t moving, shape, moving_shape;
+  };
+  const auto sides_of = [&](const contact& c) -> std::optional<sides> {
+    if (is_static[c.body_a] == is_static[c.body_b]) return std::nullopt;
+    const std::size_t shape_a = first_shape[c.body_a] + c.shape_a;
+    const std::size_t shape_b = first_shape[c.body_b] + c.shape_b;
+    if (is_static[c.body_a]) return sides{c.body_b, shape_a, shape_b};
+    return sides{c.body_a, shape_b, shape_a};
+  };
+  // The contact's point on the static shape: the meet of two round shapes
+  // gives its round's centre (on a plane, the projected centre), found
+  // again from the shape's distance; the convex narrow phase the point
+  // midway between the surfaces, depth / 2 inside each.
+  const auto surface_point = [&](const contact& c, const sides& at, const vector& n) {
+    const placed_shape& s = placed[at.shape];
+    if (is_round(s.kind) && is_round(placed[at.moving_shape].kind)) {
+      vector unused;
+      return c.geometry.point - signed_distance(s, c.geometry.point, unused) * n;
+    }
+    return c.geometry.point + (c.geometry.depth / 2) * n;
+  };
+  // Only a body touching two static shapes or more can have a hidden
+  // contact; most touch one at most (a sphere on a floor), and the rest of
+  // the pass is for the few that touch more.
+  std::vector<std::size_t>& first = lists.first_partner;
+  if (first.size() < is_static.size()) first.resize(is_static.size(), 0);
+  lists.touched.clear();
+  bool any = false;
+  for (const contact& c : contacts) {
+    const std::optional<sides> at = sides_of(c);
+    if (!at) continue;
+    std::size_t& seen = first[at->moving];
+    if (seen == 0) {
+      seen = at->shape + 1;
+      lists.touched.push_back(at->moving);
+    } else if (seen != at->shape + 1) {
+      seen = several;
+      any = true;
+    }
+  }
+  if (any) {
+    // Each such body's contacts with static shapes, together, in contact order.
+    lists.entries.clear();
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+      const std::optional<sides> at = sides_of(contacts[i]);
+      if (at && first[at->moving] == several) lists.entries.emplace_back(at->moving, i);
+    }
+    std::stable_sort(lists.entries.begin(), lists.entries.end(),
+                     [](const auto& x, const auto& y) { return x.first < y.first; });
+    lists.dropped.assign(contacts.size(), 0);
+    bool dropped_any = false;
+    for (std::size_t begin = 0; begin < lists.entries.size();) {
+      std::size_t end = begin + 1;
+      while (end < lists.entries.size() && lists.entries[end].first == lists.entries[begin].first) {
+        ++end;
+      }
+      // The static shapes this body touches, each once (a face's contact
+      // points come together).
+      lists.partners.clear();
+      for (std::size_t e = begin; e < end; ++e) {
+        const std::size_t shape = sides_of(contacts[lists.entries[e].second])->shape;
+        if (lists.partners.empty() || lists.partners.back() != shape)
+          lists.partners.push_back(shape);
+      }
+      for (std::size_t e = begin; e < end; ++e) {
+        const contact& c = contacts[lists.entries[e].second];
+        const sides at = *sides_of(c);
+        const std::size_t own = at.shape;
+        const placed_shape& s = placed[own];
+        // The normal points from B to A: out of s where s is B's.
+        const vector n = is_static[c.body_b] ? c.geometry.normal : -c.geometry.normal;
+        const vector p = surface_point(c, at, n);
+        for (const std::size_t other : lists.partners) {
+          if (other == own || !hidden_by(s, p, n, placed[other], slop)) continue;
+          lists.dropped[lists.entries[e].second] = 1;
+          dropped_any = true;
+          break;
+        }
+      }
+      begin = end;
+    }
+    if (dropped_any) {
+      std::size_t kept = 0;
+      for (std::size_t i = 0; i < contacts.size(); ++i) {
+        if (!lists.dropped[i]) contacts[kept++] = contacts[i];
+      }
+      contacts.resize(kept);
+    }
+  }
+  for (const std::size_t x : lists.touched) first[x] = 0;
+}
+
+}  // namespace gaphys::detail
