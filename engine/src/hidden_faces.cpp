@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 
 #include "round_meet.hpp"
 #include "vec3.hpp"
@@ -60,14 +61,57 @@ real signed_distance(const placed_shape& s, const vector& x, vector& outward) {
 namespace {
 
 // Whether the face of s through p with outward normal n is hidden there by
-// `other` (hidden_by).
+// `other` (hidden_by). The two surfaces must also be flush there, within
+// the slop: s's end and the surface of `other` the same distance from p
+// along that surface's normal (a tile 1.5 mm higher than the next is a
+// step, and the lower one's edge holds what slides against it; a plate 2 mm
+// thick on a floor does not hide the floor from what sinks into its edge).
 bool face_hidden(const placed_shape& s, const vector& p, const vector& n, const placed_shape& other,
                  real slop) {
   const real step = 4 * slop;
-  vector surface_normal;
-  if (!(signed_distance(other, p + step * n, surface_normal) <= slop)) return false;
+  vector m;  // the other's surface normal
+  const real in_other = signed_distance(other, p + step * n, m);
+  if (!(in_other <= slop)) return false;
   vector unused;
-  return signed_distance(s, p + step * surface_normal, unused) >= step / 2;
+  const real beyond_s = signed_distance(s, p + step * m, unused);
+  if (!(beyond_s >= step / 2)) return false;
+  // Along m from p, s ends at step - beyond_s, and the other's surface is
+  // at step (n . m) - in_other (the test point is step n from p).
+  const real s_ends = step - beyond_s, other_ends = step * e3ga::scp(n, m) - in_other;
+  return std::fabs(s_ends - other_ends) <= slop;
+}
+
+// The shape's bounds along the world's axes, as lowest and highest
+// corners; nothing for a plane, which reaches everywhere.
+std::optional<std::pair<vec3, vec3>> bounds_of(const placed_shape& s) {
+  const vec3 c = to_vec3(s.center);
+  const auto around = [&c](const vec3& half) { return std::make_pair(c - half, c + half); };
+  switch (s.kind) {
+    case shape_kind::sphere:
+      return around({s.radius, s.radius, s.radius});
+    case shape_kind::capsule: {
+      const vec3 a = to_vec3(s.axis);
+      return around({s.half_height * std::fabs(a.x) + s.radius,
+                     s.half_height * std::fabs(a.y) + s.radius,
+                     s.half_height * std::fabs(a.z) + s.radius});
+    }
+    case shape_kind::box:
+    case shape_kind::convex_hull: {
+      const rigid_frame frame = frame_of(s.attitude, s.center);
+      vec3 lo = c, hi = c;
+      for (const vector& corner : s.polyhedron->vertices) {
+        const vec3 x = frame.to_world(to_vec3(corner));
+        lo = {std::min(lo.x, x.x), std::min(lo.y, x.y), std::min(lo.z, x.z)};
+        hi = {std::max(hi.x, x.x), std::max(hi.y, x.y), std::max(hi.z, x.z)};
+      }
+      return std::make_pair(lo, hi);
+    }
+    case shape_kind::point:
+      return around({0, 0, 0});
+    case shape_kind::plane:
+      break;
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -155,27 +199,67 @@ void drop_hidden_contacts(const placed_shape* placed, const std::size_t* first_s
       while (end < lists.entries.size() && lists.entries[end].first == lists.entries[begin].first) {
         ++end;
       }
-      // The static shapes this body touches, each once (a face's contact
-      // points come together).
+      // The static shapes this body touches, each once, by their bounds'
+      // lowest x (planes, which reach everywhere, apart): each contact
+      // point looks only at those whose bounds it is within reach of (a
+      // plank on a thousand small tiles touches all of them, and each point
+      // is near a few).
       lists.partners.clear();
+      lists.planes.clear();
+      real widest = 0;
       for (std::size_t e = begin; e < end; ++e) {
         const std::size_t shape = sides_of(contacts[lists.entries[e].second])->shape;
-        if (lists.partners.empty() || lists.partners.back() != shape)
-          lists.partners.push_back(shape);
+        if (const auto bounds = bounds_of(placed[shape])) {
+          const auto& [lo, hi] = *bounds;
+          lists.partners.push_back({{lo.x, lo.y, lo.z}, {hi.x, hi.y, hi.z}, shape});
+          widest = std::max(widest, bounds->second.x - bounds->first.x);
+        } else {
+          lists.planes.push_back(shape);
+        }
       }
+      const auto by_x = [](const hidden_face_lists::partner& x,
+                           const hidden_face_lists::partner& y) {
+        return x.lo.x < y.lo.x || (x.lo.x == y.lo.x && x.shape < y.shape);
+      };
+      std::sort(lists.partners.begin(), lists.partners.end(), by_x);
+      lists.partners.erase(
+          std::unique(lists.partners.begin(), lists.partners.end(),
+                      [](const auto& x, const auto& y) { return x.shape == y.shape; }),
+          lists.partners.end());
+      std::sort(lists.planes.begin(), lists.planes.end());
+      lists.planes.erase(std::unique(lists.planes.begin(), lists.planes.end()), lists.planes.end());
+      // (The points a test looks at are within 4 slop of p, and count
+      // within the slop of the other's surface.)
+      const real reach = 5 * slop;
       for (std::size_t e = begin; e < end; ++e) {
         const contact& c = contacts[lists.entries[e].second];
+        // A contact deeper than half the step's test is no seam's: a body
+        // resting on a seam is within the slop of both surfaces. (Kept, it
+        // holds what would else sink while each step hid it again.)
+        if (c.geometry.depth > 2 * slop) continue;
         const sides at = *sides_of(c);
         const std::size_t own = at.shape;
         const placed_shape& s = placed[own];
         // The normal points from B to A: out of s where s is B's.
         const vector n = is_static[c.body_b] ? c.geometry.normal : -c.geometry.normal;
         const vector p = surface_point(c, at, n);
-        for (const std::size_t other : lists.partners) {
-          if (other == own || !hidden_by(s, p, n, placed[other], slop)) continue;
+        const vec3 x = to_vec3(p);
+        const auto hides = [&](std::size_t other) {
+          return other != own && hidden_by(s, p, n, placed[other], slop);
+        };
+        bool hidden = std::any_of(lists.planes.begin(), lists.planes.end(), hides);
+        hidden_face_lists::partner from{};
+        from.lo.x = x.x - reach - widest;
+        auto near = std::lower_bound(lists.partners.begin(), lists.partners.end(), from, by_x);
+        for (; !hidden && near != lists.partners.end() && near->lo.x <= x.x + reach; ++near) {
+          const bool within = near->lo.x - reach <= x.x && x.x <= near->hi.x + reach &&
+                              near->lo.y - reach <= x.y && x.y <= near->hi.y + reach &&
+                              near->lo.z - reach <= x.z && x.z <= near->hi.z + reach;
+          if (within) hidden = hides(near->shape);
+        }
+        if (hidden) {
           lists.dropped[lists.entries[e].second] = 1;
           dropped_any = true;
-          break;
         }
       }
       begin = end;

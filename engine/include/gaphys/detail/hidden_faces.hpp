@@ -29,13 +29,15 @@ real signed_distance(const placed_shape& s, const vector& x, vector& outward);
 // Whether the contact point on static shape `s` (its surface point `p`, its
 // outward normal `n` there) lies on a face that static shape `other` hides:
 // just in front of the face (p + δ n) `other` is there, within `slop` of its
-// surface; and `s` ends where the surface of `other` is: from p, δ along
-// that surface's outward normal is outside `s` by δ / 2 or more. δ is four
-// times the slop: a body resting up to the slop into the first box of a
-// seam is hidden from the second's side, and a wall standing on a floor,
-// whose face goes on above the floor, keeps its contacts there. At an edge
-// or corner of a box or hull, the faces through p that n leans towards are
-// tested (a ball rolling over a seam meets the next box's edge).
+// surface; `s` ends where the surface of `other` is (from p, δ along that
+// surface's normal is outside `s` by δ / 2 or more); and the two are flush
+// (along that normal, `s` ends where the other's surface is, within the
+// slop). δ is four times the slop: a body resting up to the slop into the
+// first box of a seam is hidden from the second's side; a wall standing on
+// a floor, whose face goes on above the floor, keeps its contacts there, as
+// does a step or a plate thicker than the slop. At an edge or corner of a
+// box or hull, the faces through p that n leans towards are tested (a ball
+// rolling over a seam meets the next box's edge).
 bool hidden_by(const placed_shape& s, const vector& p, const vector& n, const placed_shape& other,
                real slop);
 
@@ -45,12 +47,21 @@ struct hidden_face_lists {
   std::vector<std::size_t> touched;        // the bodies whose first_partner is set
   std::vector<std::pair<std::size_t, std::size_t>> entries;  // (moving body, contact)
   std::vector<unsigned char> dropped;                        // per contact
-  std::vector<std::size_t> partners;                         // one body's static shapes
+  // One body's static shapes: their bounds (by the lowest x), and the planes.
+  struct partner {
+    struct corner {
+      real x, y, z;
+    } lo, hi;
+    std::size_t shape;
+  };
+  std::vector<partner> partners;
+  std::vector<std::size_t> planes;
 };
 
 // Drops, keeping the others' order, each contact between a static shape and
-// a body that is not static whose point lies on a face hidden (hidden_by) by
-// another static shape the same body has a contact with. `placed` holds
+// a body that is not static, no deeper than twice the slop, whose point lies
+// on a face hidden (hidden_by) by another static shape the same body has a
+// contact with. `placed` holds
 // every shape of the contacts' bodies at its pose, body i's from
 // first_shape[i]; `is_static` says which bodies are static.
 void drop_hidden_contacts(const placed_shape* placed, const std::size_t* first_shape,
