@@ -24,8 +24,10 @@ real ball_distance(const vec3& c, real r, const vec3& x, vector& outward) {
   return length_away - r;
 }
 
-}  // namespace
-
+// How far x is outside the shape (< 0 inside), and the outward normal of
+// the surface nearest it. For boxes and hulls, the largest height above a
+// face's plane: the distance where the nearest feature is a face (outside
+// an edge or a corner, less than it). A point has no inside: +infinity.
 real signed_distance(const placed_shape& s, const vector& x, vector& outward) {
   switch (s.kind) {
     case shape_kind::sphere:
@@ -57,8 +59,6 @@ real signed_distance(const placed_shape& s, const vector& x, vector& outward) {
   outward = vector{0, 0, 1};
   return std::numeric_limits<real>::infinity();
 }
-
-namespace {
 
 // Whether the face of s through p with outward normal n is hidden there by
 // `other` (hidden_by). The two surfaces must also be flush there, within
@@ -200,21 +200,20 @@ void drop_hidden_contacts(const placed_shape* placed, const std::size_t* first_s
         ++end;
       }
       // The static shapes this body touches, each once, by their bounds'
-      // lowest x (planes, which reach everywhere, apart): each contact
-      // point looks only at those whose bounds it is within reach of (a
-      // plank on a thousand small tiles touches all of them, and each point
-      // is near a few).
+      // lowest x: each contact point looks only at those whose bounds it is
+      // within reach of (a plank on a thousand small tiles touches all of
+      // them, and each point is near a few). Planes, and shapes far wider
+      // than most (a long kerb among tiles, which would widen every
+      // point's window to its length), are looked at by every point.
       lists.partners.clear();
-      lists.planes.clear();
-      real widest = 0;
+      lists.everywhere.clear();
       for (std::size_t e = begin; e < end; ++e) {
         const std::size_t shape = sides_of(contacts[lists.entries[e].second])->shape;
         if (const auto bounds = bounds_of(placed[shape])) {
           const auto& [lo, hi] = *bounds;
           lists.partners.push_back({{lo.x, lo.y, lo.z}, {hi.x, hi.y, hi.z}, shape});
-          widest = std::max(widest, bounds->second.x - bounds->first.x);
         } else {
-          lists.planes.push_back(shape);
+          lists.everywhere.push_back(shape);
         }
       }
       const auto by_x = [](const hidden_face_lists::partner& x,
@@ -226,8 +225,27 @@ void drop_hidden_contacts(const placed_shape* placed, const std::size_t* first_s
           std::unique(lists.partners.begin(), lists.partners.end(),
                       [](const auto& x, const auto& y) { return x.shape == y.shape; }),
           lists.partners.end());
-      std::sort(lists.planes.begin(), lists.planes.end());
-      lists.planes.erase(std::unique(lists.planes.begin(), lists.planes.end()), lists.planes.end());
+      const auto width = [](const hidden_face_lists::partner& x) { return x.hi.x - x.lo.x; };
+      lists.widths.clear();
+      for (const hidden_face_lists::partner& x : lists.partners) lists.widths.push_back(width(x));
+      real widest = 0;
+      if (!lists.widths.empty()) {
+        const auto middle = lists.widths.begin() + std::ptrdiff_t(lists.widths.size() / 2);
+        std::nth_element(lists.widths.begin(), middle, lists.widths.end());
+        const real wide = 4 * *middle + 10 * slop;
+        for (const hidden_face_lists::partner& x : lists.partners) {
+          if (width(x) > wide) lists.everywhere.push_back(x.shape);
+        }
+        lists.partners.erase(std::remove_if(lists.partners.begin(), lists.partners.end(),
+                                            [&](const auto& x) { return width(x) > wide; }),
+                             lists.partners.end());
+        for (const hidden_face_lists::partner& x : lists.partners) {
+          widest = std::max(widest, width(x));
+        }
+      }
+      std::sort(lists.everywhere.begin(), lists.everywhere.end());
+      lists.everywhere.erase(std::unique(lists.everywhere.begin(), lists.everywhere.end()),
+                             lists.everywhere.end());
       // (The points a test looks at are within 4 slop of p, and count
       // within the slop of the other's surface.)
       const real reach = 5 * slop;
@@ -247,7 +265,7 @@ void drop_hidden_contacts(const placed_shape* placed, const std::size_t* first_s
         const auto hides = [&](std::size_t other) {
           return other != own && hidden_by(s, p, n, placed[other], slop);
         };
-        bool hidden = std::any_of(lists.planes.begin(), lists.planes.end(), hides);
+        bool hidden = std::any_of(lists.everywhere.begin(), lists.everywhere.end(), hides);
         hidden_face_lists::partner from{};
         from.lo.x = x.x - reach - widest;
         auto near = std::lower_bound(lists.partners.begin(), lists.partners.end(), from, by_x);

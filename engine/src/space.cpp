@@ -170,7 +170,7 @@ void space::place_shapes(const std::vector<body>& bodies, const std::vector<body
   placed_.resize(first_shape_.back());
   in_pairs_.assign(bodies.size(), 0);
   jostled_.assign(bodies.size(), 0);
-  static_.resize(bodies.size());
+  static_.assign(bodies.size(), 0);
   for (const auto& [a, b] : pairs) {
     in_pairs_[a] = in_pairs_[b] = 1;
     static_[a] = bodies[a].is_static();

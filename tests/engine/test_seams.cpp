@@ -297,6 +297,18 @@ TEST(seam_test, hidden_by_tells_a_covered_face_from_a_wall) {
   // Leaning the other way, over the second box's own top: not hidden.
   const vector away{std::sin(real(0.3)), 0, std::cos(real(0.3))};
   EXPECT_FALSE(detail::hidden_by(second, vector{0.5, 0, 0}, away, first, slop));
+  // The second box 1.5 mm higher is a step: neither its side above the
+  // first box nor the first box's edge under a normal leaning over it is
+  // hidden (a first version hid the edge, and hulls sank at such steps).
+  const placed_shape raised =
+      place(tile, vector{1, 0, real(-0.25) + real(0.0015)}, rotor{1, 0, 0, 0});
+  EXPECT_FALSE(detail::hidden_by(raised, vector{0.5, 0, 0.0005}, vector{-1, 0, 0}, first, slop));
+  const vector over_the_step{std::sin(real(0.3)), 0, std::cos(real(0.3))};
+  EXPECT_FALSE(detail::hidden_by(first, vector{0.5, 0, 0}, over_the_step, raised, slop));
+  // Raised by a tenth of the slop, it is still a seam.
+  const placed_shape level =
+      place(tile, vector{1, 0, real(-0.25) + real(0.00005)}, rotor{1, 0, 0, 0});
+  EXPECT_TRUE(detail::hidden_by(level, vector{0.5, 0, 0}, vector{-1, 0, 0}, first, slop));
   // A wall 1 m high on the first box: its face at the floor is not hidden.
   const placed_shape wall = place(upright, vector{0.25, 0, 0.5}, rotor{1, 0, 0, 0});
   EXPECT_FALSE(detail::hidden_by(wall, vector{0, 0, 0}, vector{-1, 0, 0}, first, slop));

@@ -20,12 +20,6 @@
 
 namespace gaphys::detail {
 
-// How far x is outside the shape (< 0 inside), and the outward normal of
-// the surface nearest it. For boxes and hulls, the largest height above a
-// face's plane: the distance where the nearest feature is a face (outside
-// an edge or a corner, less than it). A point has no inside: +infinity.
-real signed_distance(const placed_shape& s, const vector& x, vector& outward);
-
 // Whether the contact point on static shape `s` (its surface point `p`, its
 // outward normal `n` there) lies on a face that static shape `other` hides:
 // just in front of the face (p + δ n) `other` is there, within `slop` of its
@@ -41,13 +35,15 @@ real signed_distance(const placed_shape& s, const vector& x, vector& outward);
 bool hidden_by(const placed_shape& s, const vector& p, const vector& n, const placed_shape& other,
                real slop);
 
-// The lists drop_hidden_contacts keeps between steps.
+// drop_hidden_contacts' lists, kept from step to step so as not to be
+// allocated anew (first_partner is all zero between calls).
 struct hidden_face_lists {
   std::vector<std::size_t> first_partner;  // per body: its first static shape + 1, or `several`
   std::vector<std::size_t> touched;        // the bodies whose first_partner is set
   std::vector<std::pair<std::size_t, std::size_t>> entries;  // (moving body, contact)
   std::vector<unsigned char> dropped;                        // per contact
-  // One body's static shapes: their bounds (by the lowest x), and the planes.
+  // One body's static shapes: their bounds (by the lowest x), and those
+  // every contact point looks at (planes, and shapes far wider than most).
   struct partner {
     struct corner {
       real x, y, z;
@@ -55,15 +51,16 @@ struct hidden_face_lists {
     std::size_t shape;
   };
   std::vector<partner> partners;
-  std::vector<std::size_t> planes;
+  std::vector<std::size_t> everywhere;
+  std::vector<real> widths;
 };
 
 // Drops, keeping the others' order, each contact between a static shape and
-// a body that is not static, no deeper than twice the slop, whose point lies
-// on a face hidden (hidden_by) by another static shape the same body has a
-// contact with. `placed` holds
-// every shape of the contacts' bodies at its pose, body i's from
-// first_shape[i]; `is_static` says which bodies are static.
+// a body that is not static whose point lies on a face hidden (hidden_by) by
+// another static shape the same body has a contact with; never one deeper
+// than twice the slop. `placed` holds every shape of the contacts' bodies at
+// its pose, body i's from first_shape[i]; `is_static` says which bodies are
+// static.
 void drop_hidden_contacts(const placed_shape* placed, const std::size_t* first_shape,
                           const std::vector<unsigned char>& is_static, real slop,
                           std::vector<contact>& contacts, hidden_face_lists& lists);
