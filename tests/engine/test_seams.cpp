@@ -231,6 +231,16 @@ real lowest_corner(const body& b) {
   return lowest;
 }
 
+// The lowest any corner of the body came in `seconds` of steps.
+real lowest_over(tiled_floor& f, body_id id, real seconds) {
+  real lowest = 1;
+  for (int i = 0; i * h < seconds; ++i) {
+    f.w.step(h);
+    lowest = std::min(lowest, lowest_corner(f.w.at(id)));
+  }
+  return lowest;
+}
+
 // Surfaces that are not flush hide nothing: a tile 1.5 or 2 mm higher than
 // the one before is a step, whose lower tile's edge holds up the pyramid or
 // wedge that slides against it; a plate 2 mm thick lying on a floor does not
@@ -248,12 +258,7 @@ TEST(seam_test, surfaces_that_are_not_flush_hide_nothing) {
                      std::to_string(rise));
         tiled_floor f = lay_tiles(8, 0, 0, false, {0, rise, 0, rise, 0, rise, 0, rise});
         const body_id id = add_slider(f, s, 0, 0, speed);
-        real lowest = 1;
-        for (int i = 0; i * h * speed < 6; ++i) {  // 6 m: still over the tiles
-          f.w.step(h);
-          lowest = std::min(lowest, lowest_corner(f.w.at(id)));
-        }
-        EXPECT_GT(lowest, real(-0.003));
+        EXPECT_GT(lowest_over(f, id, 6 / speed), real(-0.003));  // 6 m: still over the tiles
       }
       SCOPED_TRACE(s.name + " at " + std::to_string(speed) + " m/s, against a plate");
       tiled_floor f = lay_tiles(1, 0, 0);
@@ -267,12 +272,7 @@ TEST(seam_test, surfaces_that_are_not_flush_hide_nothing) {
       plate.shape = shape::box(vector{0.5, 1, 0.001}).with_friction(0).with_restitution(0);
       f.w.create_body(plate);
       const body_id id = add_slider(f, s, 0, 0, speed);
-      real lowest = 1;
-      for (int i = 0; i * h * speed < 4; ++i) {  // 4 m: still over the floor
-        f.w.step(h);
-        lowest = std::min(lowest, lowest_corner(f.w.at(id)));
-      }
-      EXPECT_GT(lowest, real(-0.003));
+      EXPECT_GT(lowest_over(f, id, 4 / speed), real(-0.003));  // 4 m: still over the floor
     }
   }
 }
