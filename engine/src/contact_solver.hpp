@@ -230,6 +230,8 @@ class contact_solver {
   // The sweeps on batches (contact_batch.hpp, contact_batches.cpp).
   struct batch_group;
   void pack_batches(const world_settings& settings);
+  template <class Visit>
+  void for_each_constraint(int threads, const Visit& visit) const;
   void add_batch_group(const std::array<std::size_t, detail::contact_lanes>& runs, int filled);
   bool batchable(std::size_t run, contact_batching batching) const;
   void solve_block(std::size_t block, const sweep_kind& kind, sweep_result& result);
@@ -359,8 +361,9 @@ class contact_solver {
   std::vector<char> pseudo_pushed_;           // per body: a dynamic body a deep contact pushes
   std::vector<sweep_result> thread_results_;  // one per thread of the contact phase
   // Per block, in two rows used by alternate sweeps, the next of its items
-  // not yet claimed by a thread (solve_contacts); one cache line each.
-  struct alignas(64) block_claim {
+  // not yet claimed by a thread (solve_contacts); two cache lines each, as
+  // Intel's cores fetch lines into their L2 caches in pairs.
+  struct alignas(128) block_claim {
     std::atomic<std::size_t> next{0};
   };
   std::unique_ptr<block_claim[]> claims_;
