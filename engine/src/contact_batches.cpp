@@ -85,8 +85,8 @@ void contact_solver::add_batch_group(const std::array<std::size_t, lanes>& runs,
     const std::size_t begin = colouring_.run_starts[runs[lane]];
     const std::size_t length = colouring_.run_starts[runs[lane] + 1] - begin;
     group.count = std::max(group.count, length);
-    group.body_a[lane] = constraints_[begin].body_a;
-    group.body_b[lane] = constraints_[begin].body_b;
+    group.body_a[lane] = constraints_[begin].place_a;
+    group.body_b[lane] = constraints_[begin].place_b;
   }
   for (std::size_t s = 0; s < group.count; ++s) {
     detail::normal_pack normal;

@@ -167,6 +167,7 @@ void assign_blocks(const std::vector<body>& bodies, int colours, int blocks, int
   for (std::size_t b = 1; b <= bins; ++b) weight[b] += weight[b - 1];
   const std::size_t total = weight.back();
   out.run_blocks.resize(runs);
+  out.body_blocks.assign(bodies.size(), static_cast<std::uint32_t>(blocks));
   for (std::size_t r = 0; r < runs; ++r) {
     // (The sequential group is one block.)
     if (!coloured(r) || total == 0) {
@@ -174,7 +175,14 @@ void assign_blocks(const std::vector<body>& bodies, int colours, int blocks, int
       continue;
     }
     const std::size_t share = weight[out.run_bins[r]] * blocks / total;
-    out.run_blocks[r] = std::min<std::size_t>(share, blocks - 1);
+    const auto block = static_cast<std::uint32_t>(std::min<std::size_t>(share, blocks - 1));
+    out.run_blocks[r] = block;
+    for (const std::size_t x :
+         {out.pairs[out.run_begins[r]].first, out.pairs[out.run_begins[r]].second}) {
+      if (out.moves[x] && out.body_blocks[x] == static_cast<std::uint32_t>(blocks)) {
+        out.body_blocks[x] = block;
+      }
+    }
   }
 }
 

@@ -55,6 +55,10 @@ struct contact_colouring {
   // thread_starts[c * (T + 1) + t] .. thread_starts[c * (T + 1) + t + 1] - 1
   // of colour c. (Empty for one.)
   std::vector<std::size_t> thread_starts;
+  // For T > 1 blocks: per body, the block of the first coloured run (in
+  // contact order) that moves it, or T where none does; the solver keeps
+  // each block's bodies together (contact_solver::place_bodies).
+  std::vector<std::uint32_t> body_blocks;
 
   std::size_t runs() const { return run_starts.size() - 1; }
   std::size_t colours() const { return colour_starts.size() - 1; }

@@ -246,8 +246,10 @@ void contact_solver::build_constraint(const world_settings& settings, const body
   const detail::row_body& row_b = row_bodies_[c.body_b];
   k = constraint{};
   impact = impact_terms{};
-  k.body_a = c.body_a;
-  k.body_b = c.body_b;
+  k.body_a = static_cast<std::uint32_t>(c.body_a);
+  k.body_b = static_cast<std::uint32_t>(c.body_b);
+  k.place_a = place_[c.body_a];
+  k.place_b = place_[c.body_b];
   k.restitution = c.material.restitution;
   k.gap = -c.geometry.depth;
   if (k.gap > 0) k.gap += turning_overshoot(a, b, c, k.gap, settings.contact_margin, h);
@@ -405,8 +407,8 @@ std::optional<real> contact_solver::impact_speed(std::size_t index, real thresho
   timed_now = false;
   if (!(k.restitution > 0) || !(k.mass_inverse > 0)) return std::nullopt;
   const impact_terms& record = impacts_[index];
-  const solver_body& a = impact_bodies_[k.body_a];
-  const solver_body& b = impact_bodies_[k.body_b];
+  const solver_body& a = impact_bodies_[k.place_a];
+  const solver_body& b = impact_bodies_[k.place_b];
   const bool untouched = !impacted_[k.body_a] && !impacted_[k.body_b];
   real speed;
   if (untouched) {
@@ -457,8 +459,8 @@ void contact_solver::bounce(std::size_t index, real speed, bool timed_now) {
 
 void contact_solver::apply_impact_normal(std::size_t index, real j) {
   const constraint& k = constraints_[index];
-  apply_normal(index, impact_bodies_[k.body_a], impact_bodies_[k.body_b], j);
-  apply_normal(index, solver_bodies_[k.body_a], solver_bodies_[k.body_b], j);
+  apply_normal(index, impact_bodies_[k.place_a], impact_bodies_[k.place_b], j);
+  apply_normal(index, solver_bodies_[k.place_a], solver_bodies_[k.place_b], j);
 }
 
 // What follows a contact's normal impulse j of the impact phase (applied):
@@ -466,8 +468,8 @@ void contact_solver::apply_impact_normal(std::size_t index, real j) {
 void contact_solver::finish_impact(std::size_t index, real j, bool timed_now) {
   constraint& k = constraints_[index];
   impact_terms& record = impacts_[index];
-  solver_body& a = impact_bodies_[k.body_a];
-  solver_body& b = impact_bodies_[k.body_b];
+  solver_body& a = impact_bodies_[k.place_a];
+  solver_body& b = impact_bodies_[k.place_b];
   record.normal += j;
   k.struck = true;
   vector linear_impulse = j * k.normal;
@@ -478,7 +480,7 @@ void contact_solver::finish_impact(std::size_t index, real j, bool timed_now) {
         a, b, f.impact_tangent, t.friction_coefficient * record.normal);
     const std::array<real, 2> step{total[0] - f.impact_tangent[0], total[1] - f.impact_tangent[1]};
     t.friction.apply(a, b, step);
-    t.friction.apply(solver_bodies_[k.body_a], solver_bodies_[k.body_b], step);
+    t.friction.apply(solver_bodies_[k.place_a], solver_bodies_[k.place_b], step);
     f.impact_tangent = total;
     linear_impulse = linear_impulse + step[0] * f.frame[0] + step[1] * f.frame[1];
   }
@@ -511,7 +513,7 @@ bool contact_solver::impact_run(std::size_t first, std::size_t end, real thresho
       // of the speed now (for a timed bounce, `speed` is the one at its
       // moment, which gravity made faster than the step's start).
       const constraint& k = constraints_[index];
-      const real now = normal_speed(index, impact_bodies_[k.body_a], impact_bodies_[k.body_b]);
+      const real now = normal_speed(index, impact_bodies_[k.place_a], impact_bodies_[k.place_b]);
       const real target = now + (1 + k.restitution) * *speed;
       run_bounces_.push_back({index, *speed, target, 0, timed_now});
       largest_target = std::max(largest_target, (1 + k.restitution) * *speed);
@@ -524,8 +526,8 @@ bool contact_solver::impact_run(std::size_t first, std::size_t end, real thresho
     return true;
   }
   const constraint& first_k = constraints_[run_bounces_[0].index];
-  const solver_body& a = impact_bodies_[first_k.body_a];
-  const solver_body& b = impact_bodies_[first_k.body_b];
+  const solver_body& a = impact_bodies_[first_k.place_a];
+  const solver_body& b = impact_bodies_[first_k.place_b];
   // (Converged when no impulse changes any point's speed by more than
   // 1e-12 of the speeds at stake; 64 sweeps at most.)
   for (int sweep = 0; sweep < 64; ++sweep) {
@@ -640,8 +642,8 @@ void contact_solver::warm_start(const std::vector<contact>& contacts,
     const std::size_t s = slot_[i];
     constraint& k = constraints_[s];
     if (!(k.mass_inverse > 0) || k.waits) continue;
-    solver_body& a = solver_bodies_[k.body_a];
-    solver_body& b = solver_bodies_[k.body_b];
+    solver_body& a = solver_bodies_[k.place_a];
+    solver_body& b = solver_bodies_[k.place_b];
     const contact_impulse& resting = old->resting;
     k.accumulated = resting.normal;
     apply_normal(s, a, b, k.accumulated);
@@ -706,7 +708,7 @@ void contact_solver::solve_contacts(const world_settings& settings) {
     run_states_.resize(runs);
     for (std::size_t run = 0; run < runs; ++run) {
       const constraint& first = constraints_[colouring_.run_starts[run]];
-      run_states_[run] = {0, first.body_a, first.body_b};
+      run_states_[run] = {0, first.place_a, first.place_b};
     }
     body_disturbed_.assign(solver_bodies_.size(), 0);
     body_drift_.assign(solver_bodies_.size(), 0);
@@ -837,8 +839,8 @@ void contact_solver::solve_plain_contacts(std::size_t first, std::size_t end,
     constraint& k = constraints_[s];
     if (!(k.mass_inverse > 0) || (k.waits && !k.struck)) continue;
     any = true;
-    solver_body& a = solver_bodies_[k.body_a];
-    solver_body& b = solver_bodies_[k.body_b];
+    solver_body& a = solver_bodies_[k.place_a];
+    solver_body& b = solver_bodies_[k.place_b];
     const real j = normal_impulse(k, nullptr, a, b, kind.last_of_all, largest_change);
     // (Most speculative contacts hold no impulse and get none.)
     if (j != 0) detail::row_apply(k.normal, nullptr, a, b, j);
@@ -859,8 +861,8 @@ GAPHYS_ALWAYS_INLINE void contact_solver::solve_contact(std::size_t s, const swe
   real& largest_change = result.largest_change;
   const bool last = k.turns ? kind.last_of_turning : kind.last_of_all;
   const detail::row_arms* arms = normal_arms(s);
-  solver_body& a = solver_bodies_[k.body_a];
-  solver_body& b = solver_bodies_[k.body_b];
+  solver_body& a = solver_bodies_[k.place_a];
+  solver_body& b = solver_bodies_[k.place_b];
   const real j = normal_impulse(k, arms, a, b, last, largest_change);
   surface_terms* rubbing = k.surface < 0 ? nullptr : &surfaces_[k.surface];
   // Nothing pushes and nothing is held: nothing to rub (a speculative contact).
@@ -914,77 +916,6 @@ void contact_solver::store_impulses(std::vector<contact>& contacts, int threads)
     total.tangent = resting.tangent + f.impact_tangent[0] * f.frame[0] + f.impact_tangent[1] * f.frame[1];
     total.angular = resting.angular;
   });
-}
-
-void contact_solver::mark_bodies_in_contact(const std::vector<body>& bodies,
-                                            const std::vector<contact>& contacts) {
-  row_bodies_.resize(bodies.size());
-  shape_summaries_.resize(bodies.size());
-  solver_bodies_.resize(bodies.size());
-  impact_bodies_.resize(bodies.size());
-  in_contact_.assign(bodies.size(), 0);
-  for (const contact& c : contacts) in_contact_[c.body_a] = in_contact_[c.body_b] = 1;
-}
-
-// What the rows read of a body in contact (row_body), and what the
-// constraints read of its shapes, once; the solver's copies of its
-// velocities.
-void contact_solver::prepare_body(std::size_t i, const std::vector<body>& bodies,
-                                  const std::vector<body_velocity>& start) {
-  const body& b = bodies[i];
-  if (in_contact_[i]) {
-    row_bodies_[i] = detail::row_body::of(b);
-    shape_summaries_[i] = summarize(b);
-  }
-  solver_bodies_[i] = {b.velocity_, b.angular_velocity_, b.inverse_mass_};
-  impact_bodies_[i] = {start[i].linear, start[i].angular, b.inverse_mass_};
-}
-
-void contact_solver::prepare_bodies(const std::vector<body>& bodies,
-                                    const std::vector<body_velocity>& start,
-                                    const std::vector<contact>& contacts,
-                                    const std::vector<contact>& previous, int threads) {
-  mark_bodies_in_contact(bodies, contacts);
-  detail::parallel_for(threads, bodies.size(), 2048,
-                       [&](std::size_t i) { prepare_body(i, bodies, start); });
-  const int shares = detail::threads_for(threads, contacts.size(), 2048);
-  cut_for_matches(contacts, previous, shares);
-#pragma omp parallel for num_threads(shares) schedule(static, 1) if (shares > 1)
-  for (int share = 0; share < shares; ++share) match_share(share, bodies, contacts, previous);
-}
-
-// On sweep_threads_ threads: one colours the contacts (its greedy pass and
-// its sort cannot be shared out) while the others prepare the bodies and
-// the warm start's matches in pieces, which the colouring thread joins when
-// it is done. (As two OpenMP sections, the preparation took 0.8-1.15 ms of
-// a 10,000-sphere step and the colouring 0.55-0.66 ms: one thread waited
-// the difference, and on more cores the others did nothing.) Every piece
-// writes only its own bodies' or contacts' data.
-void contact_solver::colour_beside_preparation(const std::vector<body>& bodies,
-                                               const std::vector<body_velocity>& start,
-                                               const std::vector<contact>& contacts,
-                                               const std::vector<contact>& previous) {
-  const auto team = static_cast<std::size_t>(sweep_threads_);
-  const std::size_t body_pieces = 4 * team;
-  const int match_shares = detail::threads_for(2 * sweep_threads_, contacts.size(), 2048);
-#pragma omp parallel num_threads(sweep_threads_)
-#pragma omp single
-  {
-#pragma omp task
-    detail::colour_contacts(bodies, contacts, colouring_, 1, sweep_threads_);
-    mark_bodies_in_contact(bodies, contacts);
-    cut_for_matches(contacts, previous, match_shares);
-    for (int share = 0; share < match_shares; ++share) {
-#pragma omp task
-      match_share(share, bodies, contacts, previous);
-    }
-    for (std::size_t piece = 0; piece < body_pieces; ++piece) {
-      const std::size_t begin = bodies.size() * piece / body_pieces;
-      const std::size_t end = bodies.size() * (piece + 1) / body_pieces;
-#pragma omp task
-      for (std::size_t i = begin; i < end; ++i) prepare_body(i, bodies, start);
-    }
-  }
 }
 
 // Visits each contact i with its slot s. On one thread of sweeps, in
@@ -1087,8 +1018,9 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   detail::parallel_for(settings.threads, bodies.size(), 2048, [&](std::size_t i) {
     body& b = bodies[i];
     if (!b.is_dynamic()) return;  // contacts never change a static or kinematic body
-    b.velocity_ = solver_bodies_[i].velocity;
-    b.angular_velocity_ = solver_bodies_[i].angular_velocity;
+    const solver_body& solved = solver_bodies_[place_[i]];
+    b.velocity_ = solved.velocity;
+    b.angular_velocity_ = solved.angular_velocity;
   });
 }
 
@@ -1191,8 +1123,8 @@ void contact_solver::correct_turning(const world_settings& settings, std::vector
     const constraint& k = constraints_[s];
     if (!k.turns || impacts_[s].timed || !(k.mass_inverse > 0)) continue;
     const contact& c = contacts[i];
-    const real depth =
-        c.geometry.depth - h * normal_speed(s, solver_bodies_[k.body_a], solver_bodies_[k.body_b]);
+    const real depth = c.geometry.depth -
+                       h * normal_speed(s, solver_bodies_[k.place_a], solver_bodies_[k.place_b]);
     const real excess = depth - settings.linear_slop;
     if (c.geometry.depth >= 0 && depth >= 0 && excess > 0) {
       pseudo_targets_[i] = settings.position_correction * excess / h;

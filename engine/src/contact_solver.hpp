@@ -74,7 +74,8 @@ class contact_solver {
   // 200 bytes a constraint, the sweeps over 10,000 spheres streamed twice
   // the memory.
   struct constraint {
-    std::size_t body_a, body_b;
+    std::uint32_t body_a, body_b;    // the bodies' indices
+    std::uint32_t place_a, place_b;  // their velocities' places (place_)
     vector normal;           // n, from B to A: the normal row's direction
     real mass_inverse = 0;   // the normal row's speed change per unit impulse; 0: left out
     real normal_mass = 0;    // 1 / mass_inverse (0 when left out)
@@ -206,7 +207,10 @@ class contact_solver {
   void mark_bodies_in_contact(const std::vector<body>& bodies,
                               const std::vector<contact>& contacts);
   void prepare_body(std::size_t i, const std::vector<body>& bodies,
-                    const std::vector<body_velocity>& start);
+                    const std::vector<body_velocity>& start, bool velocities);
+  void copy_velocities(std::size_t i, const std::vector<body>& bodies,
+                       const std::vector<body_velocity>& start);
+  void place_bodies(const std::vector<body>& bodies, const std::vector<body_velocity>& start);
   void prepare_bodies(const std::vector<body>& bodies, const std::vector<body_velocity>& start,
                       const std::vector<contact>& contacts, const std::vector<contact>& previous,
                       int threads);
@@ -341,6 +345,10 @@ class contact_solver {
   std::vector<surface_frame> frames_;        // one per surface
   std::vector<resistance_terms> resistances_;  // for the surfaces that have them
   std::vector<int> contacts_per_body_;
+  // Body i's velocities are solver_bodies_[place_[i]] and
+  // impact_bodies_[place_[i]] (place_bodies); body_at_ is the inverse.
+  std::vector<std::uint32_t> place_;
+  std::vector<std::size_t> body_at_, owner_starts_;
   std::vector<solver_body> solver_bodies_;  // the velocities after the step's forces, as solved
   // Per body, for the bodies in contact (in_contact_): what building the
   // rows reads (row_body), and what building a constraint reads of its
@@ -377,7 +385,8 @@ class contact_solver {
   struct batch_group {
     static constexpr std::size_t no_body = ~std::size_t{0}, no_run = ~std::size_t{0};
     std::array<std::size_t, detail::contact_lanes> runs;            // per lane, or no_run
-    std::array<std::size_t, detail::contact_lanes> body_a, body_b;  // per lane, or no_body
+    // Per lane, its bodies' places (place_), or no_body.
+    std::array<std::size_t, detail::contact_lanes> body_a, body_b;
     std::size_t first = 0, count = 0;  // its contacts: normal_packs_[first .. first + count)
     bool angular = false;              // some lane's impulses turn a body
   };
@@ -392,9 +401,9 @@ class contact_solver {
   // Per normal pack, each lane's constraint (index into constraints_), or -1.
   std::vector<std::array<std::ptrdiff_t, detail::contact_lanes>> pack_slots_;
   int sweep_threads_ = 1;  // the contact phase's threads in this step
-  // Per run, its bodies and the stamp of its last solve if it settled
-  // there, else 0 (kept apart from the constraints: a settled run is passed
-  // by without reading them); per body, the stamp of the run solve after
+  // Per run, its bodies' places and the stamp of its last solve if it
+  // settled there, else 0 (kept apart from the constraints: a settled run is
+  // passed by without reading them); per body (by place), the stamp of the run solve after
   // which its changes passed settle_tolerance_ (settled_run, record_run).
   // The stamps of sweep s are s * runs + run + 1: a body's runs are solved
   // in that order.

@@ -1,0 +1,133 @@
+// The contact solver's copies of the bodies in contact (contact_solver.hpp):
+// what its rows read of them, and their velocities, placed where the
+// sweeps' threads find their own bodies side by side.
+#include <omp.h>
+
+#include <numeric>
+
+#include "contact_solver.hpp"
+#include "thread_count.hpp"
+
+namespace gaphys {
+
+void contact_solver::mark_bodies_in_contact(const std::vector<body>& bodies,
+                                            const std::vector<contact>& contacts) {
+  row_bodies_.resize(bodies.size());
+  shape_summaries_.resize(bodies.size());
+  solver_bodies_.resize(bodies.size());
+  impact_bodies_.resize(bodies.size());
+  place_.resize(bodies.size());
+  in_contact_.assign(bodies.size(), 0);
+  for (const contact& c : contacts) in_contact_[c.body_a] = in_contact_[c.body_b] = 1;
+}
+
+// What the rows read of a body in contact (row_body), and what the
+// constraints read of its shapes, once; the solver's copies of its
+// velocities where it is its own place (one sweep thread).
+void contact_solver::prepare_body(std::size_t i, const std::vector<body>& bodies,
+                                  const std::vector<body_velocity>& start, bool velocities) {
+  const body& b = bodies[i];
+  if (in_contact_[i]) {
+    row_bodies_[i] = detail::row_body::of(b);
+    shape_summaries_[i] = summarize(b);
+  }
+  if (velocities) copy_velocities(i, bodies, start);
+}
+
+void contact_solver::copy_velocities(std::size_t i, const std::vector<body>& bodies,
+                                     const std::vector<body_velocity>& start) {
+  const body& b = bodies[i];
+  solver_bodies_[place_[i]] = {b.velocity_, b.angular_velocity_, b.inverse_mass_};
+  impact_bodies_[place_[i]] = {start[i].linear, start[i].angular, b.inverse_mass_};
+}
+
+// On several sweep threads, where each body's velocities go: first the
+// bodies thread 0's blocks move (contact_colouring.hpp: its slab of space),
+// in body order, then thread 1's, and so on, then the rest; each thread
+// then copies its own in. Placed in body order, the two threads'
+// bodies alternated along solver_bodies_, and a core fetches the lines
+// next to those it misses: each thread's updates took lines of the other's
+// bodies away from it, and 4,000 spheres' sweeps took each of two threads
+// as long as one thread took for all (2026-12-06, a 2-core Xeon).
+void contact_solver::place_bodies(const std::vector<body>& bodies,
+                                  const std::vector<body_velocity>& start) {
+  const std::size_t count = bodies.size();
+  const auto threads = static_cast<std::size_t>(sweep_threads_);
+  const std::vector<std::uint32_t>& owner = colouring_.body_blocks;  // `threads`: no run
+  std::vector<std::size_t>& starts = owner_starts_;
+  starts.assign(threads + 2, 0);
+  for (std::size_t i = 0; i < count; ++i) ++starts[owner[i] + 1];
+  for (std::size_t t = 0; t <= threads; ++t) starts[t + 1] += starts[t];
+  body_at_.resize(count);
+  std::vector<std::size_t> next(starts.begin(), starts.end() - 1);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t p = next[owner[i]]++;
+    place_[i] = static_cast<std::uint32_t>(p);
+    body_at_[p] = i;
+  }
+#pragma omp parallel num_threads(sweep_threads_)
+  {
+    const auto thread = static_cast<std::size_t>(omp_get_thread_num());
+    const auto team = static_cast<std::size_t>(omp_get_num_threads());
+    for (std::size_t t = thread; t < threads; t += team) {
+      for (std::size_t p = starts[t]; p < starts[t + 1]; ++p)
+        copy_velocities(body_at_[p], bodies, start);
+    }
+    // (The bodies no thread's runs move, in equal shares.)
+    const std::size_t rest = starts[threads + 1] - starts[threads];
+    const std::size_t first = starts[threads] + rest * thread / team;
+    const std::size_t end = starts[threads] + rest * (thread + 1) / team;
+    for (std::size_t p = first; p < end; ++p) copy_velocities(body_at_[p], bodies, start);
+  }
+}
+
+void contact_solver::prepare_bodies(const std::vector<body>& bodies,
+                                    const std::vector<body_velocity>& start,
+                                    const std::vector<contact>& contacts,
+                                    const std::vector<contact>& previous, int threads) {
+  mark_bodies_in_contact(bodies, contacts);
+  std::iota(place_.begin(), place_.end(), std::uint32_t{0});
+  detail::parallel_for(threads, bodies.size(), 2048,
+                       [&](std::size_t i) { prepare_body(i, bodies, start, true); });
+  const int shares = detail::threads_for(threads, contacts.size(), 2048);
+  cut_for_matches(contacts, previous, shares);
+#pragma omp parallel for num_threads(shares) schedule(static, 1) if (shares > 1)
+  for (int share = 0; share < shares; ++share) match_share(share, bodies, contacts, previous);
+}
+
+// On sweep_threads_ threads: one colours the contacts (its greedy pass and
+// its sort cannot be shared out) while the others prepare the bodies and
+// the warm start's matches in pieces, which the colouring thread joins when
+// it is done. (As two OpenMP sections, the preparation took 0.8-1.15 ms of
+// a 10,000-sphere step and the colouring 0.55-0.66 ms: one thread waited
+// the difference, and on more cores the others did nothing.) Every piece
+// writes only its own bodies' or contacts' data.
+void contact_solver::colour_beside_preparation(const std::vector<body>& bodies,
+                                               const std::vector<body_velocity>& start,
+                                               const std::vector<contact>& contacts,
+                                               const std::vector<contact>& previous) {
+  const auto team = static_cast<std::size_t>(sweep_threads_);
+  const std::size_t body_pieces = 4 * team;
+  const int match_shares = detail::threads_for(2 * sweep_threads_, contacts.size(), 2048);
+#pragma omp parallel num_threads(sweep_threads_)
+#pragma omp single
+  {
+#pragma omp task
+    detail::colour_contacts(bodies, contacts, colouring_, 1, sweep_threads_);
+    mark_bodies_in_contact(bodies, contacts);
+    cut_for_matches(contacts, previous, match_shares);
+    for (int share = 0; share < match_shares; ++share) {
+#pragma omp task
+      match_share(share, bodies, contacts, previous);
+    }
+    for (std::size_t piece = 0; piece < body_pieces; ++piece) {
+      const std::size_t begin = bodies.size() * piece / body_pieces;
+      const std::size_t end = bodies.size() * (piece + 1) / body_pieces;
+#pragma omp task
+      for (std::size_t i = begin; i < end; ++i) prepare_body(i, bodies, start, false);
+    }
+  }
+  place_bodies(bodies, start);
+}
+
+}  // namespace gaphys
