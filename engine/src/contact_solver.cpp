@@ -366,32 +366,21 @@ static bool disparate(const body& a, const body& b) {
   return lighter > 2 * heavier;
 }
 
+// How many contacts each body is in (set_relaxation reads those of the
+// bodies with mass).
+void contact_solver::count_contacts(std::size_t bodies, const std::vector<contact>& contacts) {
+  contacts_per_body_.assign(bodies, 0);
+  for (const contact& c : contacts) ++contacts_per_body_[c.body_a], ++contacts_per_body_[c.body_b];
+}
+
 void contact_solver::set_relaxation(const world_settings& settings, const std::vector<body>& bodies) {
-  contacts_per_body_.assign(bodies.size(), 0);
-  // (colour_contacts read which bodies have mass: the dynamic ones. The
-  // counts are the same whatever order the threads add them in.)
-  const int threads = detail::threads_for(settings.threads, constraints_.size(), 4096);
-  if (threads == 1) {
-    for (const constraint& k : constraints_) {
-      if (colouring_.moves[k.body_a]) ++contacts_per_body_[k.body_a];
-      if (colouring_.moves[k.body_b]) ++contacts_per_body_[k.body_b];
-    }
-  } else {
-    const auto count = static_cast<std::ptrdiff_t>(constraints_.size());
-#pragma omp parallel for num_threads(threads) schedule(static)
-    for (std::ptrdiff_t i = 0; i < count; ++i) {
-      const constraint& k = constraints_[static_cast<std::size_t>(i)];
-      for (const std::size_t x : {k.body_a, k.body_b}) {
-        if (!colouring_.moves[x]) continue;
-#pragma omp atomic
-        ++contacts_per_body_[x];
-      }
-    }
-  }
-  detail::parallel_for(settings.threads, constraints_.size(), 4096, [&](std::size_t i) {
-    constraint& k = constraints_[i];
+  const auto shares_body = [&](std::uint32_t body, std::uint32_t place) {
+    return solver_bodies_[place].inverse_mass > 0 && contacts_per_body_[body] > 1;
+  };
+  for_each_constraint(settings.threads, [&](std::size_t, std::size_t s) {
+    constraint& k = constraints_[s];
     if (disparate(bodies[k.body_a], bodies[k.body_b])) return;
-    if (contacts_per_body_[k.body_a] > 1 || contacts_per_body_[k.body_b] > 1) {
+    if (shares_body(k.body_a, k.place_a) || shares_body(k.body_b, k.place_b)) {
       k.relaxation = settings.solver_relaxation;
     }
   });
@@ -973,10 +962,12 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   // (One after the other, each on the threads, the colouring left the
   // second thread idle for half a millisecond of a 10,000-sphere step.)
   if (sweep_threads_ > 1) {
-    colour_beside_preparation(bodies, start, contacts, previous);
+    colour_beside_preparation(settings, bodies, start, contacts, previous);
   } else {
     detail::colour_contacts(bodies, contacts, colouring_, settings.threads, sweep_threads_);
     prepare_bodies(bodies, start, contacts, previous, settings.threads);
+    find_supports(settings, bodies, start, contacts);
+    count_contacts(bodies.size(), contacts);
   }
   slot_.resize(count);
   terms_at_.resize(count);
@@ -986,7 +977,6 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
     const contact& c = contacts[i];
     terms_at_[s] = terms_of(bodies[c.body_a], bodies[c.body_b], c);
   });
-  find_supports(settings, bodies, start, contacts);
   term_counts total;
   for (term_counts& at : terms_at_) {
     const term_counts own = at;

@@ -183,6 +183,7 @@ class contact_solver {
   void find_supports(const world_settings& settings, const std::vector<body>& bodies,
                      const std::vector<body_velocity>& start, const std::vector<contact>& contacts);
   std::vector<std::array<std::size_t, 2>> supports_;
+  void count_contacts(std::size_t bodies, const std::vector<contact>& contacts);
   void set_relaxation(const world_settings& settings, const std::vector<body>& bodies);
   void resolve_impacts(const world_settings& settings, real h);
   bool impact(std::size_t index, real threshold, real h);
@@ -214,7 +215,7 @@ class contact_solver {
   void prepare_bodies(const std::vector<body>& bodies, const std::vector<body_velocity>& start,
                       const std::vector<contact>& contacts, const std::vector<contact>& previous,
                       int threads);
-  void colour_beside_preparation(const std::vector<body>& bodies,
+  void colour_beside_preparation(const world_settings& settings, const std::vector<body>& bodies,
                                  const std::vector<body_velocity>& start,
                                  const std::vector<contact>& contacts,
                                  const std::vector<contact>& previous);

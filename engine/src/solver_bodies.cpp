@@ -96,13 +96,14 @@ void contact_solver::prepare_bodies(const std::vector<body>& bodies,
 }
 
 // On sweep_threads_ threads: one colours the contacts (its greedy pass and
-// its sort cannot be shared out) while the others prepare the bodies and
-// the warm start's matches in pieces, which the colouring thread joins when
-// it is done. (As two OpenMP sections, the preparation took 0.8-1.15 ms of
-// a 10,000-sphere step and the colouring 0.55-0.66 ms: one thread waited
-// the difference, and on more cores the others did nothing.) Every piece
-// writes only its own bodies' or contacts' data.
-void contact_solver::colour_beside_preparation(const std::vector<body>& bodies,
+// its sort cannot be shared out) while the others prepare the bodies, the
+// warm start's matches, the bodies' supports and their counts of contacts
+// in pieces, which the colouring thread joins when it is done. (As two OpenMP sections, the
+// preparation took 0.8-1.15 ms of a 10,000-sphere step and the colouring 0.55-0.66 ms: one thread
+// waited the difference, and on more cores the others did nothing.) Every piece writes only its own
+// bodies' or contacts' data.
+void contact_solver::colour_beside_preparation(const world_settings& settings,
+                                               const std::vector<body>& bodies,
                                                const std::vector<body_velocity>& start,
                                                const std::vector<contact>& contacts,
                                                const std::vector<contact>& previous) {
@@ -114,6 +115,10 @@ void contact_solver::colour_beside_preparation(const std::vector<body>& bodies,
   {
 #pragma omp task
     detail::colour_contacts(bodies, contacts, colouring_, 1, sweep_threads_);
+#pragma omp task
+    find_supports(settings, bodies, start, contacts);
+#pragma omp task
+    count_contacts(bodies.size(), contacts);
     mark_bodies_in_contact(bodies, contacts);
     cut_for_matches(contacts, previous, match_shares);
     for (int share = 0; share < match_shares; ++share) {
