@@ -1,6 +1,7 @@
 #include "contact_events.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <utility>
 
@@ -62,12 +63,12 @@ void merge_events(const std::vector<contact>& previous, std::size_t i, std::size
 
 void find_events(const std::vector<contact>& previous, const std::vector<contact>& current,
                  contact_events& events, int threads) {
-  events.began.clear();
-  events.persisted.clear();
-  events.ended.clear();
   // (A few thousand contacts per share: a pair's summary is a few tens of ns.)
   const int shares = threads_for(threads, previous.size() + current.size(), 4096);
   if (shares == 1) {
+    events.began.clear();
+    events.persisted.clear();
+    events.ended.clear();
     merge_events(previous, 0, previous.size(), current, 0, current.size(), events);
     return;
   }
@@ -88,10 +89,29 @@ void find_events(const std::vector<contact>& previous, const std::vector<contact
     merge_events(previous, cuts.old[s], cuts.old[s + 1], current, cuts.now[s], cuts.now[s + 1],
                  part);
   }
-  for (const contact_events& part : parts) {
-    events.began.insert(events.began.end(), part.began.begin(), part.began.end());
-    events.persisted.insert(events.persisted.end(), part.persisted.begin(), part.persisted.end());
-    events.ended.insert(events.ended.end(), part.ended.begin(), part.ended.end());
+  // The join: each part copied to its place by the thread that made it. (A
+  // step of 10,000 balls has as many events: copied by one thread, the
+  // events took 0.60 ms of that step on two threads, against 0.50-0.53.)
+  // The lists are resized, not cleared: only what they lack is constructed.
+  using list = std::vector<contact_event> contact_events::*;
+  constexpr std::array<list, 3> lists{&contact_events::began, &contact_events::persisted,
+                                      &contact_events::ended};
+  std::array<std::vector<std::size_t>, 3> starts;
+  for (std::size_t l = 0; l < lists.size(); ++l) {
+    starts[l].assign(parts.size() + 1, 0);
+    for (std::size_t s = 0; s < parts.size(); ++s) {
+      starts[l][s + 1] = starts[l][s] + (parts[s].*lists[l]).size();
+    }
+    (events.*lists[l]).resize(starts[l].back());
+  }
+#pragma omp parallel for num_threads(shares) schedule(static, 1)
+  for (int s = 0; s < shares; ++s) {
+    const auto at = static_cast<std::size_t>(s);
+    for (std::size_t l = 0; l < lists.size(); ++l) {
+      const std::vector<contact_event>& part = parts[at].*lists[l];
+      std::copy(part.begin(), part.end(),
+                (events.*lists[l]).begin() + static_cast<std::ptrdiff_t>(starts[l][at]));
+    }
   }
 }
 
