@@ -139,7 +139,8 @@ bool hidden_by(const placed_shape& s, const vector& p, const vector& n, const pl
 
 void drop_hidden_contacts(const placed_shape* placed, const std::size_t* first_shape,
                           const std::vector<unsigned char>& is_static, real slop,
-                          std::vector<contact>& contacts, hidden_face_lists& lists) {
+                          const std::vector<std::size_t>& on_static, std::vector<contact>& contacts,
+                          hidden_face_lists& lists) {
   // Which body is the moving one of a contact with a static shape, and that
   // shape's index in `placed`; none for other contacts.
   struct sides {
@@ -171,8 +172,8 @@ void drop_hidden_contacts(const placed_shape* placed, const std::size_t* first_s
   if (first.size() < is_static.size()) first.resize(is_static.size(), 0);
   lists.touched.clear();
   bool any = false;
-  for (const contact& c : contacts) {
-    const std::optional<sides> at = sides_of(c);
+  for (const std::size_t i : on_static) {
+    const std::optional<sides> at = sides_of(contacts[i]);
     if (!at) continue;
     std::size_t& seen = first[at->moving];
     if (seen == 0) {
@@ -186,7 +187,7 @@ void drop_hidden_contacts(const placed_shape* placed, const std::size_t* first_s
   if (any) {
     // Each such body's contacts with static shapes, together, in contact order.
     lists.entries.clear();
-    for (std::size_t i = 0; i < contacts.size(); ++i) {
+    for (const std::size_t i : on_static) {
       const std::optional<sides> at = sides_of(contacts[i]);
       if (at && first[at->moving] == several) lists.entries.emplace_back(at->moving, i);
     }

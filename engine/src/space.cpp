@@ -266,8 +266,8 @@ void space::find_contacts(const std::vector<body>& bodies, const std::vector<bod
   place_shapes(bodies, pairs, threads);
   meet_all(bodies, pairs, contacts, lookahead, rules, margin, sensors, threads);
   if (slop > 0) {
-    detail::drop_hidden_contacts(placed_.data(), first_shape_.data(), static_, slop, contacts,
-                                 hidden_);
+    detail::drop_hidden_contacts(placed_.data(), first_shape_.data(), static_, slop, on_static_,
+                                 contacts, hidden_);
   }
 }
 
@@ -278,10 +278,11 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
   if (sensors) sensors->clear();
   // (A few hundred pairs per thread: a box pair takes about a microsecond.)
   const int shares = detail::threads_for(threads, pairs.size(), 256);
+  on_static_.clear();
   if (shares == 1) {
     contacts.clear();
     meet_pairs(bodies, pairs.data(), pairs.data() + pairs.size(), contacts, lookahead, rules,
-               margin, sensors);
+               margin, sensors, on_static_);
     return;
   }
   // The pairs in contiguous shares, four per thread, taken by the threads as
@@ -290,6 +291,7 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
   // thread makes.
   const int share_count = 4 * shares;
   thread_contacts_.resize(static_cast<std::size_t>(share_count));
+  share_on_static_.resize(static_cast<std::size_t>(share_count));
   thread_sensors_.resize(static_cast<std::size_t>(share_count));
 #pragma omp parallel for num_threads(shares) schedule(dynamic, 1)
   for (int share = 0; share < share_count; ++share) {
@@ -298,8 +300,9 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
     const body_pair* end = pairs.data() + pairs.size() * (at + 1) / share_count;
     thread_contacts_[at].clear();
     thread_sensors_[at].clear();
+    share_on_static_[at].clear();
     meet_pairs(bodies, first, end, thread_contacts_[at], lookahead, rules, margin,
-               sensors ? &thread_sensors_[at] : nullptr);
+               sensors ? &thread_sensors_[at] : nullptr, share_on_static_[at]);
   }
   // The join, each share copied to its place on the threads. (The list
   // comes from two steps ago, about as long: resized, not cleared, it
@@ -317,6 +320,9 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
     const auto at = static_cast<std::size_t>(share);
     std::copy(thread_contacts_[at].begin(), thread_contacts_[at].end(),
               contacts.begin() + static_cast<std::ptrdiff_t>(share_starts_[at]));
+  }
+  for (std::size_t at = 0; at < share_on_static_.size(); ++at) {
+    for (const std::size_t i : share_on_static_[at]) on_static_.push_back(share_starts_[at] + i);
   }
   if (sensors) {
     for (const std::vector<sensor_overlap>& part : thread_sensors_) {
@@ -369,7 +375,8 @@ static GAPHYS_ALWAYS_INLINE contact contact_of(std::size_t a, std::size_t b, std
 void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
                        const body_pair* end, std::vector<contact>& contacts, real lookahead,
                        const material_combine_rules& rules, real margin,
-                       std::vector<sensor_overlap>* sensors) const {
+                       std::vector<sensor_overlap>* sensors,
+                       std::vector<std::size_t>& on_static) const {
   // The meets of single spheres and planes first, their algebra on batches
   // of pairs; then every pair in order, those from their terms.
   constexpr std::size_t none = ~std::size_t{0};
@@ -399,8 +406,15 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
   detail::batched_terms(round_pairs.data(), round_pairs.size(), terms.data());
 
   contact_manifold manifold;
+  // (Which contacts have a static body on one side only, for the seams'
+  // pass: listed here, it reads those instead of the whole list again.)
+  const auto add = [&](bool across, const contact& c) {
+    if (across) on_static.push_back(contacts.size());
+    contacts.push_back(c);
+  };
   for (const body_pair* pair = first; pair != end; ++pair) {
     const auto [a, b] = *pair;
+    const bool across = static_[a] != static_[b];
     const std::size_t slot = round_slot[static_cast<std::size_t>(pair - first)];
     if (slot != none) {
       // One shape each, met on batches: from the placed shapes and the facts alone.
@@ -408,8 +422,8 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
       const single_shape_facts& facts_b = singles_[b];
       if (contact_from_terms(placed_[first_shape_[a]], placed_[first_shape_[b]], terms[slot],
                              lookahead, facts_a.velocity, facts_b.velocity, manifold)) {
-        contacts.push_back(contact_of(a, b, 0, 0, manifold.points[0],
-                                      combine(rules, facts_a.surface, facts_b.surface)));
+        add(across, contact_of(a, b, 0, 0, manifold.points[0],
+                               combine(rules, facts_a.surface, facts_b.surface)));
       }
       continue;
     }
@@ -433,7 +447,7 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
         if (what != met::contacts) continue;
         const material m = combine(rules, attached_a.shape.material(), attached_b.shape.material());
         for (int k = 0; k < manifold.count; ++k) {
-          contacts.push_back(contact_of(a, b, i, j, manifold.points[k], m));
+          add(across, contact_of(a, b, i, j, manifold.points[k], m));
         }
       }
     }

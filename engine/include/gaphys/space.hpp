@@ -92,7 +92,7 @@ class space {
   void meet_pairs(const std::vector<body>& bodies, const body_pair* first, const body_pair* end,
                   std::vector<contact>& contacts, real lookahead,
                   const material_combine_rules& rules, real margin,
-                  std::vector<sensor_overlap>* sensors) const;
+                  std::vector<sensor_overlap>* sensors, std::vector<std::size_t>& on_static) const;
 
   broad_phase_kind kind_;
   detail::uniform_grid grid_;
@@ -120,6 +120,10 @@ class space {
   std::vector<std::vector<contact>> thread_contacts_;
   std::vector<std::vector<sensor_overlap>> thread_sensors_;
   std::vector<std::size_t> share_starts_;  // where each share's contacts go in the list
+  // The contacts between a static body and another, in order (meet_pairs
+  // lists them), and each share's (by their places in its list).
+  std::vector<std::size_t> on_static_;
+  std::vector<std::vector<std::size_t>> share_on_static_;
 };
 
 }  // namespace gaphys

@@ -60,9 +60,11 @@ struct hidden_face_lists {
 // another static shape the same body has a contact with; never one deeper
 // than twice the slop. `placed` holds every shape of the contacts' bodies at
 // its pose, body i's from first_shape[i]; `is_static` says which bodies are
-// static.
+// static; `on_static` lists, in order, the contacts between a static body
+// and another (only those are read).
 void drop_hidden_contacts(const placed_shape* placed, const std::size_t* first_shape,
                           const std::vector<unsigned char>& is_static, real slop,
-                          std::vector<contact>& contacts, hidden_face_lists& lists);
+                          const std::vector<std::size_t>& on_static, std::vector<contact>& contacts,
+                          hidden_face_lists& lists);
 
 }  // namespace gaphys::detail
