@@ -558,33 +558,41 @@ void contact_solver::resolve_impacts(const world_settings& settings, real h) {
     impact_filters_[colouring_.order[s]] = {k.restitution > 0 && k.mass_inverse > 0,
                                             k.bounces && !k.waits};
   });
+  // The same per run of contacts between the same two bodies (consecutive
+  // in contact order, they bounce together: impact_run), with its bodies:
+  // whether a contact of it can bounce, and whether one bounces by itself.
+  // (The sweeps below read only these: reading each contact's bodies and
+  // filter in each sweep, they took 0.4 ms of a 10,000-sphere step.)
+  const std::vector<std::size_t>& begins = colouring_.run_begins;
+  const std::size_t runs = begins.size() - 1;
+  impact_runs_.resize(runs);
+  detail::parallel_for(settings.threads, runs, 4096, [&](std::size_t r) {
+    const auto [body_a, body_b] = colouring_.pairs[begins[r]];
+    impact_run_filter& run = impact_runs_[r];
+    run = {static_cast<std::uint32_t>(body_a), static_cast<std::uint32_t>(body_b), false, false};
+    for (std::size_t i = begins[r]; i < begins[r + 1]; ++i) {
+      const impact_filter& f = impact_filters_[i];
+      run.can_bounce = run.can_bounce || f.can_bounce;
+      run.starts = run.starts || (f.can_bounce && f.starts);
+    }
+  });
   // Impacts start only at contacts that bounce from the start velocities.
-  const bool any_bounce = std::any_of(impact_filters_.begin(), impact_filters_.end(),
-                                      [](const impact_filter& f) { return f.starts; });
+  const bool any_bounce = std::any_of(impact_runs_.begin(), impact_runs_.end(),
+                                      [](const impact_run_filter& run) { return run.starts; });
   if (!any_bounce) return;
-  const std::size_t count = constraints_.size();
+  const real threshold = settings.restitution_threshold;
   for (int sweep = 0; sweep < settings.impact_iterations; ++sweep) {
     bool any = false;
-    // Run by run: the contacts between the same two bodies, consecutive in
-    // contact order, bounce together (impact_run).
-    for (std::size_t i = 0; i < count;) {
-      const auto [body_a, body_b] = colouring_.pairs[i];
-      std::size_t end = i + 1;
-      while (end < count && colouring_.pairs[end] == colouring_.pairs[i]) ++end;
+    for (std::size_t r = 0; r < runs; ++r) {
+      const impact_run_filter& run = impact_runs_[r];
       // (impact() would return false: no restitution, or neither body struck
-      // yet and the contact does not bounce by itself.)
-      const bool struck = impacted_[body_a] || impacted_[body_b];
-      bool may_bounce = false;
-      for (std::size_t m = i; m < end && !may_bounce; ++m) {
-        const impact_filter& f = impact_filters_[m];
-        may_bounce = f.can_bounce && (f.starts || struck);
+      // yet and no contact bounces by itself.)
+      if (!run.starts && !(run.can_bounce && (impacted_[run.body_a] || impacted_[run.body_b]))) {
+        continue;
       }
-      if (may_bounce) {
-        const real threshold = settings.restitution_threshold;
-        any = (end - i == 1 ? impact(slot_[i], threshold, h) : impact_run(i, end, threshold, h)) ||
-              any;
-      }
-      i = end;
+      const std::size_t i = begins[r], end = begins[r + 1];
+      any =
+          (end - i == 1 ? impact(slot_[i], threshold, h) : impact_run(i, end, threshold, h)) || any;
     }
     if (!any) break;
   }

@@ -333,6 +333,13 @@ class contact_solver {
     bool starts;      // bounces from the start velocities (and meets within the step)
   };
   std::vector<impact_filter> impact_filters_;
+  // Per run (colouring_.run_begins, contact order): its bodies, whether a
+  // contact of it can bounce, and whether one bounces by itself.
+  struct impact_run_filter {
+    std::uint32_t body_a, body_b;
+    bool starts, can_bounce;
+  };
+  std::vector<impact_run_filter> impact_runs_;
   // impact_run's scratch: the run's bouncing contacts.
   struct run_bounce {
     std::size_t index;  // the constraint
