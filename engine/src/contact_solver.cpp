@@ -359,27 +359,36 @@ void contact_solver::build_constraint(const world_settings& settings, const body
 // stack of cubes of 1 and 10 kg in turn gained energy from them for as long
 // as it was stepped (a sixth cube sideways by 35 cm in 20 s); with plain
 // impulses it settles.
-static bool disparate(const body& a, const body& b) {
-  if (!a.is_dynamic() || !b.is_dynamic()) return false;
-  const real lighter = std::max(a.inverse_mass(), b.inverse_mass());
-  const real heavier = std::min(a.inverse_mass(), b.inverse_mass());
+// (Read from the solver's copies: the bodies themselves are large, and
+// scattered. Static and kinematic bodies have no inverse mass.)
+static bool disparate(const detail::solver_body& a, const detail::solver_body& b) {
+  if (!(a.inverse_mass > 0) || !(b.inverse_mass > 0)) return false;
+  const real lighter = std::max(a.inverse_mass, b.inverse_mass);
+  const real heavier = std::min(a.inverse_mass, b.inverse_mass);
   return lighter > 2 * heavier;
 }
 
 // How many contacts each body is in (set_relaxation reads those of the
-// bodies with mass).
+// bodies with mass): from the contacts, beside the colouring; or after it,
+// from its list of each contact's bodies (16 bytes a contact; a contact
+// is 248 in double).
 void contact_solver::count_contacts(std::size_t bodies, const std::vector<contact>& contacts) {
   contacts_per_body_.assign(bodies, 0);
   for (const contact& c : contacts) ++contacts_per_body_[c.body_a], ++contacts_per_body_[c.body_b];
 }
 
-void contact_solver::set_relaxation(const world_settings& settings, const std::vector<body>& bodies) {
+void contact_solver::count_contacts(std::size_t bodies, const std::vector<body_pair>& pairs) {
+  contacts_per_body_.assign(bodies, 0);
+  for (const auto& [a, b] : pairs) ++contacts_per_body_[a], ++contacts_per_body_[b];
+}
+
+void contact_solver::set_relaxation(const world_settings& settings) {
   const auto shares_body = [&](std::uint32_t body, std::uint32_t place) {
     return solver_bodies_[place].inverse_mass > 0 && contacts_per_body_[body] > 1;
   };
   for_each_constraint(settings.threads, [&](std::size_t, std::size_t s) {
     constraint& k = constraints_[s];
-    if (disparate(bodies[k.body_a], bodies[k.body_b])) return;
+    if (disparate(solver_bodies_[k.place_a], solver_bodies_[k.place_b])) return;
     if (shares_body(k.body_a, k.place_a) || shares_body(k.body_b, k.place_b)) {
       k.relaxation = settings.solver_relaxation;
     }
@@ -976,7 +985,7 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
     detail::colour_contacts(bodies, contacts, colouring_, settings.threads, sweep_threads_);
     prepare_bodies(bodies, start, contacts, previous, settings.threads);
     find_supports(settings, bodies, start, contacts);
-    count_contacts(bodies.size(), contacts);
+    count_contacts(bodies.size(), colouring_.pairs);
   }
   slot_.resize(count);
   terms_at_.resize(count);
@@ -1004,7 +1013,7 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
     build_constraint(settings, bodies[c.body_a], bodies[c.body_b], c, start[c.body_a],
                      start[c.body_b], h, s, terms_at_[s]);
   });
-  set_relaxation(settings, bodies);
+  set_relaxation(settings);
 
   impacted_.assign(bodies.size(), 0);
 

@@ -183,8 +183,10 @@ class contact_solver {
   void find_supports(const world_settings& settings, const std::vector<body>& bodies,
                      const std::vector<body_velocity>& start, const std::vector<contact>& contacts);
   std::vector<std::array<std::size_t, 2>> supports_;
+  using body_pair = std::pair<std::size_t, std::size_t>;
   void count_contacts(std::size_t bodies, const std::vector<contact>& contacts);
-  void set_relaxation(const world_settings& settings, const std::vector<body>& bodies);
+  void count_contacts(std::size_t bodies, const std::vector<body_pair>& pairs);
+  void set_relaxation(const world_settings& settings);
   void resolve_impacts(const world_settings& settings, real h);
   bool impact(std::size_t index, real threshold, real h);
   void bounce(std::size_t index, real speed, bool timed_now);
