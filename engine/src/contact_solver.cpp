@@ -1040,12 +1040,14 @@ void contact_solver::correct_positions(const world_settings& settings, std::vect
   constexpr real timed = -1, turning = -2;  // corrections that are not a push
   corrections_.resize(contacts.size());
   detail::parallel_for(settings.threads, contacts.size(), 4096, [&](std::size_t i) {
+    // (The solver's copies of the bodies: the same velocities and masses,
+    // compact where the bodies are large and scattered.)
     const contact& c = contacts[i];
-    const body& a = bodies[c.body_a];
-    const body& b = bodies[c.body_b];
+    const solver_body& a = solver_bodies_[place_[c.body_a]];
+    const solver_body& b = solver_bodies_[place_[c.body_b]];
     real& push = corrections_[i];
     push = 0;
-    if (!(a.inverse_mass_ + b.inverse_mass_ > 0)) return;
+    if (!(a.inverse_mass + b.inverse_mass > 0)) return;
     if (impacts_[slot_[i]].timed) {
       push = timed;
       return;
@@ -1060,8 +1062,7 @@ void contact_solver::correct_positions(const world_settings& settings, std::vect
     }
     // The depth now, to first order: the positions moved by h v since the
     // narrow phase measured it.
-    const real depth =
-        c.geometry.depth - h * e3ga::scp(a.velocity_ - b.velocity_, c.geometry.normal);
+    const real depth = c.geometry.depth - h * e3ga::scp(a.velocity - b.velocity, c.geometry.normal);
     const real wanted = settings.position_correction * (depth - settings.linear_slop);
     push = wanted > 0 ? wanted : 0;
   });
