@@ -177,8 +177,8 @@ void assign_blocks(const std::vector<body>& bodies, int colours, int blocks, int
     const std::size_t share = weight[out.run_bins[r]] * blocks / total;
     const auto block = static_cast<std::uint32_t>(std::min<std::size_t>(share, blocks - 1));
     out.run_blocks[r] = block;
-    for (const std::size_t x :
-         {out.pairs[out.run_begins[r]].first, out.pairs[out.run_begins[r]].second}) {
+    const auto [body_a, body_b] = out.pairs[out.run_begins[r]];
+    for (const std::size_t x : {body_a, body_b}) {
       if (out.moves[x] && out.body_blocks[x] == static_cast<std::uint32_t>(blocks)) {
         out.body_blocks[x] = block;
       }

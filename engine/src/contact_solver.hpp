@@ -183,7 +183,6 @@ class contact_solver {
   void find_supports(const world_settings& settings, const std::vector<body>& bodies,
                      const std::vector<body_velocity>& start, const std::vector<contact>& contacts);
   std::vector<std::array<std::size_t, 2>> supports_;
-  using body_pair = std::pair<std::size_t, std::size_t>;
   void count_contacts(std::size_t bodies, const std::vector<contact>& contacts);
   void count_contacts(std::size_t bodies, const std::vector<body_pair>& pairs);
   void set_relaxation(const world_settings& settings);
@@ -358,7 +357,7 @@ class contact_solver {
   // Body i's velocities are solver_bodies_[place_[i]] and
   // impact_bodies_[place_[i]] (place_bodies); body_at_ is the inverse.
   std::vector<std::uint32_t> place_;
-  std::vector<std::size_t> body_at_, owner_starts_;
+  std::vector<std::size_t> body_at_, owner_starts_, place_scratch_;
   std::vector<solver_body> solver_bodies_;  // the velocities after the step's forces, as solved
   // Per body, for the bodies in contact (in_contact_): what building the
   // rows reads (row_body), and what building a constraint reads of its

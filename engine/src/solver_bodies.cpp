@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "contact_solver.hpp"
+#include "counting_sort.hpp"
 #include "thread_count.hpp"
 
 namespace gaphys {
@@ -55,16 +56,14 @@ void contact_solver::place_bodies(const std::vector<body>& bodies,
   const auto threads = static_cast<std::size_t>(sweep_threads_);
   const std::vector<std::uint32_t>& owner = colouring_.body_blocks;  // `threads`: no run
   std::vector<std::size_t>& starts = owner_starts_;
-  starts.assign(threads + 2, 0);
-  for (std::size_t i = 0; i < count; ++i) ++starts[owner[i] + 1];
-  for (std::size_t t = 0; t <= threads; ++t) starts[t + 1] += starts[t];
   body_at_.resize(count);
-  std::vector<std::size_t> next(starts.begin(), starts.end() - 1);
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::size_t p = next[owner[i]]++;
-    place_[i] = static_cast<std::uint32_t>(p);
-    body_at_[p] = i;
-  }
+  detail::counting_sort(
+      sweep_threads_, 4096, count, threads + 1, [&](std::size_t i) { return owner[i]; }, starts,
+      place_scratch_,
+      [&](std::size_t i, std::size_t at) {
+        place_[i] = static_cast<std::uint32_t>(at);
+        body_at_[at] = i;
+      });
 #pragma omp parallel num_threads(sweep_threads_)
   {
     const auto thread = static_cast<std::size_t>(omp_get_thread_num());
@@ -98,10 +97,11 @@ void contact_solver::prepare_bodies(const std::vector<body>& bodies,
 // On sweep_threads_ threads: one colours the contacts (its greedy pass and
 // its sort cannot be shared out) while the others prepare the bodies, the
 // warm start's matches, the bodies' supports and their counts of contacts
-// in pieces, which the colouring thread joins when it is done. (As two OpenMP sections, the
-// preparation took 0.8-1.15 ms of a 10,000-sphere step and the colouring 0.55-0.66 ms: one thread
-// waited the difference, and on more cores the others did nothing.) Every piece writes only its own
-// bodies' or contacts' data.
+// in pieces, which the colouring thread joins when it is done. (As two
+// OpenMP sections, the preparation took 0.8-1.15 ms of a 10,000-sphere
+// step and the colouring 0.55-0.66 ms: one thread waited the difference,
+// and on more cores the others did nothing.) Every piece writes only its
+// own bodies' or contacts' data.
 void contact_solver::colour_beside_preparation(const world_settings& settings,
                                                const std::vector<body>& bodies,
                                                const std::vector<body_velocity>& start,
