@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "precision.hpp"
+#include "round_meet.hpp"
 #include "vec3.hpp"
 
 namespace gaphys::detail {
@@ -137,7 +138,7 @@ void collide_round(const placed_shape& capsule, const placed_shape& round, real 
 }
 
 // A capsule and a plane: the balls at its two ends. The plane's dual is
-// Π = -(n + δ ni) (place()), so an end's conformal point X = no + x + x^2/2
+// Π = -(n + δ ni) (dual_of), so an end's conformal point X = no + x + x^2/2
 // ni has X . Π = δ - n . x, its depth under the plane's surface, and its
 // ball's depth is r + X . Π. Both ends when both are within the margin (a
 // capsule lying on the plane), else the lower one; the point is midway
@@ -145,7 +146,8 @@ void collide_round(const placed_shape& capsule, const placed_shape& round, real 
 void collide_plane(const placed_shape& capsule, const placed_shape& plane, real margin,
                    contact_manifold& out) {
   const segment3 core = core_of(capsule);
-  const conformal::dual_sphere dual(plane.dual);  // a dual plane: its no coefficient is 0
+  // (A dual plane: its no coefficient is 0.)
+  const conformal::dual_sphere dual(detail::dual_plane_of(plane, vector{}));
   const vec3 n = to_vec3(plane.normal);
   const int ends = capsule.half_height > 0 ? 2 : 1;
   for (int end = 0; end < ends; ++end) {

@@ -8,28 +8,18 @@
 
 namespace gaphys {
 
-namespace {
-
-using conformal::mv;
-
-}  // namespace
-
 placed_shape place(const shape& s, const vector& position, const rotor& attitude) {
-  placed_shape placed{mv{}, s.kind(), position, vector{}, s.radius(), 0};
+  placed_shape placed{s.kind(), position, vector{}, s.radius(), 0};
   placed.attitude = attitude;
   switch (s.kind()) {
-    case shape_kind::sphere:  // σ = c - r^2/2 ni, c = no + x + x^2/2 ni
-      placed.dual = detail::dual_sphere_of(placed, vector{});
+    case shape_kind::sphere:
+    case shape_kind::point:
       break;
-    case shape_kind::plane: {  // -(n + d ni), n and d in the world frame
+    case shape_kind::plane: {  // n . x = d, n and d in the world frame
       placed.normal = e3ga::apply(attitude, s.normal());
       placed.offset = s.offset() + e3ga::scp(placed.normal, position);
-      placed.dual = detail::dual_plane_of(placed, vector{});
       break;
     }
-    case shape_kind::point:  // the dual of the flat point x ^ ni
-      placed.dual = detail::dual_of(placed, vector{});
-      break;
     case shape_kind::capsule:
       placed.half_height = s.half_height();
       placed.axis = e3ga::apply(attitude, vector{0, 0, 1});
@@ -44,6 +34,8 @@ placed_shape place(const shape& s, const vector& position, const rotor& attitude
   }
   return placed;
 }
+
+conformal::mv dual_of(const placed_shape& s) { return detail::dual_of(s, vector{}); }
 
 std::optional<contact_geometry> find_contact(const placed_shape& a, const placed_shape& b,
                                              real lookahead, const vector& velocity_a,

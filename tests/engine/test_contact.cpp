@@ -311,6 +311,46 @@ TEST_F(contact_test, point_and_sphere_match_the_closed_form) {
   }
 }
 
+// dual_of against the incidence it stands for: a conformal point X = no +
+// x + x^2/2 ni has X . σ = (r^2 - |x - c|^2) / 2 with a sphere's dual (zero
+// on the surface), X . Π = d - n . x with a plane's (its depth below the
+// surface), and X ⌋ D = 0 with a point's D exactly at X; a box has none.
+TEST_F(contact_test, the_dual_of_a_placed_shape_is_the_one_its_points_are_on) {
+  const auto conformal_point = [](const vector& x) {
+    return conformal::mv(conformal::normalized_point{x.e1(), x.e2(), x.e3(), dot(x, x) / 2});
+  };
+  const real incidence_tolerance = tolerance(1e-12, 1e-4);
+  for (int trial = 0; trial < 100; ++trial) {
+    const real r = uniform(0.05, 2);
+    const vector c = random_point(5);
+    const conformal::mv sphere = dual_of(sphere_at(c, r));
+    const vector x = c + uniform(0, 3 * r) * random_unit_vector();
+    const real inside = (r * r - dot(x - c, x - c)) / 2;
+    EXPECT_NEAR(c3ga::scp(conformal_point(x), sphere), inside,
+                incidence_tolerance * (1 + 100 * r * r))
+        << "trial " << trial;
+
+    const vector body_normal = random_unit_vector();
+    const real body_offset = uniform(-3, 3);
+    const vector position = random_point(4);
+    const rotor attitude = random_attitude();
+    const conformal::mv plane =
+        dual_of(place(shape::plane(body_normal, body_offset), position, attitude));
+    const vector n = e3ga::apply(attitude, body_normal);
+    const real offset = body_offset + dot(n, position);
+    EXPECT_NEAR(c3ga::scp(conformal_point(x), plane), offset - dot(n, x), incidence_tolerance * 100)
+        << "trial " << trial;
+
+    const conformal::mv point = dual_of(place(shape::point(), x, attitude));
+    EXPECT_LE(c3ga::norm(c3ga::lc(conformal_point(x), point)), incidence_tolerance * 1000)
+        << "trial " << trial;
+    const vector elsewhere = x + random_unit_vector();
+    EXPECT_GT(c3ga::norm(c3ga::lc(conformal_point(elsewhere), point)), 0.1) << "trial " << trial;
+  }
+  const conformal::mv box = dual_of(place(shape::box(vector{1, 2, 3}), vector{1, 1, 1}, identity));
+  EXPECT_EQ(c3ga::norm(box), 0);
+}
+
 // Contacts the meet does not define: parallel planes never pair (both are
 // static), and a point meets a plane nowhere in the thesis's sense.
 TEST_F(contact_test, a_point_and_a_plane_do_not_collide) {
