@@ -104,7 +104,8 @@ class space {
   // Whether each dynamic body is in a pair with another dynamic or a
   // kinematic body, which may push it anywhere within the step.
   std::vector<unsigned char> jostled_;
-  std::vector<unsigned char> static_;  // whether each body in a pair is static
+  std::vector<unsigned char> static_;   // whether each body is static
+  std::vector<unsigned char> dynamic_;  // whether each body is dynamic
   detail::hidden_face_lists hidden_;
   // What the meets on batches read of a body with one shape, written as its
   // shape is placed: read from the bodies and their shapes, pair by pair,
