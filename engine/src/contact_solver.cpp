@@ -638,14 +638,42 @@ void contact_solver::match_share(int share, const std::vector<body>& bodies,
   }
 }
 
-void contact_solver::warm_start(const std::vector<contact>& contacts,
-                                const std::vector<contact>& previous) {
-  // The old impulses, in contact order: they add up on each body in it.
-  for (std::size_t i = 0; i < contacts.size(); ++i) {
-    const std::size_t match = matches_[i];
+void contact_solver::warm_start(const std::vector<contact>& previous) {
+  // The old impulses in the sweeps' order, colour by colour: the runs of a
+  // colour share no body that moves, so each thread applies its blocks of a
+  // colour at once, and the impulses add up on each body in the same order
+  // on any number of threads. (In contact order, on one thread, this took
+  // 0.35 ms of a 10,000-sphere step, the second thread idle.)
+  const std::vector<std::size_t>& starts = colouring_.run_starts;
+  if (sweep_threads_ == 1) {
+    warm_start_slots(0, constraints_.size(), previous);
+    return;
+  }
+  const auto blocks = static_cast<std::size_t>(sweep_threads_);
+  const std::size_t colours = colouring_.colours();
+#pragma omp parallel num_threads(sweep_threads_)
+  {
+    const auto thread = static_cast<std::size_t>(omp_get_thread_num());
+    const auto team = static_cast<std::size_t>(omp_get_num_threads());
+    for (std::size_t c = 0; c < colours; ++c) {
+      const std::size_t* runs = &colouring_.thread_starts[c * (blocks + 1)];
+      for (std::size_t owner = thread; owner < blocks; owner += team) {
+        warm_start_slots(starts[runs[owner]], starts[runs[owner + 1]], previous);
+      }
+#pragma omp barrier
+    }
+    if (thread == 0) {
+      warm_start_slots(starts[colouring_.colour_starts.back()], starts.back(), previous);
+    }
+  }
+}
+
+void contact_solver::warm_start_slots(std::size_t first, std::size_t end,
+                                      const std::vector<contact>& previous) {
+  for (std::size_t s = first; s < end; ++s) {
+    const std::size_t match = matches_[colouring_.order[s]];
     if (match == previous.size()) continue;
     const contact* old = &previous[match];
-    const std::size_t s = slot_[i];
     constraint& k = constraints_[s];
     if (!(k.mass_inverse > 0) || k.waits) continue;
     solver_body& a = solver_bodies_[k.place_a];
@@ -1018,7 +1046,7 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   impacted_.assign(bodies.size(), 0);
 
   resolve_impacts(settings, h);
-  warm_start(contacts, previous);
+  warm_start(previous);
   pack_batches(settings);
   solve_contacts(settings);
   unpack_batches();

@@ -201,7 +201,8 @@ class contact_solver {
                        int shares);
   void match_share(int share, const std::vector<body>& bodies, const std::vector<contact>& contacts,
                    const std::vector<contact>& previous);
-  void warm_start(const std::vector<contact>& contacts, const std::vector<contact>& previous);
+  void warm_start(const std::vector<contact>& previous);
+  void warm_start_slots(std::size_t first, std::size_t end, const std::vector<contact>& previous);
   // What solve_velocities prepares from the bodies and contacts alone,
   // before the constraints: the rows' and shapes' summaries of the bodies
   // in contact, the solver's bodies, the warm start's matches. Sized and
