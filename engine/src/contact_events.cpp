@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <utility>
 
+#include "gaphys/detail/cache_padded.hpp"
 #include "pair_cuts.hpp"
 #include "thread_count.hpp"
 
@@ -79,12 +80,12 @@ void find_events(const std::vector<contact>& previous, const std::vector<contact
   // anew each step, they cost a step of 10,000 balls a page fault every few
   // events); referred to by `parts`, as inside the parallel region the
   // thread_local's own name would mean each thread's own.
-  static thread_local std::vector<contact_events> kept_parts;
-  std::vector<contact_events>& parts = kept_parts;
+  static thread_local std::vector<cache_padded<contact_events>> kept_parts;
+  std::vector<cache_padded<contact_events>>& parts = kept_parts;
   parts.resize(static_cast<std::size_t>(shares));
 #pragma omp parallel for num_threads(shares) schedule(static, 1)
   for (int s = 0; s < shares; ++s) {
-    contact_events& part = parts[static_cast<std::size_t>(s)];
+    contact_events& part = parts[static_cast<std::size_t>(s)].value;
     part.began.clear(), part.persisted.clear(), part.ended.clear();
     merge_events(previous, cuts.old[s], cuts.old[s + 1], current, cuts.now[s], cuts.now[s + 1],
                  part);
@@ -100,7 +101,7 @@ void find_events(const std::vector<contact>& previous, const std::vector<contact
   for (std::size_t l = 0; l < lists.size(); ++l) {
     starts[l].assign(parts.size() + 1, 0);
     for (std::size_t s = 0; s < parts.size(); ++s) {
-      starts[l][s + 1] = starts[l][s] + (parts[s].*lists[l]).size();
+      starts[l][s + 1] = starts[l][s] + (parts[s].value.*lists[l]).size();
     }
     (events.*lists[l]).resize(starts[l].back());
   }
@@ -108,7 +109,7 @@ void find_events(const std::vector<contact>& previous, const std::vector<contact
   for (int s = 0; s < shares; ++s) {
     const auto at = static_cast<std::size_t>(s);
     for (std::size_t l = 0; l < lists.size(); ++l) {
-      const std::vector<contact_event>& part = parts[at].*lists[l];
+      const std::vector<contact_event>& part = parts[at].value.*lists[l];
       std::copy(part.begin(), part.end(),
                 (events.*lists[l]).begin() + static_cast<std::ptrdiff_t>(starts[l][at]));
     }

@@ -307,27 +307,26 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
   // met into its own lists, and joined in share order they are what one
   // thread makes.
   const int share_count = 4 * shares;
-  thread_contacts_.resize(static_cast<std::size_t>(share_count));
-  share_on_static_.resize(static_cast<std::size_t>(share_count));
-  thread_sensors_.resize(static_cast<std::size_t>(share_count));
+  shares_.resize(static_cast<std::size_t>(share_count));
 #pragma omp parallel for num_threads(shares) schedule(dynamic, 1)
   for (int share = 0; share < share_count; ++share) {
     const auto at = static_cast<std::size_t>(share);
     const body_pair* first = pairs.data() + pairs.size() * at / share_count;
     const body_pair* end = pairs.data() + pairs.size() * (at + 1) / share_count;
-    thread_contacts_[at].clear();
-    thread_sensors_[at].clear();
-    share_on_static_[at].clear();
-    meet_pairs(bodies, first, end, thread_contacts_[at], lookahead, rules, margin,
-               sensors ? &thread_sensors_[at] : nullptr, share_on_static_[at]);
+    share_lists& lists = shares_[at].value;
+    lists.contacts.clear();
+    lists.sensors.clear();
+    lists.on_static.clear();
+    meet_pairs(bodies, first, end, lists.contacts, lookahead, rules, margin,
+               sensors ? &lists.sensors : nullptr, lists.on_static);
   }
   // The join, each share copied to its place on the threads. (The list
   // comes from two steps ago, about as long: resized, not cleared, it
   // constructs only the contacts it lacks; and given room to grow, it is
   // not allocated anew in every step that has more contacts.)
-  share_starts_.assign(thread_contacts_.size() + 1, 0);
-  for (std::size_t at = 0; at < thread_contacts_.size(); ++at) {
-    share_starts_[at + 1] = share_starts_[at] + thread_contacts_[at].size();
+  share_starts_.assign(shares_.size() + 1, 0);
+  for (std::size_t at = 0; at < shares_.size(); ++at) {
+    share_starts_[at + 1] = share_starts_[at] + shares_[at].value.contacts.size();
   }
   const std::size_t total = share_starts_.back();
   if (contacts.capacity() < total) contacts.reserve(total + total / 4);
@@ -335,15 +334,18 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
 #pragma omp parallel for num_threads(shares) schedule(dynamic, 1)
   for (int share = 0; share < share_count; ++share) {
     const auto at = static_cast<std::size_t>(share);
-    std::copy(thread_contacts_[at].begin(), thread_contacts_[at].end(),
+    const std::vector<contact>& met = shares_[at].value.contacts;
+    std::copy(met.begin(), met.end(),
               contacts.begin() + static_cast<std::ptrdiff_t>(share_starts_[at]));
   }
-  for (std::size_t at = 0; at < share_on_static_.size(); ++at) {
-    for (const std::size_t i : share_on_static_[at]) on_static_.push_back(share_starts_[at] + i);
+  for (std::size_t at = 0; at < shares_.size(); ++at) {
+    for (const std::size_t i : shares_[at].value.on_static) {
+      on_static_.push_back(share_starts_[at] + i);
+    }
   }
   if (sensors) {
-    for (const std::vector<sensor_overlap>& part : thread_sensors_) {
-      sensors->insert(sensors->end(), part.begin(), part.end());
+    for (const auto& share : shares_) {
+      sensors->insert(sensors->end(), share.value.sensors.begin(), share.value.sensors.end());
     }
   }
 }

@@ -36,8 +36,8 @@ real largest_magnitude(const vector& v) {
 // which the shares find them changes nothing.
 template <class Find>
 void find_in_shares(std::size_t count, std::size_t per_thread, int threads,
-                    std::vector<std::vector<index_pair>>& scratch, std::vector<index_pair>& pairs,
-                    const Find& find) {
+                    std::vector<cache_padded<std::vector<index_pair>>>& scratch,
+                    std::vector<index_pair>& pairs, const Find& find) {
   const int shares = threads_for(threads, count, per_thread);
   if (shares == 1) {
     find(std::size_t{0}, count, pairs);
@@ -48,11 +48,12 @@ void find_in_shares(std::size_t count, std::size_t per_thread, int threads,
 #pragma omp parallel for num_threads(shares) schedule(dynamic, 1)
   for (int share = 0; share < share_count; ++share) {
     const auto at = static_cast<std::size_t>(share);
-    scratch[at].clear();
-    find(count * at / share_count, count * (at + 1) / share_count, scratch[at]);
+    std::vector<index_pair>& found = scratch[at].value;
+    found.clear();
+    find(count * at / share_count, count * (at + 1) / share_count, found);
   }
-  for (const std::vector<index_pair>& found : scratch) {
-    pairs.insert(pairs.end(), found.begin(), found.end());
+  for (const auto& found : scratch) {
+    pairs.insert(pairs.end(), found.value.begin(), found.value.end());
   }
 }
 
@@ -255,7 +256,7 @@ void uniform_grid::collect(const std::vector<body>& bodies, const std::vector<st
     }
     // (single's barrier) This share's planes and other bounds in order.
     std::size_t plane_at = part_planes_[part], bound_at = first - part_planes_[part];
-    std::vector<std::size_t>& large = part_large_[part];
+    std::vector<std::size_t>& large = part_large_[part].value;
     large.clear();
     real widest = 0;
     for (std::size_t at = first; at < end; ++at) {
@@ -278,7 +279,7 @@ void uniform_grid::collect(const std::vector<body>& bodies, const std::vector<st
   large_.clear();
   cell_size_ = 0;
   for (std::size_t p = 0; p < most; ++p) {
-    large_.insert(large_.end(), part_large_[p].begin(), part_large_[p].end());
+    large_.insert(large_.end(), part_large_[p].value.begin(), part_large_[p].value.end());
     cell_size_ = std::max(cell_size_, part_widest_[p]);
   }
 }

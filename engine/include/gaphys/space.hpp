@@ -9,6 +9,7 @@
 #include "gaphys/body.hpp"
 #include "gaphys/contact.hpp"
 #include "gaphys/contact_events.hpp"
+#include "gaphys/detail/cache_padded.hpp"
 #include "gaphys/detail/hidden_faces.hpp"
 #include "gaphys/detail/uniform_grid.hpp"
 
@@ -117,14 +118,18 @@ class space {
     bool plain = false;  // one shape, not a sensor
   };
   std::vector<single_shape_facts> singles_;  // per body index, valid for bodies in pairs
-  // Each share's contacts and sensor overlaps (find_contacts), in pair order.
-  std::vector<std::vector<contact>> thread_contacts_;
-  std::vector<std::vector<sensor_overlap>> thread_sensors_;
+  // Each share's contacts, sensor overlaps and contacts with a static body
+  // (by their places in its list), in pair order (find_contacts).
+  struct share_lists {
+    std::vector<contact> contacts;
+    std::vector<sensor_overlap> sensors;
+    std::vector<std::size_t> on_static;
+  };
+  std::vector<detail::cache_padded<share_lists>> shares_;
   std::vector<std::size_t> share_starts_;  // where each share's contacts go in the list
   // The contacts between a static body and another, in order (meet_pairs
-  // lists them), and each share's (by their places in its list).
+  // lists them).
   std::vector<std::size_t> on_static_;
-  std::vector<std::vector<std::size_t>> share_on_static_;
 };
 
 }  // namespace gaphys

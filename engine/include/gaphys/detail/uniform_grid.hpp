@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "gaphys/body.hpp"
+#include "gaphys/detail/cache_padded.hpp"
 
 namespace gaphys::detail {
 
@@ -111,11 +112,12 @@ class uniform_grid {
   static constexpr std::size_t width_buckets = std::size_t{1} << (sizeof(real) == 8 ? 14 : 11);
   std::vector<std::uint32_t> width_counts_;
   std::vector<std::size_t> part_planes_, part_lowest_;
-  std::vector<std::vector<std::size_t>> part_large_;
+  std::vector<cache_padded<std::vector<std::size_t>>> part_large_;
   std::vector<real> part_widest_;
   std::vector<std::size_t> starts_, fill_;
   std::vector<index_pair> sorted_;
-  std::vector<std::vector<index_pair>> thread_pairs_;  // the shares of pair_cells, pair_planes
+  // The shares of pair_cells, pair_planes.
+  std::vector<cache_padded<std::vector<index_pair>>> thread_pairs_;
   struct plane_test {  // a plane: a bound reaches it where normal . c - r <= reach
     vector normal;
     real reach;
