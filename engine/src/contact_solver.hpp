@@ -239,6 +239,8 @@ class contact_solver {
   void pack_batches(const world_settings& settings);
   template <class Visit>
   void for_each_constraint(int threads, const Visit& visit) const;
+  template <class Visit>
+  void by_colours(const Visit& visit) const;
   void add_batch_group(const std::array<std::size_t, detail::contact_lanes>& runs, int filled);
   bool batchable(std::size_t run, contact_batching batching) const;
   void solve_block(std::size_t block, const sweep_kind& kind, sweep_result& result);

@@ -484,11 +484,19 @@ void world::step(real h) {
   for (sensor_overlap& o : sensor_overlaps_) o.sensor = id_of(o.sensor), o.other = id_of(o.other);
   const auto reported = clock::now();
   fall_asleep(h);
+  // (On the threads for many bodies, as the step's first pass.)
   std::size_t overflowed = no_index;
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    body& b = bodies_[i];
-    b.woken_ = false;
-    if (overflowed == no_index && !finite_state(b)) overflowed = i;
+  {
+    const int threads = detail::threads_for(settings_.threads, bodies_.size(), 1024);
+    const auto count = static_cast<std::ptrdiff_t>(bodies_.size());
+#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1) \
+    reduction(min                                                               \
+              : overflowed)
+    for (std::ptrdiff_t i = 0; i < count; ++i) {
+      body& b = bodies_[static_cast<std::size_t>(i)];
+      b.woken_ = false;
+      if (!finite_state(b)) overflowed = std::min(overflowed, static_cast<std::size_t>(i));
+    }
   }
   const auto slept = clock::now();
 
