@@ -1,6 +1,10 @@
 // The contact phase's sweeps on batches (contact_batch.hpp): which runs go
 // into which batch, their packs, and a sweep over them.
+#include <omp.h>
+
 #include <algorithm>
+#include <numeric>
+#include <utility>
 
 #include "contact_solver.hpp"
 
@@ -39,15 +43,43 @@ void contact_solver::pack_batches(const world_settings& settings) {
   pack_slots_.clear();
   block_groups_.assign(1, 0);
   block_singles_.assign(1, 0);
-  for (std::size_t block = 0; block < blocks; ++block) {
+  const auto block_runs = [&](std::size_t block) {
     const std::size_t colour = block / threads, thread = block % threads;
-    std::size_t first = colouring_.colour_starts[colour],
-                end = colouring_.colour_starts[colour + 1];
-    if (threads > 1) {
-      const std::size_t* starts = &colouring_.thread_starts[colour * (threads + 1)];
-      first = starts[thread];
-      end = starts[thread + 1];
+    if (threads == 1) {
+      return std::pair{colouring_.colour_starts[colour], colouring_.colour_starts[colour + 1]};
     }
+    const std::size_t* starts = &colouring_.thread_starts[colour * (threads + 1)];
+    return std::pair{starts[thread], starts[thread + 1]};
+  };
+  if (!detail::batches_take(settings.batch_contacts, false)) {
+    // No run goes on batches (the default build's two doubles): each block
+    // is one stretch of single runs, written by the thread that solves it.
+    // (Run by run on one thread, 0.1 ms of a 10,000-sphere step.)
+    block_groups_.assign(blocks + 1, 0);
+    block_singles_.resize(blocks + 1);
+    for (std::size_t block = 0; block < blocks; ++block) {
+      const auto [first, end] = block_runs(block);
+      block_singles_[block + 1] = block_singles_[block] + (end - first);
+    }
+    single_runs_.resize(block_singles_.back());
+    stretch_ends_.resize(block_singles_.back());
+#pragma omp parallel num_threads(sweep_threads_) if (sweep_threads_ > 1)
+    {
+      const auto thread = static_cast<std::size_t>(omp_get_thread_num());
+      const auto team = static_cast<std::size_t>(omp_get_num_threads());
+      for (std::size_t block = 0; block < blocks; ++block) {
+        if (block % threads % team != thread) continue;
+        const std::size_t at = block_singles_[block], stop = block_singles_[block + 1];
+        std::iota(single_runs_.begin() + std::ptrdiff_t(at),
+                  single_runs_.begin() + std::ptrdiff_t(stop), block_runs(block).first);
+        std::fill(stretch_ends_.begin() + std::ptrdiff_t(at),
+                  stretch_ends_.begin() + std::ptrdiff_t(stop), stop);
+      }
+    }
+    return;
+  }
+  for (std::size_t block = 0; block < blocks; ++block) {
+    const auto [first, end] = block_runs(block);
     std::array<std::size_t, lanes> runs{};
     int filled = 0;
     for (std::size_t run = first; run < end; ++run) {
