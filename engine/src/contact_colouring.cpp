@@ -16,27 +16,30 @@ void assign_blocks(const std::vector<body>& bodies, int colours, int blocks, int
 
 }  // namespace
 
-void colour_contacts(const std::vector<body>& bodies, const std::vector<contact>& contacts,
-                     contact_colouring& out, int threads, int blocks) {
-  constexpr int sequential = contact_colouring::most_colours;
-  // Each contact's bodies, and which bodies have mass, read in one pass
-  // each on the threads (contacts and bodies are large objects, and the
-  // greedy colouring below cannot be shared out).
+void read_pairs(const std::vector<contact>& contacts, contact_colouring& out, int threads) {
   out.pairs.resize(contacts.size());
   parallel_for(threads, contacts.size(), 4096, [&](std::size_t i) {
     out.pairs[i] = {contacts[i].body_a, contacts[i].body_b};
   });
+}
+
+void colour_contacts(const std::vector<body>& bodies, contact_colouring& out, int threads,
+                     int blocks) {
+  constexpr int sequential = contact_colouring::most_colours;
+  const std::size_t contacts = out.pairs.size();
+  // Which bodies have mass, read in one pass on the threads (bodies are
+  // large objects, and the greedy colouring below cannot be shared out).
   out.moves.resize(bodies.size());
   parallel_for(threads, bodies.size(), 4096,
                [&](std::size_t i) { out.moves[i] = bodies[i].inverse_mass() > 0; });
   // The runs, in contact order.
   std::vector<std::size_t>& begins = out.run_begins;
   begins.clear();
-  for (std::size_t i = 0; i < contacts.size(); ++i) {
+  for (std::size_t i = 0; i < contacts; ++i) {
     if (i == 0 || out.pairs[i] != out.pairs[i - 1]) begins.push_back(i);
   }
   const std::size_t runs = begins.size();
-  begins.push_back(contacts.size());
+  begins.push_back(contacts);
 
   // Greedy colours: the lowest one neither dynamic body has yet.
   out.body_colours.assign(bodies.size(), 0);
@@ -103,7 +106,7 @@ void colour_contacts(const std::vector<body>& bodies, const std::vector<contact>
     const std::size_t r = sorted_runs[at];
     out.run_starts[at + 1] = out.run_starts[at] + (begins[r + 1] - begins[r]);
   }
-  out.order.resize(contacts.size());
+  out.order.resize(contacts);
   parallel_for(threads, runs, 4096, [&](std::size_t at) {
     const std::size_t r = sorted_runs[at];
     std::size_t to = out.run_starts[at];

@@ -67,7 +67,7 @@ struct contact_colouring {
   static constexpr std::size_t fewest_runs = 32;
 
   // Scratch, kept to reuse its memory from step to step.
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;  // per contact: its bodies
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;  // per contact: its bodies (read_pairs)
   std::vector<char> moves;                                 // per body: it has mass
   std::vector<std::uint32_t> body_colours;  // bit c: the body has a run of colour c
   // Per run, in contact order:
@@ -78,11 +78,17 @@ struct contact_colouring {
   std::vector<std::size_t> colour_counts, bin_weights, sorted_runs, sort_scratch;
 };
 
-// `contacts` sorted by body pair, as the narrow phase makes them. `threads`
-// (world_settings::threads) reads the contacts and bodies; the colours are
-// the same with any number. `blocks`: the threads that will solve the
-// colours (thread_starts), 1 for none.
-void colour_contacts(const std::vector<body>& bodies, const std::vector<contact>& contacts,
-                     contact_colouring& out, int threads, int blocks);
+// Each contact's bodies into out.pairs, in one pass on `threads`
+// (world_settings::threads): colour_contacts reads them, and so does the
+// solver's preparation beside it (16 bytes a contact; a contact is 248 in
+// double, and each pass over the list read them all).
+void read_pairs(const std::vector<contact>& contacts, contact_colouring& out, int threads);
+
+// The contacts whose bodies read_pairs put in out.pairs, sorted by body
+// pair as the narrow phase makes them. `threads` (world_settings::threads)
+// reads the bodies; the colours are the same with any number. `blocks`: the
+// threads that will solve the colours (thread_starts), 1 for none.
+void colour_contacts(const std::vector<body>& bodies, contact_colouring& out, int threads,
+                     int blocks);
 
 }  // namespace gaphys::detail

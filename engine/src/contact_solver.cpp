@@ -369,14 +369,7 @@ static bool disparate(const detail::solver_body& a, const detail::solver_body& b
 }
 
 // How many contacts each body is in (set_relaxation reads those of the
-// bodies with mass): from the contacts, beside the colouring; or after it,
-// from its list of each contact's bodies (16 bytes a contact; a contact
-// is 248 in double).
-void contact_solver::count_contacts(std::size_t bodies, const std::vector<contact>& contacts) {
-  contacts_per_body_.assign(bodies, 0);
-  for (const contact& c : contacts) ++contacts_per_body_[c.body_a], ++contacts_per_body_[c.body_b];
-}
-
+// bodies with mass), from the colouring's list of each contact's bodies.
 void contact_solver::count_contacts(std::size_t bodies, const std::vector<body_pair>& pairs) {
   contacts_per_body_.assign(bodies, 0);
   for (const auto& [a, b] : pairs) ++contacts_per_body_[a], ++contacts_per_body_[b];
@@ -1014,10 +1007,11 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   // more, one colours while the others prepare what needs no colouring.
   // (One after the other, each on the threads, the colouring left the
   // second thread idle for half a millisecond of a 10,000-sphere step.)
+  detail::read_pairs(contacts, colouring_, settings.threads);
   if (sweep_threads_ > 1) {
     colour_beside_preparation(settings, bodies, start, contacts, previous);
   } else {
-    detail::colour_contacts(bodies, contacts, colouring_, settings.threads, sweep_threads_);
+    detail::colour_contacts(bodies, colouring_, settings.threads, sweep_threads_);
     prepare_bodies(bodies, start, contacts, previous, settings.threads);
     find_supports(settings, bodies, start, contacts);
     count_contacts(bodies.size(), colouring_.pairs);

@@ -183,7 +183,6 @@ class contact_solver {
   void find_supports(const world_settings& settings, const std::vector<body>& bodies,
                      const std::vector<body_velocity>& start, const std::vector<contact>& contacts);
   std::vector<std::array<std::size_t, 2>> supports_;
-  void count_contacts(std::size_t bodies, const std::vector<contact>& contacts);
   void count_contacts(std::size_t bodies, const std::vector<body_pair>& pairs);
   void set_relaxation(const world_settings& settings);
   void resolve_impacts(const world_settings& settings, real h);
@@ -207,8 +206,7 @@ class contact_solver {
   // before the constraints: the rows' and shapes' summaries of the bodies
   // in contact, the solver's bodies, the warm start's matches. Sized and
   // marked on one thread first, then body by body and share by share.
-  void mark_bodies_in_contact(const std::vector<body>& bodies,
-                              const std::vector<contact>& contacts);
+  void mark_bodies_in_contact(const std::vector<body>& bodies);
   void prepare_body(std::size_t i, const std::vector<body>& bodies,
                     const std::vector<body_velocity>& start, bool velocities);
   void copy_velocities(std::size_t i, const std::vector<body>& bodies,

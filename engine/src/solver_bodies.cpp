@@ -11,15 +11,14 @@
 
 namespace gaphys {
 
-void contact_solver::mark_bodies_in_contact(const std::vector<body>& bodies,
-                                            const std::vector<contact>& contacts) {
+void contact_solver::mark_bodies_in_contact(const std::vector<body>& bodies) {
   row_bodies_.resize(bodies.size());
   shape_summaries_.resize(bodies.size());
   solver_bodies_.resize(bodies.size());
   impact_bodies_.resize(bodies.size());
   place_.resize(bodies.size());
   in_contact_.assign(bodies.size(), 0);
-  for (const contact& c : contacts) in_contact_[c.body_a] = in_contact_[c.body_b] = 1;
+  for (const auto& [a, b] : colouring_.pairs) in_contact_[a] = in_contact_[b] = 1;
 }
 
 // What the rows read of a body in contact (row_body), and what the
@@ -84,7 +83,7 @@ void contact_solver::prepare_bodies(const std::vector<body>& bodies,
                                     const std::vector<body_velocity>& start,
                                     const std::vector<contact>& contacts,
                                     const std::vector<contact>& previous, int threads) {
-  mark_bodies_in_contact(bodies, contacts);
+  mark_bodies_in_contact(bodies);
   std::iota(place_.begin(), place_.end(), std::uint32_t{0});
   detail::parallel_for(threads, bodies.size(), 2048,
                        [&](std::size_t i) { prepare_body(i, bodies, start, true); });
@@ -114,12 +113,12 @@ void contact_solver::colour_beside_preparation(const world_settings& settings,
 #pragma omp single
   {
 #pragma omp task
-    detail::colour_contacts(bodies, contacts, colouring_, 1, sweep_threads_);
+    detail::colour_contacts(bodies, colouring_, 1, sweep_threads_);
 #pragma omp task
     find_supports(settings, bodies, start, contacts);
 #pragma omp task
-    count_contacts(bodies.size(), contacts);
-    mark_bodies_in_contact(bodies, contacts);
+    count_contacts(bodies.size(), colouring_.pairs);
+    mark_bodies_in_contact(bodies);
     cut_for_matches(contacts, previous, match_shares);
     for (int share = 0; share < match_shares; ++share) {
 #pragma omp task
