@@ -438,40 +438,44 @@ auto unit(const X& a) {
 }
 
 // ---- operators (precedence trap: ^ binds looser than +, - and ==) -----------------
+// Each forwards to its function, forced inline: for named types that is a
+// straight-line kernel, and where GCC's inlining budget for a large file ran
+// out, a bivector sum stayed a call in the engine's contact sweeps (1,000
+// boxes stepped 10% slower on one thread, 2026-12-06).
 template <class A, class B, if_multivectors<A, B> = 0>
-auto operator*(const A& a, const B& b) {
+GAPHYS_ALWAYS_INLINE auto operator*(const A& a, const B& b) {
   return gp(a, b);
 }
 template <class A, class B, if_multivectors<A, B> = 0>
-auto operator^(const A& a, const B& b) {
+GAPHYS_ALWAYS_INLINE auto operator^(const A& a, const B& b) {
   return op(a, b);
 }
 template <class A, class B, if_multivectors<A, B> = 0>
-auto operator+(const A& a, const B& b) {
+GAPHYS_ALWAYS_INLINE auto operator+(const A& a, const B& b) {
   return add(a, b);
 }
 template <class A, class B, if_multivectors<A, B> = 0>
-auto operator-(const A& a, const B& b) {
+GAPHYS_ALWAYS_INLINE auto operator-(const A& a, const B& b) {
   return sub(a, b);
 }
 template <class X, if_multivector<X> = 0>
-auto operator-(const X& a) {
+GAPHYS_ALWAYS_INLINE auto operator-(const X& a) {
   return neg(a);
 }
 template <class X, if_multivector<X> = 0>
-auto operator~(const X& a) {
+GAPHYS_ALWAYS_INLINE auto operator~(const X& a) {
   return reverse(a);
 }
 template <class X, if_multivector<X> = 0>
-auto operator*(typename X::scalar_type s, const X& a) {
+GAPHYS_ALWAYS_INLINE auto operator*(typename X::scalar_type s, const X& a) {
   return smul(s, a);
 }
 template <class X, if_multivector<X> = 0>
-auto operator*(const X& a, typename X::scalar_type s) {
+GAPHYS_ALWAYS_INLINE auto operator*(const X& a, typename X::scalar_type s) {
   return smul(s, a);
 }
 template <class X, if_multivector<X> = 0>
-auto operator/(const X& a, typename X::scalar_type s) {
+GAPHYS_ALWAYS_INLINE auto operator/(const X& a, typename X::scalar_type s) {
   return smul(typename X::scalar_type(1) / s, a);
 }
 
