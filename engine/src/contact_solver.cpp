@@ -1018,7 +1018,8 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   }
   slot_.resize(count);
   terms_at_.resize(count);
-  for (std::size_t s = 0; s < count; ++s) slot_[colouring_.order[s]] = s;
+  detail::parallel_for(settings.threads, count, 4096,
+                       [&](std::size_t s) { slot_[colouring_.order[s]] = s; });
   // Each constraint's own terms, then where they go.
   for_each_constraint(settings.threads, [&](std::size_t i, std::size_t s) {
     const contact& c = contacts[i];
