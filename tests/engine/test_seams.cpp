@@ -50,12 +50,12 @@ tiled_floor lay_tiles(int count, real angle, real mu, bool compound = false,
     f.tiles.push_back(f.w.create_body(floor));
     return f;
   }
+  body_definition t;
+  t.is_static = true;
+  t.attitude = f.turn;
+  t.shape = tile;
   for (int i = 0; i < count; ++i) {
-    body_definition t;
-    t.is_static = true;
-    t.attitude = f.turn;
     t.position = (2 * tile_half * i) * f.along + vector{0, 0, raised(i) - real(0.25)};
-    t.shape = tile;
     f.tiles.push_back(f.w.create_body(t));
   }
   return f;
