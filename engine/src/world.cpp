@@ -489,9 +489,10 @@ void world::step(real h) {
   {
     const int threads = detail::threads_for(settings_.threads, bodies_.size(), 1024);
     const auto count = static_cast<std::ptrdiff_t>(bodies_.size());
+    // clang-format off
 #pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1) \
-    reduction(min                                                               \
-              : overflowed)
+    reduction(min : overflowed)
+    // clang-format on
     for (std::ptrdiff_t i = 0; i < count; ++i) {
       body& b = bodies_[static_cast<std::size_t>(i)];
       b.woken_ = false;
