@@ -1,14 +1,15 @@
 #include "contact_solver.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <optional>
 #include <utility>
 
-#include <omp.h>
-
+#include "prefetch.hpp"
 #include "thread_count.hpp"
-
 #include "timed_impact.hpp"
 #include "turning_reach.hpp"
 
@@ -295,6 +296,9 @@ void contact_solver::build_constraint(const world_settings& settings, const body
   }
   k.normal_mass = k.mass_inverse > 0 ? 1 / k.mass_inverse : real(0);
   k.target_speed = k.gap > 0 ? -k.gap / h : real(0);
+  k.relaxation = relaxation_of(settings, a, b, c);
+  // What the impact phase first asks of it (resolve_impacts).
+  impact_filters_[slot] = {k.restitution > 0 && k.mass_inverse > 0, k.bounces && !k.waits};
 
   const material& m = c.material;
   // (The radius only where something resists rolling or spinning.)
@@ -359,33 +363,28 @@ void contact_solver::build_constraint(const world_settings& settings, const body
 // stack of cubes of 1 and 10 kg in turn gained energy from them for as long
 // as it was stepped (a sixth cube sideways by 35 cm in 20 s); with plain
 // impulses it settles.
-// (Read from the solver's copies: the bodies themselves are large, and
-// scattered. Static and kinematic bodies have no inverse mass.)
-static bool disparate(const detail::solver_body& a, const detail::solver_body& b) {
-  if (!(a.inverse_mass > 0) || !(b.inverse_mass > 0)) return false;
-  const real lighter = std::max(a.inverse_mass, b.inverse_mass);
-  const real heavier = std::min(a.inverse_mass, b.inverse_mass);
+// (Static and kinematic bodies have no inverse mass.)
+static bool disparate(real inverse_mass_a, real inverse_mass_b) {
+  if (!(inverse_mass_a > 0) || !(inverse_mass_b > 0)) return false;
+  const real lighter = std::max(inverse_mass_a, inverse_mass_b);
+  const real heavier = std::min(inverse_mass_a, inverse_mass_b);
   return lighter > 2 * heavier;
 }
 
-// How many contacts each body is in (set_relaxation reads those of the
+// How many contacts each body is in (relaxation_of reads those of the
 // bodies with mass), from the colouring's list of each contact's bodies.
 void contact_solver::count_contacts(std::size_t bodies, const std::vector<body_pair>& pairs) {
   contacts_per_body_.assign(bodies, 0);
   for (const auto& [a, b] : pairs) ++contacts_per_body_[a], ++contacts_per_body_[b];
 }
 
-void contact_solver::set_relaxation(const world_settings& settings) {
-  const auto shares_body = [&](std::uint32_t body, std::uint32_t place) {
-    return solver_bodies_[place].inverse_mass > 0 && contacts_per_body_[body] > 1;
+real contact_solver::relaxation_of(const world_settings& settings, const body& a, const body& b,
+                                   const contact& c) const {
+  if (disparate(a.inverse_mass(), b.inverse_mass())) return 1;
+  const auto shares = [&](const body& x, std::size_t index) {
+    return x.inverse_mass() > 0 && contacts_per_body_[index] > 1;
   };
-  for_each_constraint(settings.threads, [&](std::size_t, std::size_t s) {
-    constraint& k = constraints_[s];
-    if (disparate(solver_bodies_[k.place_a], solver_bodies_[k.place_b])) return;
-    if (shares_body(k.body_a, k.place_a) || shares_body(k.body_b, k.place_b)) {
-      k.relaxation = settings.solver_relaxation;
-    }
-  });
+  return shares(a, c.body_a) || shares(b, c.body_b) ? settings.solver_relaxation : real(1);
 }
 
 // Whether a contact bounces now, and at what approach speed: a bouncing
@@ -496,9 +495,9 @@ bool contact_solver::impact_run(std::size_t first, std::size_t end, real thresho
   run_bounces_.clear();
   real largest_target = 0;
   for (std::size_t i = first; i < end; ++i) {
-    if (!impact_filters_[i].can_bounce) continue;
-    bool timed_now = false;
     const std::size_t index = slot_[i];
+    if (!impact_filters_[index].can_bounce) continue;
+    bool timed_now = false;
     if (const std::optional<real> speed = impact_speed(index, threshold, h, timed_now)) {
       // The speed impact() would leave: its impulse's (1 + e) speed on top
       // of the speed now (for a timed bounce, `speed` is the one at its
@@ -550,16 +549,6 @@ bool contact_solver::impact_run(std::size_t first, std::size_t end, real thresho
 // the contacts are ordered; sweeps that meet the row against its order
 // need one sweep per ball.
 void contact_solver::resolve_impacts(const world_settings& settings, real h) {
-  // What impact() first asks of each contact, in contact order and packed
-  // (the constraints lie in the sweeps' order, a cache line each): whether
-  // it can bounce at all, and whether it bounces from the start velocities.
-  // (Read in the constraints' order, written to each one's contact.)
-  impact_filters_.resize(constraints_.size());
-  detail::parallel_for(settings.threads, constraints_.size(), 4096, [&](std::size_t s) {
-    const constraint& k = constraints_[s];
-    impact_filters_[colouring_.order[s]] = {k.restitution > 0 && k.mass_inverse > 0,
-                                            k.bounces && !k.waits};
-  });
   // The same per run of contacts between the same two bodies (consecutive
   // in contact order, they bounce together: impact_run), with its bodies:
   // whether a contact of it can bounce, and whether one bounces by itself.
@@ -573,7 +562,7 @@ void contact_solver::resolve_impacts(const world_settings& settings, real h) {
     impact_run_filter& run = impact_runs_[r];
     run = {static_cast<std::uint32_t>(body_a), static_cast<std::uint32_t>(body_b), false, false};
     for (std::size_t i = begins[r]; i < begins[r + 1]; ++i) {
-      const impact_filter& f = impact_filters_[i];
+      const impact_filter& f = impact_filters_[slot_[i]];
       run.can_bounce = run.can_bounce || f.can_bounce;
       run.starts = run.starts || (f.can_bounce && f.starts);
     }
@@ -930,6 +919,12 @@ GAPHYS_ALWAYS_INLINE void contact_solver::solve_contact(std::size_t s, const swe
 void contact_solver::store_impulses(std::vector<contact>& contacts, int threads) const {
   // (On world_settings::threads, each contact on its own.)
   detail::parallel_for(threads, contacts.size(), 512, [&](std::size_t i) {
+    // (Read in contact order, the constraints are scattered: prefetch.hpp.)
+    if (i + detail::prefetch_distance < contacts.size()) {
+      const std::size_t ahead = slot_[i + detail::prefetch_distance];
+      detail::prefetch_bytes(&constraints_[ahead], sizeof(constraint));
+      detail::prefetch(&impacts_[ahead]);
+    }
     const constraint& k = constraints_[slot_[i]];
     contact_impulse& resting = contacts[i].resting;
     resting = contact_impulse{};
@@ -964,8 +959,12 @@ void contact_solver::store_impulses(std::vector<contact>& contacts, int threads)
 // constraints of 10,000 spheres took 1.2 ms on two threads against 0.8 on
 // one (2026-12-06, a 2-core Xeon whose cores hand a cache line over in
 // 150 ns).
-template <class Visit>
-void contact_solver::for_each_constraint(int threads, const Visit& visit) const {
+// There, `ahead(i)` asks for what visit will read of contact i, a few slots
+// later (prefetch.hpp): read in slots' order, the contacts and their bodies
+// are scattered, and many were written by the other core.
+template <class Visit, class Ahead>
+void contact_solver::for_each_constraint(int threads, const Visit& visit,
+                                         const Ahead& ahead) const {
   const std::size_t count = colouring_.order.size();
   if (sweep_threads_ == 1) {
     detail::parallel_for(threads, count, 512, [&](std::size_t i) { visit(i, slot_[i]); });
@@ -975,7 +974,12 @@ void contact_solver::for_each_constraint(int threads, const Visit& visit) const 
   const std::size_t colours = colouring_.colours();
   const std::vector<std::size_t>& starts = colouring_.run_starts;
   const auto visit_slots = [&](std::size_t first_run, std::size_t end_run) {
-    for (std::size_t s = starts[first_run]; s < starts[end_run]; ++s) visit(colouring_.order[s], s);
+    const std::size_t end = starts[end_run];
+    for (std::size_t s = starts[first_run]; s < end; ++s) {
+      if (s + detail::prefetch_distance < end)
+        ahead(colouring_.order[s + detail::prefetch_distance]);
+      visit(colouring_.order[s], s);
+    }
   };
 #pragma omp parallel num_threads(sweep_threads_)
   {
@@ -1021,10 +1025,13 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   detail::parallel_for(settings.threads, count, 4096,
                        [&](std::size_t s) { slot_[colouring_.order[s]] = s; });
   // Each constraint's own terms, then where they go.
-  for_each_constraint(settings.threads, [&](std::size_t i, std::size_t s) {
-    const contact& c = contacts[i];
-    terms_at_[s] = terms_of(bodies[c.body_a], bodies[c.body_b], c);
-  });
+  for_each_constraint(
+      settings.threads,
+      [&](std::size_t i, std::size_t s) {
+        const contact& c = contacts[i];
+        terms_at_[s] = terms_of(bodies[c.body_a], bodies[c.body_b], c);
+      },
+      [&](std::size_t i) { detail::prefetch(&contacts[i].material); });
   term_counts total;
   for (term_counts& at : terms_at_) {
     const term_counts own = at;
@@ -1035,15 +1042,27 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   constraints_.resize(count);
   normal_arms_.resize(count);
   impacts_.resize(count);
+  impact_filters_.resize(count);
   surfaces_.resize(total.surfaces);
   frames_.resize(total.surfaces);
   resistances_.resize(total.resistances);
-  for_each_constraint(settings.threads, [&](std::size_t i, std::size_t s) {
-    const contact& c = contacts[i];
-    build_constraint(settings, bodies[c.body_a], bodies[c.body_b], c, start[c.body_a],
-                     start[c.body_b], h, s, terms_at_[s]);
-  });
-  set_relaxation(settings);
+  const auto fetch = [&](std::size_t i) {
+    const auto& [a, b] = colouring_.pairs[i];
+    detail::prefetch_bytes(&contacts[i], offsetof(contact, impulse));  // (what it reads)
+    for (const std::size_t x : {a, b}) {
+      detail::prefetch(&bodies[x]);
+      detail::prefetch(&bodies[x].position());
+      detail::prefetch(&start[x]);
+    }
+  };
+  for_each_constraint(
+      settings.threads,
+      [&](std::size_t i, std::size_t s) {
+        const contact& c = contacts[i];
+        build_constraint(settings, bodies[c.body_a], bodies[c.body_b], c, start[c.body_a],
+                         start[c.body_b], h, s, terms_at_[s]);
+      },
+      fetch);
 
   // Whether any contact turns a body (one of its bodies is neither central
   // nor static: build_constraint's k.turns) or rubs (has surface terms),
@@ -1063,6 +1082,10 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   store_impulses(contacts, settings.threads);
   detail::parallel_for(settings.threads, bodies.size(), 2048, [&](std::size_t i) {
     body& b = bodies[i];
+    // (Placed by the sweeps' threads, the solver's copies are scattered.)
+    if (i + detail::prefetch_distance < bodies.size()) {
+      detail::prefetch(&solver_bodies_[place_[i + detail::prefetch_distance]]);
+    }
     if (!b.is_dynamic()) return;  // contacts never change a static or kinematic body
     const solver_body& solved = solver_bodies_[place_[i]];
     b.velocity_ = solved.velocity;

@@ -184,7 +184,11 @@ class contact_solver {
                      const std::vector<body_velocity>& start, const std::vector<contact>& contacts);
   std::vector<std::array<std::size_t, 2>> supports_;
   void count_contacts(std::size_t bodies, const std::vector<body_pair>& pairs);
-  void set_relaxation(const world_settings& settings);
+  // The over-relaxation of a contact's normal row: settings' where it
+  // shares a body with mass, 1 where it does not or the masses differ
+  // (contact_solver.cpp).
+  real relaxation_of(const world_settings& settings, const body& a, const body& b,
+                     const contact& c) const;
   void resolve_impacts(const world_settings& settings, real h);
   bool impact(std::size_t index, real threshold, real h);
   void bounce(std::size_t index, real speed, bool timed_now);
@@ -235,8 +239,8 @@ class contact_solver {
   // The sweeps on batches (contact_batch.hpp, contact_batches.cpp).
   struct batch_group;
   void pack_batches(const world_settings& settings);
-  template <class Visit>
-  void for_each_constraint(int threads, const Visit& visit) const;
+  template <class Visit, class Ahead>
+  void for_each_constraint(int threads, const Visit& visit, const Ahead& ahead) const;
   template <class Visit>
   void by_colours(const Visit& visit) const;
   void add_batch_group(const std::array<std::size_t, detail::contact_lanes>& runs, int filled);
@@ -328,8 +332,8 @@ class contact_solver {
     return row;
   }
   std::vector<impact_terms> impacts_;        // one per constraint
-  // Per contact (in contact order): resolve_impacts' first test (its bodies
-  // are colouring_.pairs').
+  // Per constraint (in the sweeps' order, written by build_constraint):
+  // resolve_impacts' first test.
   struct impact_filter {
     bool can_bounce;  // restitution, and a normal impulse that moves something
     bool starts;      // bounces from the start velocities (and meets within the step)
