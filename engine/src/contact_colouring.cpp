@@ -16,13 +16,6 @@ void assign_blocks(const std::vector<body>& bodies, int colours, int blocks, int
 
 }  // namespace
 
-void read_pairs(const std::vector<contact>& contacts, contact_colouring& out, int threads) {
-  out.pairs.resize(contacts.size());
-  parallel_for(threads, contacts.size(), 4096, [&](std::size_t i) {
-    out.pairs[i] = {contacts[i].body_a, contacts[i].body_b};
-  });
-}
-
 void colour_contacts(const std::vector<body>& bodies, contact_colouring& out, int threads,
                      int blocks) {
   constexpr int sequential = contact_colouring::most_colours;

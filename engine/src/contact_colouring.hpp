@@ -35,6 +35,7 @@
 
 #include "gaphys/body.hpp"
 #include "gaphys/contact.hpp"
+#include "thread_count.hpp"
 
 namespace gaphys::detail {
 
@@ -78,11 +79,20 @@ struct contact_colouring {
   std::vector<std::size_t> colour_counts, bin_weights, sorted_runs, sort_scratch;
 };
 
-// Each contact's bodies into out.pairs, in one pass on `threads`
-// (world_settings::threads): colour_contacts reads them, and so does the
-// solver's preparation beside it (16 bytes a contact; a contact is 248 in
-// double, and each pass over the list read them all).
-void read_pairs(const std::vector<contact>& contacts, contact_colouring& out, int threads);
+// Each contact's bodies into out.pairs, and also(i) for each contact i, in
+// one pass on `threads` (world_settings::threads): colour_contacts reads
+// the pairs, and so does the solver's preparation beside it (16 bytes a
+// contact; a contact is 248 in double, and each pass over the list read
+// them all).
+template <class Also>
+void read_pairs(const std::vector<contact>& contacts, contact_colouring& out, int threads,
+                const Also& also) {
+  out.pairs.resize(contacts.size());
+  parallel_for(threads, contacts.size(), 4096, [&](std::size_t i) {
+    out.pairs[i] = {contacts[i].body_a, contacts[i].body_b};
+    also(i);
+  });
+}
 
 // The contacts whose bodies read_pairs put in out.pairs, sorted by body
 // pair as the narrow phase makes them. `threads` (world_settings::threads)

@@ -178,11 +178,16 @@ class contact_solver {
   // The first two bodies each body rests on, for timing_velocity: touching
   // it, or nearly (within the contact margin), on the side the step's
   // forces press it towards (a floor under gravity, not a wall beside it);
-  // `no_support` where it has fewer.
+  // `no_support` where it has fewer. From each contact's resting_sides
+  // (rests_), in contact order.
   static constexpr std::size_t no_support = ~std::size_t{0};
-  void find_supports(const world_settings& settings, const std::vector<body>& bodies,
-                     const std::vector<body_velocity>& start, const std::vector<contact>& contacts);
+  void find_supports(std::size_t bodies);
   std::vector<std::array<std::size_t, 2>> supports_;
+  // Bit 1: A rests on B, bit 2: B on A (touching or within the margin, on
+  // the side the forces press it towards), from forced_.
+  unsigned char resting_sides(const world_settings& settings, const contact& c) const;
+  std::vector<vector> forced_;        // per body: the velocity the step's forces gave it
+  std::vector<unsigned char> rests_;  // per contact: its resting_sides
   void count_contacts(std::size_t bodies, const std::vector<body_pair>& pairs);
   // The over-relaxation of a contact's normal row: settings' where it
   // shares a body with mass, 1 where it does not or the masses differ
@@ -219,7 +224,7 @@ class contact_solver {
   void prepare_bodies(const std::vector<body>& bodies, const std::vector<body_velocity>& start,
                       const std::vector<contact>& contacts, const std::vector<contact>& previous,
                       int threads);
-  void colour_beside_preparation(const world_settings& settings, const std::vector<body>& bodies,
+  void colour_beside_preparation(const std::vector<body>& bodies,
                                  const std::vector<body_velocity>& start,
                                  const std::vector<contact>& contacts,
                                  const std::vector<contact>& previous);

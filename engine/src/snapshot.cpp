@@ -631,6 +631,7 @@ struct snapshot_access {
       out.u64(list->size());
       for (const contact& c : *list) write_contact(out, c);
     }
+    w.settle_events();
     const auto& [began, persisted, ended] = w.events_;
     for (const std::vector<contact_event>* list : {&began, &persisted, &ended}) {
       write_events(out, *list);

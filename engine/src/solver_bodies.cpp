@@ -101,8 +101,7 @@ void contact_solver::prepare_bodies(const std::vector<body>& bodies,
 // step and the colouring 0.55-0.66 ms: one thread waited the difference,
 // and on more cores the others did nothing.) Every piece writes only its
 // own bodies' or contacts' data.
-void contact_solver::colour_beside_preparation(const world_settings& settings,
-                                               const std::vector<body>& bodies,
+void contact_solver::colour_beside_preparation(const std::vector<body>& bodies,
                                                const std::vector<body_velocity>& start,
                                                const std::vector<contact>& contacts,
                                                const std::vector<contact>& previous) {
@@ -115,7 +114,7 @@ void contact_solver::colour_beside_preparation(const world_settings& settings,
 #pragma omp task
     detail::colour_contacts(bodies, colouring_, 1, sweep_threads_);
 #pragma omp task
-    find_supports(settings, bodies, start, contacts);
+    find_supports(bodies.size());
 #pragma omp task
     count_contacts(bodies.size(), colouring_.pairs);
     mark_bodies_in_contact(bodies);

@@ -106,6 +106,7 @@ world::world(const world& other)
       sleeping_contacts_(other.sleeping_contacts_),
       next_island_(other.next_island_),
       events_(other.events_),
+      events_pending_(other.events_pending_),
       sensor_overlaps_(other.sensor_overlaps_),
       start_velocities_(other.start_velocities_),
       timings_(other.timings_),
@@ -217,6 +218,7 @@ bool world::contains(body_id id) const {
 
 void world::remove_body(body_id id) {
   const std::size_t index = index_of(id);
+  settle_events();  // (before the lists and the indices change)
   // What it touched, and its own island, wake: they may fall or slide now.
   std::vector<std::uint64_t> islands;
   if (bodies_[index].island_ != 0) islands.push_back(bodies_[index].island_);
@@ -279,6 +281,24 @@ void world::set_sleeping(bool sleeping) {
   if (!sleeping) wake_all();
 }
 
+const contact_events& world::events() const {
+  settle_events();
+  return events_;
+}
+
+void world::settle_events() const {
+  if (!events_pending_) return;
+  detail::find_events(previous_contacts_, contacts_, events_, settings_.threads);
+  // Contacts name bodies by index; the events by id.
+  for (std::vector<contact_event>* list : {&events_.began, &events_.persisted, &events_.ended}) {
+    detail::parallel_for(settings_.threads, list->size(), 4096, [&](std::size_t i) {
+      contact_event& e = (*list)[i];
+      e.body_a = id_at(e.body_a), e.body_b = id_at(e.body_b);
+    });
+  }
+  events_pending_ = false;
+}
+
 const std::vector<contact>& world::contacts() const {
   if (sleeping_contacts_.empty()) return contacts_;
   if (!merged_current_) {
@@ -306,6 +326,7 @@ void world::wake_islands(std::vector<std::uint64_t>& labels) {
     b.island_ = 0;
     woken_bodies_.push_back(i);
   }
+  settle_events();  // (before contacts_ changes)
   move_contacts(sleeping_contacts_, contacts_, [this](const contact& c) {
     return !bodies_[c.body_a].asleep_ && !bodies_[c.body_b].asleep_;
   });
@@ -408,6 +429,7 @@ void world::step(real h) {
   }
   ++geometry_version_;
   merged_current_ = false;
+  events_pending_ = false;  // (the last step's, unread: this step's replace them)
   // The islands of the bodies the user woke since the last step wake whole;
   // so do the sleeping islands resting on a static or kinematic body the
   // user moved or set going (its sleeping contacts name them, as they do
@@ -472,15 +494,10 @@ void world::step(real h) {
   const auto moved = clock::now();
   if (!contacts_.empty()) solver_->correct_positions(settings_, bodies_, contacts_, h);
   const auto corrected = clock::now();
-  // Events before the islands that fall asleep set their contacts aside.
-  detail::find_events(previous_contacts_, contacts_, events_, settings_.threads);
-  // Contacts name bodies by index; the events and sensor overlaps by id.
-  for (std::vector<contact_event>* list : {&events_.began, &events_.persisted, &events_.ended}) {
-    detail::parallel_for(settings_.threads, list->size(), 4096, [&](std::size_t i) {
-      contact_event& e = (*list)[i];
-      e.body_a = id_at(e.body_a), e.body_b = id_at(e.body_b);
-    });
-  }
+  // The events are found when read (events()), or before the islands that
+  // fall asleep set their contacts aside. Contacts name bodies by index; the
+  // sensor overlaps by id.
+  events_pending_ = true;
   for (sensor_overlap& o : sensor_overlaps_) o.sensor = id_of(o.sensor), o.other = id_of(o.other);
   const auto reported = clock::now();
   fall_asleep(h);
@@ -600,6 +617,7 @@ void world::fall_asleep(real h) {
     any_asleep = true;
   }
   if (!any_asleep) return;
+  settle_events();  // (before contacts_ changes: the pairs falling asleep persist)
   move_contacts(contacts_, sleeping_contacts_, [this](const contact& c) {
     return bodies_[c.body_a].asleep_ || bodies_[c.body_b].asleep_;
   });

@@ -4,6 +4,7 @@
 // step), and once it is thrown up its pair ends, with the event of the last
 // step it touched in; an elastic ball begins and ends once per bounce.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -147,6 +148,105 @@ TEST_F(contact_events_test, events_are_sorted_by_pair_and_a_copied_world_keeps_t
   }
   const world copy = w;
   EXPECT_EQ(copy.events().began.size(), 5u);
+}
+
+// The events are found when first read after a step (world::events()):
+// read late, after whatever changes a world between steps, they are those
+// an identical world read at once. Both worlds step alike; one reads its
+// events after every step, the other every seventh step, in each step an
+// island falls asleep in (its pairs persist in that step), and after
+// removing and adding bodies, waking every island, copying itself and
+// going through a snapshot.
+TEST_F(contact_events_test, events_read_late_are_those_read_at_once) {
+  const auto make = [&] {
+    world_settings settings;
+    settings.time_to_sleep = real(0.3);
+    world w(settings);
+    add_floor(w, 0, real(0.5));
+    for (int i = 0; i < 6; ++i) add_sphere(w, vector{real(i), 0, real(0.5)}, real(0.5));
+    for (int i = 0; i < 4; ++i) {
+      add_sphere(w, vector{real(i) + real(0.5), 0, real(2 + i)}, real(0.5), 1, vector{}, real(0.5));
+    }
+    return w;
+  };
+  const auto same = [](const contact_events& x, const contact_events& y, int step) {
+    const auto lists = [](const contact_events& e) {
+      return std::array<const std::vector<contact_event>*, 3>{&e.began, &e.persisted, &e.ended};
+    };
+    for (std::size_t l = 0; l < 3; ++l) {
+      const std::vector<contact_event>& a = *lists(x)[l];
+      const std::vector<contact_event>& b = *lists(y)[l];
+      ASSERT_EQ(a.size(), b.size()) << "list " << l << ", step " << step;
+      for (std::size_t k = 0; k < a.size(); ++k) {
+        EXPECT_EQ(a[k].body_a, b[k].body_a);
+        EXPECT_EQ(a[k].body_b, b[k].body_b);
+        for (int c = 0; c < 3; ++c) {
+          EXPECT_EQ(a[k].point.c[c], b[k].point.c[c]);
+          EXPECT_EQ(a[k].normal.c[c], b[k].normal.c[c]);
+        }
+        EXPECT_EQ(a[k].impulse, b[k].impulse);
+        EXPECT_EQ(a[k].approach_speed, b[k].approach_speed);
+      }
+    }
+  };
+  const auto sleepers = [](const world& w) {
+    return std::count_if(w.bodies().begin(), w.bodies().end(),
+                         [](const body& b) { return b.is_sleeping(); });
+  };
+  world at_once = make(), late = make();
+  int fell_asleep = 0, seen = 0;
+  for (int step = 0; step < 600; ++step) {
+    const auto asleep_before = sleepers(late);
+    at_once.step(h);
+    late.step(h);
+    const contact_events expected = at_once.events();
+    seen += !expected.began.empty() + !expected.persisted.empty() + !expected.ended.empty();
+    const bool fell = sleepers(late) > asleep_before;
+    fell_asleep += fell;
+    if (fell || step % 7 == 0) same(expected, late.events(), step);
+    if (fell) {
+      // The pairs of the bodies that fell asleep persist (or begin) in this
+      // step, then fall silent (engine.md, "Contact events").
+      for (const contact& c : late.contacts()) {
+        if (!late.bodies()[c.body_a].is_sleeping() && !late.bodies()[c.body_b].is_sleeping())
+          continue;
+        if (!(c.geometry.depth >= 0 || c.impulse.normal > 0)) continue;
+        const body_id a = late.id_of(c.body_a), b = late.id_of(c.body_b);
+        EXPECT_EQ(count(late.events().persisted, a, b) + count(late.events().began, a, b), 1)
+            << "step " << step;
+      }
+    }
+    if (step == 100) {  // a resting ball goes: the indices after it move down
+      at_once.remove_body(at_once.id_of(2));
+      late.remove_body(late.id_of(2));
+      same(at_once.events(), late.events(), step);
+    }
+    if (step == 101) {
+      add_sphere(at_once, vector{10, 0, real(0.5)}, real(0.5));
+      add_sphere(late, vector{10, 0, real(0.5)}, real(0.5));
+    }
+    if (step == 102) {
+      const world copy = late;
+      same(expected, copy.events(), step);
+    }
+    if (step == 103) {
+      world restored;
+      restored.restore_snapshot(late.save_snapshot());
+      same(expected, restored.events(), step);
+    }
+    if (step == 400) {  // every island wakes: their contacts rejoin the awake ones
+      ASSERT_GT(sleepers(late), 0);
+      at_once.set_sleeping(false);
+      late.set_sleeping(false);
+      at_once.set_sleeping(true);
+      late.set_sleeping(true);
+      same(expected, late.events(), step);
+    }
+    ASSERT_EQ(at_once.state_hash(), late.state_hash()) << "step " << step;
+  }
+  same(at_once.events(), late.events(), 600);
+  EXPECT_GE(fell_asleep, 2) << "islands fell asleep in the run";
+  EXPECT_GT(seen, 100) << "steps with events";
 }
 
 }  // namespace
