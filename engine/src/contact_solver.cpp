@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <optional>
@@ -1110,71 +1111,77 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
 
 void contact_solver::correct_positions(const world_settings& settings, std::vector<body>& bodies,
                                        const std::vector<contact>& contacts, real h) {
-  // Each contact's correction on the threads (reading only velocities,
-  // which nothing here changes); then the bodies moved.
-  constexpr real timed = -1, turning = -2;  // corrections that are not a push
-  corrections_.resize(contacts.size());
-  detail::parallel_for(settings.threads, contacts.size(), 4096, [&](std::size_t i) {
-    // (The solver's copies of the bodies: the same velocities and masses,
-    // compact where the bodies are large and scattered.)
-    const contact& c = contacts[i];
-    const solver_body& a = solver_bodies_[place_[c.body_a]];
-    const solver_body& b = solver_bodies_[place_[c.body_b]];
-    real& push = corrections_[i];
-    push = 0;
-    if (!(a.inverse_mass + b.inverse_mass > 0)) return;
-    if (impacts_[slot_[i]].timed) {
-      push = timed;
-      return;
-    }
-    // A speculative contact had a gap when the step began; if its bodies
-    // overlap now (one left to bounce in a later step), the next step meets
-    // them for real.
-    if (c.geometry.depth < 0) return;
-    if (constraints_[slot_[i]].turns) {
-      push = turning;  // corrected below, turning the bodies too
-      return;
-    }
-    // The depth now, to first order: the positions moved by h v since the
-    // narrow phase measured it.
-    const real depth = c.geometry.depth - h * e3ga::scp(a.velocity - b.velocity, c.geometry.normal);
-    const real wanted = settings.position_correction * (depth - settings.linear_slop);
-    push = wanted > 0 ? wanted : 0;
-  });
-  // The pushes in the sweeps' order (by_colours): the shifts add up on each
-  // body in that order on any number of threads. (In contact order on one
+  // Each contact's shifts of its bodies on the threads (reading only
+  // velocities, which nothing here changes), into its slot; then the bodies
+  // moved. (Read back through the contacts and the bodies, which are large
+  // and scattered, the shifts took 0.2 ms more of a 10,000-sphere step.)
+  shifts_.resize(contacts.size());
+  std::atomic<bool> any_turning{false};
+  for_each_constraint(
+      settings.threads,
+      [&](std::size_t i, std::size_t s) {
+        // (The solver's copies of the bodies: the same velocities and
+        // masses, compact where the bodies are large and scattered.)
+        const contact& c = contacts[i];
+        const solver_body& a = solver_bodies_[place_[c.body_a]];
+        const solver_body& b = solver_bodies_[place_[c.body_b]];
+        position_shift& shift = shifts_[s];
+        shift.body_a = static_cast<std::uint32_t>(c.body_a);
+        shift.body_b = static_cast<std::uint32_t>(c.body_b);
+        shift.moves = 0;
+        const real inverse_masses = a.inverse_mass + b.inverse_mass;
+        if (!(inverse_masses > 0)) return;
+        const impact_terms& record = impacts_[s];
+        // (Only bodies with mass move: a static one may be in several runs
+        // of a colour.)
+        const unsigned char moving =
+            static_cast<unsigned char>((a.inverse_mass > 0 ? 1 : 0) | (b.inverse_mass > 0 ? 2 : 0));
+        if (record.timed) {
+          // The impulse J came at impact_time into the step, not at its
+          // start: each body moved with its old velocity until then, t ΔV
+          // less far.
+          const vector moved = record.timing->time * record.timed_impulse;
+          shift.a = -(a.inverse_mass * moved);
+          shift.b = b.inverse_mass * moved;
+          shift.moves = moving;
+          return;
+        }
+        // A speculative contact had a gap when the step began; if its bodies
+        // overlap now (one left to bounce in a later step), the next step
+        // meets them for real.
+        if (c.geometry.depth < 0) return;
+        if (constraints_[s].turns) {  // corrected below, turning the bodies too
+          any_turning.store(true, std::memory_order_relaxed);
+          return;
+        }
+        // The depth now, to first order: the positions moved by h v since the
+        // narrow phase measured it.
+        const vector& n = c.geometry.normal;
+        const real depth = c.geometry.depth - h * e3ga::scp(a.velocity - b.velocity, n);
+        const real wanted = settings.position_correction * (depth - settings.linear_slop);
+        if (!(wanted > 0)) return;
+        shift.a = (wanted * a.inverse_mass / inverse_masses) * n;
+        shift.b = -((wanted * b.inverse_mass / inverse_masses) * n);
+        shift.moves = moving;
+      },
+      [&](std::size_t i) { detail::prefetch_bytes(&contacts[i], offsetof(contact, material)); });
+  // The shifts in the sweeps' order (by_colours): they add up on each body
+  // in that order on any number of threads. (In contact order on one
   // thread, as until 2026-12-06, the second thread waited.)
   by_colours([&](std::size_t first, std::size_t end) {
     for (std::size_t s = first; s < end; ++s) {
-      const std::size_t i = colouring_.order[s];
-      const real push = corrections_[i];
-      if (push == 0 || push == turning) continue;
-      const contact& c = contacts[i];
-      body& a = bodies[c.body_a];
-      body& b = bodies[c.body_b];
-      // (Only bodies with mass move: a static one may be in several runs of a colour.)
-      if (push == timed) {
-        // The impulse J came at impact_time into the step, not at its start:
-        // each body moved with its old velocity until then, t ΔV less far.
-        const impact_terms& record = impacts_[s];
-        const vector shift = record.timing->time * record.timed_impulse;
-        if (a.inverse_mass_ > 0) a.position_ = a.position_ - a.inverse_mass_ * shift;
-        if (b.inverse_mass_ > 0) b.position_ = b.position_ + b.inverse_mass_ * shift;
-        continue;
+      const position_shift& shift = shifts_[s];
+      if (shift.moves & 1) {
+        body& a = bodies[shift.body_a];
+        a.position_ = a.position_ + shift.a;
       }
-      const real inverse_masses = a.inverse_mass_ + b.inverse_mass_;
-      const vector& n = c.geometry.normal;
-      if (a.inverse_mass_ > 0) {
-        a.position_ = a.position_ + (push * a.inverse_mass_ / inverse_masses) * n;
-      }
-      if (b.inverse_mass_ > 0) {
-        b.position_ = b.position_ - (push * b.inverse_mass_ / inverse_masses) * n;
+      if (shift.moves & 2) {
+        body& b = bodies[shift.body_b];
+        b.position_ = b.position_ + shift.b;
       }
     }
   });
-  const bool any_turning =
-      std::find(corrections_.begin(), corrections_.end(), turning) != corrections_.end();
-  if (any_turning) correct_turning(settings, bodies, contacts, h);
+  if (any_turning.load(std::memory_order_relaxed)) correct_turning(settings, bodies, contacts, h);
 }
 
 // Contacts whose impulse turns a body (a box's corners, anything off a
