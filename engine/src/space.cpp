@@ -310,37 +310,57 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
   // they finish (a core slowed by other programs takes fewer); each share is
   // met into its own lists, and joined in share order they are what one
   // thread makes.
-  const int share_count = 4 * shares;
-  shares_.resize(static_cast<std::size_t>(share_count));
-#pragma omp parallel for num_threads(shares) schedule(dynamic, 1)
-  for (int share = 0; share < share_count; ++share) {
-    const auto at = static_cast<std::size_t>(share);
-    const body_pair* first = pairs.data() + pairs.size() * at / share_count;
-    const body_pair* end = pairs.data() + pairs.size() * (at + 1) / share_count;
-    share_lists& lists = shares_[at].value;
-    lists.contacts.clear();
-    lists.sensors.clear();
-    lists.on_static.clear();
-    meet_pairs(bodies, first, end, lists.contacts, lookahead, rules, margin,
-               sensors ? &lists.sensors : nullptr, lists.on_static);
-  }
-  // The join, each share copied to its place on the threads. (The list
-  // comes from two steps ago, about as long: resized, not cleared, it
-  // constructs only the contacts it lacks; and given room to grow, it is
-  // not allocated anew in every step that has more contacts.)
-  share_starts_.assign(shares_.size() + 1, 0);
-  for (std::size_t at = 0; at < shares_.size(); ++at) {
-    share_starts_[at + 1] = share_starts_[at] + shares_[at].value.contacts.size();
+  // The join: a share's place in the list is known once every share before
+  // it is met, and the thread that completes that places it and copies it
+  // there at once, while its contacts are still in that core's cache, where
+  // the list (from two steps ago, about as long) already reaches; the rest
+  // once the list is resized. (Copied after all were met, the contacts of
+  // 10,000 spheres took 0.3 ms of a step on two threads.)
+  const auto share_count = static_cast<std::size_t>(4 * shares);
+  shares_.resize(share_count);
+  share_starts_.assign(share_count + 1, 0);
+  share_states_.assign(share_count, share_state::meeting);
+  const std::size_t room = contacts.size();
+  std::size_t placed = 0;  // the shares [0, placed) have their starts
+  const auto copy_share = [&](std::size_t at) {
+    const std::vector<contact>& met = shares_[at].value.contacts;
+    std::copy(met.begin(), met.end(),
+              contacts.begin() + static_cast<std::ptrdiff_t>(share_starts_[at]));
+  };
+#pragma omp parallel num_threads(shares)
+  {
+    std::vector<std::size_t> to_copy;
+#pragma omp for schedule(dynamic, 1)
+    for (std::size_t at = 0; at < share_count; ++at) {
+      const body_pair* first = pairs.data() + pairs.size() * at / share_count;
+      const body_pair* end = pairs.data() + pairs.size() * (at + 1) / share_count;
+      share_lists& lists = shares_[at].value;
+      lists.contacts.clear();
+      lists.sensors.clear();
+      lists.on_static.clear();
+      meet_pairs(bodies, first, end, lists.contacts, lookahead, rules, margin,
+                 sensors ? &lists.sensors : nullptr, lists.on_static);
+      to_copy.clear();
+#pragma omp critical(gaphys_space_join)
+      {
+        share_states_[at] = share_state::met;
+        for (; placed < share_count && share_states_[placed] != share_state::meeting; ++placed) {
+          share_starts_[placed + 1] = share_starts_[placed] + shares_[placed].value.contacts.size();
+          if (share_starts_[placed + 1] <= room) {
+            share_states_[placed] = share_state::copied;
+            to_copy.push_back(placed);
+          }
+        }
+      }
+      for (const std::size_t k : to_copy) copy_share(k);
+    }
   }
   const std::size_t total = share_starts_.back();
   if (contacts.capacity() < total) contacts.reserve(total + total / 4);
   contacts.resize(total);
 #pragma omp parallel for num_threads(shares) schedule(dynamic, 1)
-  for (int share = 0; share < share_count; ++share) {
-    const auto at = static_cast<std::size_t>(share);
-    const std::vector<contact>& met = shares_[at].value.contacts;
-    std::copy(met.begin(), met.end(),
-              contacts.begin() + static_cast<std::ptrdiff_t>(share_starts_[at]));
+  for (std::size_t at = 0; at < share_count; ++at) {
+    if (share_states_[at] != share_state::copied) copy_share(at);
   }
   for (std::size_t at = 0; at < shares_.size(); ++at) {
     for (const std::size_t i : shares_[at].value.on_static) {

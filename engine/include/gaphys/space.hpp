@@ -127,6 +127,8 @@ class space {
   };
   std::vector<detail::cache_padded<share_lists>> shares_;
   std::vector<std::size_t> share_starts_;  // where each share's contacts go in the list
+  enum class share_state : unsigned char { meeting, met, copied };
+  std::vector<share_state> share_states_;
   // The contacts between a static body and another, in order (meet_pairs
   // lists them).
   std::vector<std::size_t> on_static_;
