@@ -83,37 +83,6 @@ real rolling_radius_of(const shape& s) {
   return s.kind() == shape_kind::sphere || s.kind() == shape_kind::capsule ? s.radius() : 0;
 }
 
-// The last step's contact at the same point as c, searched in the run of
-// contacts from `run` on that share c's bodies and have not warm started a
-// contact yet (`used`): the same two shapes and the same feature ids, or
-// else (a feature the narrow phase names differently now, such as a corner
-// that crossed a side of the face it rests on by a rounding error) the
-// nearest point of the same two shapes within 5% of the smaller shape's
-// size. `end` when there is none.
-std::size_t same_point(const contact& c, std::size_t run, const std::vector<contact>& previous,
-                       const std::vector<char>& used, const std::vector<body>& bodies) {
-  const std::size_t end = previous.size();
-  const auto candidate = [&](std::size_t i) {
-    return i < end && previous[i].body_a == c.body_a && previous[i].body_b == c.body_b;
-  };
-  const auto same_shapes = [&](const contact& o) {
-    return o.shape_a == c.shape_a && o.shape_b == c.shape_b;
-  };
-  for (std::size_t i = run; candidate(i); ++i) {
-    if (!used[i] && same_shapes(previous[i]) && previous[i].feature == c.feature) return i;
-  }
-  const real size = std::min(bodies[c.body_a].shapes()[c.shape_a].shape.bounding_radius(),
-                             bodies[c.body_b].shapes()[c.shape_b].shape.bounding_radius());
-  real nearest = real(0.05) * size;
-  std::size_t found = end;
-  for (std::size_t i = run; candidate(i); ++i) {
-    if (used[i] || !same_shapes(previous[i])) continue;
-    const real distance = e3ga::norm(previous[i].geometry.point - c.geometry.point);
-    if (distance < nearest) nearest = distance, found = i;
-  }
-  return found;
-}
-
 // Two unit tangents t1, t2 with (t1, t2, n) right-handed: t1 from the basis
 // vector least along n, t2 = n × t1, the dual of n ∧ t1 (written out: e3ga has
 // no trivector products in the engine's spec).
@@ -596,6 +565,44 @@ void contact_solver::resolve_impacts(const world_settings& settings, real h) {
   }
 }
 
+// The last step's contact at the same point as contact i, searched in the
+// run of contacts from `run` on that share its bodies and have not warm
+// started a contact yet (previous_used_): the same two shapes and the same
+// feature ids, or else (a feature the narrow phase names differently now,
+// such as a corner that crossed a side of the face it rests on by a
+// rounding error) the nearest point of the same two shapes within 5% of the
+// smaller shape's size. previous.size() when there is none. (Read from the
+// keys, 12 bytes a contact, where the contacts are 248.)
+std::size_t contact_solver::same_point(std::size_t i, std::size_t run,
+                                       const std::vector<contact>& contacts,
+                                       const std::vector<contact>& previous,
+                                       const std::vector<body>& bodies) const {
+  const std::size_t end = previous.size();
+  const body_pair& pair = colouring_.pairs[i];
+  const point_key& key = keys_[i];
+  const auto candidate = [&](std::size_t k) { return k < end && previous_pairs_[k] == pair; };
+  if (!candidate(run)) return end;  // (a pair that begins)
+  const auto same_shapes = [&](const point_key& o) {
+    return o.shape_a == key.shape_a && o.shape_b == key.shape_b;
+  };
+  for (std::size_t k = run; candidate(k); ++k) {
+    if (!previous_used_[k] && same_shapes(previous_keys_[k]) &&
+        previous_keys_[k].feature == key.feature)
+      return k;
+  }
+  const contact& c = contacts[i];
+  const real size = std::min(bodies[c.body_a].shapes()[c.shape_a].shape.bounding_radius(),
+                             bodies[c.body_b].shapes()[c.shape_b].shape.bounding_radius());
+  real nearest = real(0.05) * size;
+  std::size_t found = end;
+  for (std::size_t k = run; candidate(k); ++k) {
+    if (previous_used_[k] || !same_shapes(previous_keys_[k])) continue;
+    const real distance = e3ga::norm(previous[k].geometry.point - c.geometry.point);
+    if (distance < nearest) nearest = distance, found = k;
+  }
+  return found;
+}
+
 // Warm start: both lists are sorted by body pair, so one merge finds the
 // pairs that persist, and within a pair the same shapes' same feature ids
 // the points that do. The sweeps correct the old impulses as needed (down
@@ -619,9 +626,9 @@ void contact_solver::match_share(int share, const std::vector<body>& bodies,
                                  const std::vector<contact>& previous) {
   std::size_t run = warm_cuts_.old[share];
   for (std::size_t i = warm_cuts_.now[share]; i < warm_cuts_.now[share + 1]; ++i) {
-    const detail::pair_key key = detail::key_of(contacts[i]);
-    while (run < previous.size() && detail::key_of(previous[run]) < key) ++run;
-    const std::size_t match = same_point(contacts[i], run, previous, previous_used_, bodies);
+    const body_pair& pair = colouring_.pairs[i];
+    while (run < previous.size() && previous_pairs_[run] < pair) ++run;
+    const std::size_t match = same_point(i, run, contacts, previous, bodies);
     matches_[i] = match;
     if (match != previous.size()) previous_used_[match] = 1;
   }
@@ -1007,7 +1014,8 @@ void contact_solver::for_each_constraint(int threads, const Visit& visit,
 void contact_solver::solve_velocities(const world_settings& settings, std::vector<body>& bodies,
                                       const std::vector<body_velocity>& start,
                                       std::vector<contact>& contacts,
-                                      const std::vector<contact>& previous, real h) {
+                                      const std::vector<contact>& previous, bool previous_solved,
+                                      real h) {
   // The constraints in the sweeps' order, so that each sweep reads them
   // front to back; where each one's optional terms go, then the terms (on
   // several threads for many contacts: a box's take about 0.2 µs).
@@ -1025,9 +1033,25 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   forced_.resize(bodies.size());
   detail::parallel_for(settings.threads, bodies.size(), 4096,
                        [&](std::size_t i) { forced_[i] = bodies[i].velocity_ - start[i].linear; });
+  // The last step's keys, from its pass below where `previous` is the list
+  // it solved (else read again); then this step's with the contacts' bodies
+  // and resting sides, in one pass over the contacts.
+  previous_pairs_.swap(colouring_.pairs);
+  previous_keys_.swap(keys_);
+  if (!previous_solved || previous_keys_.size() != previous.size()) {
+    previous_pairs_.resize(previous.size());
+    previous_keys_.resize(previous.size());
+    detail::parallel_for(settings.threads, previous.size(), 4096, [&](std::size_t i) {
+      previous_pairs_[i] = {previous[i].body_a, previous[i].body_b};
+      previous_keys_[i] = key_of_point(previous[i]);
+    });
+  }
   rests_.resize(count);
-  detail::read_pairs(contacts, colouring_, settings.threads,
-                     [&](std::size_t i) { rests_[i] = resting_sides(settings, contacts[i]); });
+  keys_.resize(count);
+  detail::read_pairs(contacts, colouring_, settings.threads, [&](std::size_t i) {
+    rests_[i] = resting_sides(settings, contacts[i]);
+    keys_[i] = key_of_point(contacts[i]);
+  });
   if (sweep_threads_ > 1) {
     colour_beside_preparation(bodies, start, contacts, previous);
   } else {

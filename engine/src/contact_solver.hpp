@@ -49,9 +49,11 @@ class contact_solver {
   // bodies close the gap in this step of h seconds but no more: its target
   // is -gap / h, so a landing body ends the step touching. One that would
   // bounce but meets only in a later step is left out.
+  // `previous_solved`: `previous` is the list the last call solved, as it
+  // left it (the world changed none of it since), whose keys it kept.
   void solve_velocities(const world_settings& settings, std::vector<body>& bodies,
                         const std::vector<body_velocity>& start, std::vector<contact>& contacts,
-                        const std::vector<contact>& previous, real h);
+                        const std::vector<contact>& previous, bool previous_solved, real h);
 
   // After the positions moved by h v (and with the contacts of the last
   // solve_velocities): moves the bodies of a timed bounce by -t Δv (the
@@ -209,6 +211,17 @@ class contact_solver {
                        int shares);
   void match_share(int share, const std::vector<body>& bodies, const std::vector<contact>& contacts,
                    const std::vector<contact>& previous);
+  std::size_t same_point(std::size_t i, std::size_t run, const std::vector<contact>& contacts,
+                         const std::vector<contact>& previous,
+                         const std::vector<body>& bodies) const;
+  // What the warm start matches of a contact besides its bodies
+  // (colouring_.pairs, previous_pairs_): this step's and the last step's.
+  struct point_key {
+    std::uint32_t shape_a, shape_b, feature;
+  };
+  static point_key key_of_point(const contact& c) { return {c.shape_a, c.shape_b, c.feature}; }
+  std::vector<point_key> keys_, previous_keys_;
+  std::vector<body_pair> previous_pairs_;
   void warm_start(const std::vector<contact>& previous);
   void warm_start_slots(std::size_t first, std::size_t end, const std::vector<contact>& previous);
   // What solve_velocities prepares from the bodies and contacts alone,

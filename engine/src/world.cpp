@@ -219,6 +219,7 @@ bool world::contains(body_id id) const {
 void world::remove_body(body_id id) {
   const std::size_t index = index_of(id);
   settle_events();  // (before the lists and the indices change)
+  contacts_solved_ = false;
   // What it touched, and its own island, wake: they may fall or slide now.
   std::vector<std::uint64_t> islands;
   if (bodies_[index].island_ != 0) islands.push_back(bodies_[index].island_);
@@ -327,6 +328,7 @@ void world::wake_islands(std::vector<std::uint64_t>& labels) {
     woken_bodies_.push_back(i);
   }
   settle_events();  // (before contacts_ changes)
+  contacts_solved_ = false;
   move_contacts(sleeping_contacts_, contacts_, [this](const contact& c) {
     return !bodies_[c.body_a].asleep_ && !bodies_[c.body_b].asleep_;
   });
@@ -476,6 +478,7 @@ void world::step(real h) {
     for (std::size_t i : woken_bodies_) integrate_velocity(bodies_[i], h);
   }
   const auto paired = clock::now();
+  const bool previous_solved = contacts_solved_;
   previous_contacts_.swap(contacts_);
   std::vector<sensor_overlap> sleeping_overlaps = unchanged_sensor_overlaps();
   space_.find_contacts(bodies_, pairs_, contacts_, h, settings_.material_combine,
@@ -487,8 +490,9 @@ void world::step(real h) {
   // (Without contacts the solver would copy every velocity out and back.)
   if (!contacts_.empty()) {
     solver_->solve_velocities(settings_, bodies_, start_velocities_, contacts_, previous_contacts_,
-                              h);
+                              previous_solved, h);
   }
+  contacts_solved_ = !contacts_.empty();
   const auto solved = clock::now();
   integrate_positions(h);
   const auto moved = clock::now();
@@ -618,6 +622,7 @@ void world::fall_asleep(real h) {
   }
   if (!any_asleep) return;
   settle_events();  // (before contacts_ changes: the pairs falling asleep persist)
+  contacts_solved_ = false;
   move_contacts(contacts_, sleeping_contacts_, [this](const contact& c) {
     return bodies_[c.body_a].asleep_ || bodies_[c.body_b].asleep_;
   });

@@ -244,6 +244,10 @@ class world {
   std::vector<body_pair> pairs_;
   std::vector<contact> contacts_;
   std::vector<contact> previous_contacts_;  // the last step's, for warm starting
+  // contacts_ is the list the solver solved last, unchanged since (the
+  // solver kept what its warm start reads of it); false after anything
+  // that adds, drops or renumbers contacts between steps.
+  bool contacts_solved_ = false;
   // The contacts of sleeping islands, in pair order, as they were when the
   // island fell asleep (contacts_ holds the awake ones); contacts() merges
   // the two into merged_contacts_ when there are sleeping ones.
