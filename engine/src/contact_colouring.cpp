@@ -11,20 +11,16 @@ namespace {
 
 // Each coloured run's block (contact_colouring.hpp): the thread whose slab
 // of space holds its moving body; 0 for the sequential group's.
-void assign_blocks(const std::vector<body>& bodies, int colours, int blocks, int threads,
-                   contact_colouring& out);
+void assign_blocks(std::size_t bodies, const std::vector<vector>& positions, int colours,
+                   int blocks, int threads, contact_colouring& out);
 
 }  // namespace
 
-void colour_contacts(const std::vector<body>& bodies, contact_colouring& out, int threads,
+void colour_contacts(const std::vector<vector>& positions, contact_colouring& out, int threads,
                      int blocks) {
+  const std::size_t bodies = out.moves.size();
   constexpr int sequential = contact_colouring::most_colours;
   const std::size_t contacts = out.pairs.size();
-  // Which bodies have mass, read in one pass on the threads (bodies are
-  // large objects, and the greedy colouring below cannot be shared out).
-  out.moves.resize(bodies.size());
-  parallel_for(threads, bodies.size(), 4096,
-               [&](std::size_t i) { out.moves[i] = bodies[i].inverse_mass() > 0; });
   // The runs, in contact order.
   std::vector<std::size_t>& begins = out.run_begins;
   begins.clear();
@@ -35,7 +31,7 @@ void colour_contacts(const std::vector<body>& bodies, contact_colouring& out, in
   begins.push_back(contacts);
 
   // Greedy colours: the lowest one neither dynamic body has yet.
-  out.body_colours.assign(bodies.size(), 0);
+  out.body_colours.assign(bodies, 0);
   out.run_colours.resize(runs);
   out.colour_counts.assign(sequential + 1, 0);
   for (std::size_t r = 0; r < runs; ++r) {
@@ -66,7 +62,7 @@ void colour_contacts(const std::vector<body>& bodies, contact_colouring& out, in
   // by (colour, block): runs stay in contact order within a block, and the
   // sequential group (colour `kept`, one block) keeps contact order.
   if (blocks > 1) {
-    assign_blocks(bodies, kept, blocks, threads, out);
+    assign_blocks(bodies, positions, kept, blocks, threads, out);
   } else {
     out.run_blocks.assign(runs, 0);
   }
@@ -109,28 +105,31 @@ void colour_contacts(const std::vector<body>& bodies, contact_colouring& out, in
 
 namespace {
 
-void assign_blocks(const std::vector<body>& bodies, int colours, int blocks, int threads,
-                   contact_colouring& out) {
+void assign_blocks(std::size_t bodies, const std::vector<vector>& positions, int colours,
+                   int blocks, int threads, contact_colouring& out) {
   const std::size_t runs = out.run_colours.size();
   const auto coloured = [&](std::size_t r) { return out.run_colours[r] < colours; };
-  // Each run's moving body's position, on the threads: a look-up in the
-  // contacts and one in the bodies per run.
+  // Each run's moving body's position, on the threads.
   out.positions.resize(runs);
   parallel_for(threads, runs, 2048, [&](std::size_t r) {
     const auto [body_a, body_b] = out.pairs[out.run_begins[r]];
-    out.positions[r] = bodies[out.moves[body_a] ? body_a : body_b].position();
+    out.positions[r] = positions[out.moves[body_a] ? body_a : body_b];
   });
-  // The axis along which the coloured runs' bodies spread most.
+  // The axis along which the coloured runs' bodies spread most. (Kept in
+  // six scalars: as two vectors GCC kept them in memory, and the pass took a
+  // tenth of the colouring.)
   bool first = true;
-  vector low, high;
+  real low[3] = {0, 0, 0}, high[3] = {0, 0, 0};
   for (std::size_t r = 0; r < runs; ++r) {
     if (!coloured(r)) continue;
     const vector& p = out.positions[r];
-    if (first) low = high = p, first = false;
-    low = vector{std::min(low.e1(), p.e1()), std::min(low.e2(), p.e2()), std::min(low.e3(), p.e3())};
-    high = vector{std::max(high.e1(), p.e1()), std::max(high.e2(), p.e2()), std::max(high.e3(), p.e3())};
+    for (int k = 0; k < 3; ++k) {
+      low[k] = first ? p.c[k] : std::min(low[k], p.c[k]);
+      high[k] = first ? p.c[k] : std::max(high[k], p.c[k]);
+    }
+    first = false;
   }
-  const vector extent = high - low;
+  const vector extent{high[0] - low[0], high[1] - low[1], high[2] - low[2]};
   const int axis = extent.e1() >= extent.e2() && extent.e1() >= extent.e3() ? 0
                    : extent.e2() >= extent.e3()                             ? 1
                                                                             : 2;
@@ -140,7 +139,7 @@ void assign_blocks(const std::vector<body>& bodies, int colours, int blocks, int
   // The contacts in each of `bins` slices of the axis, then each run's
   // block: the share its slice falls in.
   constexpr std::size_t bins = 1024;
-  const real start = along(low), span = along(extent);
+  const real start = low[axis], span = along(extent);
   std::vector<std::size_t>& weight = out.bin_weights;
   weight.assign(bins + 1, 0);
   out.run_bins.resize(runs);
@@ -162,16 +161,23 @@ void assign_blocks(const std::vector<body>& bodies, int colours, int blocks, int
   }
   for (std::size_t b = 1; b <= bins; ++b) weight[b] += weight[b - 1];
   const std::size_t total = weight.back();
+  // Each bin's block: the share of the contacts before it (a division per
+  // bin, not per run).
+  std::vector<std::uint32_t>& bin_blocks = out.bin_blocks;
+  bin_blocks.resize(bins);
+  for (std::size_t b = 0; b < bins && total > 0; ++b) {
+    const std::size_t share = weight[b] * static_cast<std::size_t>(blocks) / total;
+    bin_blocks[b] = static_cast<std::uint32_t>(std::min<std::size_t>(share, blocks - 1));
+  }
   out.run_blocks.resize(runs);
-  out.body_blocks.assign(bodies.size(), static_cast<std::uint32_t>(blocks));
+  out.body_blocks.assign(bodies, static_cast<std::uint32_t>(blocks));
   for (std::size_t r = 0; r < runs; ++r) {
     // (The sequential group is one block.)
     if (!coloured(r) || total == 0) {
       out.run_blocks[r] = 0;
       continue;
     }
-    const std::size_t share = weight[out.run_bins[r]] * blocks / total;
-    const auto block = static_cast<std::uint32_t>(std::min<std::size_t>(share, blocks - 1));
+    const std::uint32_t block = bin_blocks[out.run_bins[r]];
     out.run_blocks[r] = block;
     const auto [body_a, body_b] = out.pairs[out.run_begins[r]];
     for (const std::size_t x : {body_a, body_b}) {

@@ -69,7 +69,7 @@ struct contact_colouring {
 
   // Scratch, kept to reuse its memory from step to step.
   std::vector<std::pair<std::size_t, std::size_t>> pairs;  // per contact: its bodies (read_pairs)
-  std::vector<char> moves;                                 // per body: it has mass
+  std::vector<char> moves;                                 // per body: it has mass (the caller's)
   std::vector<std::uint32_t> body_colours;  // bit c: the body has a run of colour c
   // Per run, in contact order:
   std::vector<std::size_t> run_begins;  // its first contact (and then the end)
@@ -77,6 +77,7 @@ struct contact_colouring {
   std::vector<vector> positions;        // its moving body's position
   std::vector<std::size_t> run_bins, run_blocks;
   std::vector<std::size_t> colour_counts, bin_weights, sorted_runs, sort_scratch;
+  std::vector<std::uint32_t> bin_blocks;
 };
 
 // Each contact's bodies into out.pairs, and also(i) for each contact i, in
@@ -95,10 +96,15 @@ void read_pairs(const std::vector<contact>& contacts, contact_colouring& out, in
 }
 
 // The contacts whose bodies read_pairs put in out.pairs, sorted by body
-// pair as the narrow phase makes them. `threads` (world_settings::threads)
-// reads the bodies; the colours are the same with any number. `blocks`: the
-// threads that will solve the colours (thread_starts), 1 for none.
-void colour_contacts(const std::vector<body>& bodies, contact_colouring& out, int threads,
+// pair as the narrow phase makes them, with out.moves filled (each body:
+// whether it has mass). `threads` (world_settings::threads) sort the runs;
+// the colours are the same with any number. `blocks`: the threads that
+// will solve the colours (thread_starts), 1 for none; for more,
+// `positions` holds each body's position. (The caller reads both from the
+// bodies in a pass it makes anyway: read here, inside the colouring that
+// one thread does while the others prepare, the bodies, large and
+// scattered, were a sixth of it.)
+void colour_contacts(const std::vector<vector>& positions, contact_colouring& out, int threads,
                      int blocks);
 
 }  // namespace gaphys::detail

@@ -1031,8 +1031,16 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   // contacts. (Read by find_supports itself, on one thread, the contacts
   // took 0.4 ms of a 10,000-sphere step.)
   forced_.resize(bodies.size());
-  detail::parallel_for(settings.threads, bodies.size(), 4096,
-                       [&](std::size_t i) { forced_[i] = bodies[i].velocity_ - start[i].linear; });
+  positions_.resize(bodies.size());
+  colouring_.moves.resize(bodies.size());
+  detail::parallel_for(settings.threads, bodies.size(), 4096, [&](std::size_t i) {
+    const body& b = bodies[i];
+    forced_[i] = b.velocity_ - start[i].linear;
+    // (What colour_contacts reads of the bodies: whether each has mass, and
+    // where it is.)
+    colouring_.moves[i] = b.inverse_mass_ > 0;
+    positions_[i] = b.position_;
+  });
   // The last step's keys, from its pass below where `previous` is the list
   // it solved (else read again); then this step's with the contacts' bodies
   // and resting sides, in one pass over the contacts.
@@ -1055,7 +1063,7 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   if (sweep_threads_ > 1) {
     colour_beside_preparation(bodies, start, contacts, previous);
   } else {
-    detail::colour_contacts(bodies, colouring_, settings.threads, sweep_threads_);
+    detail::colour_contacts(positions_, colouring_, settings.threads, sweep_threads_);
     prepare_bodies(bodies, start, contacts, previous, settings.threads);
     find_supports(bodies.size());
     count_contacts(bodies.size(), colouring_.pairs);

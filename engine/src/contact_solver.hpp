@@ -189,6 +189,7 @@ class contact_solver {
   // the side the forces press it towards), from forced_.
   unsigned char resting_sides(const world_settings& settings, const contact& c) const;
   std::vector<vector> forced_;        // per body: the velocity the step's forces gave it
+  std::vector<vector> positions_;     // per body: its position (colour_contacts' slabs)
   std::vector<unsigned char> rests_;  // per contact: its resting_sides
   void count_contacts(std::size_t bodies, const std::vector<body_pair>& pairs);
   // The over-relaxation of a contact's normal row: settings' where it

@@ -112,7 +112,7 @@ void contact_solver::colour_beside_preparation(const std::vector<body>& bodies,
 #pragma omp single
   {
 #pragma omp task
-    detail::colour_contacts(bodies, colouring_, 1, sweep_threads_);
+    detail::colour_contacts(positions_, colouring_, 1, sweep_threads_);
 #pragma omp task
     find_supports(bodies.size());
 #pragma omp task
