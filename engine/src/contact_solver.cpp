@@ -1101,6 +1101,11 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
       detail::prefetch(&bodies[x]);
       detail::prefetch(&bodies[x].position());
       detail::prefetch(&start[x]);
+      // (And what the preparation wrote of them, on either thread.)
+      detail::prefetch(&row_bodies_[x]);
+      detail::prefetch(&shape_summaries_[x]);
+      detail::prefetch(&place_[x]);
+      detail::prefetch(&contacts_per_body_[x]);
     }
   };
   for_each_constraint(
