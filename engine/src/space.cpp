@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "convex_contact.hpp"
+#include "prefetch.hpp"
 #include "round_meet.hpp"
 #include "thread_count.hpp"
 #include "turning_reach.hpp"
@@ -437,6 +438,13 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
   round_pairs.clear();
   round_slot.assign(static_cast<std::size_t>(end - first), none);
   for (const body_pair* pair = first; pair != end; ++pair) {
+    // (The pairs come by their first body; their second ones are scattered:
+    // prefetch.hpp.)
+    if (static_cast<std::size_t>(end - pair) > detail::prefetch_distance) {
+      const std::size_t ahead = pair[detail::prefetch_distance].second;
+      detail::prefetch(&singles_[ahead]);
+      detail::prefetch(&placed_[first_shape_[ahead]]);
+    }
     const auto [a, b] = *pair;
     const placed_shape* shape_a = placed_.data() + first_shape_[a];
     const placed_shape* shape_b = placed_.data() + first_shape_[b];
