@@ -722,8 +722,10 @@ void contact_solver::warm_start_slots(std::size_t first, std::size_t end,
 // with any number of threads.
 void contact_solver::solve_contacts(const world_settings& settings) {
   // Every contact gets solver_iterations sweeps; contacts that turn a body
-  // get turning_iterations more (a stack of boxes converges slowly).
-  const int sweeps = settings.solver_iterations + settings.turning_iterations;
+  // get turning_iterations more (a stack of boxes converges slowly). Where
+  // none turns (settling_ false: none turns or rubs), there are none more:
+  // the first would only find that out, at a barrier per colour.
+  const int sweeps = settings.solver_iterations + (settling_ ? settings.turning_iterations : 0);
   const std::size_t runs = colouring_.runs();
   const auto kind_of = [&](int sweep) {
     // The last sweep of a contact is plain: it takes back what
