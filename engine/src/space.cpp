@@ -301,6 +301,11 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
   // (A few hundred pairs per thread: a box pair takes about a microsecond.)
   const int shares = detail::threads_for(threads, pairs.size(), 256);
   on_static_.clear();
+  // Room for at least a contact per pair, and a quarter more: a list that
+  // outgrows its room is copied whole to a new one whose pages are then
+  // faulted in (5.7 MB at 10,000 spheres; in a pile still filling up, 0.08
+  // ms a step on average).
+  if (contacts.capacity() < pairs.size()) contacts.reserve(pairs.size() + pairs.size() / 4);
   if (shares == 1) {
     contacts.clear();
     meet_pairs(bodies, pairs.data(), pairs.data() + pairs.size(), contacts, lookahead, rules,
