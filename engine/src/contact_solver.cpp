@@ -1024,10 +1024,6 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   const std::size_t count = contacts.size();
   // (A few hundred contacts per thread: fewer are not worth a barrier per colour.)
   sweep_threads_ = detail::threads_for(settings.threads, count, 256);
-  // The colouring is mostly serial (its greedy pass); on two threads or
-  // more, one colours while the others prepare what needs no colouring.
-  // (One after the other, each on the threads, the colouring left the
-  // second thread idle for half a millisecond of a 10,000-sphere step.)
   // What the step's forces gave each body; then each contact's bodies, and
   // which of them rests on the other (find_supports), in one pass over the
   // contacts. (Read by find_supports itself, on one thread, the contacts
@@ -1062,6 +1058,10 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
     rests_[i] = resting_sides(settings, contacts[i]);
     keys_[i] = key_of_point(contacts[i]);
   });
+  // The colouring is mostly serial (its greedy pass); on two threads or
+  // more, one colours while the others prepare what needs no colouring.
+  // (One after the other, each on the threads, the colouring left the
+  // second thread idle for half a millisecond of a 10,000-sphere step.)
   if (sweep_threads_ > 1) {
     colour_beside_preparation(bodies, start, contacts, previous);
   } else {
