@@ -139,8 +139,8 @@ bool hidden_by(const placed_shape& s, const vector& p, const vector& n, const pl
 
 void drop_hidden_contacts(const placed_shape* placed, const std::size_t* first_shape,
                           const std::vector<unsigned char>& is_static, real slop,
-                          const std::vector<std::size_t>& on_static, std::vector<contact>& contacts,
-                          hidden_face_lists& lists) {
+                          const std::vector<static_contact>& on_static,
+                          std::vector<contact>& contacts, hidden_face_lists& lists) {
   // Which body is the moving one of a contact with a static shape, and that
   // shape's index in `placed`; none for other contacts.
   struct sides {
@@ -172,14 +172,12 @@ void drop_hidden_contacts(const placed_shape* placed, const std::size_t* first_s
   if (first.size() < is_static.size()) first.resize(is_static.size(), 0);
   lists.touched.clear();
   bool any = false;
-  for (const std::size_t i : on_static) {
-    const std::optional<sides> at = sides_of(contacts[i]);
-    if (!at) continue;
-    std::size_t& seen = first[at->moving];
+  for (const static_contact& at : on_static) {
+    std::size_t& seen = first[at.moving];
     if (seen == 0) {
-      seen = at->shape + 1;
-      lists.touched.push_back(at->moving);
-    } else if (seen != at->shape + 1) {
+      seen = at.shape + 1;
+      lists.touched.push_back(at.moving);
+    } else if (seen != at.shape + 1) {
       seen = several;
       any = true;
     }
@@ -187,9 +185,8 @@ void drop_hidden_contacts(const placed_shape* placed, const std::size_t* first_s
   if (any) {
     // Each such body's contacts with static shapes, together, in contact order.
     lists.entries.clear();
-    for (const std::size_t i : on_static) {
-      const std::optional<sides> at = sides_of(contacts[i]);
-      if (at && first[at->moving] == several) lists.entries.emplace_back(at->moving, i);
+    for (const static_contact& at : on_static) {
+      if (first[at.moving] == several) lists.entries.emplace_back(at.moving, at.contact);
     }
     std::stable_sort(lists.entries.begin(), lists.entries.end(),
                      [](const auto& x, const auto& y) { return x.first < y.first; });

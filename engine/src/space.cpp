@@ -369,8 +369,9 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
     if (share_states_[at] != share_state::copied) copy_share(at);
   }
   for (std::size_t at = 0; at < shares_.size(); ++at) {
-    for (const std::size_t i : shares_[at].value.on_static) {
-      on_static_.push_back(share_starts_[at] + i);
+    for (detail::static_contact c : shares_[at].value.on_static) {
+      c.contact += share_starts_[at];
+      on_static_.push_back(c);
     }
   }
   if (sensors) {
@@ -425,7 +426,7 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
                        const body_pair* end, std::vector<contact>& contacts, real lookahead,
                        const material_combine_rules& rules, real margin,
                        std::vector<sensor_overlap>* sensors,
-                       std::vector<std::size_t>& on_static) const {
+                       std::vector<detail::static_contact>& on_static) const {
   // The meets of single spheres and planes first, their algebra on batches
   // of pairs; then every pair in order, those from their terms.
   constexpr std::size_t none = ~std::size_t{0};
@@ -465,7 +466,13 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
   // (Which contacts have a static body on one side only, for the seams'
   // pass: listed here, it reads those instead of the whole list again.)
   const auto add = [&](bool across, const contact& c) {
-    if (across) on_static.push_back(contacts.size());
+    if (across) {
+      const bool a_static = static_[c.body_a] != 0;
+      const std::size_t moving = a_static ? c.body_b : c.body_a;
+      const std::size_t shape =
+          a_static ? first_shape_[c.body_a] + c.shape_a : first_shape_[c.body_b] + c.shape_b;
+      on_static.push_back({contacts.size(), moving, shape});
+    }
     contacts.push_back(c);
   };
   for (const body_pair* pair = first; pair != end; ++pair) {

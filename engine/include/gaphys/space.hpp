@@ -93,7 +93,8 @@ class space {
   void meet_pairs(const std::vector<body>& bodies, const body_pair* first, const body_pair* end,
                   std::vector<contact>& contacts, real lookahead,
                   const material_combine_rules& rules, real margin,
-                  std::vector<sensor_overlap>* sensors, std::vector<std::size_t>& on_static) const;
+                  std::vector<sensor_overlap>* sensors,
+                  std::vector<detail::static_contact>& on_static) const;
 
   broad_phase_kind kind_;
   detail::uniform_grid grid_;
@@ -123,7 +124,7 @@ class space {
   struct share_lists {
     std::vector<contact> contacts;
     std::vector<sensor_overlap> sensors;
-    std::vector<std::size_t> on_static;
+    std::vector<detail::static_contact> on_static;
   };
   std::vector<detail::cache_padded<share_lists>> shares_;
   std::vector<std::size_t> share_starts_;  // where each share's contacts go in the list
@@ -131,7 +132,7 @@ class space {
   std::vector<share_state> share_states_;
   // The contacts between a static body and another, in order (meet_pairs
   // lists them).
-  std::vector<std::size_t> on_static_;
+  std::vector<detail::static_contact> on_static_;
 };
 
 }  // namespace gaphys

@@ -35,6 +35,17 @@ namespace gaphys::detail {
 bool hidden_by(const placed_shape& s, const vector& p, const vector& n, const placed_shape& other,
                real slop);
 
+// A contact between a static body and another, as the narrow phase makes
+// it: its place in the contact list, the other (moving) body, and the
+// static shape's place among the placed shapes. (What drop_hidden_contacts
+// reads of every such contact: read from the contacts, 248 bytes each and
+// just written on any thread, they took 0.1 ms of a 10,000-sphere step.)
+struct static_contact {
+  std::size_t contact;
+  std::size_t moving;
+  std::size_t shape;
+};
+
 // drop_hidden_contacts' lists, kept from step to step so as not to be
 // allocated anew (first_partner is all zero between calls).
 struct hidden_face_lists {
@@ -64,7 +75,7 @@ struct hidden_face_lists {
 // and another (only those are read).
 void drop_hidden_contacts(const placed_shape* placed, const std::size_t* first_shape,
                           const std::vector<unsigned char>& is_static, real slop,
-                          const std::vector<std::size_t>& on_static, std::vector<contact>& contacts,
-                          hidden_face_lists& lists);
+                          const std::vector<static_contact>& on_static,
+                          std::vector<contact>& contacts, hidden_face_lists& lists);
 
 }  // namespace gaphys::detail
