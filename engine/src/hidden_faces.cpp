@@ -139,7 +139,7 @@ bool hidden_by(const placed_shape& s, const vector& p, const vector& n, const pl
 
 void drop_hidden_contacts(const placed_shape* placed, const std::size_t* first_shape,
                           const std::vector<unsigned char>& is_static, real slop,
-                          const std::vector<static_contact>& on_static,
+                          const static_contact* on_static, std::size_t static_count,
                           std::vector<contact>& contacts, hidden_face_lists& lists) {
   // Which body is the moving one of a contact with a static shape, and that
   // shape's index in `placed`; none for other contacts.
@@ -172,7 +172,8 @@ void drop_hidden_contacts(const placed_shape* placed, const std::size_t* first_s
   if (first.size() < is_static.size()) first.resize(is_static.size(), 0);
   lists.touched.clear();
   bool any = false;
-  for (const static_contact& at : on_static) {
+  for (std::size_t k = 0; k < static_count; ++k) {
+    const static_contact& at = on_static[k];
     std::size_t& seen = first[at.moving];
     if (seen == 0) {
       seen = at.shape + 1;
@@ -185,7 +186,8 @@ void drop_hidden_contacts(const placed_shape* placed, const std::size_t* first_s
   if (any) {
     // Each such body's contacts with static shapes, together, in contact order.
     lists.entries.clear();
-    for (const static_contact& at : on_static) {
+    for (std::size_t k = 0; k < static_count; ++k) {
+      const static_contact& at = on_static[k];
       if (first[at.moving] == several) lists.entries.emplace_back(at.moving, at.contact);
     }
     std::stable_sort(lists.entries.begin(), lists.entries.end(),

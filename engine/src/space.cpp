@@ -288,8 +288,8 @@ void space::find_contacts(const std::vector<body>& bodies, const std::vector<bod
   place_shapes(bodies, pairs, threads);
   meet_all(bodies, pairs, contacts, lookahead, rules, margin, sensors, threads);
   if (slop > 0) {
-    detail::drop_hidden_contacts(placed_.data(), first_shape_.data(), static_, slop, on_static_,
-                                 contacts, hidden_);
+    detail::drop_hidden_contacts(placed_.data(), first_shape_.data(), static_, slop,
+                                 on_static_.data(), static_count_, contacts, hidden_);
   }
 }
 
@@ -300,7 +300,6 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
   if (sensors) sensors->clear();
   // (A few hundred pairs per thread: a box pair takes about a microsecond.)
   const int shares = detail::threads_for(threads, pairs.size(), 256);
-  on_static_.clear();
   // Room for at least a contact per pair, and a quarter more: a list that
   // outgrows its room is copied whole to a new one whose pages are then
   // faulted in (5.7 MB at 10,000 spheres; in a pile still filling up, 0.08
@@ -308,34 +307,54 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
   if (contacts.capacity() < pairs.size()) contacts.reserve(pairs.size() + pairs.size() / 4);
   if (shares == 1) {
     contacts.clear();
+    on_static_.clear();
     meet_pairs(bodies, pairs.data(), pairs.data() + pairs.size(), contacts, lookahead, rules,
                margin, sensors, on_static_);
+    static_count_ = on_static_.size();
     return;
   }
   // The pairs in contiguous shares, four per thread, taken by the threads as
   // they finish (a core slowed by other programs takes fewer); each share is
   // met into its own lists, and joined in share order they are what one
   // thread makes.
-  // The join: a share's place in the list is known once every share before
+  // The join: a share's place in the lists is known once every share before
   // it is met, and the thread that completes that places it and copies it
-  // there at once, while its contacts are still in that core's cache, where
-  // the list (from two steps ago, about as long) already reaches; the rest
-  // once the list is resized. (Copied after all were met, the contacts of
-  // 10,000 spheres took 0.3 ms of a step on two threads.)
+  // there at once, while its contacts are still in that core's cache, as far
+  // as the lists already reach (the contact list from two steps ago, about
+  // as long; on_static_, which keeps its length from step to step); the
+  // rest once they are made longer. (Copied after all were met, the
+  // contacts of 10,000 spheres took 0.3 ms of a step on two threads; and
+  // with a pile still filling up, the last share, whole where it did not
+  // fit, and the static contacts, joined on one thread, took another 0.09.)
   const auto share_count = static_cast<std::size_t>(4 * shares);
   shares_.resize(share_count);
-  share_starts_.assign(share_count + 1, 0);
+  share_starts_.assign(share_count + 1, share_start{});
+  share_copied_.assign(share_count, share_start{});
   share_states_.assign(share_count, share_state::meeting);
-  const std::size_t room = contacts.size();
+  const share_start room{contacts.size(), on_static_.size()};
   std::size_t placed = 0;  // the shares [0, placed) have their starts
-  const auto copy_share = [&](std::size_t at) {
-    const std::vector<contact>& met = shares_[at].value.contacts;
-    std::copy(met.begin(), met.end(),
-              contacts.begin() + static_cast<std::ptrdiff_t>(share_starts_[at]));
+  // Copies share `at`'s contacts and static contacts from what it has
+  // copied up to `upto` of each.
+  const auto copy_share = [&](std::size_t at, const share_start& upto) {
+    const share_lists& met = shares_[at].value;
+    const share_start& start = share_starts_[at];
+    const share_start& from = share_copied_[at];
+    std::copy(met.contacts.begin() + static_cast<std::ptrdiff_t>(from.contacts),
+              met.contacts.begin() + static_cast<std::ptrdiff_t>(upto.contacts),
+              contacts.begin() + static_cast<std::ptrdiff_t>(start.contacts + from.contacts));
+    for (std::size_t k = from.on_static; k < upto.on_static; ++k) {
+      detail::static_contact c = met.on_static[k];
+      c.contact += start.contacts;
+      on_static_[start.on_static + k] = c;
+    }
+    share_copied_[at] = upto;
+  };
+  const auto fitting = [](std::size_t start, std::size_t count, std::size_t room) {
+    return start >= room ? 0 : std::min(count, room - start);
   };
 #pragma omp parallel num_threads(shares)
   {
-    std::vector<std::size_t> to_copy;
+    std::vector<std::pair<std::size_t, share_start>> to_copy;
 #pragma omp for schedule(dynamic, 1)
     for (std::size_t at = 0; at < share_count; ++at) {
       const body_pair* first = pairs.data() + pairs.size() * at / share_count;
@@ -350,28 +369,39 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
 #pragma omp critical(gaphys_space_join)
       {
         share_states_[at] = share_state::met;
-        for (; placed < share_count && share_states_[placed] != share_state::meeting; ++placed) {
-          share_starts_[placed + 1] = share_starts_[placed] + shares_[placed].value.contacts.size();
-          if (share_starts_[placed + 1] <= room) {
-            share_states_[placed] = share_state::copied;
-            to_copy.push_back(placed);
-          }
+        for (; placed < share_count && share_states_[placed] == share_state::met; ++placed) {
+          const share_lists& own = shares_[placed].value;
+          const share_start& start = share_starts_[placed];
+          share_starts_[placed + 1] = {start.contacts + own.contacts.size(),
+                                       start.on_static + own.on_static.size()};
+          to_copy.emplace_back(
+              placed, share_start{fitting(start.contacts, own.contacts.size(), room.contacts),
+                                  fitting(start.on_static, own.on_static.size(), room.on_static)});
         }
       }
-      for (const std::size_t k : to_copy) copy_share(k);
+      for (const auto& [k, upto] : to_copy) copy_share(k, upto);
     }
   }
-  const std::size_t total = share_starts_.back();
-  if (contacts.capacity() < total) contacts.reserve(total + total / 4);
-  contacts.resize(total);
-#pragma omp parallel for num_threads(shares) schedule(dynamic, 1)
-  for (std::size_t at = 0; at < share_count; ++at) {
-    if (share_states_[at] != share_state::copied) copy_share(at);
+  const share_start total = share_starts_.back();
+  if (contacts.capacity() < total.contacts) {
+    contacts.reserve(total.contacts + total.contacts / 4);
   }
-  for (std::size_t at = 0; at < shares_.size(); ++at) {
-    for (detail::static_contact c : shares_[at].value.on_static) {
-      c.contact += share_starts_[at];
-      on_static_.push_back(c);
+  contacts.resize(total.contacts);
+  if (on_static_.size() < total.on_static) on_static_.resize(total.on_static + total.on_static / 4);
+  static_count_ = total.on_static;
+  const auto whole = [&](std::size_t at) {
+    return share_start{shares_[at].value.contacts.size(), shares_[at].value.on_static.size()};
+  };
+  const auto copied = [&](std::size_t at) {
+    return share_copied_[at].contacts == whole(at).contacts &&
+           share_copied_[at].on_static == whole(at).on_static;
+  };
+  bool all_copied = true;
+  for (std::size_t at = 0; at < share_count; ++at) all_copied = all_copied && copied(at);
+  if (!all_copied) {
+#pragma omp parallel for num_threads(shares) schedule(dynamic, 1)
+    for (std::size_t at = 0; at < share_count; ++at) {
+      if (!copied(at)) copy_share(at, whole(at));
     }
   }
   if (sensors) {

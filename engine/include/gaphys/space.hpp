@@ -127,12 +127,19 @@ class space {
     std::vector<detail::static_contact> on_static;
   };
   std::vector<detail::cache_padded<share_lists>> shares_;
-  std::vector<std::size_t> share_starts_;  // where each share's contacts go in the list
-  enum class share_state : unsigned char { meeting, met, copied };
+  // Where each share's contacts and static contacts go in the lists, and
+  // how many of each it has copied there.
+  struct share_start {
+    std::size_t contacts = 0, on_static = 0;
+  };
+  std::vector<share_start> share_starts_, share_copied_;
+  enum class share_state : unsigned char { meeting, met };
   std::vector<share_state> share_states_;
   // The contacts between a static body and another, in order (meet_pairs
-  // lists them).
+  // lists them): the first static_count_ (on_static_ keeps its length from
+  // step to step, as room for the next step's).
   std::vector<detail::static_contact> on_static_;
+  std::size_t static_count_ = 0;
 };
 
 }  // namespace gaphys

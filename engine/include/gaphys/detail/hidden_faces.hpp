@@ -71,11 +71,11 @@ struct hidden_face_lists {
 // another static shape the same body has a contact with; never one deeper
 // than twice the slop. `placed` holds every shape of the contacts' bodies at
 // its pose, body i's from first_shape[i]; `is_static` says which bodies are
-// static; `on_static` lists, in order, the contacts between a static body
-// and another (only those are read).
+// static; on_static[0 .. static_count) lists, in order, the contacts
+// between a static body and another (only those are read).
 void drop_hidden_contacts(const placed_shape* placed, const std::size_t* first_shape,
                           const std::vector<unsigned char>& is_static, real slop,
-                          const std::vector<static_contact>& on_static,
+                          const static_contact* on_static, std::size_t static_count,
                           std::vector<contact>& contacts, hidden_face_lists& lists);
 
 }  // namespace gaphys::detail
