@@ -157,7 +157,7 @@ class contact_solver {
   static vector contact_offset(const body& x, const shape_summary& shapes, const contact& c,
                                const vector& n, real side);
   real rolling_radius(const body& a, const body& b, const contact& c) const;
-  term_counts terms_of(const body& a, const body& b, const contact& c) const;
+  static term_counts terms_of(const body& a, const body& b, const contact& c);
   void build_constraint(const world_settings& settings, const body& a, const body& b,
                         const contact& c, const body_velocity& start_a,
                         const body_velocity& start_b, real h, std::size_t slot,
@@ -191,6 +191,9 @@ class contact_solver {
   std::vector<vector> forced_;        // per body: the velocity the step's forces gave it
   std::vector<vector> positions_;     // per body: its position (colour_contacts' slabs)
   std::vector<unsigned char> rests_;  // per contact: its resting_sides
+  // Per contact: its terms_of (bit 1: surface terms, bit 2: resistance
+  // terms), read in the same pass as rests_.
+  std::vector<unsigned char> own_terms_;
   void count_contacts(std::size_t bodies, const std::vector<body_pair>& pairs);
   // The over-relaxation of a contact's normal row: settings' where it
   // shares a body with mass, 1 where it does not or the masses differ
@@ -327,7 +330,8 @@ class contact_solver {
   // contact i is constraints_[slot_[i]].
   detail::contact_colouring colouring_;
   std::vector<std::size_t> slot_;
-  std::vector<term_counts> terms_at_;  // per constraint: where its optional terms go
+  // Per constraint: where its optional terms go (filled where any has some).
+  std::vector<term_counts> terms_at_;
   std::vector<constraint> constraints_;
   std::vector<detail::row_arms> normal_arms_;  // per constraint, where it turns a body
   // Constraint s's normal arms, or null where its normal row turns nothing.
