@@ -949,26 +949,34 @@ void contact_solver::store_impulses(std::vector<contact>& contacts, int threads)
       detail::prefetch_bytes(&constraints_[ahead], sizeof(constraint));
       detail::prefetch(&impacts_[ahead]);
     }
+    // (Made here and stored whole: cleared in place and read back, the
+    // impulses' stores and loads of other widths stalled their forwarding,
+    // a fifth of this loop.)
     const constraint& k = constraints_[slot_[i]];
-    contact_impulse& resting = contacts[i].resting;
-    resting = contact_impulse{};
+    const impact_terms& impact = impacts_[slot_[i]];
+    contact_impulse resting{};
     resting.normal = k.accumulated;
-    contact_impulse& total = contacts[i].impulse;
-    total = resting;
-    total.normal += impacts_[slot_[i]].normal;
-    contacts[i].approach_speed = impacts_[slot_[i]].approach_speed;
-    if (k.surface < 0) return;
-    const surface_terms& t = surfaces_[k.surface];
-    const surface_frame& f = frames_[k.surface];
-    resting.tangent = t.friction.accumulated[0] * f.frame[0] + t.friction.accumulated[1] * f.frame[1];
-    if (t.resistance >= 0) {
-      const resistance_terms& r = resistances_[t.resistance];
-      resting.angular = r.rolling.accumulated[0] * r.planes[0] +
-                        r.rolling.accumulated[1] * r.planes[1] +
-                        r.spinning_accumulated * r.planes[2];
+    contact_impulse total = resting;
+    total.normal += impact.normal;
+    if (k.surface >= 0) {
+      const surface_terms& t = surfaces_[k.surface];
+      const surface_frame& f = frames_[k.surface];
+      resting.tangent =
+          t.friction.accumulated[0] * f.frame[0] + t.friction.accumulated[1] * f.frame[1];
+      if (t.resistance >= 0) {
+        const resistance_terms& r = resistances_[t.resistance];
+        resting.angular = r.rolling.accumulated[0] * r.planes[0] +
+                          r.rolling.accumulated[1] * r.planes[1] +
+                          r.spinning_accumulated * r.planes[2];
+      }
+      total.tangent =
+          resting.tangent + f.impact_tangent[0] * f.frame[0] + f.impact_tangent[1] * f.frame[1];
+      total.angular = resting.angular;
     }
-    total.tangent = resting.tangent + f.impact_tangent[0] * f.frame[0] + f.impact_tangent[1] * f.frame[1];
-    total.angular = resting.angular;
+    contact& c = contacts[i];
+    c.resting = resting;
+    c.impulse = total;
+    c.approach_speed = impact.approach_speed;
   });
 }
 
