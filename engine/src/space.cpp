@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <tuple>
 
 #include "convex_contact.hpp"
@@ -421,37 +422,6 @@ static bool meets_on_batches(const Facts& a, const Facts& b, const placed_shape*
          a.filter.meets(b.filter);
 }
 
-// What meet finds for a pair that meets_on_batches, from its meet's terms:
-// whether the manifold has a contact.
-static bool contact_from_terms(const placed_shape& shape_a, const placed_shape& shape_b,
-                               const detail::round_terms<real>& terms, real lookahead,
-                               const vector& velocity_a, const vector& velocity_b,
-                               contact_manifold& manifold) {
-  manifold.count = 0;
-  const auto geometry =
-      detail::contact_from(shape_a, shape_b, terms, detail::meet_origin(shape_a, shape_b),
-                           lookahead, velocity_a, velocity_b);
-  if (!geometry) return false;
-  manifold.points[0] = contact_point{*geometry, 0};
-  manifold.count = 1;
-  return true;
-}
-
-// Point p of the manifold of shape i of body a and shape j of body b.
-static GAPHYS_ALWAYS_INLINE contact contact_of(std::size_t a, std::size_t b, std::size_t i,
-                                               std::size_t j, const contact_point& p,
-                                               const material& m) {
-  contact c{};
-  c.body_a = a;
-  c.body_b = b;
-  c.geometry = p.geometry;
-  c.shape_a = static_cast<std::uint32_t>(i);
-  c.shape_b = static_cast<std::uint32_t>(j);
-  c.feature = p.feature;
-  c.material = m;
-  return c;
-}
-
 void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
                        const body_pair* end, std::vector<contact>& contacts, real lookahead,
                        const material_combine_rules& rules, real margin,
@@ -493,17 +463,26 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
   detail::batched_terms(round_pairs.data(), round_pairs.size(), terms.data());
 
   contact_manifold manifold;
-  // (Which contacts have a static body on one side only, for the seams'
-  // pass: listed here, it reads those instead of the whole list again.)
-  const auto add = [&](bool across, const contact& c) {
+  // The contact at a point of shape i of body a and shape j of body b, made
+  // in its place in the list. (Made aside and copied in, through a manifold
+  // for the pairs met on batches too, its bytes were copied three times.)
+  // And which contacts have a static body on one side only, for the seams'
+  // pass: listed here, it reads those instead of the whole list again.
+  const auto add = [&](bool across, std::size_t a, std::size_t b, std::size_t i, std::size_t j,
+                       const contact_geometry& geometry, std::uint32_t feature, const material& m) {
     if (across) {
-      const bool a_static = static_[c.body_a] != 0;
-      const std::size_t moving = a_static ? c.body_b : c.body_a;
-      const std::size_t shape =
-          a_static ? first_shape_[c.body_a] + c.shape_a : first_shape_[c.body_b] + c.shape_b;
-      on_static.push_back({contacts.size(), moving, shape});
+      const bool a_static = static_[a] != 0;
+      on_static.push_back({contacts.size(), a_static ? b : a,
+                           a_static ? first_shape_[a] + i : first_shape_[b] + j});
     }
-    contacts.push_back(c);
+    contact& c = contacts.emplace_back();
+    c.body_a = a;
+    c.body_b = b;
+    c.geometry = geometry;
+    c.shape_a = static_cast<std::uint32_t>(i);
+    c.shape_b = static_cast<std::uint32_t>(j);
+    c.feature = feature;
+    c.material = m;
   };
   for (const body_pair* pair = first; pair != end; ++pair) {
     const auto [a, b] = *pair;
@@ -513,10 +492,13 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
       // One shape each, met on batches: from the placed shapes and the facts alone.
       const single_shape_facts& facts_a = singles_[a];
       const single_shape_facts& facts_b = singles_[b];
-      if (contact_from_terms(placed_[first_shape_[a]], placed_[first_shape_[b]], terms[slot],
-                             lookahead, facts_a.velocity, facts_b.velocity, manifold)) {
-        add(across, contact_of(a, b, 0, 0, manifold.points[0],
-                               combine(rules, facts_a.surface, facts_b.surface)));
+      const placed_shape& shape_a = placed_[first_shape_[a]];
+      const placed_shape& shape_b = placed_[first_shape_[b]];
+      const std::optional<contact_geometry> geometry =
+          detail::contact_from(shape_a, shape_b, terms[slot], detail::meet_origin(shape_a, shape_b),
+                               lookahead, facts_a.velocity, facts_b.velocity);
+      if (geometry) {
+        add(across, a, b, 0, 0, *geometry, 0, combine(rules, facts_a.surface, facts_b.surface));
       }
       continue;
     }
@@ -540,7 +522,7 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
         if (what != met::contacts) continue;
         const material m = combine(rules, attached_a.shape.material(), attached_b.shape.material());
         for (int k = 0; k < manifold.count; ++k) {
-          add(across, contact_of(a, b, i, j, manifold.points[k], m));
+          add(across, a, b, i, j, manifold.points[k].geometry, manifold.points[k].feature, m);
         }
       }
     }
