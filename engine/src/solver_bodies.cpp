@@ -3,7 +3,9 @@
 // sweeps' threads find their own bodies side by side.
 #include <omp.h>
 
+#include <new>
 #include <numeric>
+#include <type_traits>
 
 #include "contact_solver.hpp"
 #include "counting_sort.hpp"
@@ -28,8 +30,14 @@ void contact_solver::prepare_body(std::size_t i, const std::vector<body>& bodies
                                   const std::vector<body_velocity>& start, bool velocities) {
   const body& b = bodies[i];
   if (in_contact_[i]) {
-    row_bodies_[i] = detail::row_body::of(b);
-    shape_summaries_[i] = summarize(b);
+    // (Made in their places, here and below: assigned from copies made
+    // aside, their bytes were read back as soon as written, in wider loads
+    // than the stores, each waiting for them; 2% of a step of 1,000
+    // spheres, over half of these two functions.)
+    static_assert(std::is_trivially_destructible_v<detail::row_body> &&
+                  std::is_trivially_destructible_v<shape_summary>);
+    ::new (static_cast<void*>(&row_bodies_[i])) detail::row_body(detail::row_body::of(b));
+    ::new (static_cast<void*>(&shape_summaries_[i])) shape_summary(summarize(b));
   }
   if (velocities) copy_velocities(i, bodies, start);
 }
@@ -37,8 +45,14 @@ void contact_solver::prepare_body(std::size_t i, const std::vector<body>& bodies
 void contact_solver::copy_velocities(std::size_t i, const std::vector<body>& bodies,
                                      const std::vector<body_velocity>& start) {
   const body& b = bodies[i];
-  solver_bodies_[place_[i]] = {b.velocity_, b.angular_velocity_, b.inverse_mass_};
-  impact_bodies_[place_[i]] = {start[i].linear, start[i].angular, b.inverse_mass_};
+  solver_body& solved = solver_bodies_[place_[i]];
+  solved.velocity = b.velocity_;
+  solved.angular_velocity = b.angular_velocity_;
+  solved.inverse_mass = b.inverse_mass_;
+  solver_body& impact = impact_bodies_[place_[i]];
+  impact.velocity = start[i].linear;
+  impact.angular_velocity = start[i].angular;
+  impact.inverse_mass = b.inverse_mass_;
 }
 
 // On several sweep threads, where each body's velocities go: first the

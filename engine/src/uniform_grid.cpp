@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <new>
 #include <tuple>
 #include <type_traits>
 
@@ -225,8 +226,11 @@ void uniform_grid::collect(const std::vector<body>& bodies, const std::vector<st
     std::uint32_t* counts = &width_counts_[part * width_buckets];
     std::size_t own_planes = 0, lowest = width_buckets, highest = 0;
     for (std::size_t at = first; at < end; ++at) {
-      const bound b = bound_of(shaped[at]);
-      unplaced_[at] = b;
+      // (Made in its place: assigned from a copy made aside, its bytes were
+      // read back as soon as written, in wider loads than the stores, each
+      // waiting for them: half of this loop.)
+      static_assert(std::is_trivially_destructible_v<bound>);
+      const bound& b = *::new (static_cast<void*>(&unplaced_[at])) bound(bound_of(shaped[at]));
       if (b.radius < 0) {
         ++own_planes;
         continue;
