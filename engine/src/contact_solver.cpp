@@ -980,20 +980,20 @@ void contact_solver::store_impulses(std::vector<contact>& contacts, int threads)
   });
 }
 
-// Visits each contact i with its slot s. On one thread of sweeps, in
-// contact order, by body pair: read in the sweeps' order, the contacts and
-// their bodies were a scattered read each, a third of solve_velocities'
-// time at 10,000 spheres. On several, each slot on the thread that solves
-// it in the sweeps (its blocks of each colour; the sequential group on the
-// first): the constraint is then in that thread's cache when the sweeps
-// begin, and no two threads write the neighbouring slots of a cache line.
-// Written to from the contacts' order on whichever thread took them, the
-// constraints of 10,000 spheres took 1.2 ms on two threads against 0.8 on
-// one (2026-12-06, a 2-core Xeon whose cores hand a cache line over in
-// 150 ns).
-// There, `ahead(i)` asks for what visit will read of contact i, a few slots
-// later (prefetch.hpp): read in slots' order, the contacts and their bodies
-// are scattered, and many were written by the other core.
+// Visits each contact i with its slot s, in contact order, by body pair:
+// read in the sweeps' order, the contacts and their bodies were a scattered
+// read each, a third of solve_velocities' time at 10,000 spheres. On
+// several threads of sweeps, each contact on the thread that solves its
+// slot in the sweeps (owners_): the constraint is then in that thread's
+// cache when the sweeps begin, and no two threads write the neighbouring
+// slots of a cache line. (Written from the contacts' order on whichever
+// thread took them, the constraints of 10,000 spheres took 1.2 ms on two
+// threads against 0.8 on one; visited in each thread's slots' order, the
+// contacts, large and scattered, many written by the other core, were
+// read 0.1-0.25 ms a step slower than front to back, each thread passing
+// by the other's; 2026-12-06, a 2-core Xeon.) There, `ahead(i)` asks for
+// what visit will read of contact i, a few contacts later (prefetch.hpp):
+// the contacts' bodies are scattered.
 template <class Visit, class Ahead>
 void contact_solver::for_each_constraint(int threads, const Visit& visit,
                                          const Ahead& ahead) const {
@@ -1003,29 +1003,46 @@ void contact_solver::for_each_constraint(int threads, const Visit& visit,
     return;
   }
   const auto blocks = static_cast<std::size_t>(sweep_threads_);
+#pragma omp parallel num_threads(sweep_threads_)
+  {
+    const auto thread = static_cast<std::size_t>(omp_get_thread_num());
+    const auto team = static_cast<std::size_t>(omp_get_num_threads());
+    // (Where OpenMP gave fewer threads than asked, the missing threads'
+    // contacts too.)
+    const auto mine = [&](std::size_t i) {
+      return team == blocks ? owners_[i] == thread : owners_[i] % team == thread;
+    };
+    for (std::size_t i = 0; i < count; ++i) {
+      if (!mine(i)) continue;
+      if (i + detail::prefetch_distance < count) ahead(i + detail::prefetch_distance);
+      visit(i, slot_[i]);
+    }
+  }
+}
+
+// Each contact's thread in the sweeps (owners_, for T > 1 blocks): the
+// block of its colour its slot is in; the sequential group's, thread 0.
+void contact_solver::mark_owners() {
+  owners_.resize(colouring_.order.size());
+  const auto blocks = static_cast<std::size_t>(sweep_threads_);
   const std::size_t colours = colouring_.colours();
   const std::vector<std::size_t>& starts = colouring_.run_starts;
-  const auto visit_slots = [&](std::size_t first_run, std::size_t end_run) {
-    const std::size_t end = starts[end_run];
-    for (std::size_t s = starts[first_run]; s < end; ++s) {
-      if (s + detail::prefetch_distance < end)
-        ahead(colouring_.order[s + detail::prefetch_distance]);
-      visit(colouring_.order[s], s);
+  const auto mark = [&](std::size_t first_run, std::size_t end_run, std::size_t owner) {
+    for (std::size_t s = starts[first_run]; s < starts[end_run]; ++s) {
+      owners_[colouring_.order[s]] = static_cast<std::uint16_t>(owner);
     }
   };
 #pragma omp parallel num_threads(sweep_threads_)
   {
     const auto thread = static_cast<std::size_t>(omp_get_thread_num());
     const auto team = static_cast<std::size_t>(omp_get_num_threads());
-    // (Where OpenMP gave fewer threads than asked, the missing threads'
-    // blocks too.)
     for (std::size_t owner = thread; owner < blocks; owner += team) {
       for (std::size_t c = 0; c < colours; ++c) {
         const std::size_t* runs = &colouring_.thread_starts[c * (blocks + 1)];
-        visit_slots(runs[owner], runs[owner + 1]);
+        mark(runs[owner], runs[owner + 1], owner);
       }
     }
-    if (thread == 0) visit_slots(colouring_.colour_starts.back(), colouring_.runs());
+    if (thread == 0) mark(colouring_.colour_starts.back(), colouring_.runs(), 0);
   }
 }
 
@@ -1097,6 +1114,7 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   slot_.resize(count);
   detail::parallel_for(settings.threads, count, 4096,
                        [&](std::size_t s) { slot_[colouring_.order[s]] = s; });
+  if (sweep_threads_ > 1) mark_owners();
   // Where each constraint's optional terms go, in the sweeps' order. (Each
   // contact's own were read with its bodies above: read here in that order,
   // the contacts were a scattered read, 0.12-0.15 ms of a 10,000-sphere

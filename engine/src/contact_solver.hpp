@@ -263,6 +263,8 @@ class contact_solver {
   void pack_batches(const world_settings& settings);
   template <class Visit, class Ahead>
   void for_each_constraint(int threads, const Visit& visit, const Ahead& ahead) const;
+  void mark_owners();
+  std::vector<std::uint16_t> owners_;  // per contact: its thread in the sweeps (mark_owners)
   template <class Visit>
   void by_colours(const Visit& visit) const;
   void add_batch_group(const std::array<std::size_t, detail::contact_lanes>& runs, int filled);
