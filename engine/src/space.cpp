@@ -188,11 +188,11 @@ void space::place_shapes(const std::vector<body>& bodies, const std::vector<body
   placed_.resize(first_shape_.back());
   in_pairs_.assign(count, 0);
   jostled_.assign(count, 0);
+  // (Written whatever the flag was: read first, and written only where
+  // not yet set, the branch went either way at random and the pass took
+  // three times as long on one thread, 0.22 against 0.07 ms at 10,000
+  // spheres.)
   const auto mark = [](unsigned char& flag) {
-    unsigned char marked;
-#pragma omp atomic read relaxed
-    marked = flag;
-    if (marked) return;
 #pragma omp atomic write relaxed
     flag = 1;
   };
