@@ -945,7 +945,9 @@ void contact_solver::store_impulses(std::vector<contact>& contacts, int threads)
   // it, whose cache holds its constraint (for_each_constraint): on the
   // threads in halves of the list, 0.1-0.2 ms slower at 10,000 spheres.)
   const auto store = [&](std::size_t i, std::size_t slot) {
-    // (Read in contact order, the constraints are scattered: prefetch.hpp.)
+    // (Read in contact order, the constraints are scattered: prefetch.hpp.
+    // Asked for here, not as for_each_constraint's `ahead`, which one
+    // thread of sweeps does not call.)
     if (i + detail::prefetch_distance < contacts.size()) {
       const std::size_t ahead = slot_[i + detail::prefetch_distance];
       detail::prefetch_bytes(&constraints_[ahead], sizeof(constraint));

@@ -339,16 +339,26 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
   const auto share_count = static_cast<std::size_t>(4 * shares);
   shares_.resize(share_count);
   share_starts_.assign(share_count + 1, share_start{});
-  share_copied_.assign(share_count, share_start{});
   share_states_.assign(share_count, share_state::meeting);
   const share_start room{contacts.size(), on_static_.size()};
   std::size_t placed = 0;  // the shares [0, placed) have their starts
-  // Copies share `at`'s contacts and static contacts from what it has
-  // copied up to `upto` of each.
-  const auto copy_share = [&](std::size_t at, const share_start& upto) {
+  // Share `at`'s whole lists, and the part of them that fits in the room
+  // (copied as soon as its start is known; the rest after the lists grow).
+  const auto whole = [&](std::size_t at) {
+    return share_start{shares_[at].value.contacts.size(), shares_[at].value.on_static.size()};
+  };
+  const auto fitting = [&](std::size_t at) {
+    const auto fit = [](std::size_t start, std::size_t count, std::size_t room) {
+      return start >= room ? 0 : std::min(count, room - start);
+    };
+    const share_start& start = share_starts_[at];
+    return share_start{fit(start.contacts, whole(at).contacts, room.contacts),
+                       fit(start.on_static, whole(at).on_static, room.on_static)};
+  };
+  // Copies share `at`'s contacts and static contacts [from, upto) of each.
+  const auto copy_share = [&](std::size_t at, const share_start& from, const share_start& upto) {
     const share_lists& met = shares_[at].value;
     const share_start& start = share_starts_[at];
-    const share_start& from = share_copied_[at];
     std::copy(met.contacts.begin() + static_cast<std::ptrdiff_t>(from.contacts),
               met.contacts.begin() + static_cast<std::ptrdiff_t>(upto.contacts),
               contacts.begin() + static_cast<std::ptrdiff_t>(start.contacts + from.contacts));
@@ -357,14 +367,10 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
       c.contact += start.contacts;
       on_static_[start.on_static + k] = c;
     }
-    share_copied_[at] = upto;
-  };
-  const auto fitting = [](std::size_t start, std::size_t count, std::size_t room) {
-    return start >= room ? 0 : std::min(count, room - start);
   };
 #pragma omp parallel num_threads(shares)
   {
-    std::vector<std::pair<std::size_t, share_start>> to_copy;
+    std::vector<std::size_t> to_copy;
 #pragma omp for schedule(dynamic, 1)
     for (std::size_t at = 0; at < share_count; ++at) {
       const body_pair* first = pairs.data() + pairs.size() * at / share_count;
@@ -380,16 +386,13 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
       {
         share_states_[at] = share_state::met;
         for (; placed < share_count && share_states_[placed] == share_state::met; ++placed) {
-          const share_lists& own = shares_[placed].value;
           const share_start& start = share_starts_[placed];
-          share_starts_[placed + 1] = {start.contacts + own.contacts.size(),
-                                       start.on_static + own.on_static.size()};
-          to_copy.emplace_back(
-              placed, share_start{fitting(start.contacts, own.contacts.size(), room.contacts),
-                                  fitting(start.on_static, own.on_static.size(), room.on_static)});
+          share_starts_[placed + 1] = {start.contacts + whole(placed).contacts,
+                                       start.on_static + whole(placed).on_static};
+          to_copy.push_back(placed);
         }
       }
-      for (const auto& [k, upto] : to_copy) copy_share(k, upto);
+      for (const std::size_t k : to_copy) copy_share(k, share_start{}, fitting(k));
     }
   }
   const share_start total = share_starts_.back();
@@ -399,19 +402,16 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
   contacts.resize(total.contacts);
   if (on_static_.size() < total.on_static) on_static_.resize(total.on_static + total.on_static / 4);
   static_count_ = total.on_static;
-  const auto whole = [&](std::size_t at) {
-    return share_start{shares_[at].value.contacts.size(), shares_[at].value.on_static.size()};
+  // What did not fit: the shares past the room.
+  const auto late = [&](std::size_t at) {
+    return fitting(at).contacts < whole(at).contacts || fitting(at).on_static < whole(at).on_static;
   };
-  const auto copied = [&](std::size_t at) {
-    return share_copied_[at].contacts == whole(at).contacts &&
-           share_copied_[at].on_static == whole(at).on_static;
-  };
-  bool all_copied = true;
-  for (std::size_t at = 0; at < share_count; ++at) all_copied = all_copied && copied(at);
-  if (!all_copied) {
+  bool any_late = false;
+  for (std::size_t at = 0; at < share_count; ++at) any_late = any_late || late(at);
+  if (any_late) {
 #pragma omp parallel for num_threads(shares) schedule(dynamic, 1)
     for (std::size_t at = 0; at < share_count; ++at) {
-      if (!copied(at)) copy_share(at, whole(at));
+      if (late(at)) copy_share(at, fitting(at), whole(at));
     }
   }
   if (sensors) {

@@ -127,12 +127,11 @@ class space {
     std::vector<detail::static_contact> on_static;
   };
   std::vector<detail::cache_padded<share_lists>> shares_;
-  // Where each share's contacts and static contacts go in the lists, and
-  // how many of each it has copied there.
+  // Where each share's contacts and static contacts go in the lists.
   struct share_start {
     std::size_t contacts = 0, on_static = 0;
   };
-  std::vector<share_start> share_starts_, share_copied_;
+  std::vector<share_start> share_starts_;
   enum class share_state : unsigned char { meeting, met };
   std::vector<share_state> share_states_;
   // The contacts between a static body and another, in order (meet_pairs
