@@ -74,7 +74,7 @@ struct contact_colouring {
   // Per run, in contact order:
   std::vector<std::size_t> run_begins;  // its first contact (and then the end)
   std::vector<int> run_colours;         // its colour (the sequential group: colours())
-  std::vector<vector> positions;        // its moving body's position
+  std::vector<std::uint32_t> movers;    // its moving body (coloured runs)
   std::vector<std::size_t> run_bins, run_blocks;
   std::vector<std::size_t> colour_counts, bin_weights, sorted_runs, sort_scratch;
   std::vector<std::uint32_t> bin_blocks;
