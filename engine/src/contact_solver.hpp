@@ -318,7 +318,7 @@ class contact_solver {
     const real relaxation = last ? real(1) : k.relaxation;
     const real wanted =
         relaxation * (k.target_speed - detail::row_speed(k.normal, arms, a, b)) * k.normal_mass;
-    const real total = std::max(k.accumulated + wanted, real(0));
+    const real total = detail::at_least_zero(k.accumulated + wanted);
     const real j = total - k.accumulated;
     k.accumulated = total;
     largest_change = std::max(largest_change, std::fabs(j) * k.mass_inverse);

@@ -14,6 +14,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <type_traits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "gaphys/algebra.hpp"
 #include "gaphys/body.hpp"
@@ -40,6 +45,25 @@ struct row_arms {
   bivector arm_a{}, arm_b{};    // the speed's angular terms
   bivector turn_a{}, turn_b{};  // ΔΩ of A (and -ΔΩ of B) per unit impulse
 };
+
+// std::max(x, 0), the same for every x (a NaN, -0), without a branch: the
+// normal impulse's clamp goes either way from contact to contact
+// (contact_solver::normal_impulse), and GCC compiles any comparison of it
+// to a branch. SSE's max(0, x) is 0 > x ? 0 : x, as std::max(x, 0) is.
+template <class T>
+GAPHYS_ALWAYS_INLINE T at_least_zero(T x) {
+#if defined(__SSE2__)
+  if constexpr (std::is_same_v<T, double>) {
+    return _mm_cvtsd_f64(_mm_max_sd(_mm_setzero_pd(), _mm_set_sd(x)));
+  } else if constexpr (std::is_same_v<T, float>) {
+    return _mm_cvtss_f32(_mm_max_ss(_mm_setzero_ps(), _mm_set_ss(x)));
+  } else {
+    return std::max(x, T(0));
+  }
+#else
+  return std::max(x, T(0));
+#endif
+}
 
 // The speed a row along d reads, and its impulse j: `arms` null where the
 // row turns neither body (both arms zero).
