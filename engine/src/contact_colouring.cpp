@@ -11,10 +11,19 @@ namespace {
 
 // Each coloured run's block (contact_colouring.hpp): the thread whose slab
 // of space holds its moving body; 0 for the sequential group's.
-void assign_blocks(std::size_t bodies, const std::vector<vector>& positions, int colours,
-                   int blocks, contact_colouring& out);
+void assign_blocks(const std::vector<vector>& positions, int colours, int blocks,
+                   contact_colouring& out);
 
 }  // namespace
+
+std::size_t contact_colouring::slab_cut::bin_of(const vector& p) const {
+  if (!(span > 0)) return 0;
+  // (Written so that a NaN or an infinity, from a world that has blown up,
+  // lands in a bin instead of an undefined conversion.)
+  const real x = (p.c[axis] - start) / span * real(bins - 1);
+  if (!(x < real(bins - 1))) return x > 0 ? bins - 1 : 0;
+  return x > 0 ? static_cast<std::size_t>(x) : 0;
+}
 
 void colour_contacts(const std::vector<vector>& positions, contact_colouring& out, int threads,
                      int blocks) {
@@ -62,7 +71,7 @@ void colour_contacts(const std::vector<vector>& positions, contact_colouring& ou
   // by (colour, block): runs stay in contact order within a block, and the
   // sequential group (colour `kept`, one block) keeps contact order.
   if (blocks > 1) {
-    assign_blocks(bodies, positions, kept, blocks, out);
+    assign_blocks(positions, kept, blocks, out);
   } else {
     out.run_blocks.assign(runs, 0);
   }
@@ -105,8 +114,8 @@ void colour_contacts(const std::vector<vector>& positions, contact_colouring& ou
 
 namespace {
 
-void assign_blocks(std::size_t bodies, const std::vector<vector>& positions, int colours,
-                   int blocks, contact_colouring& out) {
+void assign_blocks(const std::vector<vector>& positions, int colours, int blocks,
+                   contact_colouring& out) {
   const std::size_t runs = out.run_colours.size();
   const auto coloured = [&](std::size_t r) { return out.run_colours[r] < colours; };
   // Each coloured run's moving body, and the box around those bodies. (Kept
@@ -134,55 +143,36 @@ void assign_blocks(std::size_t bodies, const std::vector<vector>& positions, int
   const int axis = extent.e1() >= extent.e2() && extent.e1() >= extent.e3() ? 0
                    : extent.e2() >= extent.e3()                             ? 1
                                                                             : 2;
-  // The contacts in each of `bins` slices of the axis, then each run's
+  // The contacts in each of the slices (bins) of the axis, then each run's
   // block: the share its slice falls in.
-  constexpr std::size_t bins = 1024;
-  const real start = low[axis], span = extent.c[axis];
+  contact_colouring::slab_cut& cut = out.slabs;
+  cut.axis = axis;
+  cut.start = low[axis];
+  cut.span = extent.c[axis];
   std::vector<std::size_t>& weight = out.bin_weights;
-  weight.assign(bins + 1, 0);
+  weight.assign(contact_colouring::bins + 1, 0);
   out.run_bins.resize(runs);
   for (std::size_t r = 0; r < runs; ++r) {
     if (!coloured(r)) continue;
-    std::size_t bin = 0;
-    if (span > 0) {
-      // (Written so that a NaN or an infinity, from a world that has blown
-      // up, lands in a bin instead of an undefined conversion.)
-      const real x = (positions[out.movers[r]].c[axis] - start) / span * real(bins - 1);
-      if (!(x < real(bins - 1))) {
-        bin = x > 0 ? bins - 1 : 0;
-      } else if (x > 0) {
-        bin = static_cast<std::size_t>(x);
-      }
-    }
+    const std::size_t bin = cut.bin_of(positions[out.movers[r]]);
     out.run_bins[r] = bin;
     weight[bin + 1] += out.run_begins[r + 1] - out.run_begins[r];
   }
-  for (std::size_t b = 1; b <= bins; ++b) weight[b] += weight[b - 1];
+  for (std::size_t b = 1; b <= contact_colouring::bins; ++b) weight[b] += weight[b - 1];
   const std::size_t total = weight.back();
+  cut.any = total > 0;
   // Each bin's block: the share of the contacts before it (a division per
   // bin, not per run).
-  std::vector<std::uint32_t>& bin_blocks = out.bin_blocks;
-  bin_blocks.resize(bins);
-  for (std::size_t b = 0; b < bins && total > 0; ++b) {
+  std::vector<std::uint32_t>& bin_blocks = cut.bin_blocks;
+  bin_blocks.resize(contact_colouring::bins);
+  for (std::size_t b = 0; b < contact_colouring::bins && total > 0; ++b) {
     const std::size_t share = weight[b] * static_cast<std::size_t>(blocks) / total;
     bin_blocks[b] = static_cast<std::uint32_t>(std::min<std::size_t>(share, blocks - 1));
   }
+  // (The sequential group is one block.)
   out.run_blocks.resize(runs);
-  out.body_blocks.assign(bodies, static_cast<std::uint32_t>(blocks));
   for (std::size_t r = 0; r < runs; ++r) {
-    // (The sequential group is one block.)
-    if (!coloured(r) || total == 0) {
-      out.run_blocks[r] = 0;
-      continue;
-    }
-    const std::uint32_t block = bin_blocks[out.run_bins[r]];
-    out.run_blocks[r] = block;
-    const auto [body_a, body_b] = out.pairs[out.run_begins[r]];
-    for (const std::size_t x : {body_a, body_b}) {
-      if (out.moves[x] && out.body_blocks[x] == static_cast<std::uint32_t>(blocks)) {
-        out.body_blocks[x] = block;
-      }
-    }
+    out.run_blocks[r] = coloured(r) && total > 0 ? bin_blocks[out.run_bins[r]] : 0;
   }
 }
 

@@ -56,10 +56,22 @@ struct contact_colouring {
   // thread_starts[c * (T + 1) + t] .. thread_starts[c * (T + 1) + t + 1] - 1
   // of colour c. (Empty for one.)
   std::vector<std::size_t> thread_starts;
-  // For T > 1 blocks: per body, the block of the first coloured run (in
-  // contact order) that moves it, or T where none does; the solver keeps
-  // each block's bodies together (contact_solver::place_bodies).
-  std::vector<std::uint32_t> body_blocks;
+  // For T > 1 blocks: space cut into the blocks' slabs across `axis`, in
+  // `bins` slices from `start` over `span`, each slice's block in
+  // bin_blocks (`any`: some run is coloured, else nothing is cut). A
+  // coloured run's block is the slab of its moving body (the one with mass,
+  // body_a where both have); the solver keeps the bodies of each slab
+  // together (contact_solver::place_bodies).
+  static constexpr std::size_t bins = 1024;
+  struct slab_cut {
+    int axis = 0;
+    real start = 0, span = 0;
+    bool any = false;
+    std::vector<std::uint32_t> bin_blocks;
+    std::size_t bin_of(const vector& p) const;
+    std::uint32_t block_of(const vector& p) const { return bin_blocks[bin_of(p)]; }
+  };
+  slab_cut slabs;
 
   std::size_t runs() const { return run_starts.size() - 1; }
   std::size_t colours() const { return colour_starts.size() - 1; }
@@ -77,7 +89,6 @@ struct contact_colouring {
   std::vector<std::uint32_t> movers;    // its moving body (coloured runs)
   std::vector<std::size_t> run_bins, run_blocks;
   std::vector<std::size_t> colour_counts, bin_weights, sorted_runs, sort_scratch;
-  std::vector<std::uint32_t> bin_blocks;
 };
 
 // Each contact's bodies into out.pairs, and also(i) for each contact i, in
