@@ -428,16 +428,6 @@ TEST_F(friction_test, single_newton_steps_land_on_the_circle_and_reach_the_neare
   }
 }
 
-// The nearest point scales with λ* and the bound (the metric does not
-// change), however small the impulses: a box settling into a corner of a
-// float world had friction bounds of 3e-16 N s, whose squares times
-// another impulse underflowed, and its impulses became NaN.
-// The sweeps apply a contact's normal impulse together with its friction
-// impulse, friction reading its speeds from before the normal impulse plus
-// what that changes them (the rows' coupling, disk_block::solve_after): the
-// same, to rounding, as applying the normal impulse and then solving
-// friction, sticking or sliding, for off-centre contacts on bodies of any
-// inertia.
 // The normal impulse's clamp (detail::at_least_zero, SSE's max on x86) is
 // std::max(x, 0) to the bit for every kind of x: the sweeps' results must
 // not depend on which of the two a build uses.
@@ -457,6 +447,12 @@ TEST_F(friction_test, the_normal_impulses_clamp_is_std_max_with_zero_to_the_bit)
   }
 }
 
+// The sweeps apply a contact's normal impulse together with its friction
+// impulse, friction reading its speeds from before the normal impulse plus
+// what that changes them (the rows' coupling, disk_block::solve_after): the
+// same, to rounding, as applying the normal impulse and then solving
+// friction, sticking or sliding, for off-centre contacts on bodies of any
+// inertia.
 TEST_F(friction_test, friction_solved_after_the_normal_impulse_is_the_same_as_solved_behind_it) {
   int sliding = 0;
   for (int trial = 0; trial < 1000; ++trial) {
@@ -522,6 +518,10 @@ TEST_F(friction_test, friction_solved_after_the_normal_impulse_is_the_same_as_so
   EXPECT_LT(sliding, 900);
 }
 
+// The nearest point scales with λ* and the bound (the metric does not
+// change), however small the impulses: a box settling into a corner of a
+// float world had friction bounds of 3e-16 N s, whose squares times
+// another impulse underflowed, and its impulses became NaN.
 TEST_F(friction_test, a_sliding_impulse_scales_with_the_stopping_impulse_and_the_bound) {
   for (int trial = 0; trial < 500; ++trial) {
     detail::disk_block block;
