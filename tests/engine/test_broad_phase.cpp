@@ -108,7 +108,7 @@ TEST_F(broad_phase_test, the_grid_finds_exactly_the_contacts_of_all_pairs) {
 // each body's pairs on the threads: the candidates are the same, in the
 // same order, on any number.
 TEST_F(broad_phase_test, the_grid_finds_the_same_pairs_on_any_number_of_threads) {
-  const std::vector<body> bodies = random_scene(9000, 6);
+  std::vector<body> bodies = random_scene(9000, 6);
   std::vector<body_pair> one_thread;
   for (const int threads : {1, 2, 8}) {
     space grid(broad_phase_kind::uniform_grid);
@@ -133,6 +133,94 @@ TEST_F(broad_phase_test, the_grid_finds_the_same_pairs_on_any_number_of_threads)
     grid.candidate_pairs(bodies, nested, real(1) / 240, real(0.001), 2);
   }
   EXPECT_TRUE(nested == one_thread);
+  // And from kept candidates (uniform_grid.hpp), checked and tested on the
+  // threads: the bodies nudged within the skin.
+  std::vector<std::size_t> shaped(bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i) shaped[i] = i;
+  detail::uniform_grid grids[3];
+  const int thread_counts[] = {1, 2, 8};
+  for (int call = 0; call < 3; ++call) {
+    std::vector<body_pair> first;
+    for (int g = 0; g < 3; ++g) {
+      std::vector<body_pair> pairs;
+      ASSERT_TRUE(
+          grids[g].find_pairs(bodies, shaped, real(1) / 240, real(0.001), pairs, thread_counts[g]));
+      EXPECT_EQ(grids[g].used_kept_pairs(), call > 0);
+      if (g == 0) first = pairs;
+      EXPECT_TRUE(pairs == first) << thread_counts[g] << " threads, call " << call;
+    }
+    for (std::size_t i = 3; i < bodies.size(); ++i) {
+      if (!bodies[i].is_static()) {
+        bodies[i].set_position(bodies[i].position() + real(0.002) * random_unit_vector());
+      }
+    }
+  }
+}
+
+// Kept candidates (uniform_grid.hpp): the grid keeps the pairs of bounds
+// grown by a skin, and while every bound stays within its skin it tests
+// only those. Bodies nudged call after call, some drifting steadily, one
+// now and then jumping far or speeding up, a static sphere moved and a
+// plane turned: each call's
+// pairs are all pairs', and most calls use the kept pairs. Then every body
+// jumps at every call (lists that last a call: the grid pairs its cells
+// again): still all pairs' pairs.
+TEST_F(broad_phase_test, kept_candidates_give_the_pairs_of_all_pairs_as_bodies_move) {
+  std::vector<body> bodies = random_scene(1000, real(1.5));
+  std::vector<std::size_t> shaped(bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i) shaped[i] = i;
+  space all(broad_phase_kind::all_pairs);
+  for (std::size_t i = 0; i < bodies.size(); ++i) all.add(i);
+  detail::uniform_grid grid;
+  const real lookahead = real(1) / 60, margin = real(0.001);
+  const auto nudge_all = [&](real distance) {
+    for (std::size_t i = 3; i < bodies.size(); ++i) {
+      body& b = bodies[i];
+      if (!b.is_static()) b.set_position(b.position() + distance * random_unit_vector());
+    }
+  };
+  const vector drift[] = {{real(0.043), 0, 0}, {0, real(-0.037), 0}, {0, 0, real(0.051)}};
+  int kept_calls = 0;
+  for (int call = 0; call < 88; ++call) {
+    std::vector<body_pair> expected, pairs;
+    all.candidate_pairs(bodies, expected, lookahead, margin);
+    ASSERT_TRUE(grid.find_pairs(bodies, shaped, lookahead, margin, pairs));
+    ASSERT_TRUE(pairs == expected) << "call " << call;
+    if (call >= 72) {
+      if (call >= 76) {
+        EXPECT_FALSE(grid.used_kept_pairs()) << "call " << call;
+      }
+      nudge_all(real(0.5));
+      continue;
+    }
+    nudge_all(real(0.003));
+    if (call >= 48) {  // some drifting steadily out of their skins
+      for (std::size_t i = 3; i < 40; ++i) {
+        if (!bodies[i].is_static()) bodies[i].set_position(bodies[i].position() + drift[i % 3]);
+      }
+      continue;
+    }
+    kept_calls += grid.used_kept_pairs();
+    const std::size_t some = 3 + static_cast<std::size_t>(uniform(0, real(bodies.size() - 4)));
+    if (call % 8 == 3 && !bodies[some].is_static()) {  // far beyond the skin
+      bodies[some].set_position(bodies[some].position() + real(0.5) * random_unit_vector());
+    }
+    if (call % 8 == 5 && !bodies[some].is_static()) {  // a bound grown by h |v|
+      bodies[some].set_velocity(real(30) * random_unit_vector());
+    }
+    if (call == 24) {  // a static sphere moved: now a mover (detail::motion_of)
+      for (body& b : bodies) {
+        if (b.is_static() && b.shape()->kind() == shape_kind::sphere) {
+          b.set_position(b.position() + vector{real(0.01), 0, 0});
+          break;
+        }
+      }
+    }
+    if (call == 40) {
+      bodies[0].set_attitude(e3ga::exp(bivector{real(0.01), 0, 0}) * bodies[0].attitude());
+    }
+  }
+  EXPECT_GT(kept_calls, 28);
 }
 
 TEST_F(broad_phase_test, touching_spheres_on_cell_boundaries_are_found) {

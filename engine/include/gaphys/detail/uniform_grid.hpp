@@ -17,6 +17,12 @@
 // The result is a superset of the pairs whose shapes touch, sorted like all
 // pairs', so the narrow phase finds exactly the contacts all pairs finds, in
 // the same order: the two broad phases give bit-identical simulations.
+//
+// Kept candidates: the grid pairs bounds grown by a skin (a quarter of a
+// cell) and keeps that list; while no body has moved its bound beyond the
+// skin since (nor changed how it moves, nor a plane), every pair that
+// overlaps now is in the list, and the steps that follow test only the
+// listed pairs, with the same test, for the same pairs in the same order.
 #pragma once
 
 #include <cstddef>
@@ -59,6 +65,9 @@ class uniform_grid {
   // bodies (space's all pairs), so that it finds the same pairs.
   static bool pairs_bounds(const bound& a, const bound& b, const body& body_a, const body& body_b,
                            real margin);
+  // Whether the last find_pairs tested the kept candidates (above) instead
+  // of the cells.
+  bool used_kept_pairs() const { return used_kept_; }
 
  private:
   struct entry {  // an ordinary bound in its cell
@@ -83,7 +92,7 @@ class uniform_grid {
   void pair_cells(std::vector<index_pair>& pairs, int threads);
   void pair_cell_range(std::size_t begin, std::size_t end, std::vector<index_pair>& pairs) const;
   void pair_large(std::vector<index_pair>& pairs) const;
-  void pair_planes(const std::vector<body>& bodies, std::vector<index_pair>& pairs, int threads);
+  void pair_planes(std::vector<index_pair>& pairs, int threads);
   void add_if_overlapping(const bound& a, const bound& b, std::vector<index_pair>& pairs) const;
   struct plane_test;
   // The two tests every candidate passes (find_pairs and pairs_bounds).
@@ -91,6 +100,15 @@ class uniform_grid {
   static plane_test plane_test_of(const body& p, std::size_t index, real margin);
   static bool reaches(const plane_test& plane, const bound& b);
   void sort_pairs(std::size_t body_count, std::vector<index_pair>& pairs, int threads);
+  void find_plane_tests(const std::vector<body>& bodies);
+  // The kept candidates: whether they still hold every pair that may
+  // overlap, keeping them (from pairs found with bounds grown by the skin),
+  // and the pairs among them that overlap now.
+  bool kept_still_cover(const std::vector<std::size_t>& shaped, int threads) const;
+  void keep(const std::vector<index_pair>& grown_pairs, const std::vector<std::size_t>& shaped,
+            std::size_t body_count, real skin);
+  void pair_kept(std::vector<index_pair>& pairs, int threads);
+  real next_skin();
 
   // Scratch, kept between steps so a step allocates nothing once warm.
   std::vector<bound> bounds_;
@@ -125,6 +143,25 @@ class uniform_grid {
     motion moves;
   };
   std::vector<plane_test> plane_tests_;
+  // The kept candidates (above): each pair as its bodies' places in
+  // `shaped` (a first); the bounds and plane tests they were found with,
+  // `shaped` then, and for each place how far its bound's radius may reach
+  // before a pair may be missing (its radius then, plus the skin, less a
+  // rounding margin). A plane's place holds its plane test's index.
+  struct kept_pair {
+    std::uint32_t a, b;
+  };
+  std::vector<kept_pair> kept_;
+  std::vector<bound> kept_bounds_;
+  std::vector<real> kept_reach_;
+  std::vector<std::size_t> kept_shaped_;
+  std::vector<plane_test> kept_planes_;
+  std::vector<std::uint32_t> plane_of_, place_of_;
+  bool kept_valid_ = false, used_kept_ = false;
+  // How many find_pairs the kept list has served; lists that served only
+  // the step that made them, in a row; steps left on the plain grid after
+  // two such (bodies too fast for the skin: growing the bounds only costs).
+  int kept_uses_ = 0, short_lists_ = 0, plain_steps_left_ = 0;
   real cell_size_ = 1;
   real margin_ = 0;  // the contact margin: bounds hold half of it, plane tests the other half
 };
