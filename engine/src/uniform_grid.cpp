@@ -98,15 +98,18 @@ bool uniform_grid::find_pairs(const std::vector<body>& bodies, const std::vector
                               real lookahead, real margin, std::vector<index_pair>& pairs,
                               int threads) {
   pairs.clear();
-  collect(bodies, shaped, lookahead, margin, threads);
   margin_ = margin;
-  find_plane_tests(bodies);
-  used_kept_ = kept_valid_ && kept_still_cover(shaped, threads);
+  // (Where `shaped` is as it was, kept_still_cover has made this step's
+  // bounds, covered or not.)
+  const bool bounds_made = kept_valid_ && shaped == kept_shaped_;
+  used_kept_ = bounds_made && kept_still_cover(bodies, shaped, lookahead, margin, threads);
   if (used_kept_) {
     ++kept_uses_;
     pair_kept(pairs, threads);
     return true;
   }
+  collect(bodies, shaped, lookahead, margin, threads, bounds_made);
+  find_plane_tests(bodies);
   // The cells' pairs of bounds grown by the skin, kept; then those of them
   // that overlap now. (Which bounds are large stays as collect found them:
   // each grows by the same skin, and the cells with it. A kept pair holds
@@ -158,9 +161,34 @@ real uniform_grid::next_skin() {
 // |cB - cB'| <= (rA' + skin) + (rB' + skin) where each bound's |c - c'| + r
 // <= r' + skin; and a plane that a bound reaches now, n . c - r <= d,
 // reached it grown: n . c' - (r' + skin) <= n . c - r <= d. (Less a rounding
-// margin: kept_reach_.)
-bool uniform_grid::kept_still_cover(const std::vector<std::size_t>& shaped, int threads) const {
-  if (shaped != kept_shaped_ || plane_tests_.size() != kept_planes_.size()) return false;
+// margin: kept_reach_.) The bounds are made here, in unplaced_ (as collect
+// makes them), and the plane tests (planes_ is as the keeping step's collect
+// left it: `shaped` and which bodies are planes are the same); while the
+// kept pairs serve, the width histogram and the bounds' placement (collect)
+// are not needed. (`shaped` is the kept one: find_pairs checks.)
+bool uniform_grid::kept_still_cover(const std::vector<body>& bodies,
+                                    const std::vector<std::size_t>& shaped, real lookahead,
+                                    real margin, int threads) {
+  bool covered = true;
+  const int shares = threads_for(threads, shaped.size(), 4096);
+  const auto count = static_cast<std::ptrdiff_t>(shaped.size());
+#pragma omp parallel for num_threads(shares) schedule(static) if (shares > 1) reduction(&& : covered)
+  for (std::ptrdiff_t k = 0; k < count; ++k) {
+    const auto at = static_cast<std::size_t>(k);
+    // (Made in its place: collect.)
+    const bound& now = *::new (static_cast<void*>(&unplaced_[at]))
+                           bound(bound_of(bodies[shaped[at]], shaped[at], lookahead, margin));
+    const bound& then = kept_bounds_[at];
+    const bool planes = now.radius < 0 && then.radius < 0;
+    const real room = kept_reach_[at] - now.radius;
+    const vector d = now.centre - then.centre;
+    covered = covered && now.moves == then.moves &&
+              (planes || (now.radius >= 0 && then.radius >= 0 && room >= 0 &&
+                          e3ga::scp(d, d) <= room * room));
+  }
+  if (!covered) return false;
+  find_plane_tests(bodies);
+  if (plane_tests_.size() != kept_planes_.size()) return false;
   for (std::size_t p = 0; p < plane_tests_.size(); ++p) {
     const plane_test& now = plane_tests_[p];
     const plane_test& then = kept_planes_[p];
@@ -170,22 +198,7 @@ bool uniform_grid::kept_still_cover(const std::vector<std::size_t>& shaped, int 
       return false;
     }
   }
-  bool covered = true;
-  const int shares = threads_for(threads, shaped.size(), 4096);
-  const auto count = static_cast<std::ptrdiff_t>(shaped.size());
-#pragma omp parallel for num_threads(shares) schedule(static) if (shares > 1) reduction(&& : covered)
-  for (std::ptrdiff_t k = 0; k < count; ++k) {
-    const auto at = static_cast<std::size_t>(k);
-    const bound& now = unplaced_[at];
-    const bound& then = kept_bounds_[at];
-    const bool planes = now.radius < 0 && then.radius < 0;
-    const real room = kept_reach_[at] - now.radius;
-    const vector d = now.centre - then.centre;
-    covered = covered && now.moves == then.moves &&
-              (planes || (now.radius >= 0 && then.radius >= 0 && room >= 0 &&
-                          e3ga::scp(d, d) <= room * room));
-  }
-  return covered;
+  return true;
 }
 
 // Keeps `grown_pairs` (sorted, found with every bound grown by the skin)
@@ -332,7 +345,7 @@ GAPHYS_ALWAYS_INLINE bool uniform_grid::reaches(const plane_test& plane, const b
 // other one found. (Which bounds are large, and the cell size, change which
 // candidates the grid tests, not the pairs it finds.)
 void uniform_grid::collect(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped,
-                           real lookahead, real margin, int threads) {
+                           real lookahead, real margin, int threads, bool bounds_made) {
   // (A bucket for every pattern of the bits below the sign.)
   static_assert(width_buckets == std::size_t{1} << (8 * sizeof(real) - 1 - width_bucket_shift));
   const std::size_t count = shaped.size();
@@ -364,8 +377,11 @@ void uniform_grid::collect(const std::vector<body>& bodies, const std::vector<st
       // (Made in its place: assigned from a copy made aside, its bytes were
       // read back as soon as written, in wider loads than the stores, each
       // waiting for them: half of this loop.)
+      // (Or made already, by kept_still_cover.)
       static_assert(std::is_trivially_destructible_v<bound>);
-      const bound& b = *::new (static_cast<void*>(&unplaced_[at])) bound(bound_of(shaped[at]));
+      const bound& b =
+          bounds_made ? unplaced_[at]
+                      : *::new (static_cast<void*>(&unplaced_[at])) bound(bound_of(shaped[at]));
       if (b.radius < 0) {
         ++own_planes;
         continue;

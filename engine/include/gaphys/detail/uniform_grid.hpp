@@ -83,7 +83,7 @@ class uniform_grid {
   };
 
   void collect(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped,
-               real lookahead, real margin, int threads);
+               real lookahead, real margin, int threads, bool bounds_made);
   bool sort_into_cells(int threads);
   void sort_dense(std::size_t cells, int threads);
   void sort_hashed();
@@ -104,7 +104,8 @@ class uniform_grid {
   // The kept candidates: whether they still hold every pair that may
   // overlap, keeping them (from pairs found with bounds grown by the skin),
   // and the pairs among them that overlap now.
-  bool kept_still_cover(const std::vector<std::size_t>& shaped, int threads) const;
+  bool kept_still_cover(const std::vector<body>& bodies, const std::vector<std::size_t>& shaped,
+                        real lookahead, real margin, int threads);
   void keep(const std::vector<index_pair>& grown_pairs, const std::vector<std::size_t>& shaped,
             std::size_t body_count, real skin);
   void pair_kept(std::vector<index_pair>& pairs, int threads);
