@@ -30,56 +30,48 @@ bool contact_solver::batchable(std::size_t run, contact_batching batching) const
   return detail::batches_take(batching, plain);
 }
 
-// Each block's runs, in order, into batches of `lanes` (the last one maybe
-// short) and single runs; then the packs, from the constraints as the
-// impact phase and the warm start left them.
+// Each part's runs (part_runs), in order, into batches of `lanes` (the
+// last one maybe short) and single runs; then the packs, from the
+// constraints as the impact phase and the warm start left them.
 void contact_solver::pack_batches(const world_settings& settings) {
   const std::size_t threads = static_cast<std::size_t>(sweep_threads_);
-  const std::size_t blocks = colouring_.colours() * threads;
+  const std::size_t parts = colouring_.colours() * threads * 2;
   groups_.clear();
   single_runs_.clear();
   normal_packs_.clear();
   friction_packs_.clear();
   pack_slots_.clear();
-  block_groups_.assign(1, 0);
-  block_singles_.assign(1, 0);
-  const auto block_runs = [&](std::size_t block) {
-    const std::size_t colour = block / threads, thread = block % threads;
-    if (threads == 1) {
-      return std::pair{colouring_.colour_starts[colour], colouring_.colour_starts[colour + 1]};
-    }
-    const std::size_t* starts = &colouring_.thread_starts[colour * (threads + 1)];
-    return std::pair{starts[thread], starts[thread + 1]};
-  };
+  part_groups_.assign(1, 0);
+  part_singles_.assign(1, 0);
   if (!detail::batches_take(settings.batch_contacts, false)) {
-    // No run goes on batches (the default build's two doubles): each block
+    // No run goes on batches (the default build's two doubles): each part
     // is one stretch of single runs, written by the thread that solves it.
     // (Run by run on one thread, 0.1 ms of a 10,000-sphere step.)
-    block_groups_.assign(blocks + 1, 0);
-    block_singles_.resize(blocks + 1);
-    for (std::size_t block = 0; block < blocks; ++block) {
-      const auto [first, end] = block_runs(block);
-      block_singles_[block + 1] = block_singles_[block] + (end - first);
+    part_groups_.assign(parts + 1, 0);
+    part_singles_.resize(parts + 1);
+    for (std::size_t part = 0; part < parts; ++part) {
+      const auto [first, end] = part_runs(part);
+      part_singles_[part + 1] = part_singles_[part] + (end - first);
     }
-    single_runs_.resize(block_singles_.back());
-    stretch_ends_.resize(block_singles_.back());
+    single_runs_.resize(part_singles_.back());
+    stretch_ends_.resize(part_singles_.back());
 #pragma omp parallel num_threads(sweep_threads_) if (sweep_threads_ > 1)
     {
       const auto thread = static_cast<std::size_t>(omp_get_thread_num());
       const auto team = static_cast<std::size_t>(omp_get_num_threads());
-      for (std::size_t block = 0; block < blocks; ++block) {
-        if (block % threads % team != thread) continue;
-        const std::size_t at = block_singles_[block], stop = block_singles_[block + 1];
+      for (std::size_t part = 0; part < parts; ++part) {
+        if (part / 2 % threads % team != thread) continue;
+        const std::size_t at = part_singles_[part], stop = part_singles_[part + 1];
         std::iota(single_runs_.begin() + std::ptrdiff_t(at),
-                  single_runs_.begin() + std::ptrdiff_t(stop), block_runs(block).first);
+                  single_runs_.begin() + std::ptrdiff_t(stop), part_runs(part).first);
         std::fill(stretch_ends_.begin() + std::ptrdiff_t(at),
                   stretch_ends_.begin() + std::ptrdiff_t(stop), stop);
       }
     }
     return;
   }
-  for (std::size_t block = 0; block < blocks; ++block) {
-    const auto [first, end] = block_runs(block);
+  for (std::size_t part = 0; part < parts; ++part) {
+    const auto [first, end] = part_runs(part);
     std::array<std::size_t, lanes> runs{};
     int filled = 0;
     for (std::size_t run = first; run < end; ++run) {
@@ -91,17 +83,24 @@ void contact_solver::pack_batches(const world_settings& settings) {
       if (filled == lanes) add_batch_group(runs, filled), filled = 0;
     }
     if (filled > 0) add_batch_group(runs, filled);
-    block_groups_.push_back(groups_.size());
+    part_groups_.push_back(groups_.size());
     // Where each single run's stretch of consecutive ones ends (without
-    // batches, the whole block is one).
-    const std::size_t begin = block_singles_.back(), stop = single_runs_.size();
+    // batches, the whole part is one).
+    const std::size_t begin = part_singles_.back(), stop = single_runs_.size();
     stretch_ends_.resize(stop);
     for (std::size_t at = stop; at-- > begin;) {
       const bool joins = at + 1 < stop && single_runs_[at + 1] == single_runs_[at] + 1;
       stretch_ends_[at] = joins ? stretch_ends_[at + 1] : at + 1;
     }
-    block_singles_.push_back(stop);
+    part_singles_.push_back(stop);
   }
+}
+
+std::pair<std::size_t, std::size_t> contact_solver::part_runs(std::size_t part) const {
+  const auto threads = static_cast<std::size_t>(sweep_threads_);
+  const std::size_t block = part / 2;
+  return colouring_.runs_of(block / threads, block % threads, threads,
+                            static_cast<detail::contact_colouring::part>(part % 2));
 }
 
 // Contact s of each lane's run into pack group.first + s; a lane whose run
@@ -209,31 +208,17 @@ void contact_solver::solve_group(const batch_group& group, const sweep_kind& kin
   }
 }
 
-void contact_solver::solve_block(std::size_t block, const sweep_kind& kind, sweep_result& result) {
-  solve_block_items(block, 0, block_items(block), kind, result);
-}
-
-std::size_t contact_solver::block_items(std::size_t block) const {
-  return block_groups_[block + 1] - block_groups_[block] + block_singles_[block + 1] -
-         block_singles_[block];
-}
-
-void contact_solver::solve_block_items(std::size_t block, std::size_t first, std::size_t end,
-                                       const sweep_kind& kind, sweep_result& result) {
-  // Its batches first, then its single runs.
-  const std::size_t groups = block_groups_[block + 1] - block_groups_[block];
-  for (std::size_t item = first; item < std::min(end, groups); ++item) {
-    solve_group(groups_[block_groups_[block] + item], kind, result);
+void contact_solver::solve_part(std::size_t part, const sweep_kind& kind, sweep_result& result) {
+  for (std::size_t g = part_groups_[part]; g < part_groups_[part + 1]; ++g) {
+    solve_group(groups_[g], kind, result);
   }
   // The single runs a stretch of consecutive ones at a time: solve_runs per
   // run cost a call and its set-up per contact, a third of the instructions
   // of a plain contact's solve.
-  const std::size_t base = block_singles_[block];  // item `groups`
-  for (std::size_t item = std::max(first, groups); item < end;) {
-    const std::size_t at = base + item - groups;
-    const std::size_t stop = std::min(end, stretch_ends_[at] - base + groups);
-    solve_runs(single_runs_[at], single_runs_[at] + (stop - item), kind, result);
-    item = stop;
+  for (std::size_t at = part_singles_[part]; at < part_singles_[part + 1];) {
+    const std::size_t stop = stretch_ends_[at];
+    solve_runs(single_runs_[at], single_runs_[at] + (stop - at), kind, result);
+    at = stop;
   }
 }
 

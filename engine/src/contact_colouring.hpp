@@ -26,6 +26,14 @@
 // position in each colour's list instead, bodies, whose indices say nothing
 // of where they are, changed cores at every colour: 10,000 spheres stepped
 // slower on two threads than on one.)
+//
+// Each block is ordered in two parts: first its shared runs, those with a
+// moving body that a run of another thread's block (of any colour) also
+// moves, then its own runs, whose moving bodies only its thread's runs
+// move. A thread's own runs need nothing from the other threads, so it
+// needs to wait for the others only before its shared runs of a colour,
+// and only for their shared runs of the colour before: it solves its own
+// runs of a colour meanwhile (contact_solver::solve_contacts).
 #pragma once
 
 #include <cstddef>
@@ -56,6 +64,10 @@ struct contact_colouring {
   // thread_starts[c * (T + 1) + t] .. thread_starts[c * (T + 1) + t + 1] - 1
   // of colour c. (Empty for one.)
   std::vector<std::size_t> thread_starts;
+  // For T > 1 blocks: block t of colour c has its shared runs first, runs
+  // thread_starts[c * (T + 1) + t] .. shared_ends[c * T + t] - 1, and its
+  // own runs from there. (Empty for one.)
+  std::vector<std::size_t> shared_ends;
   // For T > 1 blocks: space cut into the blocks' slabs across `axis`, in
   // `bins` slices from `start` over `span`, each slice's block in
   // bin_blocks (`any`: some run is coloured, else nothing is cut). A
@@ -73,6 +85,21 @@ struct contact_colouring {
   };
   slab_cut slabs;
 
+  // A part of a colour's runs as the sweeps solve it: block t's shared
+  // runs (part 0) or own runs (part 1), the first run and one past the
+  // last. (With one block, no run is shared.)
+  enum part { shared_runs = 0, own_runs = 1 };
+  std::pair<std::size_t, std::size_t> runs_of(std::size_t colour, std::size_t block,
+                                              std::size_t blocks, part p) const {
+    if (blocks == 1) {
+      const std::size_t first = colour_starts[colour], end = colour_starts[colour + 1];
+      return p == shared_runs ? std::pair{first, first} : std::pair{first, end};
+    }
+    const std::size_t* starts = &thread_starts[colour * (blocks + 1) + block];
+    const std::size_t middle = shared_ends[colour * blocks + block];
+    return p == shared_runs ? std::pair{starts[0], middle} : std::pair{middle, starts[1]};
+  }
+
   std::size_t runs() const { return run_starts.size() - 1; }
   std::size_t colours() const { return colour_starts.size() - 1; }
 
@@ -87,7 +114,13 @@ struct contact_colouring {
   std::vector<std::size_t> run_begins;  // its first contact (and then the end)
   std::vector<int> run_colours;         // its colour (the sequential group: colours())
   std::vector<std::uint32_t> movers;    // its moving body (coloured runs)
-  std::vector<std::size_t> run_bins, run_blocks;
+  std::vector<std::size_t> run_bins, run_blocks;  // run_blocks: 2 x block + part (T > 1)
+  std::vector<std::uint32_t> partners;  // its other body, where that has mass (coloured runs)
+  // Per body with mass: its bin as the mover of runs (or none), and the
+  // lowest and the highest bin of the runs that move it as their partner
+  // (none: lowest > highest).
+  std::vector<std::uint16_t> own_bins, lowest_bins, highest_bins;
+  std::vector<char> spans_blocks;  // per body: runs of two blocks move it
   std::vector<std::size_t> colour_counts, bin_weights, sorted_runs, sort_scratch;
 };
 

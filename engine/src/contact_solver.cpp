@@ -644,32 +644,78 @@ void contact_solver::match_share(int share, const std::vector<body>& bodies,
 
 // Calls visit(first, end) over the slots [first, end) of the sweeps' order,
 // colour by colour, the sequential group last: on one thread in that
-// order; on several, each thread its own blocks of a colour, with a barrier
-// between colours (the sequential group on the first). The runs of a colour
-// share no body that moves, so what visit adds to each body adds up in the
-// same order on any number of threads.
+// order; on several, each thread its own block of a colour, shared runs
+// first (solve_in_parts), the sequential group on the first after all. The
+// runs of a colour share no body that moves, so what visit adds to each
+// body adds up in the same order on any number of threads.
 template <class Visit>
-void contact_solver::by_colours(const Visit& visit) const {
+void contact_solver::by_colours(const Visit& visit) {
   const std::vector<std::size_t>& starts = colouring_.run_starts;
   if (sweep_threads_ == 1) {
     visit(std::size_t{0}, colouring_.order.size());
     return;
   }
-  const auto blocks = static_cast<std::size_t>(sweep_threads_);
+  const std::size_t blocks = static_cast<std::size_t>(sweep_threads_);
   const std::size_t colours = colouring_.colours();
+  reset_shared_solved();
 #pragma omp parallel num_threads(sweep_threads_)
   {
     const auto thread = static_cast<std::size_t>(omp_get_thread_num());
     const auto team = static_cast<std::size_t>(omp_get_num_threads());
     for (std::size_t c = 0; c < colours; ++c) {
-      const std::size_t* runs = &colouring_.thread_starts[c * (blocks + 1)];
-      // (And the blocks of threads OpenMP did not give.)
-      for (std::size_t owner = thread; owner < blocks; owner += team) {
-        visit(starts[runs[owner]], starts[runs[owner + 1]]);
-      }
-#pragma omp barrier
+      solve_in_parts(c, c, thread, team,
+                     [&](std::size_t colour, std::size_t block, detail::contact_colouring::part p) {
+                       const auto [first_run, end_run] =
+                           colouring_.runs_of(colour, block, blocks, p);
+                       visit(starts[first_run], starts[end_run]);
+                     });
     }
+#pragma omp barrier
     if (thread == 0) visit(starts[colouring_.colour_starts.back()], starts.back());
+  }
+}
+
+// One thread's share of colour `colour` (on `team` threads of the sweep's
+// T): visit(colour, block, part) for its block's shared runs, once every
+// other thread has visited its shared runs of the colours before (`count`
+// colours, counted on across sweeps, in shared_solved_, from
+// reset_shared_solved), then for its own runs, which no other thread's
+// runs move (contact_colouring.hpp). While one thread visits its own runs,
+// the others' shared runs of the colour get done: a thread waits only
+// where the others fall behind by a whole colour. (With a barrier between
+// colours, the two threads of 10,000 spheres' sweeps waited for each other
+// a fifth of the time.) Where OpenMP gave fewer threads than asked (inside
+// an application's own parallel region, one), a thread visits the missing
+// threads' blocks too, with a barrier after each colour.
+template <class Visit>
+void contact_solver::solve_in_parts(std::size_t colour, std::uint64_t count, std::size_t thread,
+                                    std::size_t team, const Visit& visit) {
+  using part = detail::contact_colouring::part;
+  const auto threads = static_cast<std::size_t>(sweep_threads_);
+  if (team != threads) {
+    for (std::size_t owner = thread; owner < threads; owner += team) {
+      visit(colour, owner, part::shared_runs);
+      visit(colour, owner, part::own_runs);
+    }
+#pragma omp barrier
+    return;
+  }
+  for (std::size_t other = 0; other < threads; ++other) {
+    if (other != thread) detail::wait_until_at_least(shared_solved_[other].value, count);
+  }
+  visit(colour, thread, part::shared_runs);
+  shared_solved_[thread].value.store(count + 1, std::memory_order_release);
+  visit(colour, thread, part::own_runs);
+}
+
+void contact_solver::reset_shared_solved() {
+  if (shared_solved_count_ < sweep_threads_) {
+    shared_solved_ = std::make_unique<detail::cache_padded<std::atomic<std::uint64_t>>[]>(
+        static_cast<std::size_t>(sweep_threads_));
+    shared_solved_count_ = sweep_threads_;
+  }
+  for (int t = 0; t < sweep_threads_; ++t) {
+    shared_solved_[t].value.store(0, std::memory_order_relaxed);
   }
 }
 
@@ -762,11 +808,17 @@ void contact_solver::solve_contacts(const world_settings& settings) {
   }
   const std::size_t sequential = colouring_.colour_starts.back();
   const int threads = sweep_threads_;
+  const auto part_of = [&](std::size_t colour, std::size_t thread,
+                           detail::contact_colouring::part p) {
+    return 2 * (colour * static_cast<std::size_t>(threads) + thread) + p;
+  };
   if (threads == 1) {
     for (int sweep = 0; sweep < sweeps; ++sweep) {
       const sweep_kind kind = kind_of(sweep);
       sweep_result result;
-      for (std::size_t colour = 0; colour < colours; ++colour) solve_block(colour, kind, result);
+      for (std::size_t colour = 0; colour < colours; ++colour) {
+        solve_part(part_of(colour, 0, detail::contact_colouring::own_runs), kind, result);
+      }
       solve_runs(sequential, runs, kind, result);
       if (converged(result)) break;
     }
@@ -776,64 +828,22 @@ void contact_solver::solve_contacts(const world_settings& settings) {
   // sweeps: a thread may write the next sweep's while another still reads
   // this one's.
   thread_results_.assign(2 * threads, sweep_result{});
-  // A thread solves its own block of each colour (contact_colouring.hpp), a chunk
-  // of items at a time, and then helps with the others' blocks of the colour
-  // where they are not done: where one core runs slower than the other (a
-  // machine shared with other programs), the faster takes on more. The runs
-  // of a colour share no body the solver changes, so which thread solves
-  // which changes nothing in the result.
-  const std::size_t blocks = colours * static_cast<std::size_t>(threads);
-  if (claim_count_ < 2 * blocks) {
-    claims_ = std::make_unique<block_claim[]>(2 * blocks);
-    claim_count_ = 2 * blocks;
-  }
-  for (std::size_t c = 0; c < 2 * blocks; ++c) claims_[c].next.store(0, std::memory_order_relaxed);
-  // A claim is an atomic read-modify-write, which waits for the thread's
-  // earlier stores (the bodies it changed) to reach its cache: claiming 32
-  // runs at a time, each of two threads took a quarter longer over its
-  // share of 4,000 spheres' sweeps than solving its blocks whole (1.74-1.84
-  // against 1.40 ms a step). So a thread claims an eighth of its block.
-  constexpr std::size_t claims_per_block = 8, fewest_per_claim = 32;
+  reset_shared_solved();
 #pragma omp parallel num_threads(threads)
   {
-    const int thread = omp_get_thread_num(), team = omp_get_num_threads();
+    const auto thread = static_cast<std::size_t>(omp_get_thread_num());
+    const auto team = static_cast<std::size_t>(omp_get_num_threads());
     for (int sweep = 0; sweep < sweeps; ++sweep) {
       const sweep_kind kind = kind_of(sweep);
-      block_claim* claims = &claims_[static_cast<std::size_t>(sweep % 2) * blocks];
-      block_claim* next_claims = &claims_[static_cast<std::size_t>((sweep + 1) % 2) * blocks];
       sweep_result mine;
       for (std::size_t colour = 0; colour < colours; ++colour) {
-        for (int k = 0; k < threads; ++k) {
-          const int owner = (thread + k) % threads;
-          const std::size_t block = colour * threads + owner;
-          const std::size_t items = block_items(block);
-          const std::size_t chunk = std::max(fewest_per_claim, items / claims_per_block);
-          // Its own block (and those of threads OpenMP did not give:
-          // inside an application's own parallel region, one) whole; of
-          // another's, only while that one has more than two claims left.
-          // What a thread takes from another moves that one's bodies and
-          // constraints to its own cache, and back in the next sweep:
-          // taking the last claims of nearly even blocks cost more than
-          // waiting for them.
-          const bool own = owner % team == thread;
-          std::atomic<std::size_t>& next = claims[block].next;
-          for (;;) {
-            if (!own && next.load(std::memory_order_relaxed) + 2 * chunk >= items) break;
-            const std::size_t first = next.fetch_add(chunk, std::memory_order_relaxed);
-            if (first >= items) break;
-            solve_block_items(block, first, std::min(first + chunk, items), kind, mine);
-          }
-        }
-        // This block's claims in the next sweep: every thread is done with
-        // them since the last sweep's barrier after this colour. (And those
-        // of blocks no thread owns, where OpenMP gave fewer threads than
-        // asked: inside an application's own parallel region, one.)
-        for (int owned = thread; owned < threads; owned += team) {
-          next_claims[colour * threads + owned].next.store(0, std::memory_order_relaxed);
-        }
-        // The next colour's runs may change the bodies this one's changed.
-#pragma omp barrier
+        solve_in_parts(colour, static_cast<std::uint64_t>(sweep) * colours + colour, thread, team,
+                       [&](std::size_t c, std::size_t block, detail::contact_colouring::part p) {
+                         solve_part(part_of(c, block, p), kind, mine);
+                       });
       }
+      // Every colour done, on every thread.
+#pragma omp barrier
 #pragma omp single nowait
       solve_runs(sequential, runs, kind, mine);
       sweep_result* row = &thread_results_[(sweep % 2) * threads];

@@ -23,6 +23,7 @@
 #include "contact_colouring.hpp"
 #include "gaphys/body.hpp"
 #include "gaphys/contact.hpp"
+#include "gaphys/detail/cache_padded.hpp"
 #include "gaphys/world.hpp"
 #include "impulse_row.hpp"
 #include "pair_cuts.hpp"
@@ -266,14 +267,19 @@ class contact_solver {
   void mark_owners();
   std::vector<std::uint16_t> owners_;  // per contact: its thread in the sweeps (mark_owners)
   template <class Visit>
-  void by_colours(const Visit& visit) const;
+  void by_colours(const Visit& visit);
+  template <class Visit>
+  void solve_in_parts(std::size_t colour, std::uint64_t count, std::size_t thread, std::size_t team,
+                      const Visit& visit);
+  void reset_shared_solved();
   void add_batch_group(const std::array<std::size_t, detail::contact_lanes>& runs, int filled);
   bool batchable(std::size_t run, contact_batching batching) const;
-  void solve_block(std::size_t block, const sweep_kind& kind, sweep_result& result);
-  // A block's items are its batch groups, then its single runs.
-  std::size_t block_items(std::size_t block) const;
-  void solve_block_items(std::size_t block, std::size_t first, std::size_t end,
-                         const sweep_kind& kind, sweep_result& result);
+  // Part p of the sweeps: part p % 2 (contact_colouring::part) of block
+  // p / 2, which is colour p / 2 / T, thread p / 2 % T of the sweep's T
+  // threads (for one thread, the whole colour is part 1).
+  std::pair<std::size_t, std::size_t> part_runs(std::size_t part) const;
+  // Solves a part's batch groups, then its single runs.
+  void solve_part(std::size_t part, const sweep_kind& kind, sweep_result& result);
   void solve_group(const batch_group& group, const sweep_kind& kind, sweep_result& result);
   void scatter_bodies(const std::array<std::size_t, detail::contact_lanes>& index, bool angular,
                       const detail::body_pack& x);
@@ -414,20 +420,14 @@ class contact_solver {
   std::vector<char> pseudo_taking_part_;                   // per contact
   std::vector<char> pseudo_pushed_;           // per body: a dynamic body a deep contact pushes
   std::vector<sweep_result> thread_results_;  // one per thread of the contact phase
-  // Per block, in two rows used by alternate sweeps, the next of its items
-  // not yet claimed by a thread (solve_contacts); two cache lines each, as
-  // Intel's cores fetch lines into their L2 caches in pairs.
-  struct alignas(128) block_claim {
-    std::atomic<std::size_t> next{0};
-  };
-  std::unique_ptr<block_claim[]> claims_;
-  std::size_t claim_count_ = 0;
+  // Per thread of the sweeps, how many colours' shared runs it has solved
+  // in this contact phase, counted on across sweeps (solve_contacts).
+  std::unique_ptr<detail::cache_padded<std::atomic<std::uint64_t>>[]> shared_solved_;
+  int shared_solved_count_ = 0;
 
-  // The sweeps' batches. Block b is what one thread solves of one colour:
-  // colour b / T, thread b % T of the sweep's T threads (the whole colour
-  // on one thread). Its runs are groups_[block_groups_[b] ..
-  // block_groups_[b + 1]), up to contact_lanes runs each, and the runs
-  // solved one by one, single_runs_[block_singles_[b] .. block_singles_[b + 1]).
+  // The sweeps' batches. Part p (part_runs) has the runs of groups_[part_groups_[p] ..
+  // part_groups_[p + 1]), up to contact_lanes runs each, and the runs
+  // solved one by one, single_runs_[part_singles_[p] .. part_singles_[p + 1]).
   struct batch_group {
     static constexpr std::size_t no_body = ~std::size_t{0}, no_run = ~std::size_t{0};
     std::array<std::size_t, detail::contact_lanes> runs;            // per lane, or no_run
@@ -437,9 +437,9 @@ class contact_solver {
     bool angular = false;              // some lane's impulses turn a body
   };
   std::vector<batch_group> groups_;
-  std::vector<std::size_t> single_runs_, block_groups_, block_singles_;
+  std::vector<std::size_t> single_runs_, part_groups_, part_singles_;
   // Per single run (as single_runs_), one past the last single run of its
-  // block that follows it without a gap: single_runs_ from it to there are
+  // part that follows it without a gap: single_runs_ from it to there are
   // consecutive runs.
   std::vector<std::size_t> stretch_ends_;
   std::vector<detail::normal_pack> normal_packs_;

@@ -3,10 +3,16 @@
 // every thread computes what one thread would, in the same order.
 #pragma once
 
-#include <algorithm>
-#include <cstddef>
-
 #include <omp.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <thread>
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
 
 namespace gaphys::detail {
 
@@ -35,6 +41,30 @@ void parallel_for(int setting, std::size_t count, std::size_t per_thread, const 
   const int block = static_cast<int>(std::max<std::size_t>(per_thread / 4, 1));
 #pragma omp parallel for num_threads(threads) schedule(dynamic, block)
   for (std::ptrdiff_t i = 0; i < end; ++i) visit(static_cast<std::size_t>(i));
+}
+
+// A pause in a loop that waits for another core (on x86, which otherwise
+// floods the core's pipeline with loads of the line being waited for).
+inline void spin_pause() {
+#if defined(__x86_64__) || defined(__i386__)
+  _mm_pause();
+#endif
+}
+
+// Waits until `value` (another thread's count, stored with release) is at
+// least `least`: spinning for a while, as another core's count usually
+// comes within microseconds, then yielding the core, where there are more
+// threads than cores and the one to wait for may need this one's core.
+template <class Count>
+void wait_until_at_least(const std::atomic<Count>& value, Count least) {
+  constexpr int spins_before_yielding = 1024;
+  for (int spins = 0; value.load(std::memory_order_acquire) < least; ++spins) {
+    if (spins < spins_before_yielding) {
+      spin_pause();
+    } else {
+      std::this_thread::yield();
+    }
+  }
 }
 
 }  // namespace gaphys::detail
