@@ -52,12 +52,14 @@ inline void spin_pause() {
 }
 
 // Waits until `value` (another thread's count, stored with release) is at
-// least `least`: spinning for a while, as another core's count usually
-// comes within microseconds, then yielding the core, where there are more
+// least `least`: spinning briefly (a few microseconds), as another core's
+// count usually comes sooner, then yielding the core, where there are more
 // threads than cores and the one to wait for may need this one's core.
+// (Spinning 1,024 pauses first, eight threads on two cores stepped 10,000
+// spheres in 36-38 ms; 64, in 26, and two threads as fast as before.)
 template <class Count>
 void wait_until_at_least(const std::atomic<Count>& value, Count least) {
-  constexpr int spins_before_yielding = 1024;
+  constexpr int spins_before_yielding = 64;
   for (int spins = 0; value.load(std::memory_order_acquire) < least; ++spins) {
     if (spins < spins_before_yielding) {
       spin_pause();
