@@ -11,7 +11,7 @@
 // never on the number of threads (the blocks below only reorder runs
 // within a colour): a step is the same with 1, 2 or 8.
 //
-// Colours with few runs would cost a thread barrier each for little work:
+// Colours with few runs would cost the threads a wait each for little work:
 // runs that find no colour among the first `most_colours`, and the runs of
 // colours smaller than `fewest_runs` (both fixed, so the order stays
 // independent of the threads), go to a last, sequential group.

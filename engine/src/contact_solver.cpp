@@ -778,7 +778,7 @@ void contact_solver::solve_contacts(const world_settings& settings) {
   // Every contact gets solver_iterations sweeps; contacts that turn a body
   // get turning_iterations more (a stack of boxes converges slowly). Where
   // none turns (settling_ false: none turns or rubs), there are none more:
-  // the first would only find that out, at a barrier per colour.
+  // the first would only find that out, at a wait per colour.
   const int sweeps = settings.solver_iterations + (settling_ ? settings.turning_iterations : 0);
   const std::size_t runs = colouring_.runs();
   const auto kind_of = [&](int sweep) {
@@ -1076,7 +1076,7 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
   // front to back; where each one's optional terms go, then the terms (on
   // several threads for many contacts: a box's take about 0.2 µs).
   const std::size_t count = contacts.size();
-  // (A few hundred contacts per thread: fewer are not worth a barrier per colour.)
+  // (A few hundred contacts per thread: fewer are not worth a wait per colour.)
   sweep_threads_ = detail::threads_for(settings.threads, count, 256);
   // What the step's forces gave each body; then each contact's bodies, and
   // which of them rests on the other (find_supports), in one pass over the
