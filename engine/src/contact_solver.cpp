@@ -808,16 +808,12 @@ void contact_solver::solve_contacts(const world_settings& settings) {
   }
   const std::size_t sequential = colouring_.colour_starts.back();
   const int threads = sweep_threads_;
-  const auto part_of = [&](std::size_t colour, std::size_t thread,
-                           detail::contact_colouring::part p) {
-    return 2 * (colour * static_cast<std::size_t>(threads) + thread) + p;
-  };
   if (threads == 1) {
     for (int sweep = 0; sweep < sweeps; ++sweep) {
       const sweep_kind kind = kind_of(sweep);
       sweep_result result;
       for (std::size_t colour = 0; colour < colours; ++colour) {
-        solve_part(part_of(colour, 0, detail::contact_colouring::own_runs), kind, result);
+        solve_part(part_index(colour, 0, detail::contact_colouring::own_runs), kind, result);
       }
       solve_runs(sequential, runs, kind, result);
       if (converged(result)) break;
@@ -839,7 +835,7 @@ void contact_solver::solve_contacts(const world_settings& settings) {
       for (std::size_t colour = 0; colour < colours; ++colour) {
         solve_in_parts(colour, static_cast<std::uint64_t>(sweep) * colours + colour, thread, team,
                        [&](std::size_t c, std::size_t block, detail::contact_colouring::part p) {
-                         solve_part(part_of(c, block, p), kind, mine);
+                         solve_part(part_index(c, block, p), kind, mine);
                        });
       }
       // Every colour done, on every thread.

@@ -276,7 +276,12 @@ class contact_solver {
   bool batchable(std::size_t run, contact_batching batching) const;
   // Part p of the sweeps: part p % 2 (contact_colouring::part) of block
   // p / 2, which is colour p / 2 / T, thread p / 2 % T of the sweep's T
-  // threads (for one thread, the whole colour is part 1).
+  // threads (for one thread, the whole colour is part 1): part_index, and
+  // its runs.
+  std::size_t part_index(std::size_t colour, std::size_t thread,
+                         detail::contact_colouring::part p) const {
+    return 2 * (colour * static_cast<std::size_t>(sweep_threads_) + thread) + p;
+  }
   std::pair<std::size_t, std::size_t> part_runs(std::size_t part) const;
   // Solves a part's batch groups, then its single runs.
   void solve_part(std::size_t part, const sweep_kind& kind, sweep_result& result);

@@ -157,7 +157,8 @@ class uniform_grid {
   std::vector<real> kept_reach_;
   std::vector<std::size_t> kept_shaped_;
   std::vector<plane_test> kept_planes_;
-  std::vector<std::uint32_t> plane_of_, place_of_;
+  std::vector<std::uint32_t> plane_of_;
+  std::vector<std::uint32_t> place_of_;  // keep()'s scratch: each body's place in `shaped`
   bool kept_valid_ = false, used_kept_ = false;
   // How many find_pairs the kept list has served; lists that served only
   // the step that made them, in a row; steps left on the plain grid after
