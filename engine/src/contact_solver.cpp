@@ -675,6 +675,67 @@ void contact_solver::by_colours(const Visit& visit) {
   }
 }
 
+// Up to `sweeps` sweeps over the colours (contact_colouring.hpp): in each,
+// solve(sweep, colour, block, part, result) for the parts of every colour's
+// blocks, colour by colour, then sequential(sweep, result) for the
+// sequential group; a sweep whose results (each thread's, gathered) have
+// `converged` is the last. On one thread, the whole of each colour in
+// order (block 0's own runs); on several, each thread its block of each
+// colour (solve_in_parts), the sequential group on one of them after
+// every colour is done, and a barrier per sweep before the threads read
+// each other's results. The runs of a colour share no body that moves, so
+// every body changes in the same order on any number of threads.
+template <class Solve, class Sequential, class Converged>
+void contact_solver::sweep_colours(int sweeps, const Solve& solve, const Sequential& sequential,
+                                   const Converged& converged) {
+  using part = detail::contact_colouring::part;
+  const std::size_t colours = colouring_.colours();
+  const auto threads = static_cast<std::size_t>(sweep_threads_);
+  if (threads == 1) {
+    for (int sweep = 0; sweep < sweeps; ++sweep) {
+      sweep_result result;
+      for (std::size_t colour = 0; colour < colours; ++colour) {
+        solve(sweep, colour, std::size_t{0}, part::own_runs, result);
+      }
+      sequential(sweep, result);
+      if (converged(result)) break;
+    }
+    return;
+  }
+  // Each thread's sweep results, in two rows used in turn by alternate
+  // sweeps: a thread may write the next sweep's while another still reads
+  // this one's.
+  thread_results_.assign(2 * threads, sweep_result{});
+  reset_shared_solved();
+#pragma omp parallel num_threads(sweep_threads_)
+  {
+    const auto thread = static_cast<std::size_t>(omp_get_thread_num());
+    const auto team = static_cast<std::size_t>(omp_get_num_threads());
+    for (int sweep = 0; sweep < sweeps; ++sweep) {
+      sweep_result mine;
+      for (std::size_t colour = 0; colour < colours; ++colour) {
+        solve_in_parts(
+            colour, static_cast<std::uint64_t>(sweep) * colours + colour, thread, team,
+            [&](std::size_t c, std::size_t block, part p) { solve(sweep, c, block, p, mine); });
+      }
+      // Every colour done, on every thread.
+#pragma omp barrier
+#pragma omp single nowait
+      sequential(sweep, mine);
+      sweep_result* row = &thread_results_[(sweep % 2) * threads];
+      row[thread] = mine;
+      // The sequential group is done and every result written.
+#pragma omp barrier
+      sweep_result all;
+      for (std::size_t t = 0; t < threads; ++t) {
+        all.largest_change = std::max(all.largest_change, row[t].largest_change);
+        all.any = all.any || row[t].any;
+      }
+      if (converged(all)) break;
+    }
+  }
+}
+
 // One thread's share of colour `colour` (on `team` threads of the sweep's
 // T): visit(colour, block, part) for its block's shared runs, once every
 // other thread has visited its shared runs of the colours before (`count`
@@ -790,7 +851,6 @@ void contact_solver::solve_contacts(const world_settings& settings) {
   const auto converged = [&](const sweep_result& r) {
     return !r.any || r.largest_change <= settings.solver_tolerance;
   };
-  const std::size_t colours = colouring_.colours();
   settle_tolerance_ = settings.solver_tolerance;
   // Plain contacts (frictionless, through the centres) cost about as much to
   // solve as to check and record: where all are plain (1,000 frictionless
@@ -807,53 +867,16 @@ void contact_solver::solve_contacts(const world_settings& settings) {
     body_drift_.assign(solver_bodies_.size(), 0);
   }
   const std::size_t sequential = colouring_.colour_starts.back();
-  const int threads = sweep_threads_;
-  if (threads == 1) {
-    for (int sweep = 0; sweep < sweeps; ++sweep) {
-      const sweep_kind kind = kind_of(sweep);
-      sweep_result result;
-      for (std::size_t colour = 0; colour < colours; ++colour) {
-        solve_part(part_index(colour, 0, detail::contact_colouring::own_runs), kind, result);
-      }
-      solve_runs(sequential, runs, kind, result);
-      if (converged(result)) break;
-    }
-    return;
-  }
-  // Each thread's sweep results, in two rows used in turn by alternate
-  // sweeps: a thread may write the next sweep's while another still reads
-  // this one's.
-  thread_results_.assign(2 * threads, sweep_result{});
-  reset_shared_solved();
-#pragma omp parallel num_threads(threads)
-  {
-    const auto thread = static_cast<std::size_t>(omp_get_thread_num());
-    const auto team = static_cast<std::size_t>(omp_get_num_threads());
-    for (int sweep = 0; sweep < sweeps; ++sweep) {
-      const sweep_kind kind = kind_of(sweep);
-      sweep_result mine;
-      for (std::size_t colour = 0; colour < colours; ++colour) {
-        solve_in_parts(colour, static_cast<std::uint64_t>(sweep) * colours + colour, thread, team,
-                       [&](std::size_t c, std::size_t block, detail::contact_colouring::part p) {
-                         solve_part(part_index(c, block, p), kind, mine);
-                       });
-      }
-      // Every colour done, on every thread.
-#pragma omp barrier
-#pragma omp single nowait
-      solve_runs(sequential, runs, kind, mine);
-      sweep_result* row = &thread_results_[(sweep % 2) * threads];
-      row[thread] = mine;
-      // The sequential group is done and every result written.
-#pragma omp barrier
-      sweep_result all;
-      for (int t = 0; t < threads; ++t) {
-        all.largest_change = std::max(all.largest_change, row[t].largest_change);
-        all.any = all.any || row[t].any;
-      }
-      if (converged(all)) break;
-    }
-  }
+  sweep_colours(
+      sweeps,
+      [&](int sweep, std::size_t colour, std::size_t block, detail::contact_colouring::part p,
+          sweep_result& result) {
+        solve_part(part_index(colour, block, p), kind_of(sweep), result);
+      },
+      [&](int sweep, sweep_result& result) {
+        solve_runs(sequential, runs, kind_of(sweep), result);
+      },
+      converged);
 }
 
 // Runs first_run .. end_run - 1 of the colouring, in order, but for the
@@ -1292,9 +1315,12 @@ void contact_solver::correct_positions(const world_settings& settings, std::vect
 // correction).
 void contact_solver::correct_turning(const world_settings& settings, std::vector<body>& bodies,
                                      const std::vector<contact>& contacts, real h) {
-  pseudo_bodies_.resize(bodies.size());
+  // The pseudo velocities where the solver keeps each body's velocities
+  // (place_), and the contacts' terms in the sweeps' order (slots), so that
+  // the sweeps below read both as the contact phase's sweeps do.
+  pseudo_bodies_.resize(solver_bodies_.size());
   for (std::size_t i = 0; i < bodies.size(); ++i) {
-    pseudo_bodies_[i] = {vector{}, bivector{}, bodies[i].inverse_mass_};
+    pseudo_bodies_[place_[i]] = {vector{}, bivector{}, bodies[i].inverse_mass_};
   }
   pseudo_targets_.assign(contacts.size(), 0);
   pseudo_accumulated_.assign(contacts.size(), 0);
@@ -1323,41 +1349,56 @@ void contact_solver::correct_turning(const world_settings& settings, std::vector
                        h * normal_speed(s, solver_bodies_[k.place_a], solver_bodies_[k.place_b]);
     const real excess = depth - settings.linear_slop;
     if (c.geometry.depth >= 0 && depth >= 0 && excess > 0) {
-      pseudo_targets_[i] = settings.position_correction * excess / h;
-      taking_part[i] = pushed_apart;
+      pseudo_targets_[s] = settings.position_correction * excess / h;
+      taking_part[s] = pushed_apart;
       for (const std::size_t x : {k.body_a, k.body_b}) pushed[x] = bodies[x].is_dynamic();
       any = true;
     } else {
-      pseudo_targets_[i] = depth < 0 ? depth / h : real(0);
-      taking_part[i] = holds;
+      pseudo_targets_[s] = depth < 0 ? depth / h : real(0);
+      taking_part[s] = holds;
     }
   }
   if (!any) return;
-  for (std::size_t i = 0; i < contacts.size(); ++i) {
-    if (taking_part[i] != holds) continue;
-    const constraint& k = constraints_[slot_[i]];
-    if (!pushed[k.body_a] && !pushed[k.body_b]) taking_part[i] = 0;
+  for (std::size_t s = 0; s < contacts.size(); ++s) {
+    if (taking_part[s] != holds) continue;
+    const constraint& k = constraints_[s];
+    if (!pushed[k.body_a] && !pushed[k.body_b]) taking_part[s] = 0;
   }
-  for (int sweep = 0; sweep < settings.solver_iterations; ++sweep) {
-    real largest_change = 0;
-    for (std::size_t i = 0; i < contacts.size(); ++i) {
-      if (!taking_part[i]) continue;
-      const std::size_t s = slot_[i];
+  // Sequential impulses in the sweeps' order, colour by colour, as the
+  // contact phase's: the same bits on any number of threads. (In contact
+  // order, on one thread, they took 9% of a 10,000-box step, and a second
+  // thread waited: B5 10,000 stepped in 37-41 ms on two threads, 34-35
+  // so, 2026-12-06.)
+  const auto sweep_slots = [&](std::size_t first, std::size_t end, sweep_result& result) {
+    for (std::size_t s = first; s < end; ++s) {
+      if (!taking_part[s]) continue;
       const constraint& k = constraints_[s];
-      solver_body& a = pseudo_bodies_[k.body_a];
-      solver_body& b = pseudo_bodies_[k.body_b];
-      const real wanted = (pseudo_targets_[i] - normal_speed(s, a, b)) / k.mass_inverse;
-      const real total = std::max(pseudo_accumulated_[i] + wanted, real(0));
-      const real j = total - pseudo_accumulated_[i];
+      solver_body& a = pseudo_bodies_[k.place_a];
+      solver_body& b = pseudo_bodies_[k.place_b];
+      const real wanted = (pseudo_targets_[s] - normal_speed(s, a, b)) / k.mass_inverse;
+      const real total = std::max(pseudo_accumulated_[s] + wanted, real(0));
+      const real j = total - pseudo_accumulated_[s];
       apply_normal(s, a, b, j);
-      pseudo_accumulated_[i] = total;
-      largest_change = std::max(largest_change, std::fabs(j) * k.mass_inverse);
+      pseudo_accumulated_[s] = total;
+      result.largest_change = std::max(result.largest_change, std::fabs(j) * k.mass_inverse);
     }
-    if (largest_change <= settings.solver_tolerance) break;
-  }
+  };
+  const std::vector<std::size_t>& starts = colouring_.run_starts;
+  const auto blocks = static_cast<std::size_t>(sweep_threads_);
+  sweep_colours(
+      settings.solver_iterations,
+      [&](int, std::size_t colour, std::size_t block, detail::contact_colouring::part p,
+          sweep_result& result) {
+        const auto [first_run, end_run] = colouring_.runs_of(colour, block, blocks, p);
+        sweep_slots(starts[first_run], starts[end_run], result);
+      },
+      [&](int, sweep_result& result) {
+        sweep_slots(starts[colouring_.colour_starts.back()], starts.back(), result);
+      },
+      [&](const sweep_result& r) { return r.largest_change <= settings.solver_tolerance; });
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     body& x = bodies[i];
-    const solver_body& p = pseudo_bodies_[i];
+    const solver_body& p = pseudo_bodies_[place_[i]];
     if (!x.is_dynamic()) continue;
     x.position_ = x.position_ + h * p.velocity;
     const bivector& w = p.angular_velocity;

@@ -268,6 +268,9 @@ class contact_solver {
   std::vector<std::uint16_t> owners_;  // per contact: its thread in the sweeps (mark_owners)
   template <class Visit>
   void by_colours(const Visit& visit);
+  template <class Solve, class Sequential, class Converged>
+  void sweep_colours(int sweeps, const Solve& solve, const Sequential& sequential,
+                     const Converged& converged);
   template <class Visit>
   void solve_in_parts(std::size_t colour, std::uint64_t count, std::size_t thread, std::size_t team,
                       const Visit& visit);
@@ -424,7 +427,7 @@ class contact_solver {
   std::vector<real> pseudo_targets_, pseudo_accumulated_;  // per contact
   std::vector<char> pseudo_taking_part_;                   // per contact
   std::vector<char> pseudo_pushed_;           // per body: a dynamic body a deep contact pushes
-  std::vector<sweep_result> thread_results_;  // one per thread of the contact phase
+  std::vector<sweep_result> thread_results_;  // per thread of the sweeps, in two rows
   // Per thread of the sweeps, how many colours' shared runs it has solved
   // in this contact phase, counted on across sweeps (solve_contacts).
   std::unique_ptr<detail::cache_padded<std::atomic<std::uint64_t>>[]> shared_solved_;
