@@ -423,9 +423,9 @@ class contact_solver {
     unsigned char moves;
   };
   std::vector<position_shift> shifts_;
-  std::vector<solver_body> pseudo_bodies_;  // correct_turning's pseudo velocities
-  std::vector<real> pseudo_targets_, pseudo_accumulated_;  // per contact
-  std::vector<char> pseudo_taking_part_;                   // per contact
+  std::vector<solver_body> pseudo_bodies_;  // correct_turning's pseudo velocities, by place_
+  std::vector<real> pseudo_targets_, pseudo_accumulated_;  // per slot
+  std::vector<char> pseudo_taking_part_;                   // per slot
   std::vector<char> pseudo_pushed_;           // per body: a dynamic body a deep contact pushes
   std::vector<sweep_result> thread_results_;  // per thread of the sweeps, in two rows
   // Per thread of the sweeps, how many colours' shared runs it has solved
