@@ -33,7 +33,7 @@
 // move. A thread's own runs need nothing from the other threads, so it
 // needs to wait for the others only before its shared runs of a colour,
 // and only for their shared runs of the colour before: it solves its own
-// runs of a colour meanwhile (contact_solver::solve_contacts).
+// runs of a colour meanwhile (contact_solver::solve_in_parts).
 #pragma once
 
 #include <cstddef>

@@ -642,39 +642,6 @@ void contact_solver::match_share(int share, const std::vector<body>& bodies,
   }
 }
 
-// Calls visit(first, end) over the slots [first, end) of the sweeps' order,
-// colour by colour, the sequential group last: on one thread in that
-// order; on several, each thread its own block of a colour, shared runs
-// first (solve_in_parts), the sequential group on the first after all. The
-// runs of a colour share no body that moves, so what visit adds to each
-// body adds up in the same order on any number of threads.
-template <class Visit>
-void contact_solver::by_colours(const Visit& visit) {
-  const std::vector<std::size_t>& starts = colouring_.run_starts;
-  if (sweep_threads_ == 1) {
-    visit(std::size_t{0}, colouring_.order.size());
-    return;
-  }
-  const std::size_t blocks = static_cast<std::size_t>(sweep_threads_);
-  const std::size_t colours = colouring_.colours();
-  reset_shared_solved();
-#pragma omp parallel num_threads(sweep_threads_)
-  {
-    const auto thread = static_cast<std::size_t>(omp_get_thread_num());
-    const auto team = static_cast<std::size_t>(omp_get_num_threads());
-    for (std::size_t c = 0; c < colours; ++c) {
-      solve_in_parts(c, c, thread, team,
-                     [&](std::size_t colour, std::size_t block, detail::contact_colouring::part p) {
-                       const auto [first_run, end_run] =
-                           colouring_.runs_of(colour, block, blocks, p);
-                       visit(starts[first_run], starts[end_run]);
-                     });
-    }
-#pragma omp barrier
-    if (thread == 0) visit(starts[colouring_.colour_starts.back()], starts.back());
-  }
-}
-
 // Up to `sweeps` sweeps over the colours (contact_colouring.hpp): in each,
 // solve(sweep, colour, block, part, result) for the parts of every colour's
 // blocks, colour by colour, then sequential(sweep, result) for the
@@ -734,6 +701,37 @@ void contact_solver::sweep_colours(int sweeps, const Solve& solve, const Sequent
       if (converged(all)) break;
     }
   }
+}
+
+// Calls visit(first, end) over the slots [first, end) of the sweeps' order,
+// colour by colour, the sequential group last: one sweep of sweep_colours.
+// The runs of a colour share no body that moves, so what visit adds to
+// each body adds up in the same order on any number of threads.
+template <class Visit>
+void contact_solver::by_colours(const Visit& visit) {
+  sweep_colours(
+      1,
+      [&](int, std::size_t colour, std::size_t block, detail::contact_colouring::part p,
+          sweep_result&) {
+        const auto [first, end] = slots_of(colour, block, p);
+        visit(first, end);
+      },
+      [&](int, sweep_result&) {
+        const auto [first, end] = sequential_slots();
+        visit(first, end);
+      },
+      [](const sweep_result&) { return true; });
+}
+
+std::pair<std::size_t, std::size_t> contact_solver::slots_of(
+    std::size_t colour, std::size_t block, detail::contact_colouring::part p) const {
+  const auto [first_run, end_run] =
+      colouring_.runs_of(colour, block, static_cast<std::size_t>(sweep_threads_), p);
+  return {colouring_.run_starts[first_run], colouring_.run_starts[end_run]};
+}
+
+std::pair<std::size_t, std::size_t> contact_solver::sequential_slots() const {
+  return {colouring_.run_starts[colouring_.colour_starts.back()], colouring_.run_starts.back()};
 }
 
 // One thread's share of colour `colour` (on `team` threads of the sweep's
@@ -1387,17 +1385,16 @@ void contact_solver::correct_turning(const world_settings& settings, std::vector
       result.largest_change = std::max(result.largest_change, std::fabs(j) * k.mass_inverse);
     }
   };
-  const std::vector<std::size_t>& starts = colouring_.run_starts;
-  const auto blocks = static_cast<std::size_t>(sweep_threads_);
   sweep_colours(
       settings.solver_iterations,
       [&](int, std::size_t colour, std::size_t block, detail::contact_colouring::part p,
           sweep_result& result) {
-        const auto [first_run, end_run] = colouring_.runs_of(colour, block, blocks, p);
-        sweep_slots(starts[first_run], starts[end_run], result);
+        const auto [first, end] = slots_of(colour, block, p);
+        sweep_slots(first, end, result);
       },
       [&](int, sweep_result& result) {
-        sweep_slots(starts[colouring_.colour_starts.back()], starts.back(), result);
+        const auto [first, end] = sequential_slots();
+        sweep_slots(first, end, result);
       },
       [&](const sweep_result& r) { return r.largest_change <= settings.solver_tolerance; });
   for (std::size_t i = 0; i < bodies.size(); ++i) {

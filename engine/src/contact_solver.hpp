@@ -268,6 +268,11 @@ class contact_solver {
   std::vector<std::uint16_t> owners_;  // per contact: its thread in the sweeps (mark_owners)
   template <class Visit>
   void by_colours(const Visit& visit);
+  // The slots of part p of block `block` of a colour (on one thread, part
+  // own_runs of block 0 is the whole colour), and of the sequential group.
+  std::pair<std::size_t, std::size_t> slots_of(std::size_t colour, std::size_t block,
+                                               detail::contact_colouring::part p) const;
+  std::pair<std::size_t, std::size_t> sequential_slots() const;
   template <class Solve, class Sequential, class Converged>
   void sweep_colours(int sweeps, const Solve& solve, const Sequential& sequential,
                      const Converged& converged);
@@ -429,7 +434,7 @@ class contact_solver {
   std::vector<char> pseudo_pushed_;           // per body: a dynamic body a deep contact pushes
   std::vector<sweep_result> thread_results_;  // per thread of the sweeps, in two rows
   // Per thread of the sweeps, how many colours' shared runs it has solved
-  // in this contact phase, counted on across sweeps (solve_contacts).
+  // in this contact phase, counted on across sweeps (solve_in_parts).
   std::unique_ptr<detail::cache_padded<std::atomic<std::uint64_t>>[]> shared_solved_;
   int shared_solved_count_ = 0;
 
