@@ -865,6 +865,10 @@ void contact_solver::solve_contacts(const world_settings& settings) {
     body_drift_.assign(solver_bodies_.size(), 0);
   }
   const std::size_t sequential = colouring_.colour_starts.back();
+  // (Every contact plain and none on batches: the sweeps read half a body
+  // each, detail::plain_body.)
+  plain_sweeps_ = !settling_ && groups_.empty();
+  if (plain_sweeps_) copy_to_plain_bodies();
   sweep_colours(
       sweeps,
       [&](int sweep, std::size_t colour, std::size_t block, detail::contact_colouring::part p,
@@ -875,6 +879,7 @@ void contact_solver::solve_contacts(const world_settings& settings) {
         solve_runs(sequential, runs, kind_of(sweep), result);
       },
       converged);
+  if (plain_sweeps_) copy_from_plain_bodies();
 }
 
 // Runs first_run .. end_run - 1 of the colouring, in order, but for the
@@ -882,8 +887,13 @@ void contact_solver::solve_contacts(const world_settings& settings) {
 void contact_solver::solve_runs(std::size_t first_run, std::size_t end_run, const sweep_kind& kind,
                                 sweep_result& result) {
   if (!settling_) {
-    solve_plain_contacts(colouring_.run_starts[first_run], colouring_.run_starts[end_run], kind,
-                         result);
+    const std::size_t first = colouring_.run_starts[first_run];
+    const std::size_t end = colouring_.run_starts[end_run];
+    if (plain_sweeps_) {
+      solve_plain_contacts(first, end, kind, plain_bodies_, result);
+    } else {
+      solve_plain_contacts(first, end, kind, solver_bodies_, result);
+    }
     return;
   }
   for (std::size_t run = first_run; run < end_run; ++run) {
@@ -911,8 +921,10 @@ void contact_solver::solve_runs(std::size_t first_run, std::size_t end_run, cons
 // impulse leaves every velocity as it was, but a -0 component, which
 // becomes +0). solve_contact keeps the branch: a box's contact, whose
 // rows turn it, stepped 1-3% slower without.
+template <class Body>
 void contact_solver::solve_plain_contacts(std::size_t first, std::size_t end,
-                                          const sweep_kind& kind, sweep_result& result) {
+                                          const sweep_kind& kind, std::vector<Body>& bodies,
+                                          sweep_result& result) {
   // (Past solver_iterations only contacts that turn a body are solved.)
   if (kind.turning_only) return;
   real largest_change = 0;
@@ -921,10 +933,11 @@ void contact_solver::solve_plain_contacts(std::size_t first, std::size_t end,
     constraint& k = constraints_[s];
     if (!(k.mass_inverse > 0) || (k.waits && !k.struck)) continue;
     any = true;
-    solver_body& a = solver_bodies_[k.place_a];
-    solver_body& b = solver_bodies_[k.place_b];
-    const real j = normal_impulse(k, nullptr, a, b, kind.last_of_all, largest_change);
-    detail::row_apply(k.normal, nullptr, a, b, j);
+    Body& a = bodies[k.place_a];
+    Body& b = bodies[k.place_b];
+    const real speed = detail::row_speed(k.normal, a, b);
+    const real j = normal_impulse(k, speed, kind.last_of_all, largest_change);
+    detail::row_apply(k.normal, a, b, j);
   }
   result.any = result.any || any;
   result.largest_change = std::max(result.largest_change, largest_change);
@@ -944,7 +957,7 @@ GAPHYS_ALWAYS_INLINE void contact_solver::solve_contact(std::size_t s, const swe
   const detail::row_arms* arms = normal_arms(s);
   solver_body& a = solver_bodies_[k.place_a];
   solver_body& b = solver_bodies_[k.place_b];
-  const real j = normal_impulse(k, arms, a, b, last, largest_change);
+  const real j = normal_impulse(k, detail::row_speed(k.normal, arms, a, b), last, largest_change);
   surface_terms* rubbing = k.surface < 0 ? nullptr : &surfaces_[k.surface];
   // Nothing pushes and nothing is held: nothing to rub (a speculative contact).
   if (rubbing && !(k.accumulated > 0) && holds_nothing(*rubbing)) rubbing = nullptr;

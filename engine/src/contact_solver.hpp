@@ -326,17 +326,17 @@ class contact_solver {
                   sweep_result& result);
   GAPHYS_ALWAYS_INLINE void solve_contact(std::size_t s, const sweep_kind& kind,
                                           sweep_result& result);
+  template <class Body>
   void solve_plain_contacts(std::size_t first, std::size_t end, const sweep_kind& kind,
-                            sweep_result& result);
-  // One sweep's normal impulse of constraint k (arms: normal_arms), its
-  // total kept >= 0 and over-relaxed unless `last`: accumulates it, raises
-  // largest_change by its speed change, and returns it, not yet applied.
-  static GAPHYS_ALWAYS_INLINE real normal_impulse(constraint& k, const detail::row_arms* arms,
-                                                  const solver_body& a, const solver_body& b,
-                                                  bool last, real& largest_change) {
+                            std::vector<Body>& bodies, sweep_result& result);
+  // One sweep's normal impulse of constraint k, whose row reads `speed`
+  // (detail::row_speed), its total kept >= 0 and over-relaxed unless
+  // `last`: accumulates it, raises largest_change by its speed change, and
+  // returns it, not yet applied.
+  static GAPHYS_ALWAYS_INLINE real normal_impulse(constraint& k, real speed, bool last,
+                                                  real& largest_change) {
     const real relaxation = last ? real(1) : k.relaxation;
-    const real wanted =
-        relaxation * (k.target_speed - detail::row_speed(k.normal, arms, a, b)) * k.normal_mass;
+    const real wanted = relaxation * (k.target_speed - speed) * k.normal_mass;
     const real total = detail::at_least_zero(k.accumulated + wanted);
     const real j = total - k.accumulated;
     k.accumulated = total;
@@ -408,6 +408,15 @@ class contact_solver {
   std::vector<std::uint32_t> place_;
   std::vector<std::size_t> body_at_, owner_starts_, place_scratch_;
   std::vector<solver_body> solver_bodies_;  // the velocities after the step's forces, as solved
+  // Where every contact is plain and none goes on batches (plain_sweeps_),
+  // the sweeps change plain_bodies_ instead (by place too), copied from
+  // solver_bodies_ before them and back after.
+  std::vector<detail::plain_body> plain_bodies_;
+  bool plain_sweeps_ = false;
+  void copy_to_plain_bodies();
+  void copy_from_plain_bodies();
+  template <class Visit>
+  void for_each_place(const Visit& visit);
   // Per body, for the bodies in contact (in_contact_): what building the
   // rows reads (row_body), and what building a constraint reads of its
   // shapes (summarize): read once per body, not once per contact

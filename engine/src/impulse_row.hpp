@@ -38,6 +38,18 @@ struct alignas(64) solver_body {
   real inverse_mass;
 };
 
+// What the sweeps of plain contacts (contact_solver::solve_plain_contacts:
+// through the centres, frictionless) read and change of a body: half a
+// solver_body, where every contact is plain (a pile of frictionless
+// spheres). Each contact reads two bodies scattered over the list: with
+// these the sweeps missed the first-level cache a fifth less often (1,000
+// spheres, whose plain bodies take 32 KB; callgrind's model of a 48 KB
+// cache), and the step took 2-4% less time.
+struct alignas(32) plain_body {
+  vector velocity;
+  real inverse_mass;
+};
+
 // A row's angular terms: the speed's (arms) and the turns its impulse
 // gives. Kept apart from the rest where most rows turn nothing: a contact's
 // normal row (contact_solver::constraint), which the sweeps stream.
@@ -86,6 +98,16 @@ GAPHYS_ALWAYS_INLINE void row_apply(const vector& d, const row_arms* arms, solve
     b.velocity = b.velocity - (j * b.inverse_mass) * d;
     if (arms) b.angular_velocity = b.angular_velocity - j * arms->turn_b;
   }
+}
+// The same for a row that turns neither body, on solver_body or plain_body.
+template <class Body>
+GAPHYS_ALWAYS_INLINE real row_speed(const vector& d, const Body& a, const Body& b) {
+  return e3ga::scp(d, a.velocity - b.velocity);
+}
+template <class Body>
+GAPHYS_ALWAYS_INLINE void row_apply(const vector& d, Body& a, Body& b, real j) {
+  if (a.inverse_mass > 0) a.velocity = a.velocity + (j * a.inverse_mass) * d;
+  if (b.inverse_mass > 0) b.velocity = b.velocity - (j * b.inverse_mass) * d;
 }
 // How much a unit impulse of the row (other, other_arms) changes the speed
 // of the row (d, arms), an entry of the effective-mass matrix K of a block

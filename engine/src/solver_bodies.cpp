@@ -55,6 +55,32 @@ void contact_solver::copy_velocities(std::size_t i, const std::vector<body>& bod
   impact.inverse_mass = b.inverse_mass_;
 }
 
+// visit(p) for every place p, on the sweeps' threads: each thread the places
+// of the bodies its blocks move (place_bodies), so that their lines come to
+// the core whose sweeps read them, and a share of the rest.
+template <class Visit>
+void contact_solver::for_each_place(const Visit& visit) {
+  if (sweep_threads_ == 1) {
+    for (std::size_t p = 0; p < place_.size(); ++p) visit(p);
+    return;
+  }
+  const auto threads = static_cast<std::size_t>(sweep_threads_);
+  const std::vector<std::size_t>& starts = owner_starts_;
+#pragma omp parallel num_threads(sweep_threads_)
+  {
+    const auto thread = static_cast<std::size_t>(omp_get_thread_num());
+    const auto team = static_cast<std::size_t>(omp_get_num_threads());
+    for (std::size_t t = thread; t < threads; t += team) {
+      for (std::size_t p = starts[t]; p < starts[t + 1]; ++p) visit(p);
+    }
+    // (The bodies no thread's runs move, in equal shares.)
+    const std::size_t rest = starts[threads + 1] - starts[threads];
+    const std::size_t first = starts[threads] + rest * thread / team;
+    const std::size_t end = starts[threads] + rest * (thread + 1) / team;
+    for (std::size_t p = first; p < end; ++p) visit(p);
+  }
+}
+
 // On several sweep threads, where each body's velocities go: first the
 // bodies thread 0's blocks move (contact_colouring.hpp: its slab of space),
 // in body order, then thread 1's, and so on, then the rest; each thread
@@ -84,20 +110,18 @@ void contact_solver::place_bodies(const std::vector<body>& bodies,
                           place_[i] = static_cast<std::uint32_t>(at);
                           body_at_[at] = i;
                         });
-#pragma omp parallel num_threads(sweep_threads_)
-  {
-    const auto thread = static_cast<std::size_t>(omp_get_thread_num());
-    const auto team = static_cast<std::size_t>(omp_get_num_threads());
-    for (std::size_t t = thread; t < threads; t += team) {
-      for (std::size_t p = starts[t]; p < starts[t + 1]; ++p)
-        copy_velocities(body_at_[p], bodies, start);
-    }
-    // (The bodies no thread's runs move, in equal shares.)
-    const std::size_t rest = starts[threads + 1] - starts[threads];
-    const std::size_t first = starts[threads] + rest * thread / team;
-    const std::size_t end = starts[threads] + rest * (thread + 1) / team;
-    for (std::size_t p = first; p < end; ++p) copy_velocities(body_at_[p], bodies, start);
-  }
+  for_each_place([&](std::size_t p) { copy_velocities(body_at_[p], bodies, start); });
+}
+
+void contact_solver::copy_to_plain_bodies() {
+  plain_bodies_.resize(solver_bodies_.size());
+  for_each_place([&](std::size_t p) {
+    plain_bodies_[p] = {solver_bodies_[p].velocity, solver_bodies_[p].inverse_mass};
+  });
+}
+
+void contact_solver::copy_from_plain_bodies() {
+  for_each_place([&](std::size_t p) { solver_bodies_[p].velocity = plain_bodies_[p].velocity; });
 }
 
 void contact_solver::prepare_bodies(const std::vector<body>& bodies,
