@@ -43,8 +43,8 @@ std::optional<contact_geometry> find_contact(const placed_shape& a, const placed
   // (In the frame at the pair: detail::meet_origin.)
   const vector origin = detail::meet_origin(a, b);
   const auto with = [&](const auto& dual_a, const auto& dual_b) {
-    return detail::contact_from(a, b, detail::terms_of(dual_a, dual_b), origin, lookahead,
-                                velocity_a, velocity_b);
+    return detail::contact_from(a, b, detail::read_terms(detail::terms_of(dual_a, dual_b)), origin,
+                                lookahead, velocity_a, velocity_b);
   };
   const bool sphere_a = a.kind == shape_kind::sphere, sphere_b = b.kind == shape_kind::sphere;
   const bool plane_a = a.kind == shape_kind::plane, plane_b = b.kind == shape_kind::plane;

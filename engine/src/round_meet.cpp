@@ -44,19 +44,17 @@ std::optional<contact_geometry> coincident_spheres(const placed_shape& a, const 
   return contact_geometry{a.center, normal, depth, a.radius * a.radius};
 }
 
-vector to_vector(const std::array<real, 3>& x) { return {x[0], x[1], x[2]}; }
-
 // The lanes of one batch: a pack of doubles as wide as the target's vector
 // registers (2 with SSE2, 4 with AVX2).
 constexpr int lanes = c3ga::native_lanes;
 
-// terms_of on the pairs at[0 .. count) (count <= lanes; the rest of the
-// batch repeats the last pair), their duals made by dual_a and dual_b in the
-// frame at each pair's meet_origin.
+// read_terms(terms_of) on the pairs at[0 .. count) (count <= lanes; the
+// rest of the batch repeats the last pair), their duals made by dual_a and
+// dual_b in the frame at each pair's meet_origin.
 template <class DualOfA, class DualOfB>
-void terms_of_batch(const std::pair<const placed_shape*, const placed_shape*>* pairs,
-                    const std::size_t* at, int count, round_terms<real>* terms, DualOfA dual_a,
-                    DualOfB dual_b) {
+void readings_of_batch(const std::pair<const placed_shape*, const placed_shape*>* pairs,
+                       const std::size_t* at, int count, round_reading<real>* readings,
+                       DualOfA dual_a, DualOfB dual_b) {
   const auto pair = [&](int i) { return pairs[at[std::min(i, count - 1)]]; };
   const auto origin = [&](int i) -> const vector& {
     return meet_origin(*pair(i).first, *pair(i).second);
@@ -65,14 +63,16 @@ void terms_of_batch(const std::pair<const placed_shape*, const placed_shape*>* p
       c3ga::gather<lanes>([&](int i) { return dual_a(*pair(i).first, origin(i)); });
   const auto duals_b =
       c3ga::gather<lanes>([&](int i) { return dual_b(*pair(i).second, origin(i)); });
-  const auto t = terms_of(duals_a, duals_b);
+  const auto r = read_terms(terms_of(duals_a, duals_b));
   for (int i = 0; i < count; ++i) {
-    round_terms<real>& out = terms[at[i]];
-    out.weight_square = t.weight_square[i];
-    out.duals_product = t.duals_product[i];
-    out.meet_square = t.meet_square[i];
-    for (int k = 0; k < 3; ++k) out.direction[k] = t.direction[k][i], out.centre[k] = t.centre[k][i];
-    out.centre_weight = t.centre_weight[i];
+    round_reading<real>& out = readings[at[i]];
+    out.weight_square = r.weight_square[i];
+    out.weight = r.weight[i];
+    out.duals_product = r.duals_product[i];
+    out.squared_radius = r.squared_radius[i];
+    out.length = r.length[i];
+    out.normal = {r.normal.e1()[i], r.normal.e2()[i], r.normal.e3()[i]};
+    out.centre = {r.centre.e1()[i], r.centre.e2()[i], r.centre.e3()[i]};
   }
 }
 
@@ -106,36 +106,35 @@ conformal::mv dual_of(const placed_shape& s, const vector& origin) {
 }
 
 std::optional<contact_geometry> contact_from(const placed_shape& a, const placed_shape& b,
-                                             const round_terms<real>& t, const vector& origin,
+                                             const round_reading<real>& r, const vector& origin,
                                              real lookahead, const vector& velocity_a,
                                              const vector& velocity_b) {
   // A zero weight means no finite intersection (parallel planes, a point and
   // a plane) or no intersection to speak of (identical spheres).
-  if (!(std::fabs(t.weight_square) > 0)) return coincident_spheres(a, b, t.duals_product, origin);
+  if (!(std::fabs(r.weight_square) > 0)) return coincident_spheres(a, b, r.duals_product, origin);
   // The squared radius of a round is C Ĉ / (ni ⌋ C)^2 (Dorst et al. 2007,
   // table 14.1). > 0: interpenetrating, 0: touching, < 0: the surfaces do not
   // meet.
-  const real squared_radius = t.meet_square / t.weight_square;
+  const real squared_radius = r.squared_radius;
   // Surfaces that do not meet are apart, or one solid holds the other whole
   // (a sphere sunk below a plane, or inside a bigger sphere). The inner
   // product of the duals tells which: for spheres σA . σB = (rA^2 + rB^2 -
   // d^2) / 2, below -rA rB when apart and above rA rB when nested; for a
   // sphere and a plane it is the centre's depth below the plane. Apart
   // shapes go on only when they may close the gap within the lookahead.
-  const bool apart = !(squared_radius >= 0) && !(t.duals_product > 0);
+  const bool apart = !(squared_radius >= 0) && !(r.duals_product > 0);
   if (apart && !(lookahead > 0)) return std::nullopt;
 
   // The normal, from B to A. A round point has no carrier direction: for a
   // flat point the normal is the line of the two centres.
-  vector normal = -to_vector(t.direction);
-  real length = e3ga::norm(normal);
-  if (!(length > by_precision(1e-9, 1e-4) * std::sqrt(std::fabs(t.weight_square)))) {
+  vector normal = r.normal;
+  if (!(r.length > by_precision(1e-9, 1e-4) * r.weight)) {
     if (a.kind == shape_kind::plane || b.kind == shape_kind::plane) return std::nullopt;
     normal = a.center - b.center;
-    length = e3ga::norm(normal);
+    real length = e3ga::norm(normal);
     if (!(length > 0)) normal = vector{0, 0, 1}, length = 1;  // coincident centres: any direction
+    normal = normal / length;
   }
-  normal = normal / length;
 
   // Depth: how far the solids overlap along the normal (minus the gap when
   // they are apart). A gap counts when the speeds of A and B towards each
@@ -145,7 +144,7 @@ std::optional<contact_geometry> contact_from(const placed_shape& a, const placed
                        std::max(e3ga::scp(normal, velocity_b), real(0));
   if (apart && !(-depth <= lookahead * closing)) return std::nullopt;
 
-  const vector point = origin + to_vector(t.centre) / t.centre_weight;
+  const vector point = origin + r.centre;
   return contact_geometry{point, normal, depth, squared_radius};
 }
 
@@ -154,8 +153,8 @@ bool meets_on_batches(shape_kind a, shape_kind b) {
          (a == shape_kind::plane && b == shape_kind::sphere);
 }
 
-void batched_terms(const std::pair<const placed_shape*, const placed_shape*>* pairs,
-                   std::size_t count, round_terms<real>* terms) {
+void batched_readings(const std::pair<const placed_shape*, const placed_shape*>* pairs,
+                      std::size_t count, round_reading<real>* readings) {
   // The pairs of each kind, batch by batch: sphere-sphere, sphere-plane,
   // plane-sphere.
   // (Each thread's, kept from call to call.)
@@ -172,9 +171,9 @@ void batched_terms(const std::pair<const placed_shape*, const placed_shape*>* pa
     const std::vector<std::size_t>& at = of_kind[kind];
     for (std::size_t first = 0; first < at.size(); first += lanes) {
       const int n = static_cast<int>(std::min<std::size_t>(lanes, at.size() - first));
-      if (kind == 0) terms_of_batch(pairs, &at[first], n, terms, sphere, sphere);
-      if (kind == 1) terms_of_batch(pairs, &at[first], n, terms, sphere, plane);
-      if (kind == 2) terms_of_batch(pairs, &at[first], n, terms, plane, sphere);
+      if (kind == 0) readings_of_batch(pairs, &at[first], n, readings, sphere, sphere);
+      if (kind == 1) readings_of_batch(pairs, &at[first], n, readings, sphere, plane);
+      if (kind == 2) readings_of_batch(pairs, &at[first], n, readings, plane, sphere);
     }
   }
 }

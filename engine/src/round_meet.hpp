@@ -5,10 +5,11 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <optional>
-#include <utility>
 #include <type_traits>
+#include <utility>
 
 #include "gaphys/contact.hpp"
 
@@ -109,10 +110,41 @@ auto terms_of(const DualA& dual_a, const DualB& dual_b) {
                              -c3ga::scp(ni, centre)};
 }
 
+// What contact_from reads of a meet's terms: their quotients and square
+// roots, taken on batches of pairs with the terms (on one pair at a time,
+// their latencies, one after the other, were most of contact_from's time).
+template <class T>
+struct round_reading {
+  T weight_square;               // round_terms::weight_square; 0: no finite round
+  T weight;                      // sqrt(|weight_square|)
+  T duals_product;               // A* . B*
+  T squared_radius;              // meet_square / weight_square
+  T length;                      // |direction|
+  e3ga::basic_vector<T> normal;  // -direction / length: from B to A
+  e3ga::basic_vector<T> centre;  // centre / centre_weight: the round's centre, from the origin
+};
+
+template <class T>
+round_reading<T> read_terms(const round_terms<T>& t) {
+  using std::abs, std::sqrt;
+  using vector_of = e3ga::basic_vector<T>;
+  // (A round point has no carrier direction: its normal and length are NaN
+  // or 0, and contact_from takes the line of centres instead.)
+  const vector_of direction = -vector_of(t.direction[0], t.direction[1], t.direction[2]);
+  const T length = e3ga::norm(direction);
+  return round_reading<T>{t.weight_square,
+                          sqrt(abs(t.weight_square)),
+                          t.duals_product,
+                          t.meet_square / t.weight_square,
+                          length,
+                          direction / length,
+                          vector_of(t.centre[0], t.centre[1], t.centre[2]) / t.centre_weight};
+}
+
 // The contact of two round shapes whose meet, computed in the frame at
-// `origin` (meet_origin), has terms t (find_contact's rules: contact.hpp).
+// `origin` (meet_origin), reads r (find_contact's rules: contact.hpp).
 std::optional<contact_geometry> contact_from(const placed_shape& a, const placed_shape& b,
-                                             const round_terms<real>& t, const vector& origin,
+                                             const round_reading<real>& r, const vector& origin,
                                              real lookahead, const vector& velocity_a,
                                              const vector& velocity_b);
 
@@ -126,10 +158,10 @@ inline bool is_round(shape_kind kind) {
 // or a sphere and a plane, in either order.
 bool meets_on_batches(shape_kind a, shape_kind b);
 
-// terms[k] = the terms of pairs[k] in the frame at their meet_origin, for
-// pairs of shapes that meets_on_batches: W pairs of one kind of pair at a
-// time.
-void batched_terms(const std::pair<const placed_shape*, const placed_shape*>* pairs,
-                   std::size_t count, round_terms<real>* terms);
+// readings[k] = what the terms of pairs[k], in the frame at their
+// meet_origin, read (read_terms), for pairs of shapes that
+// meets_on_batches: W pairs of one kind of pair at a time.
+void batched_readings(const std::pair<const placed_shape*, const placed_shape*>* pairs,
+                      std::size_t count, round_reading<real>* readings);
 
 }  // namespace gaphys::detail

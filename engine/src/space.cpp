@@ -422,7 +422,7 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
 }
 
 // Whether the pair is one of single round shapes whose meet runs on
-// batches (detail::batched_terms), and whose contact find_contacts would
+// batches (detail::batched_readings), and whose contact find_contacts would
 // look for (no sensor, filters that meet).
 template <class Facts>
 static bool meets_on_batches(const Facts& a, const Facts& b, const placed_shape* shape_a,
@@ -444,7 +444,7 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
   struct scratch_lists {
     std::vector<std::pair<const placed_shape*, const placed_shape*>> round_pairs;
     std::vector<std::size_t> round_slot;
-    std::vector<detail::round_terms<real>> terms;
+    std::vector<detail::round_reading<real>> readings;
   };
   static thread_local scratch_lists scratch;
   std::vector<std::pair<const placed_shape*, const placed_shape*>>& round_pairs =
@@ -467,9 +467,9 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
     round_slot[static_cast<std::size_t>(pair - first)] = round_pairs.size();
     round_pairs.emplace_back(shape_a, shape_b);
   }
-  std::vector<detail::round_terms<real>>& terms = scratch.terms;
-  terms.resize(round_pairs.size());
-  detail::batched_terms(round_pairs.data(), round_pairs.size(), terms.data());
+  std::vector<detail::round_reading<real>>& readings = scratch.readings;
+  readings.resize(round_pairs.size());
+  detail::batched_readings(round_pairs.data(), round_pairs.size(), readings.data());
 
   contact_manifold manifold;
   // The contact at a point of shape i of body a and shape j of body b, made
@@ -500,9 +500,9 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
       const single_shape_facts& facts_b = singles_[b];
       const placed_shape& shape_a = placed_[first_shape_[a]];
       const placed_shape& shape_b = placed_[first_shape_[b]];
-      const std::optional<contact_geometry> geometry =
-          detail::contact_from(shape_a, shape_b, terms[slot], detail::meet_origin(shape_a, shape_b),
-                               lookahead, facts_a.velocity, facts_b.velocity);
+      const std::optional<contact_geometry> geometry = detail::contact_from(
+          shape_a, shape_b, readings[slot], detail::meet_origin(shape_a, shape_b), lookahead,
+          facts_a.velocity, facts_b.velocity);
       if (geometry) {
         add(across, a, b, 0, 0, *geometry, 0, combine(rules, facts_a.surface, facts_b.surface));
       }
