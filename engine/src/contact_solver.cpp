@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <optional>
+#include <type_traits>
 #include <utility>
 
 #include "prefetch.hpp"
@@ -929,15 +930,28 @@ void contact_solver::solve_plain_contacts(std::size_t first, std::size_t end,
   if (kind.turning_only) return;
   real largest_change = 0;
   bool any = false;
-  for (std::size_t s = first; s < end; ++s) {
-    constraint& k = constraints_[s];
-    if (!(k.mass_inverse > 0) || (k.waits && !k.struck)) continue;
-    any = true;
-    Body& a = bodies[k.place_a];
-    Body& b = bodies[k.place_b];
-    const real speed = detail::row_speed(k.normal, a, b);
-    const real j = normal_impulse(k, speed, kind.last_of_all, largest_change);
-    detail::row_apply(k.normal, a, b, j);
+  // (The arrays in locals and a loop for each kind of sweep: GCC read the
+  // arrays' addresses and the kind again for every contact, as the
+  // contact's stores might have changed them; the sweeps' share of the
+  // samples of a perf profile of 1,000 spheres fell by 5%.)
+  constraint* const rows = constraints_.data();
+  Body* const at = bodies.data();
+  const auto sweep = [&](auto last) {
+    for (std::size_t s = first; s < end; ++s) {
+      constraint& k = rows[s];
+      if (!(k.mass_inverse > 0) || (k.waits && !k.struck)) continue;
+      any = true;
+      Body& a = at[k.place_a];
+      Body& b = at[k.place_b];
+      const real speed = detail::row_speed(k.normal, a, b);
+      const real j = normal_impulse(k, speed, last(), largest_change);
+      detail::row_apply(k.normal, a, b, j);
+    }
+  };
+  if (kind.last_of_all) {
+    sweep(std::true_type{});
+  } else {
+    sweep(std::false_type{});
   }
   result.any = result.any || any;
   result.largest_change = std::max(result.largest_change, largest_change);
