@@ -124,16 +124,28 @@ struct round_reading {
   e3ga::basic_vector<T> centre;  // centre / centre_weight: the round's centre, from the origin
 };
 
+// A square root lane by lane: of a pack of 8 doubles with AVX-512, GCC 12
+// inlines std::experimental::sqrt from its own header with a register left
+// undefined on purpose (_mm512_undefined_pd), and warns of it.
+template <class T>
+T square_root(const T& x) {
+  if constexpr (std::is_floating_point_v<T>) {
+    return std::sqrt(x);
+  } else {
+    return T([&](auto lane) { return std::sqrt(x[lane]); });
+  }
+}
+
 template <class T>
 round_reading<T> read_terms(const round_terms<T>& t) {
-  using std::abs, std::sqrt;
+  using std::abs;
   using vector_of = e3ga::basic_vector<T>;
   // (A round point has no carrier direction: its normal and length are NaN
   // or 0, and contact_from takes the line of centres instead.)
   const vector_of direction = -vector_of(t.direction[0], t.direction[1], t.direction[2]);
-  const T length = e3ga::norm(direction);
+  const T length = square_root(abs(e3ga::norm2(direction)));
   return round_reading<T>{t.weight_square,
-                          sqrt(abs(t.weight_square)),
+                          square_root(abs(t.weight_square)),
                           t.duals_product,
                           t.meet_square / t.weight_square,
                           length,
