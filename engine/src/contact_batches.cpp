@@ -217,7 +217,7 @@ void contact_solver::solve_part(std::size_t part, const sweep_kind& kind, sweep_
   // of a plain contact's solve.
   for (std::size_t at = part_singles_[part]; at < part_singles_[part + 1];) {
     const std::size_t stop = stretch_ends_[at];
-    solve_runs(single_runs_[at], single_runs_[at] + (stop - at), kind, result);
+    solve_runs(single_runs_[at], single_runs_[at] + (stop - at), kind, true, result);
     at = stop;
   }
 }

@@ -322,13 +322,22 @@ class contact_solver {
       if (!(body_drift_[x] <= settle_tolerance_)) body_disturbed_[x] = stamp, body_drift_[x] = 0;
     }
   }
-  void solve_runs(std::size_t first_run, std::size_t end_run, const sweep_kind& kind,
+  // `apart`: no two of the runs share a body that moves (runs of one
+  // colour; not the sequential group).
+  void solve_runs(std::size_t first_run, std::size_t end_run, const sweep_kind& kind, bool apart,
                   sweep_result& result);
   GAPHYS_ALWAYS_INLINE void solve_contact(std::size_t s, const sweep_kind& kind,
                                           sweep_result& result);
   template <class Body>
-  void solve_plain_contacts(std::size_t first, std::size_t end, const sweep_kind& kind,
+  void solve_plain_contacts(std::size_t first, std::size_t end, const sweep_kind& kind, bool apart,
                             std::vector<Body>& bodies, sweep_result& result);
+  template <bool last>
+  void solve_plain_pairs(std::size_t first, std::size_t end, real& largest_change, bool& any);
+  // Whether the sweeps leave constraint k out: no mass to move, or a bounce
+  // that waits for a later step.
+  static bool left_out(const constraint& k) {
+    return !(k.mass_inverse > 0) || (k.waits && !k.struck);
+  }
   // One sweep's normal impulse of constraint k, whose row reads `speed`
   // (detail::row_speed), its total kept >= 0 and over-relaxed unless
   // `last`: accumulates it, raises largest_change by its speed change, and
