@@ -484,11 +484,17 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
       on_static.push_back({contacts.size(), a_static ? b : a,
                            a_static ? first_shape_[a] + i : first_shape_[b] + j});
     }
-    // (Made whole from its fields: made empty, 8 bytes at a time, and then
-    // filled in, a fifth of this loop's time went to zeroing the 248
-    // bytes; this way meet_pairs runs 9% fewer instructions.)
-    contacts.push_back(contact{a, b, geometry, static_cast<std::uint32_t>(i),
-                               static_cast<std::uint32_t>(j), feature, m});
+    // (Made in its place and filled in: made whole aside and copied in,
+    // meet_pairs ran 9% fewer instructions but took a quarter longer, its
+    // loads of the copy waiting for the narrower stores that made it.)
+    contact& c = contacts.emplace_back();
+    c.body_a = a;
+    c.body_b = b;
+    c.geometry = geometry;
+    c.shape_a = static_cast<std::uint32_t>(i);
+    c.shape_b = static_cast<std::uint32_t>(j);
+    c.feature = feature;
+    c.material = m;
   };
   for (const body_pair* pair = first; pair != end; ++pair) {
     const auto [a, b] = *pair;
