@@ -928,7 +928,7 @@ void contact_solver::solve_runs(std::size_t first_run, std::size_t end_run, cons
 //
 // Where the contacts are of runs apart (one colour's), on plain bodies and
 // in double with SSE2, two contacts of different runs in a row are solved
-// as one, a lane each (solve_plain_pair): the sweeps of 1,000 spheres took
+// as one, a lane each (solve_plain_pairs): the sweeps of 1,000 spheres took
 // a tenth less time (their share of a perf profile), the step 3% less.
 template <class Body>
 void contact_solver::solve_plain_contacts(std::size_t first, std::size_t end,
@@ -938,12 +938,6 @@ void contact_solver::solve_plain_contacts(std::size_t first, std::size_t end,
   if (kind.turning_only) return;
   real largest_change = 0;
   bool any = false;
-  // (The arrays in locals and a loop for each kind of sweep: GCC read the
-  // arrays' addresses and the kind again for every contact, as the
-  // contact's stores might have changed them; the sweeps' share of the
-  // samples of a perf profile of 1,000 spheres fell by 5%.)
-  constraint* const rows = constraints_.data();
-  Body* const at = bodies.data();
   if constexpr (std::is_same_v<Body, detail::plain_body>) {
     if (apart) {
       if (kind.last_of_all) {
@@ -956,6 +950,12 @@ void contact_solver::solve_plain_contacts(std::size_t first, std::size_t end,
       return;
     }
   }
+  // (The arrays in locals and a loop for each kind of sweep: GCC read the
+  // arrays' addresses and the kind again for every contact, as the
+  // contact's stores might have changed them; the sweeps' share of the
+  // samples of a perf profile of 1,000 spheres fell by 5%.)
+  constraint* const rows = constraints_.data();
+  Body* const at = bodies.data();
   const auto sweep = [&](auto last) {
     for (std::size_t s = first; s < end; ++s) {
       constraint& k = rows[s];
