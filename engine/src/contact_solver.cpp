@@ -961,11 +961,7 @@ void contact_solver::solve_plain_contacts(std::size_t first, std::size_t end,
       constraint& k = rows[s];
       if (left_out(k)) continue;
       any = true;
-      Body& a = at[k.place_a];
-      Body& b = at[k.place_b];
-      const real speed = detail::row_speed(k.normal, a, b);
-      const real j = normal_impulse(k, speed, last(), largest_change);
-      detail::row_apply(k.normal, a, b, j);
+      solve_plain(k, at[k.place_a], at[k.place_b], last(), largest_change);
     }
   };
   if (kind.last_of_all) {
@@ -1054,10 +1050,7 @@ void contact_solver::solve_plain_pairs(std::size_t first, std::size_t end, real&
   constraint* const rows = constraints_.data();
   detail::plain_body* const at = plain_bodies_.data();
   const auto one = [&](constraint& k) {
-    detail::plain_body& a = at[k.place_a];
-    detail::plain_body& b = at[k.place_b];
-    const real j = normal_impulse(k, detail::row_speed(k.normal, a, b), last, largest_change);
-    detail::row_apply(k.normal, a, b, j);
+    solve_plain(k, at[k.place_a], at[k.place_b], last, largest_change);
   };
   std::size_t s = first;
 #if defined(__SSE2__)

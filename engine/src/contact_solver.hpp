@@ -352,6 +352,14 @@ class contact_solver {
     largest_change = std::max(largest_change, std::fabs(j) * k.mass_inverse);
     return j;
   }
+  // One sweep of plain constraint k (its row turns neither body): its
+  // impulse, applied.
+  template <class Body>
+  static GAPHYS_ALWAYS_INLINE void solve_plain(constraint& k, Body& a, Body& b, bool last,
+                                               real& largest_change) {
+    const real j = normal_impulse(k, detail::row_speed(k.normal, a, b), last, largest_change);
+    detail::row_apply(k.normal, a, b, j);
+  }
   void store_impulses(std::vector<contact>& contacts, int threads) const;
   void correct_turning(const world_settings& settings, std::vector<body>& bodies,
                        const std::vector<contact>& contacts, real h);

@@ -78,10 +78,15 @@ GAPHYS_ALWAYS_INLINE T at_least_zero(T x) {
 }
 
 // The speed a row along d reads, and its impulse j: `arms` null where the
-// row turns neither body (both arms zero).
+// row turns neither body (both arms zero). Without arms, the rows read
+// solver_body or plain_body alike.
+template <class Body>
+GAPHYS_ALWAYS_INLINE real row_speed(const vector& d, const Body& a, const Body& b) {
+  return e3ga::scp(d, a.velocity - b.velocity);
+}
 GAPHYS_ALWAYS_INLINE real row_speed(const vector& d, const row_arms* arms, const solver_body& a,
                                     const solver_body& b) {
-  const real linear_speed = e3ga::scp(d, a.velocity - b.velocity);
+  const real linear_speed = row_speed(d, a, b);
   if (!arms) return linear_speed;
   return linear_speed + e3ga::lc(arms->arm_a, a.angular_velocity) -
          e3ga::lc(arms->arm_b, b.angular_velocity);
@@ -100,10 +105,6 @@ GAPHYS_ALWAYS_INLINE void row_apply(const vector& d, const row_arms* arms, solve
   }
 }
 // The same for a row that turns neither body, on solver_body or plain_body.
-template <class Body>
-GAPHYS_ALWAYS_INLINE real row_speed(const vector& d, const Body& a, const Body& b) {
-  return e3ga::scp(d, a.velocity - b.velocity);
-}
 template <class Body>
 GAPHYS_ALWAYS_INLINE void row_apply(const vector& d, Body& a, Body& b, real j) {
   if (a.inverse_mass > 0) a.velocity = a.velocity + (j * a.inverse_mass) * d;
