@@ -55,19 +55,13 @@ void contact_solver::pack_batches(const world_settings& settings) {
     }
     single_runs_.resize(part_singles_.back());
     stretch_ends_.resize(part_singles_.back());
-#pragma omp parallel num_threads(sweep_threads_) if (sweep_threads_ > 1)
-    {
-      const auto thread = static_cast<std::size_t>(omp_get_thread_num());
-      const auto team = static_cast<std::size_t>(omp_get_num_threads());
-      for (std::size_t part = 0; part < parts; ++part) {
-        if (part / 2 % threads % team != thread) continue;
-        const std::size_t at = part_singles_[part], stop = part_singles_[part + 1];
-        std::iota(single_runs_.begin() + std::ptrdiff_t(at),
-                  single_runs_.begin() + std::ptrdiff_t(stop), part_runs(part).first);
-        std::fill(stretch_ends_.begin() + std::ptrdiff_t(at),
-                  stretch_ends_.begin() + std::ptrdiff_t(stop), stop);
-      }
-    }
+    for_each_part([&](std::size_t part) {
+      const std::size_t at = part_singles_[part], stop = part_singles_[part + 1];
+      std::iota(single_runs_.begin() + std::ptrdiff_t(at),
+                single_runs_.begin() + std::ptrdiff_t(stop), part_runs(part).first);
+      std::fill(stretch_ends_.begin() + std::ptrdiff_t(at),
+                stretch_ends_.begin() + std::ptrdiff_t(stop), stop);
+    });
     return;
   }
   for (std::size_t part = 0; part < parts; ++part) {
@@ -209,6 +203,10 @@ void contact_solver::solve_group(const batch_group& group, const sweep_kind& kin
 }
 
 void contact_solver::solve_part(std::size_t part, const sweep_kind& kind, sweep_result& result) {
+  if (paired_) {  // (then nothing goes on batches)
+    solve_paired_part(part, kind, result);
+    return;
+  }
   for (std::size_t g = part_groups_[part]; g < part_groups_[part + 1]; ++g) {
     solve_group(groups_[g], kind, result);
   }
@@ -217,7 +215,7 @@ void contact_solver::solve_part(std::size_t part, const sweep_kind& kind, sweep_
   // of a plain contact's solve.
   for (std::size_t at = part_singles_[part]; at < part_singles_[part + 1];) {
     const std::size_t stop = stretch_ends_[at];
-    solve_runs(single_runs_[at], single_runs_[at] + (stop - at), kind, true, result);
+    solve_runs(single_runs_[at], single_runs_[at] + (stop - at), kind, result);
     at = stop;
   }
 }

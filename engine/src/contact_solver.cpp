@@ -872,7 +872,9 @@ void contact_solver::solve_contacts(const world_settings& settings) {
   // (Every contact plain and none on batches: the sweeps read half a body
   // each, detail::plain_body.)
   plain_sweeps_ = !settling_ && groups_.empty();
+  paired_ = plain_sweeps_ && pairs_plain_contacts();
   if (plain_sweeps_) copy_to_plain_bodies();
+  if (paired_) pair_plain_contacts();
   sweep_colours(
       sweeps,
       [&](int sweep, std::size_t colour, std::size_t block, detail::contact_colouring::part p,
@@ -880,23 +882,24 @@ void contact_solver::solve_contacts(const world_settings& settings) {
         solve_part(part_index(colour, block, p), kind_of(sweep), result);
       },
       [&](int sweep, sweep_result& result) {
-        solve_runs(sequential, runs, kind_of(sweep), false, result);
+        solve_runs(sequential, runs, kind_of(sweep), result);
       },
       converged);
+  if (paired_) store_paired_impulses();
   if (plain_sweeps_) copy_from_plain_bodies();
 }
 
 // Runs first_run .. end_run - 1 of the colouring, in order, but for the
 // settled ones (settled_run) where the step passes them by.
 void contact_solver::solve_runs(std::size_t first_run, std::size_t end_run, const sweep_kind& kind,
-                                bool apart, sweep_result& result) {
+                                sweep_result& result) {
   if (!settling_) {
     const std::size_t first = colouring_.run_starts[first_run];
     const std::size_t end = colouring_.run_starts[end_run];
     if (plain_sweeps_) {
-      solve_plain_contacts(first, end, kind, apart, plain_bodies_, result);
+      solve_plain_contacts(first, end, kind, plain_bodies_, result);
     } else {
-      solve_plain_contacts(first, end, kind, apart, solver_bodies_, result);
+      solve_plain_contacts(first, end, kind, solver_bodies_, result);
     }
     return;
   }
@@ -926,30 +929,16 @@ void contact_solver::solve_runs(std::size_t first_run, std::size_t end_run, cons
 // becomes +0). solve_contact keeps the branch: a box's contact, whose
 // rows turn it, stepped 1-3% slower without.
 //
-// Where the contacts are of runs apart (one colour's), on plain bodies and
-// in double with SSE2, two contacts of different runs in a row are solved
-// as one, a lane each (solve_plain_pairs): the sweeps of 1,000 spheres took
-// a tenth less time (their share of a perf profile), the step 3% less.
+// (In double with SSE2, the colours' plain sweeps take their contacts two
+// at a time instead: solve_paired_part, plain_pairs.hpp.)
 template <class Body>
 void contact_solver::solve_plain_contacts(std::size_t first, std::size_t end,
-                                          const sweep_kind& kind, bool apart,
-                                          std::vector<Body>& bodies, sweep_result& result) {
+                                          const sweep_kind& kind, std::vector<Body>& bodies,
+                                          sweep_result& result) {
   // (Past solver_iterations only contacts that turn a body are solved.)
   if (kind.turning_only) return;
   real largest_change = 0;
   bool any = false;
-  if constexpr (std::is_same_v<Body, detail::plain_body>) {
-    if (apart) {
-      if (kind.last_of_all) {
-        solve_plain_pairs<true>(first, end, largest_change, any);
-      } else {
-        solve_plain_pairs<false>(first, end, largest_change, any);
-      }
-      result.any = result.any || any;
-      result.largest_change = std::max(result.largest_change, largest_change);
-      return;
-    }
-  }
   // (The arrays in locals and a loop for each kind of sweep: GCC read the
   // arrays' addresses and the kind again for every contact, as the
   // contact's stores might have changed them; the sweeps' share of the
@@ -971,115 +960,6 @@ void contact_solver::solve_plain_contacts(std::size_t first, std::size_t end,
   }
   result.any = result.any || any;
   result.largest_change = std::max(result.largest_change, largest_change);
-}
-
-#if defined(__SSE2__)
-namespace {
-
-// Two plain contacts, k0 and k1, of different runs (their moving bodies
-// differ), as solve_plain_contacts solves them one after the other: the same
-// operations on the same numbers, lane 0 for k0 and lane 1 for k1, in
-// double. Raises either lane of `largest` by their speed changes.
-// (Templates, so that a float engine, which never calls them, compiles them
-// not at all.)
-template <bool last, class Row, class Body>
-GAPHYS_ALWAYS_INLINE void solve_two(Row& k0, Row& k1, Body& a0, Body& b0, Body& a1, Body& b1,
-                                    __m128d& largest) {
-  // A body's z and inverse mass are one aligned pair of doubles.
-  static_assert(offsetof(Body, inverse_mass) == 3 * sizeof(double) && alignof(Body) % 16 == 0);
-  const auto both = [](const double& x0, const double& x1) { return _mm_set_pd(x1, x0); };
-  // x, y, z and inverse mass of two bodies, each in the two lanes.
-  struct in_lanes {
-    __m128d x, y, z, inverse_mass;
-  };
-  const auto lanes = [](const Body& p0, const Body& p1) {
-    const __m128d xy0 = _mm_load_pd(&p0.velocity.c[0]), zm0 = _mm_load_pd(&p0.velocity.c[2]);
-    const __m128d xy1 = _mm_load_pd(&p1.velocity.c[0]), zm1 = _mm_load_pd(&p1.velocity.c[2]);
-    return in_lanes{_mm_unpacklo_pd(xy0, xy1), _mm_unpackhi_pd(xy0, xy1), _mm_unpacklo_pd(zm0, zm1),
-                    _mm_unpackhi_pd(zm0, zm1)};
-  };
-  auto [ax, ay, az, am] = lanes(a0, a1);
-  auto [bx, by, bz, bm] = lanes(b0, b1);
-  const __m128d n0 = _mm_loadu_pd(&k0.normal.c[0]), n1 = _mm_loadu_pd(&k1.normal.c[0]);
-  const __m128d nx = _mm_unpacklo_pd(n0, n1), ny = _mm_unpackhi_pd(n0, n1);
-  const __m128d nz = both(k0.normal.c[2], k1.normal.c[2]);
-  // row_speed: n . (vA - vB), in the order of e3ga::scp.
-  __m128d speed = _mm_mul_pd(_mm_sub_pd(ax, bx), nx);
-  speed = _mm_add_pd(speed, _mm_mul_pd(_mm_sub_pd(ay, by), ny));
-  speed = _mm_add_pd(speed, _mm_mul_pd(_mm_sub_pd(az, bz), nz));
-  // normal_impulse (1 x is x: the last sweep's relaxation of 1 multiplies).
-  const __m128d relaxation = last ? _mm_set1_pd(1) : both(k0.relaxation, k1.relaxation);
-  const __m128d closing = _mm_sub_pd(both(k0.target_speed, k1.target_speed), speed);
-  const __m128d wanted =
-      _mm_mul_pd(_mm_mul_pd(relaxation, closing), both(k0.normal_mass, k1.normal_mass));
-  const __m128d accumulated = both(k0.accumulated, k1.accumulated);
-  const __m128d total = _mm_max_pd(_mm_setzero_pd(), _mm_add_pd(accumulated, wanted));
-  const __m128d j = _mm_sub_pd(total, accumulated);
-  _mm_storel_pd(&k0.accumulated, total);
-  _mm_storeh_pd(&k1.accumulated, total);
-  const __m128d magnitude = _mm_andnot_pd(_mm_set1_pd(-0.0), j);
-  largest = _mm_max_pd(largest, _mm_mul_pd(magnitude, both(k0.mass_inverse, k1.mass_inverse)));
-  // row_apply: only a body with mass changes.
-  const __m128d ja = _mm_mul_pd(j, am), jb = _mm_mul_pd(j, bm);
-  ax = _mm_add_pd(ax, _mm_mul_pd(ja, nx));
-  ay = _mm_add_pd(ay, _mm_mul_pd(ja, ny));
-  az = _mm_add_pd(az, _mm_mul_pd(ja, nz));
-  bx = _mm_sub_pd(bx, _mm_mul_pd(jb, nx));
-  by = _mm_sub_pd(by, _mm_mul_pd(jb, ny));
-  bz = _mm_sub_pd(bz, _mm_mul_pd(jb, nz));
-  const auto store = [](Body& p, __m128d xy, __m128d z) {
-    if (!(p.inverse_mass > 0)) return;
-    _mm_store_pd(&p.velocity.c[0], xy);
-    _mm_store_sd(&p.velocity.c[2], z);
-  };
-  store(a0, _mm_unpacklo_pd(ax, ay), az);
-  store(a1, _mm_unpackhi_pd(ax, ay), _mm_unpackhi_pd(az, az));
-  store(b0, _mm_unpacklo_pd(bx, by), bz);
-  store(b1, _mm_unpackhi_pd(bx, by), _mm_unpackhi_pd(bz, bz));
-}
-
-}  // namespace
-#endif
-
-// solve_plain_contacts on plain_bodies_ for the contacts [first, end) of
-// runs apart: with SSE2 in double, two contacts in a row of different runs
-// at once (solve_two).
-template <bool last>
-void contact_solver::solve_plain_pairs(std::size_t first, std::size_t end, real& largest_change,
-                                       bool& any) {
-  constraint* const rows = constraints_.data();
-  detail::plain_body* const at = plain_bodies_.data();
-  const auto one = [&](constraint& k) {
-    solve_plain(k, at[k.place_a], at[k.place_b], last, largest_change);
-  };
-  std::size_t s = first;
-#if defined(__SSE2__)
-  if constexpr (std::is_same_v<real, double>) {
-    // The sweep's largest change so far, in either lane (the largest of
-    // numbers, none a NaN, does not depend on the order they come in).
-    __m128d largest = _mm_setzero_pd();
-    for (; s + 1 < end;) {
-      constraint& k0 = rows[s];
-      constraint& k1 = rows[s + 1];
-      const bool in0 = !left_out(k0), in1 = !left_out(k1);
-      // (Contacts of one run share their bodies: one after the other.)
-      if (!(in0 && in1 && (k1.place_a != k0.place_a || k1.place_b != k0.place_b))) {
-        if (in0) any = true, one(k0);
-        ++s;
-        continue;
-      }
-      any = true;
-      solve_two<last>(k0, k1, at[k0.place_a], at[k0.place_b], at[k1.place_a], at[k1.place_b],
-                      largest);
-      s += 2;
-    }
-    const __m128d larger = _mm_max_sd(largest, _mm_unpackhi_pd(largest, largest));
-    largest_change = std::max(largest_change, static_cast<real>(_mm_cvtsd_f64(larger)));
-  }
-#endif
-  for (; s < end; ++s) {
-    if (!left_out(rows[s])) any = true, one(rows[s]);
-  }
 }
 
 GAPHYS_ALWAYS_INLINE void contact_solver::solve_contact(std::size_t s, const sweep_kind& kind,

@@ -12,6 +12,8 @@
 //    same sweeps as the normal impulse.
 #pragma once
 
+#include <omp.h>
+
 #include <array>
 #include <atomic>
 #include <cstdint>
@@ -27,6 +29,7 @@
 #include "gaphys/world.hpp"
 #include "impulse_row.hpp"
 #include "pair_cuts.hpp"
+#include "plain_pairs.hpp"
 #include "timed_impact.hpp"
 
 namespace gaphys {
@@ -322,17 +325,13 @@ class contact_solver {
       if (!(body_drift_[x] <= settle_tolerance_)) body_disturbed_[x] = stamp, body_drift_[x] = 0;
     }
   }
-  // `apart`: no two of the runs share a body that moves (runs of one
-  // colour; not the sequential group).
-  void solve_runs(std::size_t first_run, std::size_t end_run, const sweep_kind& kind, bool apart,
+  void solve_runs(std::size_t first_run, std::size_t end_run, const sweep_kind& kind,
                   sweep_result& result);
   GAPHYS_ALWAYS_INLINE void solve_contact(std::size_t s, const sweep_kind& kind,
                                           sweep_result& result);
   template <class Body>
-  void solve_plain_contacts(std::size_t first, std::size_t end, const sweep_kind& kind, bool apart,
+  void solve_plain_contacts(std::size_t first, std::size_t end, const sweep_kind& kind,
                             std::vector<Body>& bodies, sweep_result& result);
-  template <bool last>
-  void solve_plain_pairs(std::size_t first, std::size_t end, real& largest_change, bool& any);
   // Whether the sweeps leave constraint k out: no mass to move, or a bounce
   // that waits for a later step.
   static bool left_out(const constraint& k) {
@@ -432,6 +431,37 @@ class contact_solver {
   bool plain_sweeps_ = false;
   void copy_to_plain_bodies();
   void copy_from_plain_bodies();
+  // Plain sweeps in double with SSE2 (paired_, pairs_plain_contacts) solve
+  // each part's contacts two at a time (plain_pairs.hpp): part p's pairs are
+  // plain_pairs_[part_pairs_[p].first .. part_pairs_[p].second), from its
+  // first slot on, and pair_slots_ holds each pair's two slots (no_slot for
+  // an empty lane). The last of plain_bodies_ is the empty lanes' spare.
+  static constexpr std::uint32_t no_slot = ~std::uint32_t{0};
+  std::vector<detail::plain_pair> plain_pairs_;
+  std::vector<std::array<std::uint32_t, 2>> pair_slots_;
+  std::vector<std::pair<std::size_t, std::size_t>> part_pairs_;
+  bool paired_ = false;
+  static bool pairs_plain_contacts();
+  void pair_plain_contacts();
+  void store_paired_impulses();
+  void solve_paired_part(std::size_t part, const sweep_kind& kind, sweep_result& result);
+  template <bool last>
+  void solve_pairs(std::size_t first, std::size_t end, sweep_result& result);
+  // visit(part) for every part of the sweeps, each on the thread whose sweeps
+  // solve it (its rows come to that core).
+  template <class Visit>
+  void for_each_part(const Visit& visit) {
+    const auto threads = static_cast<std::size_t>(sweep_threads_);
+    const std::size_t parts = colouring_.colours() * threads * 2;
+#pragma omp parallel num_threads(sweep_threads_) if (sweep_threads_ > 1)
+    {
+      const auto thread = static_cast<std::size_t>(omp_get_thread_num());
+      const auto team = static_cast<std::size_t>(omp_get_num_threads());
+      for (std::size_t part = 0; part < parts; ++part) {
+        if (part / 2 % threads % team == thread) visit(part);
+      }
+    }
+  }
   template <class Visit>
   void for_each_place(const Visit& visit);
   // Per body, for the bodies in contact (in_contact_): what building the

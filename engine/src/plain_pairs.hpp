@@ -1,0 +1,99 @@
+// Plain contacts (frictionless, through the centres) two at a time, a lane
+// each, for the sweeps of a double engine with SSE2: what the sweeps read of
+// two contacts of one colour, laid out as the two lanes of each number
+// (plain_pair), and one sweep's solve of them (solve_plain_pair).
+//
+// The lanes are two contacts of different runs of one colour, next to each
+// other in the sweeps' order, whose moving bodies therefore differ; where a
+// contact has no such neighbour, lane 1 is empty: no mass, against the
+// spare body (plain_pair::spare), and its impulse is zero. Each lane takes
+// the same operations on the same numbers as contact_solver::solve_plain
+// on the contact alone, so the sweeps end with the same bits either way.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include "gaphys/ga/compiler.hpp"
+#include "impulse_row.hpp"
+
+namespace gaphys::detail {
+
+// Two contacts' rows: each number's two lanes side by side, so that a sweep
+// loads each with one instruction (picked from two constraints, each took
+// two, and the sweeps more than a fifth of their instructions).
+struct alignas(16) plain_pair {
+  double normal_x[2], normal_y[2], normal_z[2];  // n, from B to A
+  double target_speed[2], relaxation[2], normal_mass[2], accumulated[2], mass_inverse[2];
+  std::uint32_t place_a[2], place_b[2];  // the bodies' places in the plain bodies
+};
+
+#if defined(__SSE2__)
+
+// One sweep of the two contacts of p on `at` (plain_body, by place): each
+// lane as solve_plain on its contact alone, in the order of e3ga::scp, with a
+// relaxation of 1 in the last sweep. Raises either lane of `largest` by
+// their speed changes. (A template, so that a float engine, which never
+// calls it, compiles it not at all.)
+template <bool last, class Body>
+GAPHYS_ALWAYS_INLINE void solve_plain_pair(plain_pair& p, Body* at, __m128d& largest) {
+  // A body's z and inverse mass are one aligned pair of doubles.
+  static_assert(offsetof(Body, inverse_mass) == 3 * sizeof(double) && alignof(Body) % 16 == 0);
+  Body& a0 = at[p.place_a[0]];
+  Body& a1 = at[p.place_a[1]];
+  Body& b0 = at[p.place_b[0]];
+  Body& b1 = at[p.place_b[1]];
+  // x, y, z and inverse mass of two bodies, each in the two lanes.
+  struct in_lanes {
+    __m128d x, y, z, inverse_mass;
+  };
+  const auto lanes = [](const Body& x0, const Body& x1) {
+    const __m128d xy0 = _mm_load_pd(&x0.velocity.c[0]), zm0 = _mm_load_pd(&x0.velocity.c[2]);
+    const __m128d xy1 = _mm_load_pd(&x1.velocity.c[0]), zm1 = _mm_load_pd(&x1.velocity.c[2]);
+    return in_lanes{_mm_unpacklo_pd(xy0, xy1), _mm_unpackhi_pd(xy0, xy1), _mm_unpacklo_pd(zm0, zm1),
+                    _mm_unpackhi_pd(zm0, zm1)};
+  };
+  auto [ax, ay, az, am] = lanes(a0, a1);
+  auto [bx, by, bz, bm] = lanes(b0, b1);
+  const __m128d nx = _mm_load_pd(p.normal_x), ny = _mm_load_pd(p.normal_y);
+  const __m128d nz = _mm_load_pd(p.normal_z);
+  // row_speed: n . (vA - vB).
+  __m128d speed = _mm_mul_pd(_mm_sub_pd(ax, bx), nx);
+  speed = _mm_add_pd(speed, _mm_mul_pd(_mm_sub_pd(ay, by), ny));
+  speed = _mm_add_pd(speed, _mm_mul_pd(_mm_sub_pd(az, bz), nz));
+  // normal_impulse (1 x is x: the last sweep's relaxation of 1 multiplies).
+  const __m128d relaxation = last ? _mm_set1_pd(1) : _mm_load_pd(p.relaxation);
+  const __m128d closing = _mm_sub_pd(_mm_load_pd(p.target_speed), speed);
+  const __m128d wanted = _mm_mul_pd(_mm_mul_pd(relaxation, closing), _mm_load_pd(p.normal_mass));
+  const __m128d accumulated = _mm_load_pd(p.accumulated);
+  const __m128d total = _mm_max_pd(_mm_setzero_pd(), _mm_add_pd(accumulated, wanted));
+  const __m128d j = _mm_sub_pd(total, accumulated);
+  _mm_store_pd(p.accumulated, total);
+  const __m128d magnitude = _mm_andnot_pd(_mm_set1_pd(-0.0), j);
+  largest = _mm_max_pd(largest, _mm_mul_pd(magnitude, _mm_load_pd(p.mass_inverse)));
+  // row_apply: only a body with mass changes.
+  const __m128d ja = _mm_mul_pd(j, am), jb = _mm_mul_pd(j, bm);
+  ax = _mm_add_pd(ax, _mm_mul_pd(ja, nx));
+  ay = _mm_add_pd(ay, _mm_mul_pd(ja, ny));
+  az = _mm_add_pd(az, _mm_mul_pd(ja, nz));
+  bx = _mm_sub_pd(bx, _mm_mul_pd(jb, nx));
+  by = _mm_sub_pd(by, _mm_mul_pd(jb, ny));
+  bz = _mm_sub_pd(bz, _mm_mul_pd(jb, nz));
+  const auto store = [](Body& x, __m128d xy, __m128d z) {
+    if (!(x.inverse_mass > 0)) return;
+    _mm_store_pd(&x.velocity.c[0], xy);
+    _mm_store_sd(&x.velocity.c[2], z);
+  };
+  store(a0, _mm_unpacklo_pd(ax, ay), az);
+  store(a1, _mm_unpackhi_pd(ax, ay), _mm_unpackhi_pd(az, az));
+  store(b0, _mm_unpacklo_pd(bx, by), bz);
+  store(b1, _mm_unpackhi_pd(bx, by), _mm_unpackhi_pd(bz, bz));
+}
+
+#endif
+
+}  // namespace gaphys::detail
