@@ -4,6 +4,7 @@
 // (contact_from: the branches, per pair).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -12,6 +13,8 @@
 #include <utility>
 
 #include "gaphys/contact.hpp"
+#include "gaphys/ga/compiler.hpp"
+#include "precision.hpp"
 
 namespace gaphys::detail {
 
@@ -153,12 +156,75 @@ round_reading<T> read_terms(const round_terms<T>& t) {
                           vector_of(t.centre[0], t.centre[1], t.centre[2]) / t.centre_weight};
 }
 
+// The largest value of x . direction over the shape's solid, x from
+// `origin`. A plane's solid is unbounded except along its own normal, the
+// only direction a contact with a plane has. (Forced inline: out of line,
+// its calls were a fifth of contact_from's instructions.)
+GAPHYS_ALWAYS_INLINE real support_height(const placed_shape& s, const vector& direction,
+                                         const vector& origin) {
+  switch (s.kind) {
+    case shape_kind::sphere:
+      return e3ga::scp(s.center - origin, direction) + s.radius;
+    case shape_kind::point:
+      return e3ga::scp(s.center - origin, direction);
+    case shape_kind::plane:
+      return s.offset - e3ga::scp(s.normal, origin);
+    default:  // the convex narrow phase's shapes never reach the meet
+      break;
+  }
+  return 0;
+}
+
+// Two spheres with the same centre and radius (contact_from, where the meet
+// is zero): `duals_product` is scp(A*, B*).
+std::optional<contact_geometry> coincident_spheres(const placed_shape& a, const placed_shape& b,
+                                                   real duals_product, const vector& origin);
+
 // The contact of two round shapes whose meet, computed in the frame at
 // `origin` (meet_origin), reads r (find_contact's rules: contact.hpp).
-std::optional<contact_geometry> contact_from(const placed_shape& a, const placed_shape& b,
-                                             const round_reading<real>& r, const vector& origin,
-                                             real lookahead, const vector& velocity_a,
-                                             const vector& velocity_b);
+// (Inline: out of line, its call and its result's copy were a fifth of the
+// narrow phase's time in a pile of spheres.)
+GAPHYS_ALWAYS_INLINE std::optional<contact_geometry> contact_from(
+    const placed_shape& a, const placed_shape& b, const round_reading<real>& r,
+    const vector& origin, real lookahead, const vector& velocity_a, const vector& velocity_b) {
+  // A zero weight means no finite intersection (parallel planes, a point and
+  // a plane) or no intersection to speak of (identical spheres).
+  if (!(std::fabs(r.weight_square) > 0)) return coincident_spheres(a, b, r.duals_product, origin);
+  // The squared radius of a round is C Ĉ / (ni ⌋ C)^2 (Dorst et al. 2007,
+  // table 14.1). > 0: interpenetrating, 0: touching, < 0: the surfaces do not
+  // meet.
+  const real squared_radius = r.squared_radius;
+  // Surfaces that do not meet are apart, or one solid holds the other whole
+  // (a sphere sunk below a plane, or inside a bigger sphere). The inner
+  // product of the duals tells which: for spheres σA . σB = (rA^2 + rB^2 -
+  // d^2) / 2, below -rA rB when apart and above rA rB when nested; for a
+  // sphere and a plane it is the centre's depth below the plane. Apart
+  // shapes go on only when they may close the gap within the lookahead.
+  const bool apart = !(squared_radius >= 0) && !(r.duals_product > 0);
+  if (apart && !(lookahead > 0)) return std::nullopt;
+
+  // The normal, from B to A. A round point has no carrier direction: for a
+  // flat point the normal is the line of the two centres.
+  vector normal = r.normal;
+  if (!(r.length > by_precision(1e-9, 1e-4) * r.weight)) {
+    if (a.kind == shape_kind::plane || b.kind == shape_kind::plane) return std::nullopt;
+    normal = a.center - b.center;
+    real length = e3ga::norm(normal);
+    if (!(length > 0)) normal = vector{0, 0, 1}, length = 1;  // coincident centres: any direction
+    normal = normal / length;
+  }
+
+  // Depth: how far the solids overlap along the normal (minus the gap when
+  // they are apart). A gap counts when the speeds of A and B towards each
+  // other, -n . vA and n . vB where positive, cover it within the lookahead.
+  const real depth = support_height(a, -normal, origin) + support_height(b, normal, origin);
+  const real closing = std::max(-e3ga::scp(normal, velocity_a), real(0)) +
+                       std::max(e3ga::scp(normal, velocity_b), real(0));
+  if (apart && !(-depth <= lookahead * closing)) return std::nullopt;
+
+  const vector point = origin + r.centre;
+  return contact_geometry{point, normal, depth, squared_radius};
+}
 
 // The shapes the conformal meet takes whole (find_contact): spheres, planes
 // and points; the others go to the convex narrow phase.

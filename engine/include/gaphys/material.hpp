@@ -21,6 +21,9 @@
 // shapes (spheres); a contact with none resists neither rolling nor spin.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 #include "gaphys/algebra.hpp"
 
 namespace gaphys {
@@ -42,7 +45,23 @@ enum class combine_rule {
   multiply,        // x y
 };
 
-real combine(combine_rule rule, real x, real y);
+// (Inline: the narrow phase combines the two shapes' values of every
+// contact it makes.)
+inline real combine(combine_rule rule, real x, real y) {
+  switch (rule) {
+    case combine_rule::geometric_mean:
+      return std::sqrt(x * y);
+    case combine_rule::average:
+      return (x + y) / 2;
+    case combine_rule::min:
+      return std::min(x, y);
+    case combine_rule::max:
+      return std::max(x, y);
+    case combine_rule::multiply:
+      return x * y;
+  }
+  return x;  // unreachable: world_settings are validated
+}
 
 // One rule per property. The defaults: friction by the geometric mean (as
 // Jolt does; a frictionless surface makes every contact with it frictionless),
@@ -58,6 +77,11 @@ struct material_combine_rules {
 };
 
 // The values a contact between surfaces a and b uses.
-material combine(const material_combine_rules& rules, const material& a, const material& b);
+inline material combine(const material_combine_rules& rules, const material& a, const material& b) {
+  return {combine(rules.restitution, a.restitution, b.restitution),
+          combine(rules.friction, a.friction, b.friction),
+          combine(rules.rolling_resistance, a.rolling_resistance, b.rolling_resistance),
+          combine(rules.spinning_friction, a.spinning_friction, b.spinning_friction)};
+}
 
 }  // namespace gaphys
