@@ -1,9 +1,6 @@
 #include "contact_solver.hpp"
 
 #include <omp.h>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 #include <algorithm>
 #include <atomic>

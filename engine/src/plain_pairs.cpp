@@ -3,8 +3,6 @@
 // two at a time in them, their impulses back into the constraints after.
 #include "plain_pairs.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <type_traits>
 
