@@ -5,8 +5,8 @@
 //
 // The lanes are two contacts of different runs of one colour, next to each
 // other in the sweeps' order, whose moving bodies therefore differ; where a
-// contact has no such neighbour, lane 1 is empty: no mass, against the
-// spare body (plain_pair::spare), and its impulse is zero. Each lane takes
+// contact has no such neighbour, lane 1 is empty: no mass, against a spare
+// body without mass (the last of the plain bodies), and its impulse is zero. Each lane takes
 // the same operations on the same numbers as contact_solver::solve_plain
 // on the contact alone, so the sweeps end with the same bits either way.
 #pragma once
