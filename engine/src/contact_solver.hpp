@@ -476,14 +476,6 @@ class contact_solver {
   std::vector<char> previous_used_;         // the last step's contacts already warm starting one
   std::vector<std::size_t> matches_;        // per contact, the last step's it starts from (or none)
   detail::pair_cuts warm_cuts_;             // the warm start's shares of both lists
-  // Per constraint: how far correct_positions moves its bodies (moves: bit
-  // 1 A, bit 2 B; a body without mass never moves).
-  struct position_shift {
-    vector a, b;
-    std::uint32_t body_a, body_b;
-    unsigned char moves;
-  };
-  std::vector<position_shift> shifts_;
   std::vector<solver_body> pseudo_bodies_;  // correct_turning's pseudo velocities, by place_
   std::vector<real> pseudo_targets_, pseudo_accumulated_;  // per slot
   std::vector<char> pseudo_taking_part_;                   // per slot
