@@ -129,13 +129,19 @@ struct round_reading {
   e3ga::basic_vector<T> centre;  // centre / centre_weight: the round's centre, from the origin
 };
 
-// A square root lane by lane: of a pack of 8 doubles with AVX-512, GCC 12
-// inlines std::experimental::sqrt from its own header with a register left
-// undefined on purpose (_mm512_undefined_pd), and warns of it.
+// A square root, of a number or of a pack's lanes (correctly rounded either
+// way: the same bits). A pack of 64 bytes (AVX-512) lane by lane: there GCC
+// 12 inlines std::experimental::sqrt from its own header with a register
+// left undefined on purpose (_mm512_undefined_pd), and warns of it. A
+// narrower one whole: lane by lane, each lane taken out and put back, a
+// pack of two doubles (SSE2) spent a tenth of the meet's time there.
 template <class T>
 T square_root(const T& x) {
   if constexpr (std::is_floating_point_v<T>) {
     return std::sqrt(x);
+  } else if constexpr (sizeof(T) < 64) {
+    using std::sqrt;
+    return sqrt(x);  // (std::experimental's, found by the pack's type)
   } else {
     return T([&](auto lane) { return std::sqrt(x[lane]); });
   }
