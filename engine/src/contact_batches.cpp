@@ -203,8 +203,8 @@ void contact_solver::solve_group(const batch_group& group, const sweep_kind& kin
 }
 
 void contact_solver::solve_part(std::size_t part, const sweep_kind& kind, sweep_result& result) {
-  if (paired_) {  // (then nothing goes on batches)
-    solve_paired_part(part, kind, result);
+  if (plain_lanes_ > 0) {  // (then nothing goes on batches)
+    solve_plain_part(part, kind, result);
     return;
   }
   for (std::size_t g = part_groups_[part]; g < part_groups_[part + 1]; ++g) {

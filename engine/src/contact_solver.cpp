@@ -878,9 +878,9 @@ void contact_solver::solve_contacts(const world_settings& settings) {
   // (Every contact plain and none on batches: the sweeps read half a body
   // each, detail::plain_body.)
   plain_sweeps_ = !settling_ && groups_.empty();
-  paired_ = plain_sweeps_ && pairs_plain_contacts();
+  plain_lanes_ = plain_sweeps_ ? plain_lanes() : 0;
   if (plain_sweeps_) copy_to_plain_bodies();
-  if (paired_) pair_plain_contacts();
+  if (plain_lanes_ > 0) put_plain_contacts();
   sweep_colours(
       sweeps,
       [&](int sweep, std::size_t colour, std::size_t block, detail::contact_colouring::part p,
@@ -891,7 +891,7 @@ void contact_solver::solve_contacts(const world_settings& settings) {
         solve_runs(sequential, runs, kind_of(sweep), result);
       },
       converged);
-  if (paired_) store_paired_impulses();
+  if (plain_lanes_ > 0) store_plain_impulses();
   if (plain_sweeps_) copy_from_plain_bodies();
 }
 
@@ -936,7 +936,7 @@ void contact_solver::solve_runs(std::size_t first_run, std::size_t end_run, cons
 // rows turn it, stepped 1-3% slower without.
 //
 // (In double with SSE2, the colours' plain sweeps take their contacts two
-// at a time instead: solve_paired_part, plain_pairs.hpp.)
+// or four at a time instead: solve_plain_part, plain_pairs.hpp.)
 template <class Body>
 void contact_solver::solve_plain_contacts(std::size_t first, std::size_t end,
                                           const sweep_kind& kind, std::vector<Body>& bodies,

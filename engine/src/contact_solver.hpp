@@ -431,22 +431,29 @@ class contact_solver {
   bool plain_sweeps_ = false;
   void copy_to_plain_bodies();
   void copy_from_plain_bodies();
-  // Plain sweeps in double with SSE2 (paired_, pairs_plain_contacts) solve
-  // each part's contacts two at a time (plain_pairs.hpp): part p's pairs are
-  // plain_pairs_[part_pairs_[p].first .. part_pairs_[p].second), from its
-  // first slot on, and pair_slots_ holds each pair's two slots (no_slot for
-  // an empty lane). The last of plain_bodies_ is the empty lanes' spare.
+  // Plain sweeps in double on x86-64 (plain_lanes_, from plain_lanes: 2,
+  // or 4 where the processor has AVX; 0 elsewhere) solve each part's
+  // contacts that many at a time (plain_pairs.hpp): part p's records are
+  // plain_pairs_ (or plain_quads_) [part_records_[p].first ..
+  // part_records_[p].second), from its first slot on, and lane_slots_ holds
+  // each record's slots, W a record (no_slot for an empty lane). Past the
+  // bodies' places, plain_bodies_ holds the empty lanes' spare, without
+  // mass (spare_place).
   static constexpr std::uint32_t no_slot = ~std::uint32_t{0};
   std::vector<detail::plain_pair> plain_pairs_;
-  std::vector<std::array<std::uint32_t, 2>> pair_slots_;
-  std::vector<std::pair<std::size_t, std::size_t>> part_pairs_;
-  bool paired_ = false;
-  static bool pairs_plain_contacts();
-  void pair_plain_contacts();
-  void store_paired_impulses();
-  void solve_paired_part(std::size_t part, const sweep_kind& kind, sweep_result& result);
+  std::vector<detail::plain_quad> plain_quads_;
+  std::vector<std::uint32_t> lane_slots_;
+  std::vector<std::pair<std::size_t, std::size_t>> part_records_;
+  int plain_lanes_ = 0;
+  std::uint32_t spare_place() const { return static_cast<std::uint32_t>(solver_bodies_.size()); }
+  static int plain_lanes();
+  void put_plain_contacts();
+  template <int W>
+  void put_in_lanes(std::vector<detail::plain_lanes<W>>& records);
+  void store_plain_impulses();
+  void solve_plain_part(std::size_t part, const sweep_kind& kind, sweep_result& result);
   template <bool last>
-  void solve_pairs(std::size_t first, std::size_t end, sweep_result& result);
+  void solve_plain_records(std::size_t first, std::size_t end, sweep_result& result);
   // visit(part) for every part of the sweeps, each on the thread whose sweeps
   // solve it (its rows come to that core).
   template <class Visit>

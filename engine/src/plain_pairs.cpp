@@ -1,6 +1,7 @@
-// The plain sweeps of a double engine with SSE2 on pairs of contacts
-// (plain_pairs.hpp): each part's contacts paired before the sweeps, solved
-// two at a time in them, their impulses back into the constraints after.
+// The plain sweeps of a double engine on x86-64 on several contacts at
+// once (plain_pairs.hpp): each part's contacts put in lanes before the
+// sweeps, solved two or four at a time in them, their impulses back into
+// the constraints after.
 #include "plain_pairs.hpp"
 
 #include <algorithm>
@@ -8,36 +9,164 @@
 
 #include "contact_solver.hpp"
 
+// Four lanes need AVX, which the x86-64 baseline the engine is built for
+// lacks: the function that solves them is built for it on its own
+// (target("avx")), and called only where the processor has it.
+#if defined(__SSE2__) && defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define GAPHYS_PLAIN_QUADS 1
+#include <immintrin.h>
+#define GAPHYS_AVX __attribute__((target("avx")))
+#else
+#define GAPHYS_PLAIN_QUADS 0
+#endif
+
 namespace gaphys {
 
-bool contact_solver::pairs_plain_contacts() {
+namespace detail {
+
+int widest_plain_lanes_allowed = 4;
+
+int plain_lanes_here() {
+#if GAPHYS_PLAIN_QUADS
+  // (Whether the processor and the system both keep AVX's registers.)
+  static const bool avx = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx") != 0;
+  }();
+  if (avx && widest_plain_lanes_allowed >= 4) return 4;
+#endif
+  return 2;
+}
+
+#if GAPHYS_PLAIN_QUADS
+
+namespace {
+
+// x, y, z and inverse mass of the plain bodies at four places, each in the
+// four lanes (a 4 x 4 transpose of their rows).
+template <class Body>
+GAPHYS_AVX inline __attribute__((always_inline)) void gather_bodies(const Body* at,
+                                                                    const std::uint32_t* place,
+                                                                    __m256d& x, __m256d& y,
+                                                                    __m256d& z, __m256d& m) {
+  static_assert(sizeof(Body) == 32 && alignof(Body) == 32 && offsetof(Body, inverse_mass) == 24);
+  const __m256d r0 = _mm256_load_pd(&at[place[0]].velocity.c[0]);  // x0 y0 z0 m0
+  const __m256d r1 = _mm256_load_pd(&at[place[1]].velocity.c[0]);
+  const __m256d r2 = _mm256_load_pd(&at[place[2]].velocity.c[0]);
+  const __m256d r3 = _mm256_load_pd(&at[place[3]].velocity.c[0]);
+  const __m256d xz01 = _mm256_unpacklo_pd(r0, r1), ym01 = _mm256_unpackhi_pd(r0, r1);
+  const __m256d xz23 = _mm256_unpacklo_pd(r2, r3), ym23 = _mm256_unpackhi_pd(r2, r3);
+  x = _mm256_permute2f128_pd(xz01, xz23, 0x20);
+  z = _mm256_permute2f128_pd(xz01, xz23, 0x31);
+  y = _mm256_permute2f128_pd(ym01, ym23, 0x20);
+  m = _mm256_permute2f128_pd(ym01, ym23, 0x31);
+}
+
+// The lanes' velocities back into the bodies with mass (their inverse
+// masses, m, are stored as they were read).
+template <class Body>
+GAPHYS_AVX inline __attribute__((always_inline)) void scatter_bodies(Body* at,
+                                                                     const std::uint32_t* place,
+                                                                     __m256d x, __m256d y,
+                                                                     __m256d z, __m256d m) {
+  const __m256d xy02 = _mm256_unpacklo_pd(x, y), xy13 = _mm256_unpackhi_pd(x, y);
+  const __m256d zm02 = _mm256_unpacklo_pd(z, m), zm13 = _mm256_unpackhi_pd(z, m);
+  const __m256d rows[4] = {
+      _mm256_permute2f128_pd(xy02, zm02, 0x20), _mm256_permute2f128_pd(xy13, zm13, 0x20),
+      _mm256_permute2f128_pd(xy02, zm02, 0x31), _mm256_permute2f128_pd(xy13, zm13, 0x31)};
+  // (!(m > 0), as solve_plain_pair: a NaN mass is no mass.)
+  const int moving = _mm256_movemask_pd(_mm256_cmp_pd(m, _mm256_setzero_pd(), _CMP_GT_OQ));
+  for (int lane = 0; lane < 4; ++lane) {
+    if (moving & (1 << lane)) _mm256_store_pd(&at[place[lane]].velocity.c[0], rows[lane]);
+  }
+}
+
+// One sweep of quads [first, end): solve_plain_pair's operations, in its
+// order, on four lanes.
+template <bool last, class Body>
+GAPHYS_AVX void solve_plain_quads(plain_quad* quads, std::size_t first, std::size_t end, Body* at,
+                                  double& largest) {
+  const __m256d zero = _mm256_setzero_pd();
+  __m256d most = zero;
+  for (std::size_t q = first; q < end; ++q) {
+    plain_quad& p = quads[q];
+    __m256d ax, ay, az, am, bx, by, bz, bm;
+    gather_bodies(at, p.place_a, ax, ay, az, am);
+    gather_bodies(at, p.place_b, bx, by, bz, bm);
+    const __m256d nx = _mm256_load_pd(p.normal_x), ny = _mm256_load_pd(p.normal_y);
+    const __m256d nz = _mm256_load_pd(p.normal_z);
+    __m256d speed = _mm256_mul_pd(_mm256_sub_pd(ax, bx), nx);
+    speed = _mm256_add_pd(speed, _mm256_mul_pd(_mm256_sub_pd(ay, by), ny));
+    speed = _mm256_add_pd(speed, _mm256_mul_pd(_mm256_sub_pd(az, bz), nz));
+    const __m256d relaxation = last ? _mm256_set1_pd(1) : _mm256_load_pd(p.relaxation);
+    const __m256d closing = _mm256_sub_pd(_mm256_load_pd(p.target_speed), speed);
+    const __m256d wanted =
+        _mm256_mul_pd(_mm256_mul_pd(relaxation, closing), _mm256_load_pd(p.normal_mass));
+    const __m256d accumulated = _mm256_load_pd(p.accumulated);
+    const __m256d total = _mm256_max_pd(zero, _mm256_add_pd(accumulated, wanted));
+    const __m256d j = _mm256_sub_pd(total, accumulated);
+    _mm256_store_pd(p.accumulated, total);
+    const __m256d magnitude = _mm256_andnot_pd(_mm256_set1_pd(-0.0), j);
+    most = _mm256_max_pd(most, _mm256_mul_pd(magnitude, _mm256_load_pd(p.mass_inverse)));
+    const __m256d ja = _mm256_mul_pd(j, am), jb = _mm256_mul_pd(j, bm);
+    ax = _mm256_add_pd(ax, _mm256_mul_pd(ja, nx));
+    ay = _mm256_add_pd(ay, _mm256_mul_pd(ja, ny));
+    az = _mm256_add_pd(az, _mm256_mul_pd(ja, nz));
+    bx = _mm256_sub_pd(bx, _mm256_mul_pd(jb, nx));
+    by = _mm256_sub_pd(by, _mm256_mul_pd(jb, ny));
+    bz = _mm256_sub_pd(bz, _mm256_mul_pd(jb, nz));
+    scatter_bodies(at, p.place_a, ax, ay, az, am);
+    scatter_bodies(at, p.place_b, bx, by, bz, bm);
+  }
+  // (The largest of numbers, none a NaN, does not depend on their order.)
+  const __m128d half = _mm_max_pd(_mm256_castpd256_pd128(most), _mm256_extractf128_pd(most, 1));
+  const __m128d one = _mm_max_sd(half, _mm_unpackhi_pd(half, half));
+  largest = std::max(largest, _mm_cvtsd_f64(one));
+}
+
+}  // namespace
+
+#endif
+
+}  // namespace detail
+
+int contact_solver::plain_lanes() {
 #if defined(__SSE2__)
-  return std::is_same_v<real, double>;
+  return std::is_same_v<real, double> ? detail::plain_lanes_here() : 0;
 #else
-  return false;
+  return 0;
 #endif
 }
 
+void contact_solver::put_plain_contacts() {
+  if (plain_lanes_ == 4) {
+    put_in_lanes(plain_quads_);
+  } else {
+    put_in_lanes(plain_pairs_);
+  }
+}
+
 // Each part's contacts, from its first slot on, in the order the sweeps
-// solved them one by one: two contacts in a row of different runs into one
-// pair, a contact without one into a pair of its own; contacts the sweeps
-// leave out into none. Part p's pairs start where its slots do (it has no
-// more pairs than slots).
-void contact_solver::pair_plain_contacts() {
+// solved them one by one: up to W contacts in a row of different runs into
+// one record, the lanes left empty; contacts the sweeps leave out into none.
+// Part p's records start where its slots do (it has no more records than
+// slots).
+template <int W>
+void contact_solver::put_in_lanes(std::vector<detail::plain_lanes<W>>& records) {
   const std::size_t count = constraints_.size();
-  const auto spare = static_cast<std::uint32_t>(plain_bodies_.size() - 1);
-  plain_pairs_.resize(count);
-  pair_slots_.resize(count);
-  part_pairs_.resize(colouring_.colours() * static_cast<std::size_t>(sweep_threads_) * 2);
+  const std::uint32_t spare = spare_place();
+  records.resize(count);
+  lane_slots_.resize(count * W);
+  part_records_.resize(colouring_.colours() * static_cast<std::size_t>(sweep_threads_) * 2);
   for_each_part([&](std::size_t part) {
     const auto [first_run, end_run] = part_runs(part);
     const std::size_t first = colouring_.run_starts[first_run];
     const std::size_t end = colouring_.run_starts[end_run];
     std::size_t out = first;
-    // Lane `lane` of pair `out`: slot s's contact, or none (no_slot).
+    // Lane `lane` of record `out`: slot s's contact, or none (no_slot).
     const auto put = [&](int lane, std::uint32_t s) {
-      detail::plain_pair& p = plain_pairs_[out];
-      pair_slots_[out][lane] = s;
+      detail::plain_lanes<W>& p = records[out];
+      lane_slots_[out * W + static_cast<std::size_t>(lane)] = s;
       if (s == no_slot) {
         p.normal_x[lane] = p.normal_y[lane] = p.normal_z[lane] = 0;
         p.target_speed[lane] = p.normal_mass[lane] = p.accumulated[lane] = 0;
@@ -58,69 +187,87 @@ void contact_solver::pair_plain_contacts() {
       p.place_a[lane] = k.place_a;
       p.place_b[lane] = k.place_b;
     };
-    for (std::size_t s = first; s < end;) {
-      const constraint& k0 = constraints_[s];
-      if (left_out(k0)) {
-        ++s;
-        continue;
+    std::size_t s = first;
+    while (s < end) {
+      int lane = 0;
+      const constraint* last = nullptr;
+      for (; lane < W && s < end; ++s) {
+        const constraint& k = constraints_[s];
+        if (left_out(k)) continue;
+        // (Contacts of one run share their bodies: one after the other.)
+        if (last && k.place_a == last->place_a && k.place_b == last->place_b) break;
+        put(lane++, static_cast<std::uint32_t>(s));
+        last = &k;
       }
-      put(0, static_cast<std::uint32_t>(s));
-      // (Contacts of one run share their bodies: one after the other.)
-      const bool two =
-          s + 1 < end && !left_out(constraints_[s + 1]) &&
-          (constraints_[s + 1].place_a != k0.place_a || constraints_[s + 1].place_b != k0.place_b);
-      put(1, two ? static_cast<std::uint32_t>(s + 1) : no_slot);
-      s += two ? 2 : 1;
+      if (lane == 0) break;  // (only contacts left out were left)
+      for (int empty = lane; empty < W; ++empty) put(empty, no_slot);
       ++out;
     }
-    part_pairs_[part] = {first, out};
+    part_records_[part] = {first, out};
   });
 }
 
-// The pairs' impulses back into their constraints (store_impulses reads
+// The records' impulses back into their constraints (store_impulses reads
 // them there).
-void contact_solver::store_paired_impulses() {
-  for_each_part([&](std::size_t part) {
-    const auto [first, end] = part_pairs_[part];
-    for (std::size_t at = first; at < end; ++at) {
-      for (int lane = 0; lane < 2; ++lane) {
-        const std::uint32_t s = pair_slots_[at][lane];
-        if (s != no_slot) constraints_[s].accumulated = plain_pairs_[at].accumulated[lane];
+void contact_solver::store_plain_impulses() {
+  const auto store = [&](const auto& records, auto lanes) {
+    constexpr std::size_t W = decltype(lanes)::value;
+    for_each_part([&](std::size_t part) {
+      const auto [first, end] = part_records_[part];
+      for (std::size_t at = first; at < end; ++at) {
+        for (std::size_t lane = 0; lane < W; ++lane) {
+          const std::uint32_t s = lane_slots_[at * W + lane];
+          if (s != no_slot) constraints_[s].accumulated = records[at].accumulated[lane];
+        }
       }
-    }
-  });
+    });
+  };
+  if (plain_lanes_ == 4) {
+    store(plain_quads_, std::integral_constant<std::size_t, 4>{});
+  } else {
+    store(plain_pairs_, std::integral_constant<std::size_t, 2>{});
+  }
 }
 
-// One sweep of part `part`'s pairs.
-void contact_solver::solve_paired_part(std::size_t part, const sweep_kind& kind,
-                                       sweep_result& result) {
+// One sweep of part `part`'s records.
+void contact_solver::solve_plain_part(std::size_t part, const sweep_kind& kind,
+                                      sweep_result& result) {
   // (Past solver_iterations only contacts that turn a body are solved.)
   if (kind.turning_only) return;
-  const auto [first, end] = part_pairs_[part];
+  const auto [first, end] = part_records_[part];
   if (first == end) return;
   if (kind.last_of_all) {
-    solve_pairs<true>(first, end, result);
+    solve_plain_records<true>(first, end, result);
   } else {
-    solve_pairs<false>(first, end, result);
+    solve_plain_records<false>(first, end, result);
   }
 }
 
 template <bool last>
-void contact_solver::solve_pairs(std::size_t first, std::size_t end, sweep_result& result) {
+void contact_solver::solve_plain_records(std::size_t first, std::size_t end, sweep_result& result) {
 #if defined(__SSE2__)
   if constexpr (std::is_same_v<real, double>) {
-    // (In locals: GCC read the arrays' addresses again for every pair, as
+    // (In locals: GCC read the arrays' addresses again for every record, as
     // its stores might have changed them.)
-    detail::plain_pair* const pairs = plain_pairs_.data();
     detail::plain_body* const at = plain_bodies_.data();
-    // The largest change in either lane (the largest of numbers, none a
-    // NaN, does not depend on the order they come in).
-    __m128d largest = _mm_setzero_pd();
-    for (std::size_t p = first; p < end; ++p) detail::solve_plain_pair<last>(pairs[p], at, largest);
-    const __m128d larger = _mm_max_sd(largest, _mm_unpackhi_pd(largest, largest));
+    double largest_change = 0;
+#if GAPHYS_PLAIN_QUADS
+    if (plain_lanes_ == 4) {
+      detail::solve_plain_quads<last>(plain_quads_.data(), first, end, at, largest_change);
+    }
+#endif
+    if (plain_lanes_ == 2) {
+      detail::plain_pair* const pairs = plain_pairs_.data();
+      // The largest change in either lane (the largest of numbers, none a
+      // NaN, does not depend on the order they come in).
+      __m128d largest = _mm_setzero_pd();
+      for (std::size_t p = first; p < end; ++p) {
+        detail::solve_plain_pair<last>(pairs[p], at, largest);
+      }
+      largest_change = _mm_cvtsd_f64(_mm_max_sd(largest, _mm_unpackhi_pd(largest, largest)));
+    }
     result.any = true;
-    result.largest_change =
-        std::max(result.largest_change, static_cast<real>(_mm_cvtsd_f64(larger)));
+    result.largest_change = std::max(result.largest_change, static_cast<real>(largest_change));
   }
 #endif
 }

@@ -1,14 +1,18 @@
-// Plain contacts (frictionless, through the centres) two at a time, a lane
-// each, for the sweeps of a double engine with SSE2: what the sweeps read of
-// two contacts of one colour, laid out as the two lanes of each number
-// (plain_pair), and one sweep's solve of them (solve_plain_pair).
+// Plain contacts (frictionless, through the centres) several at a time, a
+// lane each, for the sweeps of a double engine on x86-64: what the sweeps
+// read of W contacts of one colour, laid out as the W lanes of each number
+// (plain_lanes), and one sweep's solve of them: two lanes with SSE2
+// (solve_plain_pair), four with AVX where the processor has it
+// (plain_pairs.cpp's solve_plain_quads, chosen at run time: the engine is
+// built for the x86-64 baseline, which has no AVX).
 //
-// The lanes are two contacts of different runs of one colour, next to each
+// The lanes are W contacts of different runs of one colour, next to each
 // other in the sweeps' order, whose moving bodies therefore differ; where a
-// contact has no such neighbour, lane 1 is empty: no mass, against a spare
-// body without mass (the last of the plain bodies), and its impulse is zero. Each lane takes
-// the same operations on the same numbers as contact_solver::solve_plain
-// on the contact alone, so the sweeps end with the same bits either way.
+// contact has fewer such neighbours, the lanes left are empty: no mass,
+// against a spare body without mass (contact_solver::spare_place), and
+// their impulses are zero. Each lane takes the same operations on the same
+// numbers as contact_solver::solve_plain on the contact alone, so the
+// sweeps end with the same bits on any width.
 #pragma once
 
 #include <cstddef>
@@ -23,14 +27,24 @@
 
 namespace gaphys::detail {
 
-// Two contacts' rows: each number's two lanes side by side, so that a sweep
+// W contacts' rows: each number's W lanes side by side, so that a sweep
 // loads each with one instruction (picked from two constraints, each took
 // two, and the sweeps more than a fifth of their instructions).
-struct alignas(16) plain_pair {
-  double normal_x[2], normal_y[2], normal_z[2];  // n, from B to A
-  double target_speed[2], relaxation[2], normal_mass[2], accumulated[2], mass_inverse[2];
-  std::uint32_t place_a[2], place_b[2];  // the bodies' places in the plain bodies
+template <int W>
+struct alignas(8 * W) plain_lanes {
+  double normal_x[W], normal_y[W], normal_z[W];  // n, from B to A
+  double target_speed[W], relaxation[W], normal_mass[W], accumulated[W], mass_inverse[W];
+  std::uint32_t place_a[W], place_b[W];  // the bodies' places in the plain bodies
 };
+using plain_pair = plain_lanes<2>;
+using plain_quad = plain_lanes<4>;
+
+// The widest plain lanes this processor takes: 4 where it has AVX (and the
+// engine is built for x86-64 with GCC or Clang), else 2; at most
+// `widest_plain_lanes_allowed` (4; the tests lower it to step the two-lane
+// sweeps beside the four-lane ones).
+int plain_lanes_here();
+extern int widest_plain_lanes_allowed;
 
 #if defined(__SSE2__)
 

@@ -115,8 +115,8 @@ void contact_solver::place_bodies(const std::vector<body>& bodies,
 
 void contact_solver::copy_to_plain_bodies() {
   // (And a spare, the empty lanes' body: plain_pairs.hpp.)
-  plain_bodies_.resize(solver_bodies_.size() + 1);
-  plain_bodies_.back() = {};
+  plain_bodies_.resize(spare_place() + 1);
+  plain_bodies_[spare_place()] = {};
   for_each_place([&](std::size_t p) {
     plain_bodies_[p] = {solver_bodies_[p].velocity, solver_bodies_[p].inverse_mass};
   });

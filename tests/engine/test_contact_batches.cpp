@@ -9,6 +9,7 @@
 #include "contact_batch.hpp"
 #include "engine_test_support.hpp"
 #include "gaphys/scenes.hpp"
+#include "plain_pairs.hpp"
 
 namespace gaphys::testing {
 namespace {
@@ -114,10 +115,10 @@ TEST_F(contact_batches_test, every_catalogued_scene_steps_alike) {
 // Frictionless spheres resting on a static body made of spheres (an egg
 // crate), each in the hollow between four of its shapes: runs of up to four
 // contacts, all plain. One by one in double, the sweeps take plain contacts
-// two at a time, each with a contact of another run (plain_pairs.hpp), and
-// a run's contacts one after another; they must end where the batches and
-// the scalar solve do.
-TEST_F(contact_batches_test, frictionless_spheres_on_a_compound_step_alike_in_pairs) {
+// two or four at a time, each beside contacts of other runs
+// (plain_pairs.hpp), and a run's contacts one after another; they must end
+// where the batches and the scalar solve do.
+TEST_F(contact_batches_test, frictionless_spheres_on_a_compound_step_alike_in_lanes) {
   const auto egg_crate = [] {
     world_settings settings;
     settings.sleeping = false;
@@ -157,8 +158,46 @@ TEST_F(contact_batches_test, frictionless_spheres_on_a_compound_step_alike_in_pa
     longest_run = std::max(longest_run, run);
   }
   EXPECT_GE(longest_run, 3u);
-  EXPECT_TRUE(step_alike(egg_crate(), egg_crate(), 240));
-  EXPECT_TRUE(step_alike(egg_crate(), egg_crate(), 240, 2));
+  // (In four lanes where the processor has AVX, and in two.)
+  struct lanes_restored {
+    ~lanes_restored() { detail::widest_plain_lanes_allowed = 4; }
+  } restore;
+  for (const int widest : {4, 2}) {
+    detail::widest_plain_lanes_allowed = widest;
+    EXPECT_TRUE(step_alike(egg_crate(), egg_crate(), 240)) << widest << " lanes";
+    EXPECT_TRUE(step_alike(egg_crate(), egg_crate(), 240, 2)) << widest << " lanes";
+  }
+}
+
+// The plain sweeps four contacts at a time (AVX, where the processor has
+// it) and two at a time (SSE2) end with the same bits: stepped in turn,
+// each at its width, two worlds stay alike step by step, on one thread and
+// on two, in a pile and on the compound whose runs hold several contacts.
+TEST_F(contact_batches_test, plain_sweeps_in_four_lanes_step_as_in_two) {
+  if (!std::is_same_v<real, double> || detail::plain_lanes_here() < 4) {
+    GTEST_SKIP() << "the plain sweeps take four lanes only in double, with AVX";
+  }
+  struct lanes_restored {
+    ~lanes_restored() { detail::widest_plain_lanes_allowed = 4; }
+  } restore;
+  const auto alike = [](world four, world two, int steps, int threads) {
+    four.set_threads(threads);
+    two.set_threads(threads);
+    for (int i = 0; i < steps; ++i) {
+      detail::widest_plain_lanes_allowed = 4;
+      four.step(h);
+      detail::widest_plain_lanes_allowed = 2;
+      two.step(h);
+      if (four.state_hash() != two.state_hash()) {
+        return ::testing::AssertionFailure() << "the states differ after step " << i + 1;
+      }
+    }
+    return ::testing::AssertionSuccess();
+  };
+  for (const int threads : {1, 2}) {
+    EXPECT_TRUE(alike(scenes::falling_spheres_in_box(300), scenes::falling_spheres_in_box(300), 240,
+                      threads));
+  }
 }
 
 TEST_F(contact_batches_test, batches_on_two_threads_step_as_one_by_one_on_one) {
