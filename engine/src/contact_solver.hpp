@@ -432,9 +432,9 @@ class contact_solver {
   void copy_to_plain_bodies();
   void copy_from_plain_bodies();
   // Plain sweeps in double on x86-64 (plain_lanes_, from plain_lanes: 2,
-  // or 4 where the processor has AVX; 0 elsewhere) solve each part's
-  // contacts that many at a time (plain_pairs.hpp): part p's records are
-  // plain_pairs_ (or plain_quads_) [part_records_[p].first ..
+  // or 4 with AVX, 8 with AVX-512; 0 elsewhere) solve each part's contacts
+  // that many at a time (plain_pairs.hpp): part p's records are
+  // plain_pairs_ (plain_quads_, plain_octets_) [part_records_[p].first ..
   // part_records_[p].second), from its first slot on, and lane_slots_ holds
   // each record's slots, W a record (no_slot for an empty lane). Past the
   // bodies' places, plain_bodies_ holds the empty lanes' spare, without
@@ -442,6 +442,7 @@ class contact_solver {
   static constexpr std::uint32_t no_slot = ~std::uint32_t{0};
   std::vector<detail::plain_pair> plain_pairs_;
   std::vector<detail::plain_quad> plain_quads_;
+  std::vector<detail::plain_octet> plain_octets_;
   std::vector<std::uint32_t> lane_slots_;
   std::vector<std::pair<std::size_t, std::size_t>> part_records_;
   int plain_lanes_ = 0;

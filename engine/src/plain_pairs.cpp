@@ -9,13 +9,14 @@
 
 #include "contact_solver.hpp"
 
-// Four lanes need AVX, which the x86-64 baseline the engine is built for
-// lacks: the function that solves them is built for it on its own
-// (target("avx")), and called only where the processor has it.
+// Four lanes need AVX and eight AVX-512, which the x86-64 baseline the
+// engine is built for lacks: the functions that solve them are built for
+// those on their own (target), and called only where the processor has them.
 #if defined(__SSE2__) && defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define GAPHYS_PLAIN_QUADS 1
 #include <immintrin.h>
 #define GAPHYS_AVX __attribute__((target("avx")))
+#define GAPHYS_AVX512 __attribute__((target("avx512f")))
 #else
 #define GAPHYS_PLAIN_QUADS 0
 #endif
@@ -24,18 +25,19 @@ namespace gaphys {
 
 namespace detail {
 
-int widest_plain_lanes_allowed = 4;
+int widest_plain_lanes_allowed = 8;
 
 int plain_lanes_here() {
 #if GAPHYS_PLAIN_QUADS
-  // (Whether the processor and the system both keep AVX's registers.)
-  static const bool avx = [] {
+  // The widest the processor has (and the system keeps the registers of).
+  static const int widest = [] {
     __builtin_cpu_init();
-    return __builtin_cpu_supports("avx") != 0;
+    return __builtin_cpu_supports("avx512f") ? 8 : __builtin_cpu_supports("avx") ? 4 : 2;
   }();
-  if (avx && widest_plain_lanes_allowed >= 4) return 4;
-#endif
+  return std::min(widest, std::max(widest_plain_lanes_allowed, 2));
+#else
   return 2;
+#endif
 }
 
 #if GAPHYS_PLAIN_QUADS
@@ -124,6 +126,112 @@ GAPHYS_AVX void solve_plain_quads(plain_quad* quads, std::size_t first, std::siz
   largest = std::max(largest, _mm_cvtsd_f64(one));
 }
 
+// (GCC 12's AVX-512 intrinsics pass _mm512_undefined_pd() where a result
+// takes no lane from it, and GCC then warns that it is, or may be, used
+// uninitialized.)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
+
+// x, y, z and inverse mass of the plain bodies at eight places, each in the
+// eight lanes: rows k and k + 4 side by side in a, then their x and z, y and
+// m in pairs (unpack), then each number's pairs together (permute).
+template <class Body>
+GAPHYS_AVX512 inline __attribute__((always_inline)) void gather_bodies(const Body* at,
+                                                                       const std::uint32_t* place,
+                                                                       __m512d& x, __m512d& y,
+                                                                       __m512d& z, __m512d& m) {
+  static_assert(sizeof(Body) == 32 && alignof(Body) == 32 && offsetof(Body, inverse_mass) == 24);
+  __m512d a[4];
+  for (int k = 0; k < 4; ++k) {
+    const __m256d low = _mm256_load_pd(&at[place[k]].velocity.c[0]);
+    const __m256d high = _mm256_load_pd(&at[place[k + 4]].velocity.c[0]);
+    a[k] = _mm512_insertf64x4(_mm512_castpd256_pd512(low), high, 1);
+  }
+  const __m512d xz01 = _mm512_unpacklo_pd(a[0], a[1]);  // x0 x1 z0 z1 x4 x5 z4 z5
+  const __m512d ym01 = _mm512_unpackhi_pd(a[0], a[1]);  // y0 y1 m0 m1 y4 y5 m4 m5
+  const __m512d xz23 = _mm512_unpacklo_pd(a[2], a[3]);
+  const __m512d ym23 = _mm512_unpackhi_pd(a[2], a[3]);
+  const __m512i first = _mm512_setr_epi64(0, 1, 8, 9, 4, 5, 12, 13);
+  const __m512i second = _mm512_setr_epi64(2, 3, 10, 11, 6, 7, 14, 15);
+  x = _mm512_permutex2var_pd(xz01, first, xz23);
+  z = _mm512_permutex2var_pd(xz01, second, xz23);
+  y = _mm512_permutex2var_pd(ym01, first, ym23);
+  m = _mm512_permutex2var_pd(ym01, second, ym23);
+}
+
+// The eight lanes' velocities back into the bodies with mass (the gather's
+// steps undone).
+template <class Body>
+GAPHYS_AVX512 inline __attribute__((always_inline)) void scatter_bodies(Body* at,
+                                                                        const std::uint32_t* place,
+                                                                        __m512d x, __m512d y,
+                                                                        __m512d z, __m512d m) {
+  const __m512i first = _mm512_setr_epi64(0, 1, 8, 9, 4, 5, 12, 13);
+  const __m512i second = _mm512_setr_epi64(2, 3, 10, 11, 6, 7, 14, 15);
+  const __m512d xz01 = _mm512_permutex2var_pd(x, first, z);
+  const __m512d xz23 = _mm512_permutex2var_pd(x, second, z);
+  const __m512d ym01 = _mm512_permutex2var_pd(y, first, m);
+  const __m512d ym23 = _mm512_permutex2var_pd(y, second, m);
+  const __m512d a[4] = {_mm512_unpacklo_pd(xz01, ym01), _mm512_unpackhi_pd(xz01, ym01),
+                        _mm512_unpacklo_pd(xz23, ym23), _mm512_unpackhi_pd(xz23, ym23)};
+  // (!(m > 0), as solve_plain_pair: a NaN mass is no mass.)
+  const unsigned moving = _mm512_cmp_pd_mask(m, _mm512_setzero_pd(), _CMP_GT_OQ);
+  for (int k = 0; k < 4; ++k) {
+    if (moving & (1u << k))
+      _mm256_store_pd(&at[place[k]].velocity.c[0], _mm512_castpd512_pd256(a[k]));
+    if (moving & (1u << (k + 4))) {
+      _mm256_store_pd(&at[place[k + 4]].velocity.c[0], _mm512_extractf64x4_pd(a[k], 1));
+    }
+  }
+}
+
+// One sweep of octets [first, end): solve_plain_pair's operations, in its
+// order, on eight lanes.
+template <bool last, class Body>
+GAPHYS_AVX512 void solve_plain_octets(plain_octet* octets, std::size_t first, std::size_t end,
+                                      Body* at, double& largest) {
+  const __m512d zero = _mm512_setzero_pd();
+  __m512d most = zero;
+  for (std::size_t o = first; o < end; ++o) {
+    plain_octet& p = octets[o];
+    __m512d ax, ay, az, am, bx, by, bz, bm;
+    gather_bodies(at, p.place_a, ax, ay, az, am);
+    gather_bodies(at, p.place_b, bx, by, bz, bm);
+    const __m512d nx = _mm512_load_pd(p.normal_x), ny = _mm512_load_pd(p.normal_y);
+    const __m512d nz = _mm512_load_pd(p.normal_z);
+    __m512d speed = _mm512_mul_pd(_mm512_sub_pd(ax, bx), nx);
+    speed = _mm512_add_pd(speed, _mm512_mul_pd(_mm512_sub_pd(ay, by), ny));
+    speed = _mm512_add_pd(speed, _mm512_mul_pd(_mm512_sub_pd(az, bz), nz));
+    const __m512d relaxation = last ? _mm512_set1_pd(1) : _mm512_load_pd(p.relaxation);
+    const __m512d closing = _mm512_sub_pd(_mm512_load_pd(p.target_speed), speed);
+    const __m512d wanted =
+        _mm512_mul_pd(_mm512_mul_pd(relaxation, closing), _mm512_load_pd(p.normal_mass));
+    const __m512d accumulated = _mm512_load_pd(p.accumulated);
+    const __m512d total = _mm512_max_pd(zero, _mm512_add_pd(accumulated, wanted));
+    const __m512d j = _mm512_sub_pd(total, accumulated);
+    _mm512_store_pd(p.accumulated, total);
+    const __m512d magnitude = _mm512_abs_pd(j);
+    most = _mm512_max_pd(most, _mm512_mul_pd(magnitude, _mm512_load_pd(p.mass_inverse)));
+    const __m512d ja = _mm512_mul_pd(j, am), jb = _mm512_mul_pd(j, bm);
+    ax = _mm512_add_pd(ax, _mm512_mul_pd(ja, nx));
+    ay = _mm512_add_pd(ay, _mm512_mul_pd(ja, ny));
+    az = _mm512_add_pd(az, _mm512_mul_pd(ja, nz));
+    bx = _mm512_sub_pd(bx, _mm512_mul_pd(jb, nx));
+    by = _mm512_sub_pd(by, _mm512_mul_pd(jb, ny));
+    bz = _mm512_sub_pd(bz, _mm512_mul_pd(jb, nz));
+    scatter_bodies(at, p.place_a, ax, ay, az, am);
+    scatter_bodies(at, p.place_b, bx, by, bz, bm);
+  }
+  // (The largest of numbers, none a NaN, does not depend on their order.)
+  const __m256d half = _mm256_max_pd(_mm512_castpd512_pd256(most), _mm512_extractf64x4_pd(most, 1));
+  const __m128d quarter = _mm_max_pd(_mm256_castpd256_pd128(half), _mm256_extractf128_pd(half, 1));
+  const __m128d one = _mm_max_sd(quarter, _mm_unpackhi_pd(quarter, quarter));
+  largest = std::max(largest, _mm_cvtsd_f64(one));
+}
+
+#pragma GCC diagnostic pop
+
 }  // namespace
 
 #endif
@@ -139,7 +247,9 @@ int contact_solver::plain_lanes() {
 }
 
 void contact_solver::put_plain_contacts() {
-  if (plain_lanes_ == 4) {
+  if (plain_lanes_ == 8) {
+    put_in_lanes(plain_octets_);
+  } else if (plain_lanes_ == 4) {
     put_in_lanes(plain_quads_);
   } else {
     put_in_lanes(plain_pairs_);
@@ -222,7 +332,9 @@ void contact_solver::store_plain_impulses() {
       }
     });
   };
-  if (plain_lanes_ == 4) {
+  if (plain_lanes_ == 8) {
+    store(plain_octets_, std::integral_constant<std::size_t, 8>{});
+  } else if (plain_lanes_ == 4) {
     store(plain_quads_, std::integral_constant<std::size_t, 4>{});
   } else {
     store(plain_pairs_, std::integral_constant<std::size_t, 2>{});
@@ -252,6 +364,9 @@ void contact_solver::solve_plain_records(std::size_t first, std::size_t end, swe
     detail::plain_body* const at = plain_bodies_.data();
     double largest_change = 0;
 #if GAPHYS_PLAIN_QUADS
+    if (plain_lanes_ == 8) {
+      detail::solve_plain_octets<last>(plain_octets_.data(), first, end, at, largest_change);
+    }
     if (plain_lanes_ == 4) {
       detail::solve_plain_quads<last>(plain_quads_.data(), first, end, at, largest_change);
     }

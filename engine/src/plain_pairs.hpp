@@ -2,9 +2,10 @@
 // lane each, for the sweeps of a double engine on x86-64: what the sweeps
 // read of W contacts of one colour, laid out as the W lanes of each number
 // (plain_lanes), and one sweep's solve of them: two lanes with SSE2
-// (solve_plain_pair), four with AVX where the processor has it
-// (plain_pairs.cpp's solve_plain_quads, chosen at run time: the engine is
-// built for the x86-64 baseline, which has no AVX).
+// (solve_plain_pair), four with AVX and eight with AVX-512 where the
+// processor has them (plain_pairs.cpp's solve_plain_quads and
+// solve_plain_octets, chosen at run time: the engine is built for the
+// x86-64 baseline, which has neither).
 //
 // The lanes are W contacts of different runs of one colour, next to each
 // other in the sweeps' order, whose moving bodies therefore differ; where a
@@ -38,11 +39,12 @@ struct alignas(8 * W) plain_lanes {
 };
 using plain_pair = plain_lanes<2>;
 using plain_quad = plain_lanes<4>;
+using plain_octet = plain_lanes<8>;
 
-// The widest plain lanes this processor takes: 4 where it has AVX (and the
-// engine is built for x86-64 with GCC or Clang), else 2; at most
-// `widest_plain_lanes_allowed` (4; the tests lower it to step the two-lane
-// sweeps beside the four-lane ones).
+// The widest plain lanes this processor takes: 8 where it has AVX-512, 4
+// where it has AVX (the engine built for x86-64 with GCC or Clang), else 2;
+// at most `widest_plain_lanes_allowed` (8; the tests lower it to step the
+// narrower sweeps beside the wider ones).
 int plain_lanes_here();
 extern int widest_plain_lanes_allowed;
 

@@ -16,6 +16,11 @@ namespace {
 
 class contact_batches_test : public engine_test {
  protected:
+  // Puts back the widest plain lanes the sweeps may take (plain_pairs.hpp),
+  // which a test lowers.
+  struct lanes_restored {
+    ~lanes_restored() { detail::widest_plain_lanes_allowed = 8; }
+  };
   // Steps `batched` (sweeps on batches) and `scalar` (one by one) `steps`
   // times, which must start alike: their states must be equal after every
   // step, and some step must have had contacts (unless `contacts_needed`
@@ -158,45 +163,46 @@ TEST_F(contact_batches_test, frictionless_spheres_on_a_compound_step_alike_in_la
     longest_run = std::max(longest_run, run);
   }
   EXPECT_GE(longest_run, 3u);
-  // (In four lanes where the processor has AVX, and in two.)
-  struct lanes_restored {
-    ~lanes_restored() { detail::widest_plain_lanes_allowed = 4; }
-  } restore;
-  for (const int widest : {4, 2}) {
+  // (In eight lanes where the processor has AVX-512, four with AVX, and two.)
+  lanes_restored restore;
+  for (const int widest : {8, 4, 2}) {
     detail::widest_plain_lanes_allowed = widest;
     EXPECT_TRUE(step_alike(egg_crate(), egg_crate(), 240)) << widest << " lanes";
     EXPECT_TRUE(step_alike(egg_crate(), egg_crate(), 240, 2)) << widest << " lanes";
   }
 }
 
-// The plain sweeps four contacts at a time (AVX, where the processor has
-// it) and two at a time (SSE2) end with the same bits: stepped in turn,
-// each at its width, two worlds stay alike step by step, on one thread and
-// on two, in a pile and on the compound whose runs hold several contacts.
-TEST_F(contact_batches_test, plain_sweeps_in_four_lanes_step_as_in_two) {
-  if (!std::is_same_v<real, double> || detail::plain_lanes_here() < 4) {
-    GTEST_SKIP() << "the plain sweeps take four lanes only in double, with AVX";
+// The plain sweeps eight contacts at a time (AVX-512, where the processor
+// has it), four (AVX) and two (SSE2) end with the same bits: stepped in
+// turn, each at its width, two worlds stay alike step by step, on one
+// thread and on two.
+TEST_F(contact_batches_test, plain_sweeps_in_every_width_step_alike) {
+  lanes_restored restore;
+  detail::widest_plain_lanes_allowed = 8;
+  const int widest = detail::plain_lanes_here();
+  if (!std::is_same_v<real, double> || widest < 4) {
+    GTEST_SKIP() << "the plain sweeps take more than two lanes only in double, with AVX";
   }
-  struct lanes_restored {
-    ~lanes_restored() { detail::widest_plain_lanes_allowed = 4; }
-  } restore;
-  const auto alike = [](world four, world two, int steps, int threads) {
-    four.set_threads(threads);
+  const auto alike = [](int wide, world wider, world two, int steps, int threads) {
+    wider.set_threads(threads);
     two.set_threads(threads);
     for (int i = 0; i < steps; ++i) {
-      detail::widest_plain_lanes_allowed = 4;
-      four.step(h);
+      detail::widest_plain_lanes_allowed = wide;
+      wider.step(h);
       detail::widest_plain_lanes_allowed = 2;
       two.step(h);
-      if (four.state_hash() != two.state_hash()) {
-        return ::testing::AssertionFailure() << "the states differ after step " << i + 1;
+      if (wider.state_hash() != two.state_hash()) {
+        return ::testing::AssertionFailure()
+               << wide << " lanes: the states differ after step " << i + 1;
       }
     }
     return ::testing::AssertionSuccess();
   };
-  for (const int threads : {1, 2}) {
-    EXPECT_TRUE(alike(scenes::falling_spheres_in_box(300), scenes::falling_spheres_in_box(300), 240,
-                      threads));
+  for (int wide = 4; wide <= widest; wide *= 2) {
+    for (const int threads : {1, 2}) {
+      EXPECT_TRUE(alike(wide, scenes::falling_spheres_in_box(300),
+                        scenes::falling_spheres_in_box(300), 240, threads));
+    }
   }
 }
 
