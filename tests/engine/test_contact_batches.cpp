@@ -174,8 +174,7 @@ TEST_F(contact_batches_test, frictionless_spheres_on_a_compound_step_alike_in_la
 
 // The plain sweeps eight contacts at a time (AVX-512, where the processor
 // has it), four (AVX) and two (SSE2) end with the same bits: stepped in
-// turn, each at its width, two worlds stay alike step by step, on one
-// thread and on two.
+// turn, each at its width, two worlds stay alike step by step.
 TEST_F(contact_batches_test, plain_sweeps_in_every_width_step_alike) {
   lanes_restored restore;
   detail::widest_plain_lanes_allowed = 8;
@@ -198,11 +197,12 @@ TEST_F(contact_batches_test, plain_sweeps_in_every_width_step_alike) {
     }
     return ::testing::AssertionSuccess();
   };
+  // (On two threads, the colours' parts on each: 300 spheres make the 512
+  // contacts two threads of sweeps take from about step 115 on. On one,
+  // the test above steps every width against the batches.)
   for (int wide = 4; wide <= widest; wide *= 2) {
-    for (const int threads : {1, 2}) {
-      EXPECT_TRUE(alike(wide, scenes::falling_spheres_in_box(300),
-                        scenes::falling_spheres_in_box(300), 240, threads));
-    }
+    EXPECT_TRUE(alike(wide, scenes::falling_spheres_in_box(300),
+                      scenes::falling_spheres_in_box(300), 200, 2));
   }
 }
 
