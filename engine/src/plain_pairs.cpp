@@ -12,6 +12,9 @@
 // Four lanes need AVX and eight AVX-512, which the x86-64 baseline the
 // engine is built for lacks: the functions that solve them are built for
 // those on their own (target), and called only where the processor has them.
+// (Each width's sweep is written out: GCC inlines no function of one target
+// into a template of the default target, nor returns a wide vector from
+// it, so one template over the widths' instructions cannot serve both.)
 #if defined(__SSE2__) && defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define GAPHYS_PLAIN_QUADS 1
 #include <immintrin.h>
