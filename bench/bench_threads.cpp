@@ -97,5 +97,6 @@ int main(int argc, char** argv) {
     add("threads/falling_spheres", spheres, {10000, 2, 5, 16, 4});
     add("threads/falling_spheres", spheres, {10000, 2, 20, 4, 1});  // with the switching
     add("threads/falling_boxes", boxes, {1000, 2, 15, 8, 4});       // (a slower step: 240 in all)
+    add("threads/falling_boxes", boxes, {10000, 2, 3, 8, 2});       // (60 ms a step on one thread)
   });
 }
