@@ -935,8 +935,8 @@ void contact_solver::solve_runs(std::size_t first_run, std::size_t end_run, cons
 // becomes +0). solve_contact keeps the branch: a box's contact, whose
 // rows turn it, stepped 1-3% slower without.
 //
-// (In double with SSE2, the colours' plain sweeps take their contacts two
-// or four at a time instead: solve_plain_part, plain_pairs.hpp.)
+// (In double on x86-64, the colours' plain sweeps take their contacts two,
+// four or eight at a time instead: solve_plain_part, plain_pairs.hpp.)
 template <class Body>
 void contact_solver::solve_plain_contacts(std::size_t first, std::size_t end,
                                           const sweep_kind& kind, std::vector<Body>& bodies,
