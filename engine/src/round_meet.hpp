@@ -80,7 +80,7 @@ conformal::mv centre_of(const Round& meet, const Weight&) {
 // and 4.
 template <class T>
 GAPHYS_ALWAYS_INLINE c3ga::basic_dual_sphere<T> centre_of(const c3ga::basic_circle<T>& meet,
-                                     const c3ga::basic_point_pair<T>& weight) {
+                                                          const c3ga::basic_point_pair<T>& weight) {
   return c3ga::sub(c3ga::lc(weight, meet), c3ga::lc(meet, c3ga::op(meet, c3ga::ni<T>())));
 }
 
