@@ -448,6 +448,8 @@ class contact_solver {
   int plain_lanes_ = 0;
   std::uint32_t spare_place() const { return static_cast<std::uint32_t>(solver_bodies_.size()); }
   static int plain_lanes();
+  template <class Visit>
+  void with_plain_records(const Visit& visit);
   void put_plain_contacts();
   template <int W>
   void put_in_lanes(std::vector<detail::plain_lanes<W>>& records);

@@ -1,7 +1,7 @@
 // The plain sweeps of a double engine on x86-64 on several contacts at
 // once (plain_pairs.hpp): each part's contacts put in lanes before the
-// sweeps, solved two or four at a time in them, their impulses back into
-// the constraints after.
+// sweeps, solved two, four or eight at a time in them, their impulses back
+// into the constraints after.
 #include "plain_pairs.hpp"
 
 #include <algorithm>
@@ -16,12 +16,12 @@
 // into a template of the default target, nor returns a wide vector from
 // it, so one template over the widths' instructions cannot serve both.)
 #if defined(__SSE2__) && defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define GAPHYS_PLAIN_QUADS 1
+#define GAPHYS_PLAIN_WIDE_LANES 1
 #include <immintrin.h>
 #define GAPHYS_AVX __attribute__((target("avx")))
 #define GAPHYS_AVX512 __attribute__((target("avx512f")))
 #else
-#define GAPHYS_PLAIN_QUADS 0
+#define GAPHYS_PLAIN_WIDE_LANES 0
 #endif
 
 namespace gaphys {
@@ -31,7 +31,7 @@ namespace detail {
 int widest_plain_lanes_allowed = 8;
 
 int plain_lanes_here() {
-#if GAPHYS_PLAIN_QUADS
+#if GAPHYS_PLAIN_WIDE_LANES
   // The widest the processor has (and the system keeps the registers of).
   static const int widest = [] {
     __builtin_cpu_init();
@@ -43,7 +43,7 @@ int plain_lanes_here() {
 #endif
 }
 
-#if GAPHYS_PLAIN_QUADS
+#if GAPHYS_PLAIN_WIDE_LANES
 
 namespace {
 
@@ -249,14 +249,20 @@ int contact_solver::plain_lanes() {
 #endif
 }
 
-void contact_solver::put_plain_contacts() {
+// visit(records): the records of plain_lanes_'s width.
+template <class Visit>
+void contact_solver::with_plain_records(const Visit& visit) {
   if (plain_lanes_ == 8) {
-    put_in_lanes(plain_octets_);
+    visit(plain_octets_);
   } else if (plain_lanes_ == 4) {
-    put_in_lanes(plain_quads_);
+    visit(plain_quads_);
   } else {
-    put_in_lanes(plain_pairs_);
+    visit(plain_pairs_);
   }
+}
+
+void contact_solver::put_plain_contacts() {
+  with_plain_records([&](auto& records) { put_in_lanes(records); });
 }
 
 // Each part's contacts, from its first slot on, in the order the sweeps
@@ -323,8 +329,8 @@ void contact_solver::put_in_lanes(std::vector<detail::plain_lanes<W>>& records) 
 // The records' impulses back into their constraints (store_impulses reads
 // them there).
 void contact_solver::store_plain_impulses() {
-  const auto store = [&](const auto& records, auto lanes) {
-    constexpr std::size_t W = decltype(lanes)::value;
+  with_plain_records([&](const auto& records) {
+    constexpr std::size_t W = std::decay_t<decltype(records)>::value_type::lanes;
     for_each_part([&](std::size_t part) {
       const auto [first, end] = part_records_[part];
       for (std::size_t at = first; at < end; ++at) {
@@ -334,14 +340,7 @@ void contact_solver::store_plain_impulses() {
         }
       }
     });
-  };
-  if (plain_lanes_ == 8) {
-    store(plain_octets_, std::integral_constant<std::size_t, 8>{});
-  } else if (plain_lanes_ == 4) {
-    store(plain_quads_, std::integral_constant<std::size_t, 4>{});
-  } else {
-    store(plain_pairs_, std::integral_constant<std::size_t, 2>{});
-  }
+  });
 }
 
 // One sweep of part `part`'s records.
@@ -366,7 +365,7 @@ void contact_solver::solve_plain_records(std::size_t first, std::size_t end, swe
     // its stores might have changed them.)
     detail::plain_body* const at = plain_bodies_.data();
     double largest_change = 0;
-#if GAPHYS_PLAIN_QUADS
+#if GAPHYS_PLAIN_WIDE_LANES
     if (plain_lanes_ == 8) {
       detail::solve_plain_octets<last>(plain_octets_.data(), first, end, at, largest_change);
     }

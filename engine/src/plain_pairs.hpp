@@ -33,6 +33,7 @@ namespace gaphys::detail {
 // two, and the sweeps more than a fifth of their instructions).
 template <int W>
 struct alignas(8 * W) plain_lanes {
+  static constexpr int lanes = W;
   double normal_x[W], normal_y[W], normal_z[W];  // n, from B to A
   double target_speed[W], relaxation[W], normal_mass[W], accumulated[W], mass_inverse[W];
   std::uint32_t place_a[W], place_b[W];  // the bodies' places in the plain bodies
