@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <new>
 #include <optional>
 #include <tuple>
@@ -322,10 +323,12 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
     static_count_ = on_static_.size();
     return;
   }
-  // The pairs in contiguous shares, four per thread, taken by the threads as
-  // they finish (a core slowed by other programs takes fewer); each share is
-  // met into its own lists, and joined in share order they are what one
-  // thread makes.
+  // The pairs in contiguous shares, four per thread, each thread taking its
+  // own four first (detail::visit_parts: the shapes of the bodies of its
+  // pairs, mostly of its own part of the bodies, are where it placed them)
+  // and then what the others have left (a core slowed by other programs
+  // takes fewer); each share is met into its own lists, and joined in share
+  // order they are what one thread makes.
   // The join: a share's place in the lists is known once every share before
   // it is met, and the thread that completes that places it and copies it
   // there at once, while its contacts are still in that core's cache, as far
@@ -367,11 +370,12 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
       on_static_[start.on_static + k] = c;
     }
   };
+  const std::unique_ptr<detail::part_progress[]> progress(
+      new detail::part_progress[static_cast<std::size_t>(shares)]);
 #pragma omp parallel num_threads(shares)
   {
     std::vector<std::size_t> to_copy;
-#pragma omp for schedule(dynamic, 1)
-    for (std::size_t at = 0; at < share_count; ++at) {
+    const auto meet_share = [&](std::size_t at) {
       const body_pair* first = pairs.data() + pairs.size() * at / share_count;
       const body_pair* end = pairs.data() + pairs.size() * (at + 1) / share_count;
       share_lists& lists = shares_[at].value;
@@ -391,7 +395,10 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
         }
       }
       for (const std::size_t k : to_copy) copy_share(k, share_start{}, fitting(k));
-    }
+    };
+    detail::visit_parts(static_cast<std::size_t>(omp_get_num_threads()),
+                        static_cast<std::size_t>(omp_get_thread_num()), share_count, 1,
+                        progress.get(), meet_share);
   }
   const share_start total = share_starts_.back();
   if (contacts.capacity() < total.contacts) {

@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <thread>
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
@@ -25,11 +26,37 @@ inline int threads_for(int setting, std::size_t items, std::size_t per_thread) {
   return std::max(1, std::min(wanted, static_cast<int>(useful)));
 }
 
+// Where each thread's part of a loop has got to (visit_parts): one per
+// thread, each on its own cache line, zero before the loop.
+struct alignas(64) part_progress {
+  std::atomic<std::size_t> done{0};
+};
+
+// Inside a parallel region of `team` threads: thread `thread`'s share of
+// visit(i) for i in [0, count). Each thread owns the t-th of the range and
+// takes it front to back in blocks of `block`; done with it, it takes
+// blocks from the others' parts where they remain (a core slowed by other
+// programs does fewer). Each thread thus finds the same items from step to
+// step in its own core's caches, where it left them.
+template <class Visit>
+void visit_parts(std::size_t team, std::size_t thread, std::size_t count, std::size_t block,
+                 part_progress* progress, const Visit& visit) {
+  for (std::size_t k = 0; k < team; ++k) {
+    const std::size_t part = (thread + k) % team;
+    const std::size_t first = count * part / team, end = count * (part + 1) / team;
+    for (;;) {
+      const std::size_t from =
+          first + progress[part].done.fetch_add(block, std::memory_order_relaxed);
+      if (from >= end) break;
+      const std::size_t upto = std::min(from + block, end);
+      for (std::size_t i = from; i < upto; ++i) visit(i);
+    }
+  }
+}
+
 // Calls visit(i) for every i in [0, count), on threads_for(setting, count,
-// per_thread) threads, each taking contiguous blocks of a quarter of
-// per_thread as it finishes the last (a core slowed by other programs
-// takes fewer). For loops whose iterations write nothing another iteration
-// reads.
+// per_thread) threads (visit_parts, in blocks of a quarter of per_thread).
+// For loops whose iterations write nothing another iteration reads.
 template <class Visit>
 void parallel_for(int setting, std::size_t count, std::size_t per_thread, const Visit& visit) {
   const int threads = threads_for(setting, count, per_thread);
@@ -37,10 +64,12 @@ void parallel_for(int setting, std::size_t count, std::size_t per_thread, const 
     for (std::size_t i = 0; i < count; ++i) visit(i);
     return;
   }
-  const auto end = static_cast<std::ptrdiff_t>(count);
-  const int block = static_cast<int>(std::max<std::size_t>(per_thread / 4, 1));
-#pragma omp parallel for num_threads(threads) schedule(dynamic, block)
-  for (std::ptrdiff_t i = 0; i < end; ++i) visit(static_cast<std::size_t>(i));
+  const std::size_t block = std::max<std::size_t>(per_thread / 4, 1);
+  const std::unique_ptr<part_progress[]> progress(
+      new part_progress[static_cast<std::size_t>(threads)]);
+#pragma omp parallel num_threads(threads)
+  visit_parts(static_cast<std::size_t>(omp_get_num_threads()),
+              static_cast<std::size_t>(omp_get_thread_num()), count, block, progress.get(), visit);
 }
 
 // A pause in a loop that waits for another core (on x86, which otherwise

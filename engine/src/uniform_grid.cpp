@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <new>
 #include <tuple>
 #include <type_traits>
@@ -31,8 +32,8 @@ real largest_magnitude(const vector& v) {
 
 // Calls find(begin, end, out) over [0, count), appending what it finds to
 // `pairs`: on one thread directly; on several (no fewer than per_thread
-// items each) in four shares per thread, taken as the threads finish (a
-// core slowed by other programs takes fewer), each into its own list of
+// items each) in four shares per thread, each thread's own first, then
+// what the others have left (visit_parts), each into its own list of
 // `scratch`. The pairs are sorted afterwards (sort_pairs), so the order in
 // which the shares find them changes nothing.
 template <class Find>
@@ -44,15 +45,18 @@ void find_in_shares(std::size_t count, std::size_t per_thread, int threads,
     find(std::size_t{0}, count, pairs);
     return;
   }
-  const int share_count = 4 * shares;
-  scratch.resize(static_cast<std::size_t>(share_count));
-#pragma omp parallel for num_threads(shares) schedule(dynamic, 1)
-  for (int share = 0; share < share_count; ++share) {
-    const auto at = static_cast<std::size_t>(share);
-    std::vector<index_pair>& found = scratch[at].value;
-    found.clear();
-    find(count * at / share_count, count * (at + 1) / share_count, found);
-  }
+  const auto share_count = static_cast<std::size_t>(4 * shares);
+  scratch.resize(share_count);
+  const std::unique_ptr<part_progress[]> progress(
+      new part_progress[static_cast<std::size_t>(shares)]);
+#pragma omp parallel num_threads(shares)
+  visit_parts(static_cast<std::size_t>(omp_get_num_threads()),
+              static_cast<std::size_t>(omp_get_thread_num()), share_count, 1, progress.get(),
+              [&](std::size_t at) {
+                std::vector<index_pair>& found = scratch[at].value;
+                found.clear();
+                find(count * at / share_count, count * (at + 1) / share_count, found);
+              });
   for (const auto& found : scratch) {
     pairs.insert(pairs.end(), found.value.begin(), found.value.end());
   }
