@@ -318,8 +318,8 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
   if (contacts.capacity() < pairs.size()) contacts.reserve(pairs.size() + pairs.size() / 4);
   if (shares == 1) {
     on_static_.clear();
-    meet_pairs(bodies, pairs.data(), pairs.data() + pairs.size(), contacts, lookahead, rules,
-               margin, sensors, on_static_);
+    contacts.resize(meet_pairs(bodies, pairs.data(), pairs.data() + pairs.size(), contacts, 0,
+                               lookahead, rules, margin, sensors, on_static_));
     static_count_ = on_static_.size();
     return;
   }
@@ -327,98 +327,97 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
   // own four first (detail::visit_parts: the shapes of the bodies of its
   // pairs, mostly of its own part of the bodies, are where it placed them)
   // and then what the others have left (a core slowed by other programs
-  // takes fewer); each share is met into its own lists, and joined in share
-  // order they are what one thread makes.
-  // The join: a share's place in the lists is known once every share before
-  // it is met, and the thread that completes that places it and copies it
-  // there at once, while its contacts are still in that core's cache, as far
-  // as the lists already reach (the contact list from two steps ago, about
-  // as long; on_static_, which keeps its length from step to step); the
-  // rest once they are made longer. (Copied after all were met, the
-  // contacts of 10,000 spheres took 0.3 ms of a step on two threads; and
-  // with a pile still filling up, the last share, whole where it did not
-  // fit, and the static contacts, joined on one thread, took another 0.09.)
+  // takes fewer). Joined in share order, the shares' contacts are what one
+  // thread makes. The thread that takes share 0 meets it straight into
+  // `contacts`, and so every next share it takes while it has met all
+  // those before it (its own part, unless another thread took some of it):
+  // their places are known. The other shares are met into lists of their
+  // own, then copied to their places, the copying shared evenly by the
+  // threads. (Each share met into its own list, and copied by the thread
+  // that completed the shares before it, one thread copied most of the
+  // contacts of 10,000 spheres on two threads, 0.30 ms a step, while the
+  // other waited.)
   const auto share_count = static_cast<std::size_t>(4 * shares);
   shares_.resize(share_count);
-  share_starts_.assign(share_count + 1, share_start{});
-  share_states_.assign(share_count, share_state::meeting);
-  const share_start room{contacts.size(), on_static_.size()};
-  std::size_t placed = 0;  // the shares [0, placed) have their starts
-  // Share `at`'s whole lists, and the part of them that fits in the room
-  // (copied as soon as its start is known; the rest after the lists grow).
-  const auto whole = [&](std::size_t at) {
-    return share_start{shares_[at].value.contacts.size(), shares_[at].value.on_static.size()};
-  };
-  const auto fitting = [&](std::size_t at) {
-    const auto fit = [](std::size_t start, std::size_t count, std::size_t room) {
-      return start >= room ? 0 : std::min(count, room - start);
-    };
-    const share_start& start = share_starts_[at];
-    return share_start{fit(start.contacts, whole(at).contacts, room.contacts),
-                       fit(start.on_static, whole(at).on_static, room.on_static)};
-  };
-  // Copies share `at`'s contacts and static contacts [from, upto) of each.
-  const auto copy_share = [&](std::size_t at, const share_start& from, const share_start& upto) {
-    const share_lists& met = shares_[at].value;
-    const share_start& start = share_starts_[at];
-    std::copy(met.contacts.begin() + static_cast<std::ptrdiff_t>(from.contacts),
-              met.contacts.begin() + static_cast<std::ptrdiff_t>(upto.contacts),
-              contacts.begin() + static_cast<std::ptrdiff_t>(start.contacts + from.contacts));
-    for (std::size_t k = from.on_static; k < upto.on_static; ++k) {
-      detail::static_contact c = met.on_static[k];
-      c.contact += start.contacts;
-      on_static_[start.on_static + k] = c;
-    }
-  };
   const std::unique_ptr<detail::part_progress[]> progress(
       new detail::part_progress[static_cast<std::size_t>(shares)]);
 #pragma omp parallel num_threads(shares)
   {
-    std::vector<std::size_t> to_copy;
-    const auto meet_share = [&](std::size_t at) {
-      const body_pair* first = pairs.data() + pairs.size() * at / share_count;
-      const body_pair* end = pairs.data() + pairs.size() * (at + 1) / share_count;
-      share_lists& lists = shares_[at].value;
-      lists.sensors.clear();
-      lists.on_static.clear();
-      meet_pairs(bodies, first, end, lists.contacts, lookahead, rules, margin,
-                 sensors ? &lists.sensors : nullptr, lists.on_static);
-      to_copy.clear();
-#pragma omp critical(gaphys_space_join)
-      {
-        share_states_[at] = share_state::met;
-        for (; placed < share_count && share_states_[placed] == share_state::met; ++placed) {
-          const share_start& start = share_starts_[placed];
-          share_starts_[placed + 1] = {start.contacts + whole(placed).contacts,
-                                       start.on_static + whole(placed).on_static};
-          to_copy.push_back(placed);
-        }
-      }
-      for (const std::size_t k : to_copy) copy_share(k, share_start{}, fitting(k));
-    };
-    detail::visit_parts(static_cast<std::size_t>(omp_get_num_threads()),
-                        static_cast<std::size_t>(omp_get_thread_num()), share_count, 1,
-                        progress.get(), meet_share);
+    // This thread's shares met in place so far: [0, next_in_place), ending at in_place_end.
+    std::size_t next_in_place = 0, in_place_end = 0;
+    detail::visit_parts(
+        static_cast<std::size_t>(omp_get_num_threads()),
+        static_cast<std::size_t>(omp_get_thread_num()), share_count, 1, progress.get(),
+        [&](std::size_t at) {
+          const body_pair* first = pairs.data() + pairs.size() * at / share_count;
+          const body_pair* end = pairs.data() + pairs.size() * (at + 1) / share_count;
+          share_lists& lists = shares_[at].value;
+          lists.sensors.clear();
+          lists.on_static.clear();
+          std::vector<sensor_overlap>* sensed = sensors ? &lists.sensors : nullptr;
+          lists.in_place = at == next_in_place;
+          if (lists.in_place) {
+            lists.made = meet_pairs(bodies, first, end, contacts, in_place_end, lookahead, rules,
+                                    margin, sensed, lists.on_static);
+            in_place_end += lists.made;
+            ++next_in_place;
+          } else {
+            lists.made = meet_pairs(bodies, first, end, lists.contacts, 0, lookahead, rules, margin,
+                                    sensed, lists.on_static);
+          }
+        });
+  }
+  // Each share's start in the lists, and the contacts to copy: the shares
+  // not met in place, one after another (copy_starts_: where each begins).
+  share_starts_.resize(share_count + 1);
+  copy_starts_.resize(share_count + 1);
+  share_starts_[0] = {};
+  copy_starts_[0] = 0;
+  for (std::size_t at = 0; at < share_count; ++at) {
+    const share_lists& lists = shares_[at].value;
+    share_starts_[at + 1] = {share_starts_[at].contacts + lists.made,
+                             share_starts_[at].on_static + lists.on_static.size()};
+    copy_starts_[at + 1] = copy_starts_[at] + (lists.in_place ? 0 : lists.made);
   }
   const share_start total = share_starts_.back();
   if (contacts.capacity() < total.contacts) {
     contacts.reserve(total.contacts + total.contacts / 4);
   }
+  // (Longer than this step's where it holds the list from two steps ago:
+  // only the end is cut. Made longer, the new contacts are zeroed first.)
   contacts.resize(total.contacts);
   if (on_static_.size() < total.on_static) on_static_.resize(total.on_static + total.on_static / 4);
   static_count_ = total.on_static;
-  // What did not fit: the shares past the room.
-  const auto late = [&](std::size_t at) {
-    return fitting(at).contacts < whole(at).contacts || fitting(at).on_static < whole(at).on_static;
-  };
-  bool any_late = false;
-  for (std::size_t at = 0; at < share_count; ++at) any_late = any_late || late(at);
-  if (any_late) {
-#pragma omp parallel for num_threads(shares) schedule(dynamic, 1)
-    for (std::size_t at = 0; at < share_count; ++at) {
-      if (late(at)) copy_share(at, fitting(at), whole(at));
+  for (std::size_t at = 0; at < share_count; ++at) {
+    const share_lists& lists = shares_[at].value;
+    const share_start& start = share_starts_[at];
+    for (std::size_t k = 0; k < lists.on_static.size(); ++k) {
+      detail::static_contact c = lists.on_static[k];
+      c.contact += start.contacts;
+      on_static_[start.on_static + k] = c;
     }
   }
+  // The contacts to copy, in pieces of equal length, shared by the threads.
+  constexpr std::size_t piece = 512;
+  const std::size_t copied = copy_starts_.back();
+  detail::parallel_for(threads, (copied + piece - 1) / piece, 2, [&](std::size_t p) {
+    const std::size_t from = p * piece, upto = std::min(copied, from + piece);
+    // The first share this piece reaches into, then each one after it.
+    std::size_t at =
+        static_cast<std::size_t>(std::upper_bound(copy_starts_.begin(), copy_starts_.end(), from) -
+                                 copy_starts_.begin() - 1);
+    for (std::size_t i = from; i < upto; ++at) {
+      const std::size_t share_end = copy_starts_[at + 1];
+      if (share_end <= i) continue;  // (a share met in place: nothing to copy)
+      const std::size_t count = std::min(upto, share_end) - i;
+      const auto in_share = static_cast<std::ptrdiff_t>(i - copy_starts_[at]);
+      const std::vector<contact>& met = shares_[at].value.contacts;
+      std::copy(
+          met.begin() + in_share, met.begin() + in_share + static_cast<std::ptrdiff_t>(count),
+          contacts.begin() + static_cast<std::ptrdiff_t>(share_starts_[at].contacts) + in_share);
+      i += count;
+    }
+  });
   if (sensors) {
     for (const auto& share : shares_) {
       sensors->insert(sensors->end(), share.value.sensors.begin(), share.value.sensors.end());
@@ -436,11 +435,12 @@ static bool meets_on_batches(const Facts& a, const Facts& b, const placed_shape*
          a.filter.meets(b.filter);
 }
 
-void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
-                       const body_pair* end, std::vector<contact>& contacts, real lookahead,
-                       const material_combine_rules& rules, real margin,
-                       std::vector<sensor_overlap>* sensors,
-                       std::vector<detail::static_contact>& on_static) const {
+std::size_t space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
+                              const body_pair* end, std::vector<contact>& contacts,
+                              std::size_t start, real lookahead,
+                              const material_combine_rules& rules, real margin,
+                              std::vector<sensor_overlap>* sensors,
+                              std::vector<detail::static_contact>& on_static) const {
   // The meets of single spheres and planes first, their algebra on batches
   // of pairs; then every pair in order, those from their terms.
   constexpr std::size_t none = ~std::size_t{0};
@@ -483,7 +483,7 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
   // And which contacts have a static body on one side only, for the seams'
   // pass: listed here, it reads those instead of the whole list again.
   // The list comes as an earlier step left it: its contacts are written
-  // over, field by field, and it is cut to this call's at the end. (Each
+  // over, field by field, and the caller cuts it to its length. (Each
   // made anew, 248 bytes were zeroed and most of them written again: 1.6%
   // of a 1,000-sphere step.)
   std::size_t made = 0;
@@ -497,7 +497,7 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
     // (Made in its place and filled in: made whole aside and copied in,
     // meet_pairs ran 9% fewer instructions but took a third longer, its
     // loads of the copy waiting for the narrower stores that made it.)
-    contact& c = made < contacts.size() ? contacts[made] : contacts.emplace_back();
+    contact& c = start + made < contacts.size() ? contacts[start + made] : contacts.emplace_back();
     ++made;
     c.body_a = a;
     c.body_b = b;
@@ -553,7 +553,7 @@ void space::meet_pairs(const std::vector<body>& bodies, const body_pair* first,
       }
     }
   }
-  contacts.resize(made);  // (shorter or as long: nothing made anew)
+  return made;
 }
 
 }  // namespace gaphys

@@ -90,11 +90,13 @@ class space {
   void meet_all(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
                 std::vector<contact>& contacts, real lookahead, const material_combine_rules& rules,
                 real margin, std::vector<sensor_overlap>* sensors, int threads);
-  void meet_pairs(const std::vector<body>& bodies, const body_pair* first, const body_pair* end,
-                  std::vector<contact>& contacts, real lookahead,
-                  const material_combine_rules& rules, real margin,
-                  std::vector<sensor_overlap>* sensors,
-                  std::vector<detail::static_contact>& on_static) const;
+  // The pairs [first, end) met into contacts[start, start + n), over what
+  // the list held there (made longer where it ends first): returns n.
+  std::size_t meet_pairs(const std::vector<body>& bodies, const body_pair* first,
+                         const body_pair* end, std::vector<contact>& contacts, std::size_t start,
+                         real lookahead, const material_combine_rules& rules, real margin,
+                         std::vector<sensor_overlap>* sensors,
+                         std::vector<detail::static_contact>& on_static) const;
 
   broad_phase_kind kind_;
   detail::uniform_grid grid_;
@@ -122,9 +124,11 @@ class space {
   // Each share's contacts, sensor overlaps and contacts with a static body
   // (by their places in its list), in pair order (find_contacts).
   struct share_lists {
-    std::vector<contact> contacts;
+    std::vector<contact> contacts;  // its first `made` (unless met in place)
     std::vector<sensor_overlap> sensors;
     std::vector<detail::static_contact> on_static;
+    std::size_t made = 0;   // contacts
+    bool in_place = false;  // met straight into the step's list (meet_all)
   };
   std::vector<detail::cache_padded<share_lists>> shares_;
   // Where each share's contacts and static contacts go in the lists.
@@ -132,8 +136,8 @@ class space {
     std::size_t contacts = 0, on_static = 0;
   };
   std::vector<share_start> share_starts_;
-  enum class share_state : unsigned char { meeting, met };
-  std::vector<share_state> share_states_;
+  // Where each share's contacts begin among those copied (not met in place).
+  std::vector<std::size_t> copy_starts_;
   // The contacts between a static body and another, in order (meet_pairs
   // lists them): the first static_count_ (on_static_ keeps its length from
   // step to step, as room for the next step's).
