@@ -54,9 +54,21 @@ void visit_parts(std::size_t team, std::size_t thread, std::size_t count, std::s
   }
 }
 
+// Calls visit(i) for every i in [0, count) on `threads` threads (> 1),
+// each its own part first, in blocks of `block` (visit_parts).
+template <class Visit>
+void visit_on_threads(int threads, std::size_t count, std::size_t block, const Visit& visit) {
+  const std::unique_ptr<part_progress[]> progress(
+      new part_progress[static_cast<std::size_t>(threads)]);
+#pragma omp parallel num_threads(threads)
+  visit_parts(static_cast<std::size_t>(omp_get_num_threads()),
+              static_cast<std::size_t>(omp_get_thread_num()), count, block, progress.get(), visit);
+}
+
 // Calls visit(i) for every i in [0, count), on threads_for(setting, count,
-// per_thread) threads (visit_parts, in blocks of a quarter of per_thread).
-// For loops whose iterations write nothing another iteration reads.
+// per_thread) threads (visit_on_threads, in blocks of a quarter of
+// per_thread). For loops whose iterations write nothing another iteration
+// reads.
 template <class Visit>
 void parallel_for(int setting, std::size_t count, std::size_t per_thread, const Visit& visit) {
   const int threads = threads_for(setting, count, per_thread);
@@ -64,12 +76,7 @@ void parallel_for(int setting, std::size_t count, std::size_t per_thread, const 
     for (std::size_t i = 0; i < count; ++i) visit(i);
     return;
   }
-  const std::size_t block = std::max<std::size_t>(per_thread / 4, 1);
-  const std::unique_ptr<part_progress[]> progress(
-      new part_progress[static_cast<std::size_t>(threads)]);
-#pragma omp parallel num_threads(threads)
-  visit_parts(static_cast<std::size_t>(omp_get_num_threads()),
-              static_cast<std::size_t>(omp_get_thread_num()), count, block, progress.get(), visit);
+  visit_on_threads(threads, count, std::max<std::size_t>(per_thread / 4, 1), visit);
 }
 
 // A pause in a loop that waits for another core (on x86, which otherwise

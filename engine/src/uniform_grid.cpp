@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <memory>
 #include <new>
 #include <tuple>
 #include <type_traits>
@@ -33,7 +32,7 @@ real largest_magnitude(const vector& v) {
 // Calls find(begin, end, out) over [0, count), appending what it finds to
 // `pairs`: on one thread directly; on several (no fewer than per_thread
 // items each) in four shares per thread, each thread's own first, then
-// what the others have left (visit_parts), each into its own list of
+// what the others have left (visit_on_threads), each into its own list of
 // `scratch`. The pairs are sorted afterwards (sort_pairs), so the order in
 // which the shares find them changes nothing.
 template <class Find>
@@ -47,16 +46,11 @@ void find_in_shares(std::size_t count, std::size_t per_thread, int threads,
   }
   const auto share_count = static_cast<std::size_t>(4 * shares);
   scratch.resize(share_count);
-  const std::unique_ptr<part_progress[]> progress(
-      new part_progress[static_cast<std::size_t>(shares)]);
-#pragma omp parallel num_threads(shares)
-  visit_parts(static_cast<std::size_t>(omp_get_num_threads()),
-              static_cast<std::size_t>(omp_get_thread_num()), share_count, 1, progress.get(),
-              [&](std::size_t at) {
-                std::vector<index_pair>& found = scratch[at].value;
-                found.clear();
-                find(count * at / share_count, count * (at + 1) / share_count, found);
-              });
+  visit_on_threads(shares, share_count, 1, [&](std::size_t at) {
+    std::vector<index_pair>& found = scratch[at].value;
+    found.clear();
+    find(count * at / share_count, count * (at + 1) / share_count, found);
+  });
   for (const auto& found : scratch) {
     pairs.insert(pairs.end(), found.value.begin(), found.value.end());
   }
