@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -29,6 +30,12 @@ constexpr real tolerance(double in_double, double in_float) {
 constexpr real for_scalar(double in_double, double in_float) {
   return sizeof(real) == 8 ? real(in_double) : real(in_float);
 }
+
+// Values the tests share.
+constexpr real pi = 3.14159265358979323846;
+constexpr real nan = std::numeric_limits<real>::quiet_NaN();
+constexpr real inf = std::numeric_limits<real>::infinity();
+inline const rotor identity{1, 0, 0, 0};  // no turn
 
 // Components of vectors and bivectors, for readable assertions.
 inline real x(const vector& v) { return v.e1(); }

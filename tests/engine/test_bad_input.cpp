@@ -9,9 +9,6 @@
 namespace gaphys::testing {
 namespace {
 
-constexpr real nan = std::numeric_limits<real>::quiet_NaN();
-constexpr real inf = std::numeric_limits<real>::infinity();
-
 class bad_input_test : public engine_test {
  protected:
   // A world with some history, whose state the bad calls must not touch.

@@ -16,7 +16,6 @@ namespace gaphys::testing {
 namespace {
 
 constexpr real g = 9.81;
-constexpr real pi = 3.14159265358979323846;
 
 // The rotor that turns by `angle` in the plane `plane` (unit): with the
 // engine's convention (body.hpp) the plane e3 ∧ e1 turns e3 towards e1.

@@ -19,8 +19,7 @@ using detail::capsule_separation;
 using detail::collide_capsule;
 
 const real closed_form_tolerance = tolerance(1e-12, 1e-5);  // closed forms a few operations deep
-const real exact = tolerance(1e-9, 1e-5);       // capsule_separation against the independent distance
-const rotor identity{1, 0, 0, 0};
+const real exact = tolerance(1e-9, 1e-5);  // capsule_separation against the independent distance
 const vector e1{1, 0, 0}, e2{0, 1, 0}, e3{0, 0, 1};
 
 // The rotor turning the unit vector `from` onto the unit vector `to`:

@@ -13,7 +13,6 @@ namespace {
 // (In float, coordinates 5 m out round to 5e-7 m: over the shortest
 // distances below, 1 mm, a normal turns by up to 5e-4.)
 const real geometry_tolerance = tolerance(1e-9, 5e-4);
-const rotor identity{1, 0, 0, 0};
 
 bool same_bits(real a, real b) { return std::memcmp(&a, &b, sizeof(real)) == 0; }
 bool same_bits(const vector& a, const vector& b) {

@@ -13,8 +13,6 @@
 namespace gaphys::testing {
 namespace {
 
-constexpr real pi = 3.14159265358979323846;
-
 // Hamilton's product, i j = k, written out.
 quaternion hamilton(const quaternion& a, const quaternion& b) {
   return {

@@ -24,7 +24,6 @@ using detail::convex_separation;
 using detail::separation;
 
 const real closed_form_tolerance = tolerance(1e-12, 1e-6);  // closed forms a few operations deep
-const rotor identity{1, 0, 0, 0};
 const vector e1{1, 0, 0}, e2{0, 1, 0}, e3{0, 0, 1};
 
 // The rotor turning by `angle` about the unit `axis` (right-handed).

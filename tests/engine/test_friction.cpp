@@ -18,7 +18,6 @@ namespace {
 
 constexpr real g = 9.81;
 constexpr real radius = 0.5;  // the scenes' sphere
-constexpr real pi = 3.14159265358979323846;
 
 class friction_test : public engine_test {
  protected:

@@ -16,9 +16,6 @@
 namespace gaphys::testing {
 namespace {
 
-constexpr real pi = 3.14159265358979323846;
-constexpr real nan = std::numeric_limits<real>::quiet_NaN();
-
 triple unit(real x, real y, real z) {
   const real l = std::sqrt(x * x + y * y + z * z);
   return {x / l, y / l, z / l};

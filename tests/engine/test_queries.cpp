@@ -18,7 +18,6 @@ namespace gaphys::testing {
 namespace {
 
 constexpr real infinity = std::numeric_limits<real>::infinity();
-const rotor identity{1, 0, 0, 0};
 
 class query_test : public engine_test {
  protected:

@@ -18,9 +18,6 @@
 namespace gaphys::testing {
 namespace {
 
-constexpr real nan = std::numeric_limits<real>::quiet_NaN();
-constexpr real inf = std::numeric_limits<real>::infinity();
-
 // Plain arithmetic in the checks' inner loops: the instrumented algebra
 // records every call, and these loops make millions.
 real inner(const vector& a, const vector& b) { return x(a) * x(b) + y(a) * y(b) + z(a) * z(b); }
