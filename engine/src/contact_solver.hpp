@@ -30,6 +30,7 @@
 #include "impulse_row.hpp"
 #include "pair_cuts.hpp"
 #include "plain_pairs.hpp"
+#include "scratch_array.hpp"
 #include "timed_impact.hpp"
 
 namespace gaphys {
@@ -440,10 +441,10 @@ class contact_solver {
   // bodies' places, plain_bodies_ holds the empty lanes' spare, without
   // mass (spare_place).
   static constexpr std::uint32_t no_slot = ~std::uint32_t{0};
-  std::vector<detail::plain_pair> plain_pairs_;
-  std::vector<detail::plain_quad> plain_quads_;
-  std::vector<detail::plain_octet> plain_octets_;
-  std::vector<std::uint32_t> lane_slots_;
+  detail::scratch_array<detail::plain_pair> plain_pairs_;
+  detail::scratch_array<detail::plain_quad> plain_quads_;
+  detail::scratch_array<detail::plain_octet> plain_octets_;
+  detail::scratch_array<std::uint32_t> lane_slots_;
   std::vector<std::pair<std::size_t, std::size_t>> part_records_;
   int plain_lanes_ = 0;
   std::uint32_t spare_place() const { return static_cast<std::uint32_t>(solver_bodies_.size()); }
@@ -452,7 +453,7 @@ class contact_solver {
   void with_plain_records(const Visit& visit);
   void put_plain_contacts();
   template <int W>
-  void put_in_lanes(std::vector<detail::plain_lanes<W>>& records);
+  void put_in_lanes(detail::scratch_array<detail::plain_lanes<W>>& records);
   void store_plain_impulses();
   void solve_plain_part(std::size_t part, const sweep_kind& kind, sweep_result& result);
   template <bool last>

@@ -271,11 +271,11 @@ void contact_solver::put_plain_contacts() {
 // Part p's records start where its slots do (it has no more records than
 // slots).
 template <int W>
-void contact_solver::put_in_lanes(std::vector<detail::plain_lanes<W>>& records) {
+void contact_solver::put_in_lanes(detail::scratch_array<detail::plain_lanes<W>>& records) {
   const std::size_t count = constraints_.size();
   const std::uint32_t spare = spare_place();
-  records.resize(count);
-  lane_slots_.resize(count * W);
+  records.reset(count);
+  lane_slots_.reset(count * W);
   part_records_.resize(colouring_.colours() * static_cast<std::size_t>(sweep_threads_) * 2);
   for_each_part([&](std::size_t part) {
     const auto [first_run, end_run] = part_runs(part);

@@ -314,8 +314,12 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
   // Room for at least a contact per pair, and a quarter more: a list that
   // outgrows its room is copied whole to a new one whose pages are then
   // faulted in (5.7 MB at 10,000 spheres; in a pile still filling up, 0.08
-  // ms a step on average).
-  if (contacts.capacity() < pairs.size()) contacts.reserve(pairs.size() + pairs.size() / 4);
+  // ms a step on average). What it holds (the list of two steps ago) is
+  // written over below: emptied first, it is not copied.
+  if (contacts.capacity() < pairs.size()) {
+    contacts.clear();
+    contacts.reserve(pairs.size() + pairs.size() / 4);
+  }
   if (shares == 1) {
     on_static_.clear();
     contacts.resize(meet_pairs(bodies, pairs.data(), pairs.data() + pairs.size(), contacts, 0,

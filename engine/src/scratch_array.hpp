@@ -1,0 +1,44 @@
+// An array rebuilt from scratch at each use: every element read is first
+// written in the same use. Made longer, it keeps none of what it held and
+// sets none of its new elements, where std::vector's resize copies the old
+// elements across and zeroes the new ones, every page of them. (The
+// sweeps' plain records are one per slot, of which about an eighth are
+// written at 10,000 spheres: as a vector that grew with the pile, the step
+// that outgrew it copied and zeroed up to 13 MB on one thread while the
+// others waited, and a quarter of a pile's page faults were its pages.)
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <type_traits>
+
+namespace gaphys::detail {
+
+template <class T>
+class scratch_array {
+  static_assert(std::is_trivially_default_constructible_v<T> && std::is_trivially_destructible_v<T>);
+
+ public:
+  using value_type = T;
+
+  // Room for `count` elements, their values unspecified.
+  void reset(std::size_t count) {
+    if (count > capacity_) {
+      // (A quarter more, as the lists it serves grow a little most steps.)
+      capacity_ = count + count / 4;
+      elements_.reset(new T[capacity_]);
+    }
+    size_ = count;
+  }
+  std::size_t size() const { return size_; }
+  T* data() { return elements_.get(); }
+  const T* data() const { return elements_.get(); }
+  T& operator[](std::size_t i) { return elements_[i]; }
+  const T& operator[](std::size_t i) const { return elements_[i]; }
+
+ private:
+  std::unique_ptr<T[]> elements_;
+  std::size_t size_ = 0, capacity_ = 0;
+};
+
+}  // namespace gaphys::detail
