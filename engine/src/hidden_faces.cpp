@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <optional>
 #include <utility>
 
+#include "prefetch.hpp"
 #include "round_meet.hpp"
 #include "vec3.hpp"
 
@@ -192,6 +194,13 @@ void drop_hidden_contacts(const placed_shape* placed, const std::size_t* first_s
     }
     std::stable_sort(lists.entries.begin(), lists.entries.end(),
                      [](const auto& x, const auto& y) { return x.first < y.first; });
+    // Their contacts asked for at once, ahead of the loop below, which reads
+    // them one by one: many were written by another core. (Missed one at a
+    // time, they were half of this pass, which runs on one thread: at 10,000
+    // spheres on two threads, 0.067 ms a step, 0.04 so.)
+    for (const auto& [moving, index] : lists.entries) {
+      prefetch_bytes(&contacts[index], offsetof(contact, feature));
+    }
     lists.dropped.assign(contacts.size(), 0);
     bool dropped_any = false;
     for (std::size_t begin = 0; begin < lists.entries.size();) {
