@@ -22,7 +22,7 @@ std::size_t contact_colouring::slab_cut::bin_of(const vector& p) const {
   if (!(span > 0)) return 0;
   // (Written so that a NaN or an infinity, from a world that has blown up,
   // lands in a bin instead of an undefined conversion.)
-  const real x = (p.c[axis] - start) / span * real(bins - 1);
+  const real x = (p.c[axis] - start) * scale;
   if (!(x < real(bins - 1))) return x > 0 ? bins - 1 : 0;
   return x > 0 ? static_cast<std::size_t>(x) : 0;
 }
@@ -166,6 +166,8 @@ void assign_blocks(const std::vector<vector>& positions, int colours, int blocks
   cut.axis = axis;
   cut.start = low[axis];
   cut.span = extent.c[axis];
+  // (A product per run, not a quotient: a sixth of this pass.)
+  cut.scale = cut.span > 0 ? real(contact_colouring::bins - 1) / cut.span : real(0);
   std::vector<std::size_t>& weight = out.bin_weights;
   weight.assign(contact_colouring::bins + 1, 0);
   out.run_bins.resize(runs);
@@ -179,16 +181,26 @@ void assign_blocks(const std::vector<vector>& positions, int colours, int blocks
   own.assign(bodies + 1, no_bin);
   lowest.assign(bodies + 1, contact_colouring::bins - 1);
   highest.assign(bodies + 1, 0);
+  // (Runs in a row mostly share a bin, their movers being neighbours: the
+  // contacts of a row of runs of one bin are added up here and added to
+  // its weight once, not each to the last through memory.)
+  std::size_t row_bin = 0, row_weight = 0;
   for (std::size_t r = 0; r < runs; ++r) {
     if (!coloured(r)) continue;
     const auto bin = static_cast<std::uint16_t>(cut.bin_of(positions[out.movers[r]]));
     out.run_bins[r] = bin;
-    weight[bin + 1] += out.run_begins[r + 1] - out.run_begins[r];
+    if (bin != row_bin) {
+      weight[row_bin + 1] += row_weight;
+      row_bin = bin;
+      row_weight = 0;
+    }
+    row_weight += out.run_begins[r + 1] - out.run_begins[r];
     own[out.movers[r]] = bin;
     const std::size_t partner = out.partners[r];
     lowest[partner] = std::min(lowest[partner], bin);
     highest[partner] = std::max(highest[partner], bin);
   }
+  weight[row_bin + 1] += row_weight;
   lowest[bodies] = highest[bodies] = 0;  // (no body: one bin)
   for (std::size_t b = 1; b <= contact_colouring::bins; ++b) weight[b] += weight[b - 1];
   const std::size_t total = weight.back();

@@ -78,6 +78,7 @@ struct contact_colouring {
   struct slab_cut {
     int axis = 0;
     real start = 0, span = 0;
+    real scale = 0;  // bins per metre: (bins - 1) / span
     bool any = false;
     std::vector<std::uint32_t> bin_blocks;
     std::size_t bin_of(const vector& p) const;
