@@ -24,9 +24,12 @@ class scratch_array {
   // Room for `count` elements, their values unspecified.
   void reset(std::size_t count) {
     if (count > capacity_) {
-      // (A quarter more, as the lists it serves grow a little most steps.)
+      // (The old elements freed first: nothing of them is kept. A quarter
+      // more room, as the lists it serves grow a little most steps.)
+      elements_.reset();
+      size_ = capacity_ = 0;
+      elements_.reset(new T[count + count / 4]);
       capacity_ = count + count / 4;
-      elements_.reset(new T[capacity_]);
     }
     size_ = count;
   }
