@@ -21,27 +21,24 @@ class scratch_array {
  public:
   using value_type = T;
 
-  // Room for `count` elements, their values unspecified.
+  // Room for at least `count` elements, their values unspecified.
   void reset(std::size_t count) {
     if (count > capacity_) {
       // (The old elements freed first: nothing of them is kept. A quarter
       // more room, as the lists it serves grow a little most steps.)
       elements_.reset();
-      size_ = capacity_ = 0;
+      capacity_ = 0;
       elements_.reset(new T[count + count / 4]);
       capacity_ = count + count / 4;
     }
-    size_ = count;
   }
-  std::size_t size() const { return size_; }
   T* data() { return elements_.get(); }
-  const T* data() const { return elements_.get(); }
   T& operator[](std::size_t i) { return elements_[i]; }
   const T& operator[](std::size_t i) const { return elements_[i]; }
 
  private:
   std::unique_ptr<T[]> elements_;
-  std::size_t size_ = 0, capacity_ = 0;
+  std::size_t capacity_ = 0;
 };
 
 }  // namespace gaphys::detail
