@@ -77,7 +77,7 @@ class space {
  private:
   enum class met { nothing, sensed, contacts };
   // `alone`: neither body can be pushed in this step by another that moves
-  // (jostled_), so the speculative contacts their velocities cannot reach
+  // (`jostled`), so the speculative contacts their velocities cannot reach
   // are left out (space.cpp, keep_reachable).
   static met meet(const body& body_a, const body& body_b, std::size_t i, std::size_t j,
                   const placed_shape& shape_a, const placed_shape& shape_b, real lookahead,
@@ -86,6 +86,7 @@ class space {
                  real margin) const;
   void place_shapes(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
                     int threads = 1);
+  void mark_pairs(const std::vector<body_pair>& pairs, int threads);
   // Every pair met, on `threads`, into `contacts` (find_contacts).
   void meet_all(const std::vector<body>& bodies, const std::vector<body_pair>& pairs,
                 std::vector<contact>& contacts, real lookahead, const material_combine_rules& rules,
@@ -104,10 +105,13 @@ class space {
   // Every shape at its pose: body i's are placed_[first_shape_[i], first_shape_[i + 1]).
   std::vector<placed_shape> placed_;  // reused between steps
   std::vector<std::size_t> first_shape_;
-  std::vector<unsigned char> in_pairs_;  // whether each body is in some pair
-  // Whether each dynamic body is in a pair with another dynamic or a
-  // kinematic body, which may push it anywhere within the step.
-  std::vector<unsigned char> jostled_;
+  // Per body: whether it is in some pair, and whether it is dynamic and in
+  // a pair with another dynamic or a kinematic body, which may push it
+  // anywhere within the step (mark_pairs).
+  enum : unsigned char { in_a_pair = 1, jostled = 2 };
+  std::vector<unsigned char> body_marks_;
+  // The marks of the marking threads but the first (mark_pairs).
+  std::vector<detail::cache_padded<std::vector<unsigned char>>> more_marks_;
   std::vector<unsigned char> static_;   // whether each body is static
   std::vector<unsigned char> dynamic_;  // whether each body is dynamic
   detail::hidden_face_lists hidden_;
