@@ -1100,29 +1100,48 @@ void contact_solver::for_each_constraint(int threads, const Visit& visit,
   }
 }
 
-// Each contact's thread in the sweeps (owners_, for T > 1 blocks): the
-// block of its colour its slot is in; the sequential group's, thread 0.
-void contact_solver::mark_owners() {
-  owners_.resize(colouring_.order.size());
-  const auto blocks = static_cast<std::size_t>(sweep_threads_);
-  const std::size_t colours = colouring_.colours();
-  const std::vector<std::size_t>& starts = colouring_.run_starts;
-  const auto mark = [&](std::size_t first_run, std::size_t end_run, std::size_t owner) {
-    for (std::size_t s = starts[first_run]; s < starts[end_run]; ++s) {
-      owners_[colouring_.order[s]] = static_cast<std::uint16_t>(owner);
-    }
-  };
-#pragma omp parallel num_threads(sweep_threads_)
+// Each contact's slot in the sweeps' order (slot_) and, for T > 1 blocks,
+// its thread in the sweeps (owners_: the block of its colour its slot is
+// in; the sequential group's, thread 0). On the threads for many contacts,
+// each reading the whole order and writing the entries of its own share of
+// the contacts, the others' going to a spare: split by slots instead, two
+// threads wrote entries of the same lines at random and took the lines
+// from each other.
+void contact_solver::find_slots(int threads) {
+  const std::vector<std::size_t>& order = colouring_.order;
+  const std::size_t count = order.size();
+  const std::size_t blocks = sweep_threads_ > 1 ? static_cast<std::size_t>(sweep_threads_) : 0;
+  slot_.resize(count);
+  owners_.resize(blocks > 0 ? count : 0);
+  const std::vector<std::size_t>& run_starts = colouring_.run_starts;
+  const int shares = detail::threads_for(threads, count, 4096);
+#pragma omp parallel num_threads(shares) if (shares > 1)
   {
-    const auto thread = static_cast<std::size_t>(omp_get_thread_num());
     const auto team = static_cast<std::size_t>(omp_get_num_threads());
-    for (std::size_t owner = thread; owner < blocks; owner += team) {
-      for (std::size_t c = 0; c < colours; ++c) {
-        const std::size_t* runs = &colouring_.thread_starts[c * (blocks + 1)];
-        mark(runs[owner], runs[owner + 1], owner);
+    const auto thread = static_cast<std::size_t>(omp_get_thread_num());
+    const std::size_t first = count * thread / team, end = count * (thread + 1) / team;
+    std::size_t spare_slot = 0;
+    std::uint16_t spare_owner = 0;
+    // (Where the entry goes chosen without a branch: half the entries are
+    // the other thread's, in no pattern.)
+    const auto take = [&](std::size_t from_run, std::size_t end_run, std::size_t owner) {
+      for (std::size_t s = run_starts[from_run]; s < run_starts[end_run]; ++s) {
+        const std::size_t i = order[s];
+        const bool mine = i - first < end - first;
+        *(mine ? &slot_[i] : &spare_slot) = s;
+        if (blocks > 0) *(mine ? &owners_[i] : &spare_owner) = static_cast<std::uint16_t>(owner);
       }
+    };
+    const std::size_t coloured = colouring_.colour_starts.back();
+    if (blocks > 0) {
+      for (std::size_t c = 0; c < colouring_.colours(); ++c) {
+        const std::size_t* runs = &colouring_.thread_starts[c * (blocks + 1)];
+        for (std::size_t b = 0; b < blocks; ++b) take(runs[b], runs[b + 1], b);
+      }
+    } else {
+      take(0, coloured, 0);
     }
-    if (thread == 0) mark(colouring_.colour_starts.back(), colouring_.runs(), 0);
+    take(coloured, colouring_.runs(), 0);
   }
 }
 
@@ -1191,10 +1210,7 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
     find_supports(bodies.size());
     count_contacts(bodies.size(), colouring_.pairs);
   }
-  slot_.resize(count);
-  detail::parallel_for(settings.threads, count, 4096,
-                       [&](std::size_t s) { slot_[colouring_.order[s]] = s; });
-  if (sweep_threads_ > 1) mark_owners();
+  find_slots(settings.threads);
   // Where each constraint's optional terms go, in the sweeps' order. (Each
   // contact's own were read with its bodies above: read here in that order,
   // the contacts were a scattered read, 0.12-0.15 ms of a 10,000-sphere

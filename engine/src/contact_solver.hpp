@@ -268,8 +268,8 @@ class contact_solver {
   void pack_batches(const world_settings& settings);
   template <class Visit, class Ahead>
   void for_each_constraint(int threads, const Visit& visit, const Ahead& ahead) const;
-  void mark_owners();
-  std::vector<std::uint16_t> owners_;  // per contact: its thread in the sweeps (mark_owners)
+  void find_slots(int threads);
+  std::vector<std::uint16_t> owners_;  // per contact: its thread in the sweeps (find_slots)
   template <class Visit>
   void by_colours(const Visit& visit);
   // The slots of part p of block `block` of a colour (on one thread, part
