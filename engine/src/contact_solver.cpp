@@ -10,6 +10,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "huge_pages.hpp"
 #include "prefetch.hpp"
 #include "thread_count.hpp"
 #include "timed_impact.hpp"
@@ -1226,10 +1227,10 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
       total.resistances += own >> 1;
     }
   }
-  constraints_.resize(count);
-  normal_arms_.resize(count);
-  impacts_.resize(count);
-  impact_filters_.resize(count);
+  detail::resize_in_huge_pages(constraints_, count);
+  detail::resize_in_huge_pages(normal_arms_, count);
+  detail::resize_in_huge_pages(impacts_, count);
+  detail::resize_in_huge_pages(impact_filters_, count);
   surfaces_.resize(total.surfaces);
   frames_.resize(total.surfaces);
   resistances_.resize(total.resistances);

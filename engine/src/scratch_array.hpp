@@ -12,6 +12,8 @@
 #include <memory>
 #include <type_traits>
 
+#include "huge_pages.hpp"
+
 namespace gaphys::detail {
 
 template <class T>
@@ -30,6 +32,7 @@ class scratch_array {
       capacity_ = 0;
       elements_.reset(new T[count + count / 4]);
       capacity_ = count + count / 4;
+      advise_huge_pages(elements_.get(), capacity_ * sizeof(T));
     }
   }
   T* data() { return elements_.get(); }

@@ -12,6 +12,7 @@
 #include <type_traits>
 
 #include "convex_contact.hpp"
+#include "huge_pages.hpp"
 #include "prefetch.hpp"
 #include "round_meet.hpp"
 #include "thread_count.hpp"
@@ -342,7 +343,7 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
   // written over below: emptied first, it is not copied.
   if (contacts.capacity() < pairs.size()) {
     contacts.clear();
-    contacts.reserve(pairs.size() + pairs.size() / 4);
+    detail::reserve_in_huge_pages(contacts, pairs.size());
   }
   if (shares == 1) {
     on_static_.clear();
@@ -390,6 +391,11 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
             in_place_end += lists.made;
             ++next_in_place;
           } else {
+            // (Room for a contact a pair, as for the step's list above.)
+            if (lists.contacts.capacity() < static_cast<std::size_t>(end - first)) {
+              lists.contacts.clear();
+              detail::reserve_in_huge_pages(lists.contacts, static_cast<std::size_t>(end - first));
+            }
             lists.made = meet_pairs(bodies, first, end, lists.contacts, 0, lookahead, rules, margin,
                                     sensed, lists.on_static);
           }
@@ -408,9 +414,7 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
     copy_starts_[at + 1] = copy_starts_[at] + (lists.in_place ? 0 : lists.made);
   }
   const share_start total = share_starts_.back();
-  if (contacts.capacity() < total.contacts) {
-    contacts.reserve(total.contacts + total.contacts / 4);
-  }
+  detail::reserve_in_huge_pages(contacts, total.contacts);
   // (Longer than this step's where it holds the list from two steps ago:
   // only the end is cut. Made longer, the new contacts are zeroed first.)
   contacts.resize(total.contacts);
