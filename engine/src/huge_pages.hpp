@@ -12,6 +12,7 @@
 // grown; it changes no value the buffer holds.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
@@ -38,14 +39,15 @@ inline void advise_huge_pages(const void* data, std::size_t bytes) {
 }
 
 // Makes room in `v` for at least `count` elements: where it has less, room
-// for a quarter more (a pile's lists grow a little most steps), in huge
-// pages. What `v` holds is kept, moved over once the new room is asked for
-// in huge pages (moved first, its pages would be small ones already).
+// for a quarter more than `count` and at least twice what it had (a pile's
+// lists grow a little most steps, and each new room is written anew), in
+// huge pages. What `v` holds is kept, moved over once the new room is asked
+// for in huge pages (moved first, its pages would be small ones already).
 template <class T>
 void reserve_in_huge_pages(std::vector<T>& v, std::size_t count) {
   if (v.capacity() >= count) return;
   std::vector<T> room;
-  room.reserve(count + count / 4);
+  room.reserve(std::max(count + count / 4, 2 * v.capacity()));
   advise_huge_pages(room.data(), room.capacity() * sizeof(T));
   room.insert(room.end(), std::make_move_iterator(v.begin()), std::make_move_iterator(v.end()));
   v.swap(room);

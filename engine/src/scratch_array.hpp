@@ -8,6 +8,7 @@
 // others waited, and a quarter of a pile's page faults were its pages.)
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <memory>
 #include <type_traits>
@@ -27,11 +28,13 @@ class scratch_array {
   void reset(std::size_t count) {
     if (count > capacity_) {
       // (The old elements freed first: nothing of them is kept. A quarter
-      // more room, as the lists it serves grow a little most steps.)
+      // more room, and at least twice the old, as the lists it serves grow
+      // a little most steps and each new room's pages fault in anew.)
+      const std::size_t room = std::max(count + count / 4, 2 * capacity_);
       elements_.reset();
       capacity_ = 0;
-      elements_.reset(new T[count + count / 4]);
-      capacity_ = count + count / 4;
+      elements_.reset(new T[room]);
+      capacity_ = room;
       advise_huge_pages(elements_.get(), capacity_ * sizeof(T));
     }
   }
