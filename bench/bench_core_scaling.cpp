@@ -14,7 +14,10 @@
 // ratio (2 / 1; 0.5 is a perfect second core). These loops share nothing,
 // so they cannot tell whether the two cores share a cache; `handoff` does
 // (core_handoff.hpp): the median round trip of a cache line between the
-// two threads, in ns.
+// two threads, in ns. `private_sweep`: how much longer two threads take
+// each to sweep a buffer of its own that fits one core's L2 cache than one
+// thread alone (core_handoff.hpp): near 1 where the threads have a core
+// each, up to 2 where they are two hyperthreads of one core.
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
@@ -102,6 +105,12 @@ void handoff(benchmark::State& state) {
   state.counters["round_trip_ns"] = ns;
 }
 
+void private_sweep(benchmark::State& state) {
+  double ratio = 0;
+  for (auto _ : state) ratio = gaphys_bench::private_sweep_ratio(std::size_t{768} << 10, 25);
+  state.counters["ratio"] = ratio;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -109,7 +118,8 @@ int main(int argc, char** argv) {
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   for (const auto& [name, run] :
        {std::pair{"cores/latency", &latency}, std::pair{"cores/throughput", &throughput},
-        std::pair{"cores/stream", &stream}, std::pair{"cores/handoff", &handoff}}) {
+        std::pair{"cores/stream", &stream}, std::pair{"cores/handoff", &handoff},
+        std::pair{"cores/private_sweep", &private_sweep}}) {
     benchmark::RegisterBenchmark(name, run)
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond)

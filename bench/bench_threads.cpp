@@ -26,8 +26,11 @@
 // two threads, measured before each pair of blocks of T (core_handoff.hpp:
 // above about 400 ns the two cores share no cache, and the ratio says so),
 // and handoff_max_ns, the slowest of them (the host may move the cores
-// within a run, which the median hides). One benchmark iteration is the
-// whole alternating run.
+// within a run, which the median hides); sweep_ratio, the median of as many
+// measurements of private_sweep_ratio (core_handoff.hpp: near 1 where the
+// two threads have a core each, towards 2 where they are hyperthreads of
+// one core, which the round trip does not tell). One benchmark iteration is
+// the whole alternating run.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -51,18 +54,21 @@ void alternate(benchmark::State& state, bool boxes) {
   const int blocks = static_cast<int>(state.range(2));
   const int steps = static_cast<int>(state.range(3));    // per thread count in a row
   const int untimed = static_cast<int>(state.range(4));  // of which the first are not timed
-  std::vector<double> one, many, handoffs;
+  std::vector<double> one, many, handoffs, sweeps;
   for (auto _ : state) {
     gaphys::world w = boxes ? gaphys::scenes::falling_boxes_in_box(count)
                             : gaphys::scenes::falling_spheres_in_box(count);
     w.set_sleeping(false);
     w.set_threads(1);
     for (int i = 0; i < warm_up_steps; ++i) w.step(h);
-    one.clear(), many.clear(), handoffs.clear();
+    one.clear(), many.clear(), handoffs.clear(), sweeps.clear();
     for (int b = 0; b < 2 * blocks; ++b) {
       // 1, T, T, 1, 1, T, ...: each count follows the other as often.
       const bool on_one = (b % 4 == 0) || (b % 4 == 3);
-      if (b % 4 == 1) handoffs.push_back(gaphys_bench::handoff_round_trip_ns());
+      if (b % 4 == 1) {
+        handoffs.push_back(gaphys_bench::handoff_round_trip_ns());
+        sweeps.push_back(gaphys_bench::private_sweep_ratio());
+      }
       w.set_threads(on_one ? 1 : threads);
       for (int i = 0; i < steps; ++i) {
         const auto start = std::chrono::steady_clock::now();
@@ -78,6 +84,7 @@ void alternate(benchmark::State& state, bool boxes) {
   state.counters["ratio"] = many_ms / one_ms;
   state.counters["handoff_ns"] = gaphys_bench::median(handoffs);
   state.counters["handoff_max_ns"] = *std::max_element(handoffs.begin(), handoffs.end());
+  state.counters["sweep_ratio"] = gaphys_bench::median(sweeps);
 }
 
 void spheres(benchmark::State& state) { alternate(state, false); }
