@@ -4,7 +4,7 @@
 //
 // A list that grows with a pile writes pages it never wrote before, and the
 // first write of each 4 KiB page is a page fault: on this project's virtual
-// machine about 9 us each (its page tables are shadowed by the host), and 30
+// machine about 9 us each (its page tables are shadowed by the host), and 15
 // to 300 of them a step at 10,000 spheres while the pile filled up, several
 // on one thread while the others waited (the contact list made longer by
 // std::vector's resize, 0.1-0.2 ms a step). A 2 MiB page costs one fault
