@@ -38,19 +38,34 @@ inline void advise_huge_pages(const void* data, std::size_t bytes) {
 #endif
 }
 
-// Makes room in `v` for at least `count` elements: where it has less, room
-// for a quarter more than `count` and at least twice what it had (a pile's
-// lists grow a little most steps, and each new room is written anew), in
-// huge pages. What `v` holds is kept, moved over once the new room is asked
-// for in huge pages (moved first, its pages would be small ones already).
+// The room a buffer of `capacity` elements gets when `count` outgrow it: a
+// quarter more than `count` and at least twice what it had (a pile's lists
+// grow a little most steps, and each new room is written anew).
+inline std::size_t grown_room(std::size_t count, std::size_t capacity) {
+  return std::max(count + count / 4, 2 * capacity);
+}
+
+// Makes room in `v` for at least `count` elements: where it has less,
+// grown_room in huge pages. What `v` holds is kept, moved over once the new
+// room is asked for in huge pages (moved first, its pages would be small
+// ones already).
 template <class T>
 void reserve_in_huge_pages(std::vector<T>& v, std::size_t count) {
   if (v.capacity() >= count) return;
   std::vector<T> room;
-  room.reserve(std::max(count + count / 4, 2 * v.capacity()));
+  room.reserve(grown_room(count, v.capacity()));
   advise_huge_pages(room.data(), room.capacity() * sizeof(T));
   room.insert(room.end(), std::make_move_iterator(v.begin()), std::make_move_iterator(v.end()));
   v.swap(room);
+}
+
+// The same for a list written over before it is read: where it must grow,
+// what it holds is dropped first instead of moved.
+template <class T>
+void reserve_over_in_huge_pages(std::vector<T>& v, std::size_t count) {
+  if (v.capacity() >= count) return;
+  v.clear();
+  reserve_in_huge_pages(v, count);
 }
 
 // v.resize(count), its room made by reserve_in_huge_pages.

@@ -8,7 +8,6 @@
 // others waited, and a quarter of a pile's page faults were its pages.)
 #pragma once
 
-#include <algorithm>
 #include <cstddef>
 #include <memory>
 #include <type_traits>
@@ -27,10 +26,8 @@ class scratch_array {
   // Room for at least `count` elements, their values unspecified.
   void reset(std::size_t count) {
     if (count > capacity_) {
-      // (The old elements freed first: nothing of them is kept. A quarter
-      // more room, and at least twice the old, as the lists it serves grow
-      // a little most steps and each new room's pages fault in anew.)
-      const std::size_t room = std::max(count + count / 4, 2 * capacity_);
+      // (The old elements freed first: nothing of them is kept.)
+      const std::size_t room = grown_room(count, capacity_);
       elements_.reset();
       capacity_ = 0;
       elements_.reset(new T[room]);

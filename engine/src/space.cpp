@@ -341,10 +341,7 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
   // faulted in (5.7 MB at 10,000 spheres; in a pile still filling up, 0.08
   // ms a step on average). What it holds (the list of two steps ago) is
   // written over below: emptied first, it is not copied.
-  if (contacts.capacity() < pairs.size()) {
-    contacts.clear();
-    detail::reserve_in_huge_pages(contacts, pairs.size());
-  }
+  detail::reserve_over_in_huge_pages(contacts, pairs.size());
   if (shares == 1) {
     on_static_.clear();
     contacts.resize(meet_pairs(bodies, pairs.data(), pairs.data() + pairs.size(), contacts, 0,
@@ -392,10 +389,8 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
             ++next_in_place;
           } else {
             // (Room for a contact a pair, as for the step's list above.)
-            if (lists.contacts.capacity() < static_cast<std::size_t>(end - first)) {
-              lists.contacts.clear();
-              detail::reserve_in_huge_pages(lists.contacts, static_cast<std::size_t>(end - first));
-            }
+            detail::reserve_over_in_huge_pages(lists.contacts,
+                                               static_cast<std::size_t>(end - first));
             lists.made = meet_pairs(bodies, first, end, lists.contacts, 0, lookahead, rules, margin,
                                     sensed, lists.on_static);
           }
