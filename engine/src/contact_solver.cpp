@@ -1330,7 +1330,11 @@ void contact_solver::correct_positions(const world_settings& settings, std::vect
       // next step meets them for real.
       if (k.gap > 0) continue;
       if (k.turns) {  // corrected below, turning the bodies too
-        any_turning.store(true, std::memory_order_relaxed);
+        // (Read first: stored by every turning contact, the flag's line
+        // went back and forth between the cores, each store taking it.)
+        if (!any_turning.load(std::memory_order_relaxed)) {
+          any_turning.store(true, std::memory_order_relaxed);
+        }
         continue;
       }
       // The depth now, to first order: the positions moved by h v since the
