@@ -1195,9 +1195,7 @@ void contact_solver::solve_velocities(const world_settings& settings, std::vecto
     keys_[i] = key_of_point(c);
     const term_counts own = terms_of(bodies[c.body_a], bodies[c.body_b], c);
     own_terms_[i] = static_cast<unsigned char>(own.surfaces | own.resistances << 1);
-    if (own_terms_[i] != 0 && !any_terms.load(std::memory_order_relaxed)) {
-      any_terms.store(true, std::memory_order_relaxed);
-    }
+    if (own_terms_[i] != 0) detail::raise_flag(any_terms);
   });
   // The colouring is mostly serial (its greedy pass); on two threads or
   // more, one colours while the others prepare what needs no colouring.
@@ -1330,11 +1328,7 @@ void contact_solver::correct_positions(const world_settings& settings, std::vect
       // next step meets them for real.
       if (k.gap > 0) continue;
       if (k.turns) {  // corrected below, turning the bodies too
-        // (Read first: stored by every turning contact, the flag's line
-        // went back and forth between the cores, each store taking it.)
-        if (!any_turning.load(std::memory_order_relaxed)) {
-          any_turning.store(true, std::memory_order_relaxed);
-        }
+        detail::raise_flag(any_turning);
         continue;
       }
       // The depth now, to first order: the positions moved by h v since the
@@ -1404,7 +1398,7 @@ void contact_solver::correct_turning(const world_settings& settings, std::vector
         if (c.geometry.depth >= 0 && depth >= 0 && excess > 0) {
           pseudo_targets_[s] = settings.position_correction * excess / h;
           taking_part[s] = pushed_apart;
-          if (!any.load(std::memory_order_relaxed)) any.store(true, std::memory_order_relaxed);
+          detail::raise_flag(any);
         } else {
           pseudo_targets_[s] = depth < 0 ? depth / h : real(0);
           taking_part[s] = holds;

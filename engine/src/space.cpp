@@ -336,11 +336,12 @@ void space::meet_all(const std::vector<body>& bodies, const std::vector<body_pai
   if (sensors) sensors->clear();
   // (A few hundred pairs per thread: a box pair takes about a microsecond.)
   const int shares = detail::threads_for(threads, pairs.size(), 256);
-  // Room for at least a contact per pair, and a quarter more: a list that
-  // outgrows its room is copied whole to a new one whose pages are then
-  // faulted in (5.7 MB at 10,000 spheres; in a pile still filling up, 0.08
-  // ms a step on average). What it holds (the list of two steps ago) is
-  // written over below: emptied first, it is not copied.
+  // Room for at least a contact per pair (grown_room: a quarter more, at
+  // least twice the old room): a list that outgrows its room is copied
+  // whole to a new one whose pages are then faulted in (5.7 MB at 10,000
+  // spheres; in a pile still filling up, 0.08 ms a step on average). What
+  // it holds (the list of two steps ago) is written over below: emptied
+  // first, it is not copied.
   detail::reserve_over_in_huge_pages(contacts, pairs.size());
   if (shares == 1) {
     on_static_.clear();

@@ -79,6 +79,15 @@ void parallel_for(int setting, std::size_t count, std::size_t per_thread, const 
   visit_on_threads(threads, count, std::max<std::size_t>(per_thread / 4, 1), visit);
 }
 
+// Sets a flag that threads raise as they find something (any contact with
+// terms, any turning one): read first, so that once it is up no thread
+// writes its cache line again. (Stored by every turning contact of a box
+// pile from both threads, the line went back and forth between the cores,
+// each store taking it.)
+inline void raise_flag(std::atomic<bool>& flag) {
+  if (!flag.load(std::memory_order_relaxed)) flag.store(true, std::memory_order_relaxed);
+}
+
 // A pause in a loop that waits for another core (on x86, which otherwise
 // floods the core's pipeline with loads of the line being waited for).
 inline void spin_pause() {
