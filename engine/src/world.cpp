@@ -289,10 +289,10 @@ const contact_events& world::events() const {
 
 void world::settle_events() const {
   if (!events_pending_) return;
-  detail::find_events(previous_contacts_, contacts_, events_, settings_.threads);
+  detail::find_events(previous_contacts_, contacts_, events_, step_threads_);
   // Contacts name bodies by index; the events by id.
   for (std::vector<contact_event>* list : {&events_.began, &events_.persisted, &events_.ended}) {
-    detail::parallel_for(settings_.threads, list->size(), 4096, [&](std::size_t i) {
+    detail::parallel_for(step_threads_, list->size(), 4096, [&](std::size_t i) {
       contact_event& e = (*list)[i];
       e.body_a = id_at(e.body_a), e.body_b = id_at(e.body_b);
     });
@@ -397,6 +397,12 @@ void world::step(real h) {
   if (!std::isfinite(1 / h))
     detail::reject("time step is too short: 1 / h overflows (got ", h, ")");
   const auto start = clock::now();
+  // The threads this step runs on (settings_.threads, or for 0 every core
+  // or one, as measured: detail/thread_choice.hpp), and the settings it
+  // runs with.
+  step_threads_ = thread_choice_.next(settings_.threads, omp_get_num_procs());
+  world_settings run = settings_;
+  run.threads = step_threads_;
   // One pass over the bodies (on the threads, for many): the velocities
   // before this step's forces (waking changes none), whether any body may
   // meet another (else no pair at all), whether the user woke a sleeping
@@ -405,7 +411,7 @@ void world::step(real h) {
   bool any_moves = false, any_woken = false, any_asleep = false, any_fixed_woken = false;
   std::size_t unsteppable = no_index;
   {
-    const int threads = detail::threads_for(settings_.threads, bodies_.size(), 1024);
+    const int threads = detail::threads_for(run.threads, bodies_.size(), 1024);
     const auto count = static_cast<std::ptrdiff_t>(bodies_.size());
     // clang-format off
 #pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1) \
@@ -463,7 +469,7 @@ void world::step(real h) {
   // again with them.
   pairs_.clear();
   while (any_moves) {
-    space_.candidate_pairs(bodies_, pairs_, h, settings_.contact_margin, settings_.threads);
+    space_.candidate_pairs(bodies_, pairs_, h, settings_.contact_margin, run.threads);
     if (!any_asleep) break;  // no island to wake
     islands.clear();
     for (const auto& [a, b] : pairs_) {
@@ -482,21 +488,21 @@ void world::step(real h) {
   previous_contacts_.swap(contacts_);
   std::vector<sensor_overlap> sleeping_overlaps = unchanged_sensor_overlaps();
   space_.find_contacts(bodies_, pairs_, contacts_, h, settings_.material_combine,
-                       settings_.contact_margin, &sensor_overlaps_, settings_.threads,
+                       settings_.contact_margin, &sensor_overlaps_, run.threads,
                        settings_.linear_slop);
   merge_sensor_overlaps(sleeping_overlaps);
   const auto met = clock::now();
   if (!solver_) solver_ = std::make_unique<contact_solver>();  // a moved-from world
   // (Without contacts the solver would copy every velocity out and back.)
   if (!contacts_.empty()) {
-    solver_->solve_velocities(settings_, bodies_, start_velocities_, contacts_, previous_contacts_,
+    solver_->solve_velocities(run, bodies_, start_velocities_, contacts_, previous_contacts_,
                               previous_solved, h);
   }
   contacts_solved_ = !contacts_.empty();
   const auto solved = clock::now();
   integrate_positions(h);
   const auto moved = clock::now();
-  if (!contacts_.empty()) solver_->correct_positions(settings_, bodies_, contacts_, h);
+  if (!contacts_.empty()) solver_->correct_positions(run, bodies_, contacts_, h);
   const auto corrected = clock::now();
   // The events are found when read (events()), or before the islands that
   // fall asleep set their contacts aside. Contacts name bodies by index; the
@@ -508,7 +514,7 @@ void world::step(real h) {
   // (On the threads for many bodies, as the step's first pass.)
   std::size_t overflowed = no_index;
   {
-    const int threads = detail::threads_for(settings_.threads, bodies_.size(), 1024);
+    const int threads = detail::threads_for(run.threads, bodies_.size(), 1024);
     const auto count = static_cast<std::ptrdiff_t>(bodies_.size());
     // clang-format off
 #pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1) \
@@ -529,6 +535,8 @@ void world::step(real h) {
   timings_.response = seconds(met, solved) + seconds(moved, corrected);
   timings_.events = seconds(corrected, reported);
   timings_.candidate_pairs = pairs_.size();
+  timings_.threads = step_threads_;
+  thread_choice_.record(seconds(start, slept));
   time_ += h;
   if (overflowed != no_index) report_overflow(overflowed);
 }
@@ -641,7 +649,7 @@ void world::fall_asleep(real h) {
 // and joining the threads costs. From 2,048 a thread, both halves ran on
 // one thread at 1,000 spheres: about 50 us of a step on two threads.)
 void world::integrate_velocities(real h) {
-  detail::parallel_for(settings_.threads, bodies_.size(), 256, [&](std::size_t i) {
+  detail::parallel_for(step_threads_, bodies_.size(), 256, [&](std::size_t i) {
     body& b = bodies_[i];
     if (!b.asleep_) integrate_velocity(b, h);
   });
@@ -701,7 +709,7 @@ void world::report_overflow(std::size_t index) const {
 void world::integrate_positions(real h) {
   constexpr int midpoint_sweeps = 4;
   // (Each body on its own, as integrate_velocities.)
-  detail::parallel_for(settings_.threads, bodies_.size(), 256, [&](std::size_t i) {
+  detail::parallel_for(step_threads_, bodies_.size(), 256, [&](std::size_t i) {
     body& b = bodies_[i];
     // Sleeping bodies and kinematic ones at rest stay exactly where they are.
     if (b.is_static_ || b.asleep_ || detail::motion_of(b) == detail::motion::fixed) return;

@@ -13,6 +13,7 @@
 #include "gaphys/body.hpp"
 #include "gaphys/contact.hpp"
 #include "gaphys/contact_events.hpp"
+#include "gaphys/detail/thread_choice.hpp"
 #include "gaphys/queries.hpp"
 #include "gaphys/space.hpp"
 
@@ -67,9 +68,11 @@ struct world_settings {
   real sleep_linear_speed = 0.01;   // m/s, of the centre of mass
   real sleep_angular_speed = 0.01;  // rad/s
   real time_to_sleep = 0.5;         // s
-  // Threads the contact solver runs on; 0: every core. The step computes
-  // the same to the bit with any number (docs/engine.md, "Threads"), so
-  // snapshots do not keep it: a restored world keeps its own.
+  // Threads a step runs on; 0: every core, or one where one steps faster
+  // (the world times a step on the other count now and then:
+  // detail/thread_choice.hpp). The step computes the same to the bit with
+  // any number (docs/engine.md, "Threads"), so snapshots do not keep it: a
+  // restored world keeps its own.
   int threads = 0;
   // The contact sweeps on SIMD batches, several contacts at once
   // (docs/engine.md, "Contact batches"). They pay where a batch holds 4 or
@@ -89,6 +92,7 @@ struct step_timings {
   double response = 0;      // impulses and position correction
   double events = 0;        // sensor overlaps named by id (contact events: world::events())
   std::size_t candidate_pairs = 0;
+  int threads = 0;  // the threads the step ran on (for world_settings::threads 0, as chosen)
 };
 
 class contact_solver;
@@ -271,6 +275,11 @@ class world {
   std::vector<body_velocity> start_velocities_;  // before this step's forces, for restitution
   step_timings timings_;
   double time_ = 0;
+  // For world_settings::threads 0, the threads each step runs on; and the
+  // count the last step ran on (the contact events found after it use it
+  // too). Timing, not state: a copy or a restored world starts afresh.
+  detail::thread_choice thread_choice_;
+  int step_threads_ = 0;
   // The contact solver's working memory, kept from step to step (it holds
   // nothing a later step reads, so a copy of the world starts a fresh one).
   std::unique_ptr<contact_solver> solver_;
