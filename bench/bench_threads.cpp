@@ -90,6 +90,61 @@ void alternate(benchmark::State& state, bool boxes) {
 void spheres(benchmark::State& state) { alternate(state, false); }
 void boxes(benchmark::State& state) { alternate(state, true); }
 
+// threads = 0 (every core, or one where one steps faster:
+// gaphys/detail/thread_choice.hpp) beside 1 and T. The choice needs a
+// world that keeps its setting, so here three copies of M6 step in turn,
+// on 1, T and 0 threads, in blocks of `steps` (the first `untimed` of each
+// not timed: the other two worlds' blocks took the caches). Counters: the
+// median ms per step of each, their ratios to one thread, and the share of
+// the chosen world's timed steps that ran on one thread.
+void chosen(benchmark::State& state) {
+  const int count = static_cast<int>(state.range(0));
+  const int threads = static_cast<int>(state.range(1));
+  const int blocks = static_cast<int>(state.range(2));
+  const int steps = static_cast<int>(state.range(3));
+  const int untimed = static_cast<int>(state.range(4));
+  const int settings[3] = {1, threads, 0};
+  std::vector<double> took[3], handoffs;
+  double on_one = 0;
+  for (auto _ : state) {
+    std::vector<gaphys::world> worlds;
+    for (const int setting : settings) {
+      worlds.push_back(gaphys::scenes::falling_spheres_in_box(count));
+      worlds.back().set_sleeping(false);
+      worlds.back().set_threads(1);
+      for (int i = 0; i < warm_up_steps; ++i) worlds.back().step(h);
+      worlds.back().set_threads(setting);
+    }
+    for (auto& t : took) t.clear();
+    handoffs.clear();
+    on_one = 0;
+    for (int b = 0; b < blocks; ++b) {
+      handoffs.push_back(gaphys_bench::handoff_round_trip_ns());
+      for (int k = 0; k < 3; ++k) {
+        for (int i = 0; i < steps; ++i) {
+          const auto start = std::chrono::steady_clock::now();
+          worlds[static_cast<std::size_t>(k)].step(h);
+          const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+          if (i < untimed) continue;
+          took[k].push_back(seconds.count());
+          if (k == 2) on_one += worlds[2].last_step_timings().threads == 1;
+        }
+      }
+    }
+  }
+  const double one_ms = 1e3 * gaphys_bench::median(took[0]);
+  const double many_ms = 1e3 * gaphys_bench::median(took[1]);
+  const double chosen_ms = 1e3 * gaphys_bench::median(took[2]);
+  state.counters["one_thread_ms"] = one_ms;
+  state.counters["threads_ms"] = many_ms;
+  state.counters["chosen_ms"] = chosen_ms;
+  state.counters["ratio"] = many_ms / one_ms;
+  state.counters["chosen_ratio"] = chosen_ms / one_ms;
+  state.counters["chosen_on_one"] = on_one / static_cast<double>(took[2].size());
+  state.counters["handoff_ns"] = gaphys_bench::median(handoffs);
+  state.counters["handoff_max_ns"] = *std::max_element(handoffs.begin(), handoffs.end());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -109,5 +164,8 @@ int main(int argc, char** argv) {
     add("threads/falling_spheres", spheres, {10000, 2, 20, 4, 1});  // with the switching
     add("threads/falling_boxes", boxes, {1000, 2, 15, 8, 4});       // (a slower step: 240 in all)
     add("threads/falling_boxes", boxes, {10000, 2, 3, 8, 2});       // (60 ms a step on one thread)
+    // (Named apart from the smoke test's filter, falling_spheres/1000/: 3,000 steps.)
+    add("threads_chosen/spheres", chosen, {1000, 2, 10, 100, 4});
+    add("threads_chosen/spheres", chosen, {10000, 2, 4, 100, 4});
   });
 }
