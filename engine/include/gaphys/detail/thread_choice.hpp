@@ -6,10 +6,11 @@
 // Where the cores share no cache, every line one thread writes and the
 // other reads crosses between them slowly, and a small world's step is
 // mostly such crossings: 1,000 spheres took 1.9-2.1 times as long on two
-// threads as on one with this machine's two vCPUs 310 ns apart (a round
-// trip of a cache line), against 0.8 times with them 55 ns apart. A
-// process given less processor time than its cores (a container's quota,
-// a host that runs both vCPUs on one core) fares the same.
+// threads as on one with this machine's two vCPUs 310-330 ns apart (a
+// round trip of a cache line), against 0.8 times with them 55 ns apart.
+// A process given less processor time than it has cores (a container's
+// quota) has its threads wait for each other, and should fare alike (not
+// measured here).
 //
 // So now and then the world steps on the other count: once to move the
 // step's data to the cores that will read it (not counted), then once
