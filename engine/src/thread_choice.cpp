@@ -47,7 +47,6 @@ void thread_choice::record(double seconds) {
 }
 
 void thread_choice::weigh(double probe_seconds) {
-  weighed_median_ = median_recent();
   if (probe_seconds < 0.9 * fastest_recent()) {
     // (The new count's steps will be weighed against its probe's.)
     weighed_median_ = probe_seconds;
@@ -56,6 +55,7 @@ void thread_choice::weigh(double probe_seconds) {
     recent_count_ = 0;
     recent_at_ = 0;
   } else {
+    weighed_median_ = median_recent();
     const long growth = probe_seconds > 1.5 * weighed_median_ ? 8 : 2;
     interval_ = std::min(longest_interval, interval_ * growth);
   }

@@ -398,11 +398,11 @@ void world::step(real h) {
     detail::reject("time step is too short: 1 / h overflows (got ", h, ")");
   const auto start = clock::now();
   // The threads this step runs on (settings_.threads, or for 0 every core
-  // or one, as measured: detail/thread_choice.hpp), and the settings it
-  // runs with.
+  // or one, as measured: detail/thread_choice.hpp), and the settings the
+  // solver runs with, on them.
   step_threads_ = thread_choice_.next(settings_.threads, omp_get_num_procs());
-  world_settings run = settings_;
-  run.threads = step_threads_;
+  world_settings solver_settings = settings_;
+  solver_settings.threads = step_threads_;
   // One pass over the bodies (on the threads, for many): the velocities
   // before this step's forces (waking changes none), whether any body may
   // meet another (else no pair at all), whether the user woke a sleeping
@@ -411,7 +411,7 @@ void world::step(real h) {
   bool any_moves = false, any_woken = false, any_asleep = false, any_fixed_woken = false;
   std::size_t unsteppable = no_index;
   {
-    const int threads = detail::threads_for(run.threads, bodies_.size(), 1024);
+    const int threads = detail::threads_for(step_threads_, bodies_.size(), 1024);
     const auto count = static_cast<std::ptrdiff_t>(bodies_.size());
     // clang-format off
 #pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1) \
@@ -469,7 +469,7 @@ void world::step(real h) {
   // again with them.
   pairs_.clear();
   while (any_moves) {
-    space_.candidate_pairs(bodies_, pairs_, h, settings_.contact_margin, run.threads);
+    space_.candidate_pairs(bodies_, pairs_, h, settings_.contact_margin, step_threads_);
     if (!any_asleep) break;  // no island to wake
     islands.clear();
     for (const auto& [a, b] : pairs_) {
@@ -488,21 +488,21 @@ void world::step(real h) {
   previous_contacts_.swap(contacts_);
   std::vector<sensor_overlap> sleeping_overlaps = unchanged_sensor_overlaps();
   space_.find_contacts(bodies_, pairs_, contacts_, h, settings_.material_combine,
-                       settings_.contact_margin, &sensor_overlaps_, run.threads,
+                       settings_.contact_margin, &sensor_overlaps_, step_threads_,
                        settings_.linear_slop);
   merge_sensor_overlaps(sleeping_overlaps);
   const auto met = clock::now();
   if (!solver_) solver_ = std::make_unique<contact_solver>();  // a moved-from world
   // (Without contacts the solver would copy every velocity out and back.)
   if (!contacts_.empty()) {
-    solver_->solve_velocities(run, bodies_, start_velocities_, contacts_, previous_contacts_,
-                              previous_solved, h);
+    solver_->solve_velocities(solver_settings, bodies_, start_velocities_, contacts_,
+                              previous_contacts_, previous_solved, h);
   }
   contacts_solved_ = !contacts_.empty();
   const auto solved = clock::now();
   integrate_positions(h);
   const auto moved = clock::now();
-  if (!contacts_.empty()) solver_->correct_positions(run, bodies_, contacts_, h);
+  if (!contacts_.empty()) solver_->correct_positions(solver_settings, bodies_, contacts_, h);
   const auto corrected = clock::now();
   // The events are found when read (events()), or before the islands that
   // fall asleep set their contacts aside. Contacts name bodies by index; the
@@ -514,7 +514,7 @@ void world::step(real h) {
   // (On the threads for many bodies, as the step's first pass.)
   std::size_t overflowed = no_index;
   {
-    const int threads = detail::threads_for(run.threads, bodies_.size(), 1024);
+    const int threads = detail::threads_for(step_threads_, bodies_.size(), 1024);
     const auto count = static_cast<std::ptrdiff_t>(bodies_.size());
     // clang-format off
 #pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1) \

@@ -28,11 +28,10 @@ constexpr int cores = 8;
 using machine = std::function<double(std::size_t step, int threads)>;
 
 // The counts `choice` gives `steps` steps on `m` (threads setting 0).
-std::vector<int> run(detail::thread_choice& choice, const machine& m, std::size_t steps,
-                     std::size_t first = 0) {
+std::vector<int> run(detail::thread_choice& choice, const machine& m, std::size_t steps) {
   std::vector<int> counts;
   int last = 0;
-  for (std::size_t i = first; i < first + steps; ++i) {
+  for (std::size_t i = 0; i < steps; ++i) {
     const int threads = choice.next(0, cores);
     const double moved = last != 0 && threads != last ? 1.5 : 1.0;
     choice.record(moved * m(i, threads));
