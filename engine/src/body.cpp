@@ -28,8 +28,7 @@ void require_static_at_rest(bool is_static, bool at_rest, const char* what) {
   if (is_static && !at_rest) detail::reject("a static body cannot have a nonzero ", what);
 }
 
-bool is_zero(const vector& v) { return v.e1() == 0 && v.e2() == 0 && v.e3() == 0; }
-bool is_zero(const bivector& b) { return b.e12() == 0 && b.e13() == 0 && b.e23() == 0; }
+using detail::is_zero;
 
 void require_damping(const std::optional<real>& rate, const char* what) {
   if (rate) detail::require_non_negative(*rate, what);

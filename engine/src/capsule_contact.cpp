@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 
 #include "precision.hpp"
 #include "round_meet.hpp"
@@ -12,8 +11,6 @@
 namespace gaphys::detail {
 
 namespace {
-
-constexpr real infinity = std::numeric_limits<real>::infinity();
 
 // Two segments within this sine of parallel lie alongside each other (about
 // 0.6°): their contact is a line, held by two points at its ends.

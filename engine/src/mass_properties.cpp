@@ -13,7 +13,7 @@ namespace {
 
 using matrix = std::array<real, 9>;  // row-major, about the x, y, z axes
 
-constexpr real pi = 3.14159265358979323846;
+using detail::pi;
 
 // A solid of unit density: its volume, centroid and inertia about the centroid.
 struct unit_solid {

@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 #include "gjk.hpp"
@@ -15,8 +14,6 @@ namespace gaphys::detail {
 
 namespace {
 
-constexpr real infinity = std::numeric_limits<real>::infinity();
-
 // ---- Feature ids (the layout is in polyhedron_contact.hpp) -----------------
 
 enum class feature_kind : std::uint32_t {
@@ -26,8 +23,9 @@ enum class feature_kind : std::uint32_t {
   edge_pair = 3
 };
 
-std::uint32_t face_feature(bool b_is_reference, feature_kind kind, std::uint32_t reference_face,
-                           std::uint32_t side, std::uint32_t incident) {
+std::uint32_t face_clip_feature(bool b_is_reference, feature_kind kind,
+                                std::uint32_t reference_face, std::uint32_t side,
+                                std::uint32_t incident) {
   return (std::uint32_t(b_is_reference) << 31) | (std::uint32_t(kind) << 29) |
          ((reference_face & 0x7ffu) << 18) | ((side & 0x3fu) << 12) | (incident & 0xfffu);
 }
@@ -424,10 +422,10 @@ void clip_by_side(const buffer<clip_point>& polygon, const vec3& side_normal, re
                           std::int32_t along) {
     clip_point& x = out.append();
     x.position = p.position + (dp / (dp - dq)) * (q.position - p.position);
-    x.feature = p.along >= 0 ? face_feature(b_is_reference, feature_kind::edge_crossing,
-                                            reference_face, side, std::uint32_t(p.along))
-                             : face_feature(b_is_reference, feature_kind::reference_corner,
-                                            reference_face, side, std::uint32_t(-1 - p.along));
+    x.feature = p.along >= 0 ? face_clip_feature(b_is_reference, feature_kind::edge_crossing,
+                                                 reference_face, side, std::uint32_t(p.along))
+                             : face_clip_feature(b_is_reference, feature_kind::reference_corner,
+                                                 reference_face, side, std::uint32_t(-1 - p.along));
     x.along = along;
   };
   for (std::size_t i = 0; i < n; ++i) {
@@ -561,8 +559,8 @@ void face_contact(const polyhedron_data& reference, const polyhedron_data& incid
     const std::uint32_t v = inc_indices[inc_face.first + k];
     clip_point& p = s.polygon.append();
     p.position = incident.vertices[v];
-    p.feature = face_feature(b_is_reference, feature_kind::incident_vertex,
-                             std::uint32_t(reference_face), 0, v);
+    p.feature = face_clip_feature(b_is_reference, feature_kind::incident_vertex,
+                                  std::uint32_t(reference_face), 0, v);
     p.along = std::int32_t(v);
   }
 
@@ -606,8 +604,8 @@ void deepest_corner_contact(const polyhedron_data& reference, const polyhedron_d
   const real gap = dot(n, incident.vertices[deepest]) - reference.offsets[reference_face];
   set_point(out.points[0], world.to_world(incident.vertices[deepest] - (real(0.5) * gap) * n),
             world.rotate(b_is_reference ? n : -n), -gap,
-            face_feature(b_is_reference, feature_kind::incident_vertex,
-                         std::uint32_t(reference_face), 0, std::uint32_t(deepest)));
+            face_clip_feature(b_is_reference, feature_kind::incident_vertex,
+                              std::uint32_t(reference_face), 0, std::uint32_t(deepest)));
   out.count = 1;
 }
 

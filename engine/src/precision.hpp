@@ -12,6 +12,7 @@
 //   scale) sits near the square root of epsilon: 1e-4 in float.
 #pragma once
 
+#include <limits>
 #include <type_traits>
 
 #include "gaphys/algebra.hpp"
@@ -21,5 +22,10 @@ namespace gaphys::detail {
 constexpr real by_precision(double in_double, double in_float) {
   return std::is_same_v<real, double> ? real(in_double) : real(in_float);
 }
+
+// The scalar's constants, defined once for every source (a unity build
+// compiles several sources as one).
+constexpr real infinity = std::numeric_limits<real>::infinity();
+constexpr real pi = real(3.14159265358979323846);
 
 }  // namespace gaphys::detail

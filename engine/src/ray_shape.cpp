@@ -2,15 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
+#include "precision.hpp"
 #include "vec3.hpp"
 
 namespace gaphys::detail {
 
 namespace {
-
-constexpr real infinity = std::numeric_limits<real>::infinity();
 
 // The conformal point of x: no + x + ½ x² ni.
 conformal::normalized_point up(const vector& x) {

@@ -60,9 +60,9 @@ constexpr char magic[8] = {'g', 'a', 'p', 'h', 'y', 's', 'S', 'N'};
 constexpr std::uint32_t format_version = 2;
 constexpr std::size_t header_size = 8 + 4 + 1 + sizeof(real) + 8;
 constexpr std::size_t checksum_size = 8;
-constexpr std::uint64_t no_index = std::numeric_limits<std::uint64_t>::max();
+constexpr std::uint64_t no_stored_index = std::numeric_limits<std::uint64_t>::max();
 constexpr std::size_t no_slot = std::numeric_limits<std::size_t>::max();
-constexpr real pi = real(3.14159265358979323846);
+using detail::pi;
 
 // Its bytes (55 55 55 55 55 55 f5 bf as binary64) read otherwise in another
 // byte or word order, or real format: such a snapshot fails this check.
@@ -92,8 +92,7 @@ bool all_finite(const Named& value) {
   return std::all_of(value.c.begin(), value.c.end(), [](real x) { return std::isfinite(x); });
 }
 
-bool is_zero(const vector& v) { return v.c[0] == 0 && v.c[1] == 0 && v.c[2] == 0; }
-bool is_zero(const bivector& b) { return b.c[0] == 0 && b.c[1] == 0 && b.c[2] == 0; }
+using detail::is_zero;
 
 // Plain coordinates for the hull checks' loops, as convex_polyhedron.cpp
 // has them (the instrumented build would count every algebra call).
@@ -336,8 +335,6 @@ world_settings read_settings(detail::byte_reader& in) {
 
 // --- Polyhedra ----------------------------------------------------------------
 
-enum class polyhedron_entry : std::uint8_t { box = 0, hull = 1 };
-
 void write_hull(detail::byte_writer& out, const convex_polyhedron& p) {
   const auto& [vertices, faces, vertex_indices, edges, bounding_radius] = p;
   out.u64(vertices.size());
@@ -517,6 +514,9 @@ static_assert(!sizes_known || sizeof(shape) == 144, "a new shape field: add it t
 static_assert(!sizes_known || sizeof(body) == 424, "a new body field: add it to the snapshot");
 #endif
 
+// How a polyhedron is stored: a box's half extents, or a hull whole.
+enum class polyhedron_entry : std::uint8_t { box = 0, hull = 1 };
+
 struct snapshot_access {
   // The polyhedra shapes share: a box's (rebuilt from its half extents)
   // or a hull's (stored whole).
@@ -620,7 +620,7 @@ struct snapshot_access {
     for (const body& b : w.bodies_) write_body(out, b, index);
     const auto write_indices = [&out](const std::vector<std::size_t>& list) {
       out.u64(list.size());
-      for (std::size_t i : list) out.u64(i == no_slot ? no_index : i);
+      for (std::size_t i : list) out.u64(i == no_slot ? no_stored_index : i);
     };
     write_indices(w.slot_of_index_);
     write_indices(w.index_of_slot_);
@@ -696,7 +696,7 @@ struct snapshot_access {
         if (!(s.radius_ > 0)) fail("a sphere's radius must be > 0 (got ", s.radius_, ")");
         break;
       case shape_kind::plane:
-        if (!(std::fabs(length(s.normal_) - 1) <= unit_tolerance)) {
+        if (!(std::fabs(gaphys::length(s.normal_) - 1) <= unit_tolerance)) {
           fail("a plane's normal must be unit");
         }
         break;
@@ -827,7 +827,7 @@ struct snapshot_access {
     std::vector<std::size_t> list(count);
     for (std::size_t& i : list) {
       const std::uint64_t x = in.u64(what);
-      i = x == no_index ? no_slot : static_cast<std::size_t>(x);
+      i = x == no_stored_index ? no_slot : static_cast<std::size_t>(x);
     }
     return list;
   }

@@ -21,6 +21,9 @@ template <class... Parts>
   throw invalid_input(message.str());
 }
 
+inline bool is_zero(const vector& v) { return v.e1() == 0 && v.e2() == 0 && v.e3() == 0; }
+inline bool is_zero(const bivector& b) { return b.e12() == 0 && b.e13() == 0 && b.e23() == 0; }
+
 inline void require_finite(real value, const char* what) {
   if (!std::isfinite(value)) reject(what, " must be finite (got ", value, ")");
 }
