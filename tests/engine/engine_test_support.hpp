@@ -36,6 +36,8 @@ constexpr real pi = 3.14159265358979323846;
 constexpr real nan = std::numeric_limits<real>::quiet_NaN();
 constexpr real inf = std::numeric_limits<real>::infinity();
 inline const rotor identity{1, 0, 0, 0};  // no turn
+inline const vector e1{1, 0, 0}, e2{0, 1, 0}, e3{0, 0, 1};
+constexpr real g = 9.81;  // m/s², gravity in the tests' closed forms
 
 // Components of vectors and bivectors, for readable assertions.
 inline real x(const vector& v) { return v.e1(); }
@@ -44,6 +46,11 @@ inline real z(const vector& v) { return v.e3(); }
 inline real length(const vector& v) { return e3ga::norm(v); }
 inline real length(const bivector& b) { return e3ga::norm(b); }
 inline real dot(const vector& a, const vector& b) { return e3ga::scp(a, b); }
+
+// The rotor turning by `angle` about the unit `axis` (right-handed).
+inline rotor about(const vector& axis, real angle) {
+  return e3ga::exp((-angle / 2) * bivector{z(axis), -y(axis), x(axis)});
+}
 
 inline ::testing::AssertionResult near(const vector& actual, const vector& expected, real tolerance) {
   const real error = length(actual - expected);

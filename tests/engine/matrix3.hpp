@@ -14,6 +14,12 @@ namespace gaphys::testing {
 using matrix = std::array<real, 9>;  // row-major
 using triple = std::array<real, 3>;
 
+inline triple as_triple(const vector& v) { return {v.e1(), v.e2(), v.e3()}; }
+
+inline triple cross(const triple& a, const triple& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
 inline matrix diagonal(real a, real b, real c) { return {a, 0, 0, 0, b, 0, 0, 0, c}; }
 
 inline triple times(const matrix& m, const triple& v) {

@@ -15,8 +15,6 @@
 namespace gaphys::testing {
 namespace {
 
-constexpr real g = 9.81;
-
 // The rotor that turns by `angle` in the plane `plane` (unit): with the
 // engine's convention (body.hpp) the plane e3 ∧ e1 turns e3 towards e1.
 rotor turn(real angle, const bivector& plane) { return e3ga::exp((-angle / 2) * plane); }

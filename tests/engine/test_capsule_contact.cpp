@@ -20,7 +20,6 @@ using detail::collide_capsule;
 
 const real closed_form_tolerance = tolerance(1e-12, 1e-5);  // closed forms a few operations deep
 const real exact = tolerance(1e-9, 1e-5);  // capsule_separation against the independent distance
-const vector e1{1, 0, 0}, e2{0, 1, 0}, e3{0, 0, 1};
 
 // The rotor turning the unit vector `from` onto the unit vector `to`:
 // R = (1 + to from) / |1 + to from|, so that R from ~R = to; for opposite

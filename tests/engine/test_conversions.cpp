@@ -27,11 +27,6 @@ triple turned(const quaternion& q, const triple& v) {
   return {p.x, p.y, p.z};
 }
 
-triple cross(const triple& a, const triple& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-triple as_triple(const vector& v) { return {v.e1(), v.e2(), v.e3()}; }
 vector as_vector(const triple& t) { return {t[0], t[1], t[2]}; }
 
 real distance(const triple& a, const triple& b) {

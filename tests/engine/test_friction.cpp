@@ -16,7 +16,6 @@
 namespace gaphys::testing {
 namespace {
 
-constexpr real g = 9.81;
 constexpr real radius = 0.5;  // the scenes' sphere
 
 class friction_test : public engine_test {

@@ -14,10 +14,6 @@
 namespace gaphys::testing {
 namespace {
 
-triple as_triple(const vector& v) { return {x(v), y(v), z(v)}; }
-triple cross(const triple& a, const triple& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 real dot3(const triple& a, const triple& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 class impulse_test : public engine_test {

@@ -155,11 +155,6 @@ real size_of(const std::vector<vector>& points) {
   return ::testing::AssertionSuccess();
 }
 
-// The rotor turning by `angle` about the unit `axis` (right-handed).
-rotor about(const vector& axis, real angle) {
-  return e3ga::exp((-angle / 2) * bivector{z(axis), -y(axis), x(axis)});
-}
-
 class HullTest : public engine_test {
  protected:
   std::vector<vector> box_corners(const vector& h) {
