@@ -8,17 +8,16 @@
 #include <memory>
 #include <vector>
 
+#include "matched_settings.hpp"
 #include "number.hpp"
 
 namespace gaphys_compare {
 
 namespace {
 
-// Matched to gaphys::world_settings' defaults (its 20 sweeps; gaphys gives
-// contacts that turn a body 10 more).
-constexpr int solver_iterations = 20;
-constexpr double restitution_threshold = 0.5;  // m/s
-constexpr double position_correction = 0.2;    // share of the depth per step
+using matched::position_correction;  // Bullet's erp2
+using matched::restitution_threshold;
+using matched::solver_iterations;
 
 btVector3 to_bullet(const vec3& v) { return {btScalar(v.x), btScalar(v.y), btScalar(v.z)}; }
 vec3 to_vec3(const btVector3& v) { return {v.x(), v.y(), v.z()}; }

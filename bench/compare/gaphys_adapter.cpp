@@ -4,30 +4,12 @@
 #include <string>
 
 #include "gaphys/world.hpp"
+#include "gaphys_conversions.hpp"
 #include "number.hpp"
 
 namespace gaphys_compare {
 
 namespace {
-
-// (The scenes are double; a float engine takes the nearest floats.)
-using gaphys::real;
-gaphys::vector to_gaphys(const vec3& v) { return {real(v.x), real(v.y), real(v.z)}; }
-vec3 to_vec3(const gaphys::vector& v) { return {v.c[0], v.c[1], v.c[2]}; }
-
-// Rotation by θ about the unit axis n: R = cos(θ/2) - sin(θ/2) n I, where
-// n I = nx e23 + ny e31 + nz e12 (docs/engine.md's pairing of planes and
-// axes). The quaternion is cos(θ/2) + sin(θ/2) n, so with R's coordinates
-// (1, e12, e13, e23) and e31 = -e13: x = -e23, y = e13, z = -e12. |q| is
-// then sqrt(R ~R), the rotor's norm.
-quat to_quat(const gaphys::rotor& r) { return {r.c[0], -r.c[3], r.c[2], -r.c[1]}; }
-
-// The inverse of to_quat: (w, x, y, z) -> (w, e12 = -z, e13 = y, e23 = -x).
-gaphys::rotor to_rotor(const quat& q) { return {real(q.w), real(-q.z), real(q.y), real(-q.x)}; }
-
-// ω = ωx e23 + ωy e31 + ωz e12 as a bivector with coordinates (e12, e13, e23).
-gaphys::bivector to_bivector(const vec3& w) { return {real(w.z), real(-w.y), real(w.x)}; }
-vec3 axis_of(const gaphys::bivector& b) { return {b.c[2], -b.c[1], b.c[0]}; }
 
 // A shape with the scene's surface values. Every value is set, so a change of
 // gaphys's defaults (friction 0.5) cannot leak into the frictionless scenes;

@@ -3,7 +3,6 @@
 // F1-F5 with Coulomb friction, B1-B5 boxes (with friction).
 #pragma once
 
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -55,7 +54,8 @@ struct metric {
   std::string id;     // "m1": the --metrics name
   std::string label;  // "M1"
   std::string title;
-  std::function<void(const engine&, const options&, recorder&)> run;
+  // (A function pointer: a metric and its scene may share a name, scenes.hpp.)
+  void (*run)(const engine&, const options&, recorder&);
 };
 
 const std::vector<metric>& all_metrics();

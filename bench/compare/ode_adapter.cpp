@@ -11,17 +11,16 @@
 #include <string>
 #include <vector>
 
+#include "matched_settings.hpp"
 #include "number.hpp"
 
 namespace gaphys_compare {
 
 namespace {
 
-// Matched to gaphys::world_settings' defaults (its 20 sweeps; gaphys gives
-// contacts that turn a body 10 more).
-constexpr int solver_iterations = 20;          // QuickStep sweeps
-constexpr double restitution_threshold = 0.5;  // m/s: ODE's bounce_vel
-constexpr double position_correction = 0.2;    // ERP: share of the depth per step
+using matched::position_correction;            // ODE's ERP
+using matched::restitution_threshold;          // ODE's bounce_vel
+using matched::solver_iterations;              // QuickStep's sweeps
 constexpr double linear_slop = 0.0005;         // m: ODE's contact surface layer
 // CFM makes each contact slightly soft: an impulse j leaves a velocity error
 // of about CFM j / h. ODE's double default, 1e-10, leaves ~1e-7 m/s in the

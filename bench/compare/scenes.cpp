@@ -6,17 +6,12 @@
 #include <stdexcept>
 
 #include "gaphys/scenes.hpp"
+#include "gaphys_conversions.hpp"
 #include "number.hpp"
 
 namespace gaphys_compare {
 
 namespace {
-
-vec3 to_vec3(const gaphys::vector& v) { return {v.c[0], v.c[1], v.c[2]}; }
-
-// gaphys keeps angular velocity as a bivector Ω = ωx e23 + ωy e31 + ωz e12
-// (docs/engine.md); its coordinates are (e12, e13, e23) and e31 = -e13.
-vec3 axis_of(const gaphys::bivector& b) { return {b.c[2], -b.c[1], b.c[0]}; }
 
 body_description sphere(double radius, double mass, const vec3& position, const vec3& velocity,
                         double restitution) {
