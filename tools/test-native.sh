@@ -5,7 +5,9 @@
 # targets the x86-64 baseline, 2) and where multiplies and adds can fuse:
 # the batches must still step to the same bits as one contact at a time
 # (test_contact_batches.cpp), and every closed form must hold.
-# tools/test.sh runs it after the sanitized suites.
+# tools/test.sh runs it after the sanitized suites. Built file by file (no
+# unity build, unlike the other two builds): a source that compiles only
+# beside the others of its batch fails here.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 

@@ -14,8 +14,10 @@ python=$(bash tools/find-python.sh)
 targets=(algebra_tests_reference algebra_tests_optimized algebra_variants_agree
          algebra_fixture_tests_reference algebra_fixture_tests_optimized
          engine_tests_optimized)
+# (Unity builds as in tools/configure.sh: the engine and its suite in
+# batches; the algebra suites, with options of their own per file, file by file.)
 cmake -S . -B build-asan -G Ninja -DPython3_EXECUTABLE="$python" -DGAPHYS_SANITIZE=ON \
-      -DGAPHYS_BUILD_BENCHMARKS=OFF -DGAPHYS_BUILD_EXAMPLES=OFF
+      -DGAPHYS_BUILD_BENCHMARKS=OFF -DGAPHYS_BUILD_EXAMPLES=OFF -DCMAKE_UNITY_BUILD=ON
 cmake --build build-asan --target "${targets[@]}"
 # halt_on_error is ASan's default; detect_leaks catches memory the engine loses.
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
