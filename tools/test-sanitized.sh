@@ -14,8 +14,8 @@ python=$(bash tools/find-python.sh)
 targets=(algebra_tests_reference algebra_tests_optimized algebra_variants_agree
          algebra_fixture_tests_reference algebra_fixture_tests_optimized
          engine_tests_optimized)
-# (Unity builds as in tools/configure.sh: the engine and its suite in
-# batches; the algebra suites, with options of their own per file, file by file.)
+# (Unity builds as in tools/configure.sh: each suite's files in batches;
+# algebra_variants_agree's, with options of their own, file by file.)
 cmake -S . -B build-asan -G Ninja -DPython3_EXECUTABLE="$python" -DGAPHYS_SANITIZE=ON \
       -DGAPHYS_BUILD_BENCHMARKS=OFF -DGAPHYS_BUILD_EXAMPLES=OFF -DCMAKE_UNITY_BUILD=ON
 cmake --build build-asan --target "${targets[@]}"

@@ -8,7 +8,9 @@
 #include "algebra_test_support.hpp"
 #include "c3ga_test_support.hpp"
 
-namespace {
+// (A namespace of its own, not an anonymous one: the suite also compiles
+// as one source, a unity build, where the files' names must not meet.)
+namespace apply_test {
 
 using namespace gaphys_test;
 
@@ -205,4 +207,4 @@ TYPED_TEST(Apply, ApplyOfANullVersorOnMvThrows) {
   EXPECT_NO_THROW(c3ga::apply(c3mv<T>(c3ga::basic_rotor<T>(T(1), T(0), T(0), T(0))), point));
 }
 
-}  // namespace
+}  // namespace apply_test

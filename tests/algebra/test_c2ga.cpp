@@ -7,7 +7,7 @@
 
 #include "algebra_test_support.hpp"
 
-namespace {
+namespace c2ga_test {
 
 using namespace gaphys_test;
 
@@ -46,4 +46,4 @@ TYPED_TEST(C2ga, ExpOfBivectorWithSmallSecondPlaneMatchesGanja) {
   EXPECT_TRUE(mv_near<mv<T>>(c2ga::exp(as_mv<mv<T>>(b)), mv<T>::from_array(expected), tol));
 }
 
-}  // namespace
+}  // namespace c2ga_test

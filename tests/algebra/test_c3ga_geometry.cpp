@@ -14,7 +14,7 @@
 #include "algebra_test_support.hpp"
 #include "c3ga_test_support.hpp"
 
-namespace {
+namespace c3ga_geometry_test {
 
 using namespace gaphys_test;
 
@@ -282,4 +282,4 @@ TYPED_TEST(C3gaGeometry, SphereTouchingPlaneGivesTheContactPoint) {
   }
 }
 
-}  // namespace
+}  // namespace c3ga_geometry_test

@@ -5,7 +5,7 @@
 
 #include "algebra_test_support.hpp"
 
-namespace {
+namespace c3ga_identities_test {
 
 using namespace gaphys_test;
 
@@ -223,4 +223,4 @@ TYPED_TEST(C3gaIdentities, NormOfUnitIsOne) {
   }
 }
 
-}  // namespace
+}  // namespace c3ga_identities_test

@@ -26,7 +26,7 @@
 #include "algebra_test_support.hpp"
 #include "sparse_test_support.hpp"
 
-namespace {
+namespace c4ga_test {
 
 using namespace gaphys_test;
 namespace sparse = gaphys_test::sparse;
@@ -571,4 +571,4 @@ TEST(C4ga, NamedTypeKernelsAgreeWithTheMvPath) {
   }
 }
 
-}  // namespace
+}  // namespace c4ga_test

@@ -22,7 +22,7 @@
 #include "algebra_test_support.hpp"
 #include "sparse_test_support.hpp"
 
-namespace {
+namespace ccga_test {
 
 using namespace gaphys_test;
 namespace sparse = gaphys_test::sparse;
@@ -409,4 +409,4 @@ TEST(Ccga, NamedTypeKernelsAgreeWithTheMvPath) {
   }
 }
 
-}  // namespace
+}  // namespace ccga_test

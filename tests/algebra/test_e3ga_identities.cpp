@@ -5,7 +5,7 @@
 
 #include "algebra_test_support.hpp"
 
-namespace {
+namespace e3ga_identities_test {
 
 using namespace gaphys_test;
 
@@ -264,4 +264,4 @@ TYPED_TEST(E3gaIdentities, ProductResultsKeepTheBitInvariant) {
   }
 }
 
-}  // namespace
+}  // namespace e3ga_identities_test

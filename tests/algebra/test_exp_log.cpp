@@ -9,7 +9,7 @@
 
 #include "algebra_test_support.hpp"
 
-namespace {
+namespace exp_log_test {
 
 using namespace gaphys_test;
 
@@ -306,4 +306,4 @@ TYPED_TEST(ExpLog, C3gaZero) {
   EXPECT_TRUE(mv_within<c3mv<T>>(c3ga::exp(zero_rotation), T(1), 0));
 }
 
-}  // namespace
+}  // namespace exp_log_test

@@ -9,7 +9,7 @@
 
 #include "algebra_test_support.hpp"
 
-namespace {
+namespace pga3d_test {
 
 using namespace gaphys_test;
 
@@ -220,4 +220,4 @@ TYPED_TEST(Pga3d, DualIsTheComplement) {
                              tolerance<T>()));
 }
 
-}  // namespace
+}  // namespace pga3d_test

@@ -24,7 +24,7 @@
 #include "algebra_test_support.hpp"
 #include "sparse_test_support.hpp"
 
-namespace {
+namespace qcga_test {
 
 using namespace gaphys_test;
 namespace sparse = gaphys_test::sparse;
@@ -267,4 +267,4 @@ TEST(Qcga, NamedTypeKernelsAgreeWithTheMvPath) {
   EXPECT_TRUE(near(qcga::gp(qcga::inverse(q), q), 1.0));
 }
 
-}  // namespace
+}  // namespace qcga_test

@@ -7,7 +7,7 @@
 
 #include "algebra_test_support.hpp"
 
-namespace {
+namespace sta_test {
 
 using namespace gaphys_test;
 
@@ -89,4 +89,4 @@ TYPED_TEST(Sta, LogOfBoostTimesRotationIsRightOrThrows) {
   }
 }
 
-}  // namespace
+}  // namespace sta_test
