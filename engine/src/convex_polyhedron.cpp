@@ -536,8 +536,7 @@ class face_mesh {
       if (turn < -tolerance_ * length(w - u)) return false;
       turning += std::atan2(turn, dot(in, out));
     }
-    constexpr real pi = 3.14159265358979323846;
-    return turning < 3 * pi;
+    return turning < 3 * detail::pi;
   }
 
   const std::vector<xyz>* points_;  // a pointer, so that a mesh can be reassigned

@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
+#include "precision.hpp"
 #include "query_grid.hpp"
 
 namespace gaphys::detail {
@@ -32,7 +32,6 @@ void query_grid::along(const vector& origin, const vector& direction, real max_d
     end = std::min(end, t1);
   }
   if (!(start <= end)) return;
-  constexpr real infinity = std::numeric_limits<real>::infinity();
   std::int64_t at[3], step[3];
   real next[3], delta[3];
   for (int axis = 0; axis < 3; ++axis) {

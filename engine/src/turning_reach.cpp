@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "gaphys/convex_polyhedron.hpp"
+#include "precision.hpp"
 #include "vec3.hpp"
 
 namespace gaphys::detail {
@@ -27,7 +28,7 @@ struct turn_along {
         d_q(cross(towards, axis)),
         cosine(std::cos(angle)),
         sine(std::sin(angle)),
-        half_turn(angle >= real(3.14159265358979323846)) {}
+        half_turn(angle >= pi) {}
 
   // The farthest x(φ) . d for φ in [0, angle].
   real farthest(const vec3& x) const {
