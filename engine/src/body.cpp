@@ -67,7 +67,7 @@ const body_definition& validated(const body_definition& d) {
   require_static_at_rest(d.is_static, is_zero(d.angular_velocity), "angular velocity");
   const std::vector<attached_shape> shapes = all_shapes(d);
   for (const attached_shape& s : shapes) {
-    detail::require_finite(s.offset, "shape offset");
+    detail::require_offset(s.offset, "shape offset");
     detail::unit_rotor(s.attitude, "shape attitude");
     if (is_plane(s) && !d.is_static) detail::reject("a plane shape needs a static body");
     // The broad phase bounds a plane's body by the plane alone.
@@ -95,14 +95,29 @@ struct initial_mass {
   vector center;  // body frame: where the origin moves to
 };
 
+// 1 / mass, which every step uses: a mass whose inverse overflows (1e-310
+// kg) is rejected here, rather than by each step after as a body that would
+// move too far.
+real inverse_of_mass(real mass, const char* what) {
+  const real inverse = 1 / mass;
+  if (!std::isfinite(mass) || !std::isfinite(inverse) || !(inverse > 0)) {
+    detail::reject(what, " ", mass, " kg is too small or too large to invert in real numbers");
+  }
+  return inverse;
+}
+
 initial_mass initial_mass_properties(const body_definition& d,
                                      const std::vector<attached_shape>& shapes) {
   if (d.is_static || d.is_kinematic) {
     return {0, d.inertia.value_or(inertia::principal(1, 1, 1)), vector{}};
   }
-  if (d.inertia) return {1 / d.mass, *d.inertia, vector{}};
+  if (d.inertia) return {inverse_of_mass(d.mass, "body mass"), *d.inertia, vector{}};
   const mass_properties solid = solid_mass_properties(shapes, d.density.value_or(1));
-  if (d.density) return {1 / solid.mass, solid.inertia, solid.center};
+  if (d.density) {
+    return {inverse_of_mass(solid.mass, "body mass (its shapes' volume times its density)"),
+            solid.inertia, solid.center};
+  }
+  const real inverse_mass = inverse_of_mass(d.mass, "body mass");
   std::array<real, 9> rows = solid.inertia.rows();
   for (real& x : rows) x *= d.mass / solid.mass;
   // (A mass of 1e-308 kg on a unit box scales its moments to 2e-309 kg m^2,
@@ -116,7 +131,7 @@ initial_mass initial_mass_properties(const body_definition& d,
                    ", ", rows[4], ", ", rows[8],
                    " kg m^2) too small or too large to invert in real numbers; give an inertia");
   }
-  return {1 / d.mass, inertia::tensor(rows), solid.center};
+  return {inverse_mass, inertia::tensor(rows), solid.center};
 }
 
 // The shapes about the new origin, and how far they reach from it.

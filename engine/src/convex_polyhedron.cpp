@@ -619,9 +619,9 @@ index best_point(std::size_t count, Score score) {
 }  // namespace
 
 convex_polyhedron convex_polyhedron::box(const vector& half_extents) {
-  detail::require_positive(half_extents.e1(), "box half extent x");
-  detail::require_positive(half_extents.e2(), "box half extent y");
-  detail::require_positive(half_extents.e3(), "box half extent z");
+  detail::require_length(half_extents.e1(), "box half extent x");
+  detail::require_length(half_extents.e2(), "box half extent y");
+  detail::require_length(half_extents.e3(), "box half extent z");
   const std::array<real, 3> h{half_extents.e1(), half_extents.e2(), half_extents.e3()};
   // Corner i is on the + side of axis k when bit k of i is set.
   std::vector<xyz> corners;
@@ -668,8 +668,17 @@ convex_polyhedron convex_polyhedron::hull(const std::vector<vector>& input) {
   const xyz extent = high - low;
   const real size = std::max({extent.x, extent.y, extent.z});
   if (!std::isfinite(size)) detail::reject("convex hull points must span a finite range");
+  // (The lengths every shape keeps to: validate.hpp, smallest_length.)
+  if (magnitude > detail::largest_length) {
+    detail::reject("convex hull points must lie within ", detail::largest_length,
+                   " m of the origin (got a coordinate of ", magnitude, ")");
+  }
   const real tolerance = relative_tolerance * size + 8 * DBL_EPSILON * magnitude;
   if (!(size > tolerance)) detail::reject("convex hull points all (nearly) coincide");
+  if (size < detail::smallest_length) {
+    detail::reject("convex hull points must span at least ", detail::smallest_length, " m (got ",
+                   size, ")");
+  }
   const std::vector<xyz> points = welded(given, tolerance);
 
   // A first tetrahedron as large as cheaply found: the extremes along the

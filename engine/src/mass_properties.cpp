@@ -175,7 +175,7 @@ mass_properties solid_mass_properties(const std::vector<attached_shape>& shapes,
   real mass = 0;
   vector weighted{};
   for (const attached_shape& s : shapes) {
-    detail::require_finite(s.offset, "shape offset");
+    detail::require_offset(s.offset, "shape offset");
     const rotor r = detail::unit_rotor(s.attitude, "shape attitude");
     if (!is_solid(s.shape) || s.shape.is_sensor()) continue;  // sensors add no mass
     const unit_solid unit = solid_of(s.shape);

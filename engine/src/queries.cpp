@@ -188,7 +188,7 @@ std::vector<body_id> overlapping(const detail::query_index& index, const placed_
 
 std::vector<body_id> world::overlap_sphere(const vector& centre, real radius) const {
   require_within_reach(centre, "overlap sphere centre");
-  detail::require_positive(radius, "overlap sphere radius");
+  detail::require_length(radius, "overlap sphere radius");
   const detail::query_index& index = current(queries_, bodies_, geometry_version_);
   std::vector<body_id> found =
       overlapping(index, place(shape::sphere(radius), centre, rotor{1, 0, 0, 0}), radius);

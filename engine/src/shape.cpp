@@ -8,7 +8,7 @@
 namespace gaphys {
 
 shape shape::sphere(real radius) {
-  detail::require_positive(radius, "sphere radius");
+  detail::require_length(radius, "sphere radius");
   shape s(shape_kind::sphere);
   s.radius_ = radius;
   return s;
@@ -16,7 +16,7 @@ shape shape::sphere(real radius) {
 
 shape shape::plane(const vector& normal, real offset) {
   const vector unit = detail::unit_multiple(normal, "plane normal", " must be nonzero");
-  detail::require_finite(offset, "plane offset");
+  detail::require_offset(offset, "plane offset");
   shape s(shape_kind::plane);
   s.normal_ = unit;
   s.offset_ = offset;
@@ -33,8 +33,8 @@ shape shape::box(const vector& half_extents) {
 }
 
 shape shape::capsule(real half_height, real radius) {
-  detail::require_non_negative(half_height, "capsule half height");
-  detail::require_positive(radius, "capsule radius");
+  detail::require_length_or_zero(half_height, "capsule half height");
+  detail::require_length(radius, "capsule radius");
   shape s(shape_kind::capsule);
   s.half_height_ = half_height;
   s.radius_ = radius;

@@ -43,6 +43,51 @@ void require_finite(const Named& value, const char* what) {
   }
 }
 
+// The sizes and offsets of shapes, and of the shapes queries ask about. The
+// narrow phase takes their squares (distances) and their fourth powers (a
+// face's area vector, squared to scale it to a normal; a moment of inertia
+// by density), so each must keep its fourth power a normal number: between
+// 1e-75 and 1e75 m in double, 1e-9 and 1e9 m in float. (A static box of
+// half extent 1e-80 had NaN face normals, and a ball landing on it crashed
+// the step; a static sphere of radius 1e300 moved a ball by 2e299 m.)
+constexpr real smallest_length = by_precision(1e-75, 1e-9);
+constexpr real largest_length = by_precision(1e75, 1e9);
+
+inline void require_length(real value, const char* what) {
+  require_positive(value, what);
+  if (value < smallest_length || value > largest_length) {
+    reject(what, " must be between ", smallest_length, " and ", largest_length, " m (got ", value,
+           ")");
+  }
+}
+
+// A length that may also be zero (a capsule's half height).
+inline void require_length_or_zero(real value, const char* what) {
+  require_non_negative(value, what);
+  if (value != 0) require_length(value, what);
+}
+
+// An offset (a shape's from its body's origin, a plane's from the world's):
+// finite, and no farther than largest_length.
+inline void require_offset(real value, const char* what) {
+  require_finite(value, what);
+  if (std::fabs(value) > largest_length) {
+    reject(what, " must be at most ", largest_length, " m from the origin (got ", value, ")");
+  }
+}
+
+template <class Named>
+void require_offset(const Named& value, const char* what) {
+  require_finite(value, what);
+  real largest = 0;
+  for (real x : value.c) largest = std::max(largest, std::fabs(x));
+  // (Each coefficient at most largest_length: the squared norm is finite.)
+  if (largest > largest_length || e3ga::norm(value) > largest_length) {
+    reject(what, " must be at most ", largest_length, " m from the origin (got ",
+           e3ga::basic_mv<real>(value), ")");
+  }
+}
+
 // A speed, force or torque the step can use: finite, and not so large that
 // its square (which every norm takes) overflows, as 1e200 m/s would.
 template <class Named>

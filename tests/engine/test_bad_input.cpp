@@ -3,6 +3,8 @@
 // a message naming what was wrong, and the world is exactly as before.
 #include <limits>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 #include "engine_test_support.hpp"
 
@@ -250,7 +252,11 @@ TEST_F(bad_input_test, speeds_forces_and_impulses_too_large_to_step_are_rejected
 // such (they were reported as a NaN or a singular inertia tensor).
 TEST_F(bad_input_test, shapes_and_masses_beyond_real_numbers_are_named) {
   body_definition d = valid_sphere();
-  for (real size : {for_scalar(1e100, 1e13), for_scalar(1e-160, 1e-20)}) {
+  // Within the lengths a shape may have, but moments of h^5 overflow (and,
+  // in double, underflow to zero).
+  std::vector<real> sizes{for_scalar(1e70, 5e8)};
+  if (std::is_same_v<real, double>) sizes.push_back(real(1e-70));
+  for (real size : sizes) {
     d.shape = shape::box(vector{size, size, size});
     EXPECT_TRUE(rejects([&] { w.create_body(d); }, "too large or too small for its volume"))
         << size;
@@ -258,7 +264,75 @@ TEST_F(bad_input_test, shapes_and_masses_beyond_real_numbers_are_named) {
   d.shape = shape::box(vector{0.5, 0.5, 0.5});
   d.mass = for_scalar(1e-308, 1e-38);  // moments of 2e-309 (2e-39): no inverse
   EXPECT_TRUE(rejects([&] { w.create_body(d); }, "body mass"));
+  // A mass whose own inverse overflows, with an inertia given.
+  d.mass = std::numeric_limits<real>::denorm_min();
+  d.inertia = inertia::principal(1, 1, 1);
+  EXPECT_TRUE(rejects([&] { w.create_body(d); }, "too small or too large to invert"));
   expect_unchanged();
+}
+
+// The lengths of shapes (radii, half extents, a hull's span, offsets, the
+// sizes of queries) lie between smallest_length and largest_length: 1e-75
+// and 1e75 m in double, 1e-9 and 1e9 in float, where their fourth powers
+// are still normal numbers. Beyond, each is named; a static box of half
+// extent 1e-80 had NaN face normals, and a ball landing on it crashed the
+// step.
+TEST_F(bad_input_test, shape_lengths_beyond_the_engines_range_are_rejected) {
+  const real tiny = for_scalar(1e-80, 1e-12), huge = for_scalar(1e80, 1e12);
+  for (real r : {tiny, huge}) {
+    EXPECT_TRUE(rejects([&] { shape::sphere(r); }, "sphere radius must be between")) << r;
+    EXPECT_TRUE(rejects([&] { shape::box(vector{1, r, 1}); }, "box half extent y")) << r;
+    EXPECT_TRUE(rejects([&] { shape::capsule(1, r); }, "capsule radius")) << r;
+    EXPECT_TRUE(rejects([&] { shape::capsule(r, 1); }, "capsule half height")) << r;
+    EXPECT_TRUE(rejects([&] { (void)w.overlap_sphere(vector{}, r); }, "overlap sphere radius"))
+        << r;
+    EXPECT_TRUE(rejects(
+        [&] {
+          (void)w.overlap_box(vector{}, vector{r, 1, 1}, rotor{1, 0, 0, 0});
+        },
+        "box half extent x"))
+        << r;
+  }
+  EXPECT_TRUE(rejects([&] { shape::plane(vector{0, 0, 1}, huge); }, "plane offset"));
+  EXPECT_TRUE(rejects(
+      [&] {
+        shape::convex_hull({vector{}, vector{tiny, 0, 0}, vector{0, tiny, 0}, vector{0, 0, tiny}});
+      },
+      "convex hull points must span at least"));
+  EXPECT_TRUE(rejects(
+      [&] {
+        shape::convex_hull({vector{}, vector{huge, 0, 0}, vector{0, 1, 0}, vector{0, 0, 1}});
+      },
+      "convex hull points must lie within"));
+  body_definition far_part = valid_sphere();
+  far_part.is_static = true;
+  far_part.shapes.push_back({shape::sphere(1), vector{huge, 0, 0}, rotor{1, 0, 0, 0}});
+  EXPECT_TRUE(rejects([&] { w.create_body(far_part); }, "shape offset"));
+  expect_unchanged();
+}
+
+// At the ends of that range shapes still make sound contacts: a ball
+// dropped onto a static box, and beside a static hull, each of the least
+// size, on a floor, comes to rest on the floor without a NaN (the box of
+// 1e-80 m crashed this step), and queries of the largest size find them.
+TEST_F(bad_input_test, shapes_at_the_ends_of_the_range_step_and_are_found) {
+  const real least = for_scalar(1.01e-75, 1.01e-9);
+  world small = make_world();
+  add_floor(small);
+  body_definition box;
+  box.is_static = true;
+  box.shape = shape::box(vector{least, least, least});
+  small.create_body(box);
+  body_definition hull = box;
+  hull.position = vector{1, 0, 0};
+  hull.shape =
+      shape::convex_hull({vector{}, vector{least, 0, 0}, vector{0, least, 0}, vector{0, 0, least}});
+  small.create_body(hull);
+  const body_id ball = add_sphere(small, vector{0, 0, 2}, 0.5);
+  simulate(small, 600);  // (it bounces off the box, whose restitution is the default 0.5)
+  for (real c : small.at(ball).position().c) ASSERT_TRUE(std::isfinite(c));
+  EXPECT_NEAR(z(small.at(ball).position()), 0.5, 0.01);
+  EXPECT_EQ(small.overlap_sphere(vector{}, for_scalar(0.99e75, 0.99e9)).size(), 4u);
 }
 
 // A step whose move would overflow: a body's velocity after the step's
@@ -279,6 +353,19 @@ TEST_F(bad_input_test, a_step_too_long_or_too_short_for_real_numbers_is_rejected
   EXPECT_EQ(copy.state_hash(), before);
   EXPECT_EQ(x(copy.at(ball).accumulated_force()), force) << "nothing changes, the force included";
   EXPECT_EQ(copy.time(), w.time());
+}
+
+// A step that would carry the world's time past the largest real number.
+TEST_F(bad_input_test, a_step_past_the_largest_time_is_rejected) {
+  if (!std::is_same_v<real, double>) {
+    GTEST_SKIP() << "the time is a double: no float step carries it past the largest double";
+  }
+  world still = make_world();
+  add_floor(still);
+  const real longest = std::numeric_limits<real>::max() / 2 * real(1.5);
+  still.step(longest);  // nothing moves: any step is short enough
+  EXPECT_TRUE(rejects([&] { still.step(longest); }, "past the largest real number"));
+  EXPECT_EQ(still.time(), double(longest));
 }
 
 // Bodies placed exactly on top of each other are not an error: identical
