@@ -1058,6 +1058,13 @@ void world::save_snapshot_file(const std::string& path) const {
   if (path.empty()) detail::reject("snapshot file: the path is empty");
   const std::vector<std::uint8_t> bytes = save_snapshot();
   const std::filesystem::path target(path);
+  // Only a regular file is replaced: the rename below would put the
+  // snapshot in place of a device or a named pipe (as root, of /dev/full).
+  std::error_code status_error;
+  const std::filesystem::file_status status = std::filesystem::status(target, status_error);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+    detail::reject("snapshot file ", path, ": exists and is not a regular file");
+  }
   std::filesystem::path temporary;
   std::FILE* file = nullptr;
   int error = 0;

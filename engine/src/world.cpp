@@ -396,6 +396,10 @@ void world::step(real h) {
   // (The correction of a step divides depths by h.)
   if (!std::isfinite(1 / h))
     detail::reject("time step is too short: 1 / h overflows (got ", h, ")");
+  if (!std::isfinite(time_ + h)) {
+    detail::reject("time step ", h, " s would take the world's time (", time_,
+                   " s) past the largest real number");
+  }
   const auto start = clock::now();
   // The threads this step runs on (settings_.threads, or for 0 every core
   // or one, as measured: detail/thread_choice.hpp), and the settings the

@@ -366,6 +366,12 @@ TEST_F(snapshot_test, files_round_trip_and_their_errors_name_the_path) {
   const std::string unwritable = (folder / "no such folder" / "world.snapshot").string();
   EXPECT_TRUE(rejects([&] { original.save_snapshot_file(unwritable); }, unwritable));
   EXPECT_TRUE(rejects([&] { original.save_snapshot_file(""); }, "path is empty"));
+  // Only a regular file is replaced (not a folder, a device or a pipe).
+  const fs::path occupied = folder / "a folder";
+  fs::create_directories(occupied);
+  EXPECT_TRUE(
+      rejects([&] { original.save_snapshot_file(occupied.string()); }, "is not a regular file"));
+  EXPECT_TRUE(fs::is_directory(occupied));
   const std::string cut = (folder / "cut.snapshot").string();
   std::ofstream(cut, std::ios::binary)
       .write(reinterpret_cast<const char*>(on_disk.data()), std::streamsize(on_disk.size() / 2));
