@@ -17,6 +17,7 @@
 import argparse
 import os
 import shlex
+import signal
 import sys
 
 from . import model, output, profile, render
@@ -28,6 +29,14 @@ def coverage(text: str) -> float:
     value = float(text)
     if not 0 < value <= 1:
         raise argparse.ArgumentTypeError(f"must be in (0, 1], not {text}")
+    return value
+
+
+def row_count(text: str) -> int:
+    """--top: a number of rows, >= 0."""
+    value = int(text)
+    if value < 0:
+        raise argparse.ArgumentTypeError(f"must be >= 0, not {text}")
     return value
 
 
@@ -52,7 +61,7 @@ def parse_arguments(argv: list[str]) -> argparse.Namespace:
     report.add_argument("profile")
     report.add_argument("--spec", required=True)
     report.add_argument("--coverage", type=coverage, default=0.999, help="share of calls to specialize")
-    report.add_argument("--top", type=int, default=20, help="rows to show")
+    report.add_argument("--top", type=row_count, default=20, help="rows to show")
     return parser.parse_args(argv)
 
 
@@ -73,16 +82,43 @@ def regenerate_command(arguments: argparse.Namespace) -> str:
         words += ["--namespace", arguments.namespace]
     if arguments.profile:
         words += ["--profile", arguments.profile, "--coverage", str(arguments.coverage)]
+    if arguments.no_format:
+        words.append("--no-format")
     return " ".join(shlex.quote(w) for w in words)
+
+
+def os_error_text(error: OSError, fallback: str) -> str:
+    """An OSError as "gaphys-gen: PATH: reason", naming the path that failed."""
+    return f"gaphys-gen: {error.filename or fallback}: {error.strerror or error}"
+
+
+def terminated(number: int, frame) -> None:
+    """SIGTERM or SIGHUP as an exception, so that a write in progress removes
+    its temporary files (output.write_all) before the exit."""
+    raise SystemExit(128 + number)
 
 
 def main(argv: list[str] | None = None) -> int:
     arguments = parse_arguments(sys.argv[1:] if argv is None else argv)
+    for number in (signal.SIGTERM, getattr(signal, "SIGHUP", None)):
+        if number is not None:
+            signal.signal(number, terminated)
+    try:
+        return run(arguments)
+    except KeyboardInterrupt:
+        print("gaphys-gen: interrupted", file=sys.stderr)
+        return 130
+
+
+def run(arguments: argparse.Namespace) -> int:
     if arguments.command in ("merge", "report"):
         try:
             return profile_command(arguments)
         except (SpecError, UsageError) as error:
             print(error, file=sys.stderr)
+            return 1
+        except OSError as error:
+            print(os_error_text(error, arguments.spec), file=sys.stderr)
             return 1
     try:
         try:
@@ -108,7 +144,7 @@ def main(argv: list[str] | None = None) -> int:
                 with open(path, encoding="utf-8", newline="") as handle:
                     if handle.read() == text:
                         continue
-            except FileNotFoundError:
+            except OSError:  # missing, or not a file (a folder, a path through a file)
                 pass
             stale.append(path)
         for path in stale:
@@ -117,7 +153,8 @@ def main(argv: list[str] | None = None) -> int:
     try:
         output.write_all(arguments.out, files)
     except OSError as error:
-        print(f"gaphys-gen: cannot write {arguments.out}: {error.strerror}", file=sys.stderr)
+        print(f"gaphys-gen: cannot write {error.filename or arguments.out}: {error.strerror or error}",
+              file=sys.stderr)
         return 1
     return 0
 

@@ -1,22 +1,28 @@
 """The command line (python3 -m gaphys_gen): bad input fails loudly and writes nothing."""
 
 import os
+import shlex
+import signal
+import stat
 import subprocess
 import sys
 import tempfile
 import unittest
+from unittest import mock
 
 from gaphys_gen import output
 
-from .support import GENERATOR_DIR, spec_path
+from .support import GENERATOR_DIR, REPO_DIR, spec_path
 
 HAS_CLI = os.path.isfile(os.path.join(GENERATOR_DIR, "gaphys_gen", "__main__.py"))
 
 BAD_SPEC = "algebra bad\nbasis e1 e2\ntype vector = e1, e3\n"  # e3 is not a basis vector: 3:19
 
 
-def run_cli(*arguments: str) -> subprocess.CompletedProcess:
+def run_cli(*arguments: str, path_first: str | None = None) -> subprocess.CompletedProcess:
     environment = dict(os.environ, PYTHONPATH=GENERATOR_DIR)
+    if path_first:  # (a folder searched first for programs: a stand-in clang-format)
+        environment["PATH"] = path_first + os.pathsep + environment.get("PATH", "")
     return subprocess.run(
         [sys.executable, "-m", "gaphys_gen", *arguments], capture_output=True, text=True, env=environment, timeout=300
     )
@@ -119,8 +125,99 @@ class CommandLine(unittest.TestCase):
         self.assertEqual(stale.returncode, 1)
         self.assertIn("e3ga_test.hpp", stale.stderr)
 
+    def test_profile_commands_name_a_path_they_cannot_use(self):
+        profile_path = os.path.join(REPO_DIR, "profiling", "profiles", "e3ga.json")
+        missing = os.path.join(self.work.name, "missing.ga")
+        for arguments in (("report", profile_path, "--spec", missing),
+                          ("report", profile_path, "--spec", self.work.name),  # a folder
+                          ("merge", "--spec", spec_path("e3ga"), "--out", self.out, profile_path)):
+            result = run_cli(*arguments)
+            self.assertEqual(result.returncode, 1, arguments)
+            self.assertNotIn("Traceback", result.stderr)
+            self.assertRegex(result.stderr, r"^gaphys-gen: .*(missing\.ga|Is a directory)")
+        result = run_cli("report", profile_path, "--spec", spec_path("e3ga"), "--top", "-3")
+        self.assertEqual(result.returncode, 2)  # argparse's usage error
+        self.assertIn("--top: must be >= 0", result.stderr)
+
+    def test_a_newline_in_the_spec_path_stays_inside_the_banner(self):
+        odd = os.path.join(self.work.name, "odd\n#error injected\\")
+        with open(spec_path("e3ga"), encoding="utf-8") as source, open(odd, "w", encoding="utf-8") as copy:
+            copy.write(source.read())
+        result = run_cli("generate", odd, "--variant", "reference", "--out", self.out, "--no-format")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        with open(os.path.join(self.out, "e3ga", "e3ga.hpp"), encoding="utf-8") as handle:
+            lines = handle.read().splitlines()
+        banner = lines[: next(i for i, line in enumerate(lines) if not line.startswith("//"))]
+        self.assertTrue(any("odd\\x0a#error injected\\ (sha256" in line for line in banner), banner)
+        self.assertFalse(any(line.startswith("#error") for line in lines))
+        self.assertFalse(any(line.endswith("\\") for line in banner))
+
+    def test_the_banners_command_regenerates_unformatted_output(self):
+        result = run_cli("generate", spec_path("e3ga"), "--variant", "optimized", "--out", self.out, "--no-format")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        with open(os.path.join(self.out, "e3ga", "e3ga.hpp"), encoding="utf-8") as handle:
+            command = next(line for line in handle if line.startswith("// Regenerate: "))
+        words = shlex.split(command[len("// Regenerate: "):])
+        self.assertEqual(words[:2], ["gaphys-gen", "generate"])
+        self.assertIn("--no-format", words)
+        # Its words, as `check`, find nothing to change (without --no-format every file was stale).
+        self.assertEqual(run_cli("check", *words[2:]).returncode, 0)
+
+    def test_a_failing_clang_format_is_an_error_that_writes_nothing(self):
+        tools = os.path.join(self.work.name, "tools")
+        os.mkdir(tools)
+        fake = os.path.join(tools, "clang-format")
+        with open(fake, "w", encoding="utf-8") as handle:
+            handle.write("#!/bin/sh\necho 'cannot format this' >&2\nexit 3\n")
+        os.chmod(fake, stat.S_IRWXU)
+        result = run_cli("generate", spec_path("e3ga"), "--variant", "reference", "--out", self.out,
+                         path_first=tools)
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("clang-format failed (exit 3): cannot format this", result.stderr)
+        self.assertNotIn("Traceback", result.stderr)
+        self.assertEqual(files_under(self.out), [])
+
 
 class AtomicOutput(unittest.TestCase):
+    def test_ctrl_c_during_the_renames_lands_after_all_of_them(self):
+        real_replace = os.replace
+        calls = []
+
+        def replace_then_interrupt(source, target):
+            calls.append(target)
+            if len(calls) == 1:
+                os.kill(os.getpid(), signal.SIGINT)  # held back until every file is in place
+            real_replace(source, target)
+
+        with tempfile.TemporaryDirectory() as root:
+            files = {"a/x.hpp": "x\n", "b/y.hpp": "y\n", "z.hpp": "z\n"}
+            with mock.patch.object(output.os, "replace", replace_then_interrupt):
+                with self.assertRaises(KeyboardInterrupt):
+                    output.write_all(root, files)
+            self.assertEqual(len(calls), 3)
+            self.assertEqual(files_under(root), sorted(os.path.normpath(name) for name in files))
+
+    def test_ctrl_c_while_staging_leaves_the_folder_as_it_was(self):
+        real_mkstemp = tempfile.mkstemp
+        calls = []
+
+        def mkstemp_then_interrupt(*arguments, **keywords):
+            calls.append(1)
+            made = real_mkstemp(*arguments, **keywords)
+            if len(calls) == 2:
+                os.kill(os.getpid(), signal.SIGINT)
+            return made
+
+        with tempfile.TemporaryDirectory() as root:
+            with open(os.path.join(root, "z.hpp"), "w", encoding="utf-8") as handle:
+                handle.write("old\n")
+            with mock.patch.object(output.tempfile, "mkstemp", mkstemp_then_interrupt):
+                with self.assertRaises(KeyboardInterrupt):
+                    output.write_all(root, {"a/x.hpp": "x\n", "b/y.hpp": "y\n", "z.hpp": "z\n"})
+            self.assertEqual(files_under(root), ["z.hpp"])
+            with open(os.path.join(root, "z.hpp"), encoding="utf-8") as handle:
+                self.assertEqual(handle.read(), "old\n")
+
     def test_failure_leaves_the_folder_untouched(self):
         with tempfile.TemporaryDirectory() as root:
             # "b" is a file, so b/y.hpp cannot be written; a/x.hpp (staged first) must not appear either.

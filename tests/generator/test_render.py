@@ -86,6 +86,14 @@ class Accessors(unittest.TestCase):
                     self.assertEqual(coordinate.accessor, coordinate.blade.accessor, f"{name} {named.name}")
 
 
+class BannerText(unittest.TestCase):
+    def test_control_characters_and_a_last_backslash_are_escaped(self):
+        # A newline would end the // comment; a last backslash would join the next line to it.
+        self.assertEqual(render.comment_safe("a\nb\tc"), "a\\x0ab\\x09c")
+        self.assertEqual(render.comment_safe("dir\\"), "dir\\x5c")
+        self.assertEqual(render.comment_safe("a\\b é"), "a\\b é")
+
+
 if __name__ == "__main__":
     unittest.main()
 
