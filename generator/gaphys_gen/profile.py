@@ -8,13 +8,14 @@ A profile is JSON written by the instrumented variant (and by `merge`):
 
 `arguments` and `result` are bitmaps over canonical blade indices (bit i set:
 coefficient i was nonzero). Loading validates everything and raises
-ProfileError("file: message") on the first problem; nothing is generated
-from a profile that does not load.
+ProfileError("file:line:column: message") on the first problem, at the value
+that is wrong; nothing is generated from a profile that does not load.
 """
 
 import json
 import os
-from dataclasses import dataclass
+import re
+from dataclasses import dataclass, field
 
 from . import VERSION
 from .errors import UsageError
@@ -81,6 +82,52 @@ def _is_int(value) -> bool:
     return isinstance(value, int) and not isinstance(value, bool)
 
 
+_SPACE = re.compile(r"[ \t\n\r]*")
+
+
+@dataclass
+class _Place:
+    """Where a JSON value starts in the text, and where its members' values
+    start (an object's by key, an array's by index)."""
+
+    offset: int
+    members: dict = field(default_factory=dict)
+
+
+def _places(text: str) -> _Place:
+    """The places of the values of text, which json.loads has read: each
+    member of the top object, each entry of "entries" and each of its members."""
+    decoder = json.JSONDecoder()
+
+    def skip(at: int) -> int:
+        return _SPACE.match(text, at).end()
+
+    def value(at: int, depth: int) -> tuple[_Place, int]:
+        place = _Place(at)
+        if depth < 3 and text[at] in "{[":
+            closing, at = ("}" if text[at] == "{" else "]"), skip(at + 1)
+            index = 0
+            while text[at] != closing:
+                key = index
+                if closing == "}":
+                    key, at = decoder.raw_decode(text, at)
+                    at = skip(skip(at) + 1)  # the colon
+                place.members[key], at = value(at, depth + 1)
+                at = skip(at)
+                if text[at] == ",":
+                    at = skip(at + 1)
+                index += 1
+            return place, at + 1
+        return place, decoder.raw_decode(text, at)[1]
+
+    return value(skip(0), 0)[0]
+
+
+def _locate(text: str, path: str, offset: int) -> str:
+    line = text.count("\n", 0, offset) + 1
+    return f"{path}:{line}:{offset - (text.rfind(chr(10), 0, offset) + 1) + 1}"
+
+
 def parse(text: str, path: str, algebra: Algebra | None = None) -> Profile:
     try:
         data = json.loads(text)
@@ -90,38 +137,53 @@ def parse(text: str, path: str, algebra: Algebra | None = None) -> Profile:
         raise ProfileError(f"{path}: malformed JSON: nested too deeply") from error
     except ValueError as error:  # Python's int refuses numbers of over 4300 digits
         raise ProfileError(f"{path}: malformed JSON: a number has too many digits") from error
-    _require(isinstance(data, dict), path, "a profile is a JSON object")
-    _require(data.get("format") == FORMAT, path, f"not a gaphys profile (\"format\" must be \"{FORMAT}\")")
-    _require(_is_int(data.get("version")) and data["version"] == FORMAT_VERSION, path,  # not true, not 1.0
+    top = _places(text)
+
+    def at(place: _Place, *keys) -> str:
+        """file:line:column of the value at keys under place (of the nearest that exists)."""
+        for key in keys:
+            if key not in place.members:
+                break
+            place = place.members[key]
+        return _locate(text, path, place.offset)
+
+    _require(isinstance(data, dict), at(top), "a profile is a JSON object")
+    _require(data.get("format") == FORMAT, at(top, "format"),
+             f"not a gaphys profile (\"format\" must be \"{FORMAT}\")")
+    _require(_is_int(data.get("version")) and data["version"] == FORMAT_VERSION, at(top, "version"),  # not true, not 1.0
              f"profile format version {data.get('version')!r} is not supported (expected {FORMAT_VERSION})")
     for key in ("algebra", "spec_hash", "generator_version"):
-        _require(isinstance(data.get(key), str), path, f"\"{key}\" must be a string")
-    _require(isinstance(data.get("entries"), list), path, "\"entries\" must be a list")
-    unknown = set(data) - {"format", "version", "algebra", "spec_hash", "generator_version", "entries"}
-    _require(not unknown, path, f"unknown key(s): {', '.join(sorted(unknown))}")
+        _require(isinstance(data.get(key), str), at(top, key), f"\"{key}\" must be a string")
+    _require(isinstance(data.get("entries"), list), at(top, "entries"), "\"entries\" must be a list")
+    unknown = sorted(set(data) - {"format", "version", "algebra", "spec_hash", "generator_version", "entries"})
+    _require(not unknown, at(top, unknown[0]) if unknown else path, f"unknown key(s): {', '.join(unknown)}")
     if algebra is not None:
-        _require(data["algebra"] == algebra.name, path,
+        _require(data["algebra"] == algebra.name, at(top, "algebra"),
                  f"profile is for algebra {data['algebra']!r}, not {algebra.name!r}")
-        _require(data["spec_hash"] == algebra.spec_hash, path,
+        _require(data["spec_hash"] == algebra.spec_hash, at(top, "spec_hash"),
                  f"profile was recorded with another version of the spec (spec_hash {data['spec_hash'][:12]}..., "
                  f"current {algebra.spec_hash[:12]}...): record it again")
     limit = 1 << (algebra.blade_count if algebra is not None else 32)
     entries = []
     for number, raw in enumerate(data["entries"]):
         where = f"entry {number}"
-        _require(isinstance(raw, dict), path, f"{where}: must be an object")
-        _require(set(raw) == {"function", "arguments", "result", "count"}, path,
+        _require(isinstance(raw, dict), at(top, "entries", number), f"{where}: must be an object")
+        _require(set(raw) == {"function", "arguments", "result", "count"}, at(top, "entries", number),
                  f"{where}: needs exactly the keys function, arguments, result, count")
         function = raw["function"]
-        _require(isinstance(function, str) and function in RECORDED_ARITY, path,
+        _require(isinstance(function, str) and function in RECORDED_ARITY, at(top, "entries", number, "function"),
                  f"{where}: unknown function {function!r}")
         arguments = raw["arguments"]
-        _require(isinstance(arguments, list) and len(arguments) == RECORDED_ARITY[function], path,
+        _require(isinstance(arguments, list) and len(arguments) == RECORDED_ARITY[function],
+                 at(top, "entries", number, "arguments"),
                  f"{where}: {function} takes {RECORDED_ARITY[function]} bitmap argument(s)")
-        for bitmap in arguments + [raw["result"]]:
-            _require(_is_int(bitmap) and 0 <= bitmap < limit, path,
-                     f"{where}: bitmap {bitmap!r} has bits outside the algebra's {limit.bit_length() - 1} blades")
-        _require(_is_int(raw["count"]) and raw["count"] >= 0, path,
+        for key, bitmap in [("arguments", b) for b in arguments] + [("result", raw["result"])]:
+            _require(_is_int(bitmap), at(top, "entries", number, key),
+                     f"{where}: {key} bitmap {bitmap!r} is not an integer")
+            _require(0 <= bitmap < limit, at(top, "entries", number, key),
+                     f"{where}: {key} bitmap {bitmap} has bits outside the algebra's {limit.bit_length() - 1} "
+                     f"blades (0 to {limit - 1})")
+        _require(_is_int(raw["count"]) and raw["count"] >= 0, at(top, "entries", number, "count"),
                  f"{where}: count must be a non-negative integer, not {raw['count']!r}")
         entries.append(Entry(function, tuple(arguments), raw["result"], raw["count"]))
     return Profile(data["algebra"], data["spec_hash"], data["generator_version"], _combine(entries, path))

@@ -61,6 +61,23 @@ class Loading(unittest.TestCase):
         self.assertRejected(document(entries=[entry(arguments=[VECTOR, 1 << 8])]), "outside the algebra's 8 blades")
         self.assertRejected(document(entries=[entry(result=-1)]), "outside the algebra")
 
+    def test_content_errors_name_the_line_and_column_of_the_value(self):
+        # As `merge` writes them: one entry a line, entry n on line 8 + n.
+        good = profile.Profile("e3ga", E3.spec_hash, "0.1.0",
+                               tuple(profile.Entry("gp", (VECTOR, VECTOR), ROTOR, n) for n in (1, 2, 3)))
+        lines = profile.dumps(good).splitlines()
+        lines[9] = lines[9].replace('"count": 3', '"count": -3')
+        message = self.assertRejected(None, "entry 2: count must be", text="\n".join(lines))
+        self.assertTrue(message.startswith(f"p.json:10:{lines[9].index('-3') + 1}:"), message)
+        lines = profile.dumps(good).splitlines()
+        lines[8] = lines[8].replace('"gp"', '"cross"')
+        message = self.assertRejected(None, "entry 1: unknown function 'cross'", text="\n".join(lines))
+        self.assertTrue(message.startswith(f"p.json:9:{lines[8].index('cross')}:"), message)
+        text = json.dumps(document(algebra="c3ga"), indent=1)
+        line = next(n for n, row in enumerate(text.splitlines(), 1) if '"algebra"' in row)
+        message = self.assertRejected(None, "not 'e3ga'", text=text)
+        self.assertTrue(message.startswith(f"p.json:{line}:"), message)
+
     def test_negative_count(self):
         self.assertRejected(document(entries=[entry(count=-1)]), "count must be a non-negative integer")
 
@@ -180,7 +197,7 @@ class CommandLine(unittest.TestCase):
             out = os.path.join(folder, "out.json")
             result = self.run_cli("merge", "--spec", spec_path("e3ga"), "--out", out, good, bad)
             self.assertEqual(result.returncode, 1)
-            self.assertIn("bad.json: entry 0: count must be", result.stderr)
+            self.assertRegex(result.stderr, r"bad\.json:\d+:\d+: entry 0: count must be")
             self.assertFalse(os.path.exists(out))
             result = self.run_cli("merge", "--spec", spec_path("e3ga"), "--out", out, good, good)
             self.assertEqual(result.returncode, 0, result.stderr)

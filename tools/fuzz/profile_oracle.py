@@ -33,7 +33,7 @@ def algebra_of(data: bytes) -> str:
 
 
 def is_own_error(message: str, path: str) -> bool:
-    """`file: message` or, for malformed JSON, `file:line:col: message`, on one line."""
+    """`file:line:col: message` (at the value that is wrong) or `file: message`, on one line."""
     own = re.match(re.escape(path) + r"(:\d+:\d+)?: \S", message)
     return own is not None and "\n" not in message
 
