@@ -126,8 +126,9 @@ def run(arguments: argparse.Namespace) -> int:
         except OSError as error:
             raise UsageError(f"{arguments.spec}: cannot read: {error.strerror}") from error
         namespace = arguments.namespace or algebra.name
-        if not namespace.isidentifier() or model.is_reserved(namespace):
-            raise UsageError(f"--namespace {namespace!r} is not a C++ identifier free to use")
+        problem = model.namespace_problem(namespace, algebra)
+        if problem:
+            raise UsageError(f"--namespace {namespace!r} {problem}")
         formatter = None if arguments.no_format else render.find_clang_format()
         if formatter is None and not arguments.no_format:
             print("gaphys-gen: warning: clang-format not found, output is unformatted", file=sys.stderr)

@@ -44,13 +44,59 @@ _MEMBER_NAMES = set(
 )
 
 
+# Macros of the C and C++ headers the generated code includes replace a
+# name of the spec spelled like one before the compiler sees it. Their style
+# is reserved as a whole, since each platform's headers define their own: a
+# capitals word before an underscore (M_PI, W_OK, INT8_MAX), or capitals
+# alone with three letters or more (EOF, NAN, E2BIG). A pseudoscalar I3 or
+# a name of two capitals stays free (no header here defines one). Then the
+# few macros in lowercase of glibc and the C library.
+_MACRO_STYLE = re.compile(r"[A-Z][A-Z0-9]*_\w*")
+
+
+def _macro_style(name: str) -> bool:
+    if _MACRO_STYLE.fullmatch(name):
+        return True
+    return not any(c.islower() for c in name) and sum(c.isalpha() for c in name) >= 3
+
+
+_LOWERCASE_MACROS = set(
+    """assert errno offsetof math_errhandling stdin stdout stderr issubnormal strdupa strndupa
+    pthread_cleanup_push pthread_cleanup_pop pthread_cleanup_push_defer_np pthread_cleanup_pop_restore_np
+    linux unix i386""".split()
+)
+
+
+# The headers beside <ns>/<ns>.hpp (render.files_for), and the enum of the
+# recorded calls: a namespace of one of these names would stand for it.
+NAMESPACE_CLASHES = {"tables", "types", "mv_functions", "kernels", "recording", "specialized", "batch", "call"}
+
+
+def namespace_problem(name: str, algebra: "Algebra | None" = None) -> str | None:
+    """Why `name` cannot be the generated namespace (and header folder), or None."""
+    if not name.isidentifier() or is_reserved(name):
+        return "is not a C++ identifier free to use"
+    if name in NAMESPACE_CLASHES:
+        return "is the name of one of the generated headers or of their own declarations"
+    if algebra is not None and (name in {t.name for t in algebra.types} or name in algebra.aliases):
+        return "is also the name of a type (the namespace and a class of one name: ns::ns)"
+    return None
+
+
 def is_reserved(name: str) -> bool:
-    """Whether the generated C++ cannot use `name` as an identifier of its own."""
-    return name in _CPP_RESERVED or name.startswith("basic_") or "__" in name
+    """Whether the generated C++ cannot use `name` as an identifier of its own:
+    a keyword or one of the library's own names, a name C++ keeps for the
+    implementation (a leading underscore, "__"), or a macro's."""
+    return (name in _CPP_RESERVED or name.startswith("basic_") or "__" in name or name.startswith("_")
+            or _macro_style(name) or name in _LOWERCASE_MACROS)
 
 
+# Names the generated namespace declares for itself (functions, and the
+# batch header's), which a type, alias or constant of the spec would clash with.
 _LIBRARY_NAMES = set(FUNCTION_ARITY) | {
     "norm", "unit", "grade", "general_inverse", "approx_equal", "blade_names", "blade_grades",
+    "smul", "to_mv", "flush_profile", "native_lanes", "batch_of_t", "gather", "lane", "set_lane",
+    "T",  # (every template's parameter)
 }
 
 
@@ -229,6 +275,11 @@ class _Validator:
         # (The namespace and a class of the same name: abc::abc.)
         if algebra.name in type_names or algebra.name in aliases:
             raise self.error(algebra.name_location, f"algebra name {algebra.name!r} is also the name of a type")
+        if algebra.name in NAMESPACE_CLASHES:
+            raise self.error(algebra.name_location, f"algebra name {algebra.name!r} is the name of one of the "
+                                                    f"generated headers or of their own declarations")
+        constants = self.validate_constants(type_names, aliases)
+        self.check_batch_names(type_names, aliases, constants)
         return Algebra(
             name=algebra.name,
             path=self.spec.path,
@@ -240,7 +291,7 @@ class _Validator:
             blades=blades,
             types=types,
             aliases=aliases,
-            constants=self.validate_constants(type_names, aliases),
+            constants=constants,
             functions=self.validate_functions(type_names, aliases),
             products=BladeAlgebra(metric),
             lines=self.spec.lines,
@@ -281,7 +332,7 @@ class _Validator:
         for stmt in (s for s in self.spec.statements if s.keyword == "type"):
             self.check_identifier(stmt.name, stmt.location, "type name")
             if stmt.name in _LIBRARY_NAMES:
-                raise self.error(stmt.location, f"type name {stmt.name!r} clashes with a library function")
+                raise self.error(stmt.location, f"type name {stmt.name!r} clashes with a name the generated library declares")
             if stmt.name in seen:
                 raise self.error(stmt.location, f"type {stmt.name!r} declared twice (first at line {seen[stmt.name]})")
             seen[stmt.name] = stmt.location.line
@@ -307,6 +358,15 @@ class _Validator:
                 raise self.error(stmt.location, f"type {stmt.name!r} has no stored coordinate")
             types.append(NamedType(stmt.name, tuple(coordinates), stmt.location))
         return tuple(types)
+
+    def check_batch_names(self, type_names: dict, aliases: dict, constants) -> None:
+        """batch.hpp names the batch of each type and alias n `n_batch`: no
+        other name of the spec may be spelled so."""
+        declared = {s.name: s.location for s in self.spec.statements if s.keyword in ("type", "alias", "constant")}
+        for name in list(type_names) + list(aliases):
+            batch = f"{name}_batch"
+            if batch in declared:
+                raise self.error(declared[batch], f"name {batch!r} is the batch type batch.hpp makes of {name!r}")
 
     def validate_aliases(self, type_names: dict) -> dict[str, str]:
         aliases: dict[str, str] = {}

@@ -81,6 +81,16 @@ class CommandLine(unittest.TestCase):
         self.assertIn("namespace", result.stderr)
         self.assertEqual(files_under(self.out), [])
 
+    def test_a_namespace_that_would_stand_for_a_type_or_a_header(self):
+        # vector::vector; <tables/tables.hpp>, the main header, in place of the companion tables.hpp.
+        for namespace, reason in (("vector", "also the name of a type"), ("tables", "generated headers"),
+                                  ("call", "generated headers"), ("EOF", "not a C++ identifier")):
+            result = run_cli("generate", spec_path("e3ga"), "--variant", "reference", "--out", self.out,
+                             "--namespace", namespace, "--no-format")
+            self.assertEqual(result.returncode, 1, namespace)
+            self.assertIn(reason, result.stderr)
+            self.assertEqual(files_under(self.out), [])
+
     def test_reserved_namespace(self):
         # A C++ keyword is an identifier to Python but not to the compiler.
         result = run_cli("generate", spec_path("e3ga"), "--variant", "reference", "--out", self.out,

@@ -154,7 +154,7 @@ class ReservedNames(SpecErrorAssertions, unittest.TestCase):
         self.assertSpecError(E3_PRELUDE + "constant this = e1\n", 4, 10, "constant name 'this' is reserved")
 
     def test_type_named_like_a_library_function(self):
-        self.assertSpecError(E3_PRELUDE + "type norm = e1\n", 4, 6, "clashes with a library function")
+        self.assertSpecError(E3_PRELUDE + "type norm = e1\n", 4, 6, "clashes with a name the generated library declares")
 
     def test_constant_named_like_a_library_function(self):
         self.assertSpecError(E3_PRELUDE + "constant unit = e1\n", 4, 10, "already declared")
@@ -162,6 +162,29 @@ class ReservedNames(SpecErrorAssertions, unittest.TestCase):
     def test_alias_named_like_a_library_function(self):
         # `alias gp = vector` would emit a type `gp` next to the function gp().
         self.assertSpecError(E3_PRELUDE + "type vector = e1, e2, e3\nalias gp = vector\n", 5, 7, "gp")
+
+    def test_names_of_the_batch_header_and_of_the_templates_are_taken(self):
+        # Each compiled to a redeclaration (or a shadowed template parameter) in the headers.
+        for name in ("smul", "to_mv", "flush_profile", "native_lanes", "batch_of_t", "gather", "lane",
+                     "set_lane", "T"):
+            self.assertSpecError(E3_PRELUDE + f"type {name} = e1\n", 4, 6, "the generated library declares")
+            self.assertSpecError(E3_PRELUDE + f"constant {name} = e1\n", 4, 10, "already declared")
+        self.assertSpecError(E3_PRELUDE + "type vector = e1, e2\ntype vector_batch = e3\n", 5, 6,
+                             "'vector_batch' is the batch type batch.hpp makes of 'vector'")
+        self.assertSpecError(E3_PRELUDE + "type v = e1\nalias w = v\nconstant w_batch = e2\n", 6, 10,
+                             "batch type batch.hpp makes of 'w'")
+
+    def test_names_spelled_like_macros_are_reserved(self):
+        # A header's macro replaces them (EOF, NULL, M_PI, W_OK, errno), and C++ keeps _X and __x.
+        for name in ("EOF", "NULL", "INFINITY", "M_PI", "M_PIf", "W_OK", "INT8_MAX", "E2BIG", "errno",
+                     "assert", "_Pragma", "_Complex", "_v"):
+            self.assertSpecError(E3_PRELUDE + f"type {name} = e1\n", 4, 6, f"type name '{name}' is reserved")
+        for name in ("I3", "I", "PS", "Ps", "v_X"):  # a pseudoscalar's usual names stay free
+            with self.subTest(name=name):
+                load_text(E3_PRELUDE + f"constant {name} = e1^e2^e3\n")
+
+    def test_an_algebra_named_like_a_generated_header(self):
+        self.assertSpecError("algebra tables\nbasis e1\n", 1, 9, "generated headers")
 
 
 class FunctionErrors(SpecErrorAssertions, unittest.TestCase):
