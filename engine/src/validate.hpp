@@ -3,9 +3,11 @@
 #pragma once
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <type_traits>
 
 #include "gaphys/algebra.hpp"
 #include "gaphys/error.hpp"
@@ -13,11 +15,25 @@
 
 namespace gaphys::detail {
 
+// A number of a message as the shortest text that reads back to it: a
+// restitution of 1.0000000000000002 was reported as "(got 1)" by the
+// stream's six digits. Other parts as the stream shows them.
+template <class Part>
+decltype(auto) shown(const Part& part) {
+  if constexpr (std::is_floating_point_v<Part>) {
+    char text[64];
+    const char* end = std::to_chars(text, text + sizeof text, part).ptr;
+    return std::string(text, static_cast<std::size_t>(end - text));
+  } else {
+    return (part);
+  }
+}
+
 template <class... Parts>
 [[noreturn]] void reject(const Parts&... parts) {
   std::ostringstream message;
   message << "gaphys: ";
-  (message << ... << parts);
+  (message << ... << shown(parts));
   throw invalid_input(message.str());
 }
 

@@ -1,6 +1,7 @@
 // Bad input: every public entry point rejects NaN, infinity, non-positive
 // masses and radii, zero normals and the like with gaphys::invalid_input and
 // a message naming what was wrong, and the world is exactly as before.
+#include <cmath>
 #include <limits>
 #include <string>
 #include <type_traits>
@@ -57,6 +58,12 @@ TEST_F(bad_input_test, shapes_reject_bad_radii_normals_and_restitutions) {
   for (real e : {real(-0.1), real(1.5), nan}) {
     EXPECT_TRUE(rejects([&] { shape::sphere(1).with_restitution(e); }, "restitution")) << e;
   }
+  // A number is shown as the shortest text that reads back to it: just
+  // above 1 is not "1".
+  const real above_one = std::nextafter(real(1), real(2));
+  EXPECT_TRUE(
+      rejects([&] { shape::sphere(1).with_restitution(above_one); },
+              std::is_same_v<real, double> ? "(got 1.0000000000000002)" : "(got 1.0000001)"));
 }
 
 TEST_F(bad_input_test, materials_reject_negative_and_non_finite_values) {
