@@ -669,9 +669,14 @@ convex_polyhedron convex_polyhedron::hull(const std::vector<vector>& input) {
   const real size = std::max({extent.x, extent.y, extent.z});
   if (!std::isfinite(size)) detail::reject("convex hull points must span a finite range");
   // (The lengths every shape keeps to: validate.hpp, smallest_length.)
-  if (magnitude > detail::largest_length) {
+  // (Each coordinate within it first, so that the squared distances are finite.)
+  real farthest = magnitude;
+  if (magnitude <= detail::largest_length) {
+    for (const xyz& p : given) farthest = std::max(farthest, length(p));
+  }
+  if (farthest > detail::largest_length) {
     detail::reject("convex hull points must lie within ", detail::largest_length,
-                   " m of the origin (got a coordinate of ", magnitude, ")");
+                   " m of the origin (got one ", farthest, " m from it)");
   }
   const real tolerance = relative_tolerance * size + 8 * DBL_EPSILON * magnitude;
   if (!(size > tolerance)) detail::reject("convex hull points all (nearly) coincide");

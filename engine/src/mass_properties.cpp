@@ -206,6 +206,11 @@ mass_properties solid_mass_properties(const std::vector<attached_shape>& shapes,
     detail::reject(
         "solid mass properties need a solid shape (planes and points have no volume, sensors no mass)");
   }
+  // (A density of 1e-310 gave a NaN centre, reported as a NaN inertia tensor entry.)
+  if (!(mass > 0) || !std::isfinite(mass) || !std::isfinite(1 / mass)) {
+    detail::reject("density ", density, " kg/m^3 gives these shapes a mass of ", mass,
+                   " kg, too small or too large to invert in real numbers");
+  }
   const vector center = weighted / mass;
   matrix total{};
   for (const part& p : parts) {

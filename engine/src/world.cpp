@@ -398,7 +398,7 @@ void world::step(real h) {
     detail::reject("time step is too short: 1 / h overflows (got ", h, ")");
   if (!std::isfinite(time_ + h)) {
     detail::reject("time step ", h, " s would take the world's time (", time_,
-                   " s) past the largest real number");
+                   " s) past the largest double");
   }
   const auto start = clock::now();
   // The threads this step runs on (settings_.threads, or for 0 every core

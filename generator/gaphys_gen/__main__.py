@@ -19,6 +19,7 @@ import os
 import shlex
 import signal
 import sys
+import threading
 
 from . import model, output, profile, render
 from .errors import SpecError, UsageError
@@ -100,14 +101,23 @@ def terminated(number: int, frame) -> None:
 
 def main(argv: list[str] | None = None) -> int:
     arguments = parse_arguments(sys.argv[1:] if argv is None else argv)
-    for number in (signal.SIGTERM, getattr(signal, "SIGHUP", None)):
-        if number is not None:
-            signal.signal(number, terminated)
+    # SIGTERM and SIGHUP as exceptions where they would kill the process (not
+    # where ignored, as under nohup; only the main thread may set them), and
+    # as they were again after.
+    caught = {}
+    if threading.current_thread() is threading.main_thread():
+        for name in ("SIGTERM", "SIGHUP"):
+            number = getattr(signal, name, None)
+            if number is not None and signal.getsignal(number) == signal.SIG_DFL:
+                caught[number] = signal.signal(number, terminated)
     try:
         return run(arguments)
     except KeyboardInterrupt:
         print("gaphys-gen: interrupted", file=sys.stderr)
         return 130
+    finally:
+        for number, previous in caught.items():
+            signal.signal(number, previous)
 
 
 def run(arguments: argparse.Namespace) -> int:
@@ -145,7 +155,7 @@ def run(arguments: argparse.Namespace) -> int:
                 with open(path, encoding="utf-8", newline="") as handle:
                     if handle.read() == text:
                         continue
-            except OSError:  # missing, or not a file (a folder, a path through a file)
+            except (OSError, UnicodeDecodeError):  # missing, not a file, or not text
                 pass
             stale.append(path)
         for path in stale:

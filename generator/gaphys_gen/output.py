@@ -47,7 +47,7 @@ def _unchanged(target: str, text: str) -> bool:
     try:
         with open(target, encoding="utf-8", newline="") as handle:
             return handle.read() == text
-    except FileNotFoundError:
+    except (FileNotFoundError, UnicodeDecodeError):  # (a damaged file is written over)
         return False
 
 

@@ -12,6 +12,7 @@ ProfileError("file:line:column: message") on the first problem, at the value
 that is wrong; nothing is generated from a profile that does not load.
 """
 
+import bisect
 import json
 import os
 import re
@@ -73,9 +74,11 @@ def _combine(entries, path: str) -> tuple[Entry, ...]:
     return tuple(Entry(f, a, r, c) for (f, a, r), c in sorted(counts.items()))
 
 
-def _require(condition: bool, path: str, message: str) -> None:
+def _require(condition: bool, where, message: str) -> None:
+    """where: the path, `file:line:column`, or a function that gives it (its
+    place, found only when the check fails)."""
     if not condition:
-        raise ProfileError(f"{path}: {message}")
+        raise ProfileError(f"{where() if callable(where) else where}: {message}")
 
 
 def _is_int(value) -> bool:
@@ -96,7 +99,8 @@ class _Place:
 
 def _places(text: str) -> _Place:
     """The places of the values of text, which json.loads has read: each
-    member of the top object, each entry of "entries" and each of its members."""
+    member of the top object, each entry of "entries", each of its members
+    and each bitmap of its arguments."""
     decoder = json.JSONDecoder()
 
     def skip(at: int) -> int:
@@ -104,7 +108,7 @@ def _places(text: str) -> _Place:
 
     def value(at: int, depth: int) -> tuple[_Place, int]:
         place = _Place(at)
-        if depth < 3 and text[at] in "{[":
+        if depth < 4 and text[at] in "{[":
             closing, at = ("}" if text[at] == "{" else "]"), skip(at + 1)
             index = 0
             while text[at] != closing:
@@ -123,9 +127,13 @@ def _places(text: str) -> _Place:
     return value(skip(0), 0)[0]
 
 
-def _locate(text: str, path: str, offset: int) -> str:
-    line = text.count("\n", 0, offset) + 1
-    return f"{path}:{line}:{offset - (text.rfind(chr(10), 0, offset) + 1) + 1}"
+def _line_starts(text: str) -> list[int]:
+    return [0] + [match.end() for match in re.finditer("\n", text)]
+
+
+def _locate(starts: list[int], path: str, offset: int) -> str:
+    line = bisect.bisect_right(starts, offset)
+    return f"{path}:{line}:{offset - starts[line - 1] + 1}"
 
 
 def parse(text: str, path: str, algebra: Algebra | None = None) -> Profile:
@@ -137,54 +145,58 @@ def parse(text: str, path: str, algebra: Algebra | None = None) -> Profile:
         raise ProfileError(f"{path}: malformed JSON: nested too deeply") from error
     except ValueError as error:  # Python's int refuses numbers of over 4300 digits
         raise ProfileError(f"{path}: malformed JSON: a number has too many digits") from error
-    top = _places(text)
-
-    def at(place: _Place, *keys) -> str:
-        """file:line:column of the value at keys under place (of the nearest that exists)."""
+    def at(*keys) -> str:
+        """file:line:column of the value at keys (of the nearest that exists).
+        (Found only for an error: a profile that loads is not walked again.)"""
+        place = _places(text)
         for key in keys:
             if key not in place.members:
                 break
             place = place.members[key]
-        return _locate(text, path, place.offset)
+        return _locate(_line_starts(text), path, place.offset)
 
-    _require(isinstance(data, dict), at(top), "a profile is a JSON object")
-    _require(data.get("format") == FORMAT, at(top, "format"),
+    _require(isinstance(data, dict), lambda: at(), "a profile is a JSON object")
+    _require(data.get("format") == FORMAT, lambda: at("format"),
              f"not a gaphys profile (\"format\" must be \"{FORMAT}\")")
-    _require(_is_int(data.get("version")) and data["version"] == FORMAT_VERSION, at(top, "version"),  # not true, not 1.0
+    _require(_is_int(data.get("version")) and data["version"] == FORMAT_VERSION,  # not true, not 1.0
+             lambda: at("version"),
              f"profile format version {data.get('version')!r} is not supported (expected {FORMAT_VERSION})")
     for key in ("algebra", "spec_hash", "generator_version"):
-        _require(isinstance(data.get(key), str), at(top, key), f"\"{key}\" must be a string")
-    _require(isinstance(data.get("entries"), list), at(top, "entries"), "\"entries\" must be a list")
+        _require(isinstance(data.get(key), str), lambda: at(key), f"\"{key}\" must be a string")
+    _require(isinstance(data.get("entries"), list), lambda: at("entries"), "\"entries\" must be a list")
     unknown = sorted(set(data) - {"format", "version", "algebra", "spec_hash", "generator_version", "entries"})
-    _require(not unknown, at(top, unknown[0]) if unknown else path, f"unknown key(s): {', '.join(unknown)}")
+    _require(not unknown, lambda: at(unknown[0]) if unknown else path, f"unknown key(s): {', '.join(unknown)}")
     if algebra is not None:
-        _require(data["algebra"] == algebra.name, at(top, "algebra"),
+        _require(data["algebra"] == algebra.name, lambda: at("algebra"),
                  f"profile is for algebra {data['algebra']!r}, not {algebra.name!r}")
-        _require(data["spec_hash"] == algebra.spec_hash, at(top, "spec_hash"),
+        _require(data["spec_hash"] == algebra.spec_hash, lambda: at("spec_hash"),
                  f"profile was recorded with another version of the spec (spec_hash {data['spec_hash'][:12]}..., "
                  f"current {algebra.spec_hash[:12]}...): record it again")
     limit = 1 << (algebra.blade_count if algebra is not None else 32)
     entries = []
     for number, raw in enumerate(data["entries"]):
         where = f"entry {number}"
-        _require(isinstance(raw, dict), at(top, "entries", number), f"{where}: must be an object")
-        _require(set(raw) == {"function", "arguments", "result", "count"}, at(top, "entries", number),
+        _require(isinstance(raw, dict), lambda: at("entries", number), f"{where}: must be an object")
+        _require(set(raw) == {"function", "arguments", "result", "count"}, lambda: at("entries", number),
                  f"{where}: needs exactly the keys function, arguments, result, count")
         function = raw["function"]
-        _require(isinstance(function, str) and function in RECORDED_ARITY, at(top, "entries", number, "function"),
-                 f"{where}: unknown function {function!r}")
+        _require(isinstance(function, str) and function in RECORDED_ARITY,
+                 lambda: at("entries", number, "function"), f"{where}: unknown function {function!r}")
         arguments = raw["arguments"]
         _require(isinstance(arguments, list) and len(arguments) == RECORDED_ARITY[function],
-                 at(top, "entries", number, "arguments"),
+                 lambda: at("entries", number, "arguments"),
                  f"{where}: {function} takes {RECORDED_ARITY[function]} bitmap argument(s)")
-        for key, bitmap in [("arguments", b) for b in arguments] + [("result", raw["result"])]:
-            _require(_is_int(bitmap), at(top, "entries", number, key),
-                     f"{where}: {key} bitmap {bitmap!r} is not an integer")
-            _require(0 <= bitmap < limit, at(top, "entries", number, key),
-                     f"{where}: {key} bitmap {bitmap} has bits outside the algebra's {limit.bit_length() - 1} "
+        bitmaps = [(("arguments", k), b) for k, b in enumerate(arguments)] + [(("result",), raw["result"])]
+        for keys, bitmap in bitmaps:
+            _require(_is_int(bitmap), lambda: at("entries", number, *keys),
+                     f"{where}: {keys[0]} bitmap {bitmap!r} is not an integer")
+            _require(0 <= bitmap < limit, lambda: at("entries", number, *keys),
+                     f"{where}: {keys[0]} bitmap {bitmap} has bits outside the algebra's {limit.bit_length() - 1} "
                      f"blades (0 to {limit - 1})")
-        _require(_is_int(raw["count"]) and raw["count"] >= 0, at(top, "entries", number, "count"),
+        _require(_is_int(raw["count"]) and raw["count"] >= 0, lambda: at("entries", number, "count"),
                  f"{where}: count must be a non-negative integer, not {raw['count']!r}")
+        _require(raw["count"] < MAX_COUNT, lambda: at("entries", number, "count"),
+                 f"{where}: count of 2^128 or more")
         entries.append(Entry(function, tuple(arguments), raw["result"], raw["count"]))
     return Profile(data["algebra"], data["spec_hash"], data["generator_version"], _combine(entries, path))
 

@@ -275,6 +275,11 @@ TEST_F(bad_input_test, shapes_and_masses_beyond_real_numbers_are_named) {
   d.mass = std::numeric_limits<real>::denorm_min();
   d.inertia = inertia::principal(1, 1, 1);
   EXPECT_TRUE(rejects([&] { w.create_body(d); }, "too small or too large to invert"));
+  // A density that makes such a mass is named as the density.
+  body_definition by_density = valid_sphere();
+  by_density.density = std::numeric_limits<real>::denorm_min();
+  EXPECT_TRUE(rejects([&] { w.create_body(by_density); }, "density"));
+  EXPECT_TRUE(rejects([&] { w.create_body(by_density); }, "too small or too large to invert"));
   expect_unchanged();
 }
 
@@ -309,6 +314,14 @@ TEST_F(bad_input_test, shape_lengths_beyond_the_engines_range_are_rejected) {
   EXPECT_TRUE(rejects(
       [&] {
         shape::convex_hull({vector{}, vector{huge, 0, 0}, vector{0, 1, 0}, vector{0, 0, 1}});
+      },
+      "convex hull points must lie within"));
+  // Every coordinate within the bound, a point beyond it.
+  const real far = for_scalar(0.8e75, 0.8e9);
+  EXPECT_TRUE(rejects(
+      [&] {
+        shape::convex_hull(
+            {vector{far, far, far}, vector{far, far, 0}, vector{far, 0, far}, vector{0, far, far}});
       },
       "convex hull points must lie within"));
   body_definition far_part = valid_sphere();
@@ -362,7 +375,7 @@ TEST_F(bad_input_test, a_step_too_long_or_too_short_for_real_numbers_is_rejected
   EXPECT_EQ(copy.time(), w.time());
 }
 
-// A step that would carry the world's time past the largest real number.
+// A step that would carry the world's time (a double) past the largest double.
 TEST_F(bad_input_test, a_step_past_the_largest_time_is_rejected) {
   if (!std::is_same_v<real, double>) {
     GTEST_SKIP() << "the time is a double: no float step carries it past the largest double";
@@ -371,7 +384,7 @@ TEST_F(bad_input_test, a_step_past_the_largest_time_is_rejected) {
   add_floor(still);
   const real longest = std::numeric_limits<real>::max() / 2 * real(1.5);
   still.step(longest);  // nothing moves: any step is short enough
-  EXPECT_TRUE(rejects([&] { still.step(longest); }, "past the largest real number"));
+  EXPECT_TRUE(rejects([&] { still.step(longest); }, "past the largest double"));
   EXPECT_EQ(still.time(), double(longest));
 }
 

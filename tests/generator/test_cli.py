@@ -7,6 +7,7 @@ import stat
 import subprocess
 import sys
 import tempfile
+import threading
 import unittest
 from unittest import mock
 
@@ -90,6 +91,33 @@ class CommandLine(unittest.TestCase):
             self.assertEqual(result.returncode, 1, namespace)
             self.assertIn(reason, result.stderr)
             self.assertEqual(files_under(self.out), [])
+
+    def test_a_damaged_output_file_is_stale_and_written_over(self):
+        arguments = (spec_path("e3ga"), "--variant", "reference", "--out", self.out, "--no-format")
+        self.assertEqual(run_cli("generate", *arguments).returncode, 0)
+        damaged = os.path.join(self.out, "e3ga", "types.hpp")
+        with open(damaged, "wb") as handle:
+            handle.write(b"\xff\xfe not text")
+        stale = run_cli("check", *arguments)
+        self.assertEqual(stale.returncode, 1)
+        self.assertIn("stale: " + damaged, stale.stderr)
+        self.assertNotIn("Traceback", stale.stderr)
+        self.assertEqual(run_cli("generate", *arguments).returncode, 0)
+        self.assertEqual(run_cli("check", *arguments).returncode, 0)
+
+    def test_main_runs_on_another_thread_and_leaves_the_signals_as_they_were(self):
+        from gaphys_gen.__main__ import main
+
+        before = signal.getsignal(signal.SIGTERM)
+        codes = []
+        worker = threading.Thread(target=lambda: codes.append(main(
+            ["generate", spec_path("e3ga"), "--variant", "reference", "--out", self.out, "--no-format"])))
+        worker.start()
+        worker.join()
+        self.assertEqual(codes, [0])
+        self.assertEqual(main(["check", spec_path("e3ga"), "--variant", "reference", "--out", self.out,
+                               "--no-format"]), 0)
+        self.assertEqual(signal.getsignal(signal.SIGTERM), before)
 
     def test_reserved_namespace(self):
         # A C++ keyword is an identifier to Python but not to the compiler.
