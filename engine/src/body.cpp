@@ -97,11 +97,11 @@ struct initial_mass {
 
 // 1 / mass, which every step uses: a mass whose inverse overflows (1e-310
 // kg) is rejected here, rather than by each step after as a body that would
-// move too far.
-real inverse_of_mass(real mass, const char* what) {
+// move too far. (One from a density solid_mass_properties checks itself.)
+real inverse_of_mass(real mass) {
   const real inverse = 1 / mass;
-  if (!std::isfinite(mass) || !std::isfinite(inverse) || !(inverse > 0)) {
-    detail::reject(what, " ", mass, " kg is too small or too large to invert in real numbers");
+  if (!std::isfinite(inverse)) {
+    detail::reject("body mass ", mass, " kg is too small or too large to invert in real numbers");
   }
   return inverse;
 }
@@ -111,13 +111,10 @@ initial_mass initial_mass_properties(const body_definition& d,
   if (d.is_static || d.is_kinematic) {
     return {0, d.inertia.value_or(inertia::principal(1, 1, 1)), vector{}};
   }
-  if (d.inertia) return {inverse_of_mass(d.mass, "body mass"), *d.inertia, vector{}};
+  if (d.inertia) return {inverse_of_mass(d.mass), *d.inertia, vector{}};
   const mass_properties solid = solid_mass_properties(shapes, d.density.value_or(1));
-  if (d.density) {
-    return {inverse_of_mass(solid.mass, "body mass (its shapes' volume times its density)"),
-            solid.inertia, solid.center};
-  }
-  const real inverse_mass = inverse_of_mass(d.mass, "body mass");
+  if (d.density) return {1 / solid.mass, solid.inertia, solid.center};
+  const real inverse_mass = inverse_of_mass(d.mass);
   std::array<real, 9> rows = solid.inertia.rows();
   for (real& x : rows) x *= d.mass / solid.mass;
   // (A mass of 1e-308 kg on a unit box scales its moments to 2e-309 kg m^2,

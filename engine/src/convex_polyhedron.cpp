@@ -668,8 +668,8 @@ convex_polyhedron convex_polyhedron::hull(const std::vector<vector>& input) {
   const xyz extent = high - low;
   const real size = std::max({extent.x, extent.y, extent.z});
   if (!std::isfinite(size)) detail::reject("convex hull points must span a finite range");
-  // (The lengths every shape keeps to: validate.hpp, smallest_length.)
-  // (Each coordinate within it first, so that the squared distances are finite.)
+  // The lengths every shape keeps to (validate.hpp, smallest_length); each
+  // coordinate within them first, so that the distances squared are finite.
   real farthest = magnitude;
   if (magnitude <= detail::largest_length) {
     for (const xyz& p : given) farthest = std::max(farthest, length(p));

@@ -95,10 +95,8 @@ inline void require_offset(real value, const char* what) {
 template <class Named>
 void require_offset(const Named& value, const char* what) {
   require_finite(value, what);
-  real largest = 0;
-  for (real x : value.c) largest = std::max(largest, std::fabs(x));
-  // (Each coefficient at most largest_length: the squared norm is finite.)
-  if (largest > largest_length || e3ga::norm(value) > largest_length) {
+  // (A norm whose square overflows is infinite, and so too far.)
+  if (!(e3ga::norm(value) <= largest_length)) {
     reject(what, " must be at most ", largest_length, " m from the origin (got ",
            e3ga::basic_mv<real>(value), ")");
   }
