@@ -136,7 +136,7 @@ def run(arguments: argparse.Namespace) -> int:
         except OSError as error:
             raise UsageError(f"{arguments.spec}: cannot read: {error.strerror}") from error
         namespace = arguments.namespace or algebra.name
-        problem = model.namespace_problem(namespace, algebra)
+        problem = model.namespace_problem(namespace, [*(t.name for t in algebra.types), *algebra.aliases])
         if problem:
             raise UsageError(f"--namespace {namespace!r} {problem}")
         formatter = None if arguments.no_format else render.find_clang_format()
@@ -152,10 +152,9 @@ def run(arguments: argparse.Namespace) -> int:
         for relative, text in sorted(files.items()):
             path = os.path.join(arguments.out, relative)
             try:
-                with open(path, encoding="utf-8", newline="") as handle:
-                    if handle.read() == text:
-                        continue
-            except (OSError, UnicodeDecodeError):  # missing, not a file, or not text
+                if output.unchanged(path, text):
+                    continue
+            except OSError:  # not a file (a folder, a path through a file)
                 pass
             stale.append(path)
         for path in stale:

@@ -72,14 +72,15 @@ _LOWERCASE_MACROS = set(
 NAMESPACE_CLASHES = {"tables", "types", "mv_functions", "kernels", "recording", "specialized", "batch", "call"}
 
 
-def namespace_problem(name: str, algebra: "Algebra | None" = None) -> str | None:
-    """Why `name` cannot be the generated namespace (and header folder), or None."""
+def namespace_problem(name: str, type_names=()) -> str | None:
+    """Why `name` cannot be the generated namespace (and header folder) of an
+    algebra with types and aliases `type_names`, or None."""
     if not name.isidentifier() or is_reserved(name):
         return "is not a C++ identifier free to use"
+    if name in type_names:
+        return "is also the name of a type (the namespace and a class of one name: ns::ns)"
     if name in NAMESPACE_CLASHES:
         return "is the name of one of the generated headers or of their own declarations"
-    if algebra is not None and (name in {t.name for t in algebra.types} or name in algebra.aliases):
-        return "is also the name of a type (the namespace and a class of one name: ns::ns)"
     return None
 
 
@@ -272,14 +273,12 @@ class _Validator:
         types = self.validate_types(by_bitmap)
         type_names = {t.name: t for t in types}
         aliases = self.validate_aliases(type_names)
-        # (The namespace and a class of the same name: abc::abc.)
-        if algebra.name in type_names or algebra.name in aliases:
-            raise self.error(algebra.name_location, f"algebra name {algebra.name!r} is also the name of a type")
-        if algebra.name in NAMESPACE_CLASHES:
-            raise self.error(algebra.name_location, f"algebra name {algebra.name!r} is the name of one of the "
-                                                    f"generated headers or of their own declarations")
+        # (The algebra's name is the namespace by default: abc::abc, <tables/tables.hpp>.)
+        problem = namespace_problem(algebra.name, [*type_names, *aliases])
+        if problem:
+            raise self.error(algebra.name_location, f"algebra name {algebra.name!r} {problem}")
         constants = self.validate_constants(type_names, aliases)
-        self.check_batch_names(type_names, aliases, constants)
+        self.check_batch_names(type_names, aliases)
         return Algebra(
             name=algebra.name,
             path=self.spec.path,
@@ -332,7 +331,8 @@ class _Validator:
         for stmt in (s for s in self.spec.statements if s.keyword == "type"):
             self.check_identifier(stmt.name, stmt.location, "type name")
             if stmt.name in _LIBRARY_NAMES:
-                raise self.error(stmt.location, f"type name {stmt.name!r} clashes with a name the generated library declares")
+                raise self.error(stmt.location,
+                                 f"type name {stmt.name!r} clashes with a name the generated library declares")
             if stmt.name in seen:
                 raise self.error(stmt.location, f"type {stmt.name!r} declared twice (first at line {seen[stmt.name]})")
             seen[stmt.name] = stmt.location.line
@@ -359,7 +359,7 @@ class _Validator:
             types.append(NamedType(stmt.name, tuple(coordinates), stmt.location))
         return tuple(types)
 
-    def check_batch_names(self, type_names: dict, aliases: dict, constants) -> None:
+    def check_batch_names(self, type_names: dict, aliases: dict) -> None:
         """batch.hpp names the batch of each type and alias n `n_batch`: no
         other name of the spec may be spelled so."""
         declared = {s.name: s.location for s in self.spec.statements if s.keyword in ("type", "alias", "constant")}

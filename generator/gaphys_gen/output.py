@@ -43,7 +43,8 @@ def _make_folders(folder: str, made: list[str]) -> None:
             made.append(path)
 
 
-def _unchanged(target: str, text: str) -> bool:
+def unchanged(target: str, text: str) -> bool:
+    """Whether target holds text already (False where it is missing or not text)."""
     try:
         with open(target, encoding="utf-8", newline="") as handle:
             return handle.read() == text
@@ -58,7 +59,7 @@ def write_all(root: str, files: dict[str, str]) -> list[str]:
     try:
         for relative, text in sorted(files.items()):
             target = os.path.join(root, relative)
-            if _unchanged(target, text):
+            if unchanged(target, text):
                 continue  # keep the timestamp so that builds stay incremental
             _make_folders(os.path.dirname(target), made)
             with _signals_held():

@@ -74,11 +74,9 @@ def _combine(entries, path: str) -> tuple[Entry, ...]:
     return tuple(Entry(f, a, r, c) for (f, a, r), c in sorted(counts.items()))
 
 
-def _require(condition: bool, where, message: str) -> None:
-    """where: the path, `file:line:column`, or a function that gives it (its
-    place, found only when the check fails)."""
+def _require(condition: bool, path: str, message: str) -> None:
     if not condition:
-        raise ProfileError(f"{where() if callable(where) else where}: {message}")
+        raise ProfileError(f"{path}: {message}")
 
 
 def _is_int(value) -> bool:
@@ -145,58 +143,58 @@ def parse(text: str, path: str, algebra: Algebra | None = None) -> Profile:
         raise ProfileError(f"{path}: malformed JSON: nested too deeply") from error
     except ValueError as error:  # Python's int refuses numbers of over 4300 digits
         raise ProfileError(f"{path}: malformed JSON: a number has too many digits") from error
-    def at(*keys) -> str:
-        """file:line:column of the value at keys (of the nearest that exists).
-        (Found only for an error: a profile that loads is not walked again.)"""
+
+    def require(condition: bool, keys: tuple, message: str) -> None:
+        """Raises at file:line:column of the value at keys (of the nearest that
+        exists), found only then: a profile that loads is not walked again."""
+        if condition:
+            return
         place = _places(text)
         for key in keys:
             if key not in place.members:
                 break
             place = place.members[key]
-        return _locate(_line_starts(text), path, place.offset)
+        raise ProfileError(f"{_locate(_line_starts(text), path, place.offset)}: {message}")
 
-    _require(isinstance(data, dict), lambda: at(), "a profile is a JSON object")
-    _require(data.get("format") == FORMAT, lambda: at("format"),
-             f"not a gaphys profile (\"format\" must be \"{FORMAT}\")")
-    _require(_is_int(data.get("version")) and data["version"] == FORMAT_VERSION,  # not true, not 1.0
-             lambda: at("version"),
-             f"profile format version {data.get('version')!r} is not supported (expected {FORMAT_VERSION})")
+    require(isinstance(data, dict), (), "a profile is a JSON object")
+    require(data.get("format") == FORMAT, ("format",), f"not a gaphys profile (\"format\" must be \"{FORMAT}\")")
+    require(_is_int(data.get("version")) and data["version"] == FORMAT_VERSION, ("version",),  # not true, not 1.0
+            f"profile format version {data.get('version')!r} is not supported (expected {FORMAT_VERSION})")
     for key in ("algebra", "spec_hash", "generator_version"):
-        _require(isinstance(data.get(key), str), lambda: at(key), f"\"{key}\" must be a string")
-    _require(isinstance(data.get("entries"), list), lambda: at("entries"), "\"entries\" must be a list")
+        require(isinstance(data.get(key), str), (key,), f"\"{key}\" must be a string")
+    require(isinstance(data.get("entries"), list), ("entries",), "\"entries\" must be a list")
     unknown = sorted(set(data) - {"format", "version", "algebra", "spec_hash", "generator_version", "entries"})
-    _require(not unknown, lambda: at(unknown[0]) if unknown else path, f"unknown key(s): {', '.join(unknown)}")
+    require(not unknown, tuple(unknown[:1]), f"unknown key(s): {', '.join(unknown)}")
     if algebra is not None:
-        _require(data["algebra"] == algebra.name, lambda: at("algebra"),
-                 f"profile is for algebra {data['algebra']!r}, not {algebra.name!r}")
-        _require(data["spec_hash"] == algebra.spec_hash, lambda: at("spec_hash"),
-                 f"profile was recorded with another version of the spec (spec_hash {data['spec_hash'][:12]}..., "
-                 f"current {algebra.spec_hash[:12]}...): record it again")
+        require(data["algebra"] == algebra.name, ("algebra",),
+                f"profile is for algebra {data['algebra']!r}, not {algebra.name!r}")
+        require(data["spec_hash"] == algebra.spec_hash, ("spec_hash",),
+                f"profile was recorded with another version of the spec (spec_hash {data['spec_hash'][:12]}..., "
+                f"current {algebra.spec_hash[:12]}...): record it again")
     limit = 1 << (algebra.blade_count if algebra is not None else 32)
     entries = []
     for number, raw in enumerate(data["entries"]):
         where = f"entry {number}"
-        _require(isinstance(raw, dict), lambda: at("entries", number), f"{where}: must be an object")
-        _require(set(raw) == {"function", "arguments", "result", "count"}, lambda: at("entries", number),
-                 f"{where}: needs exactly the keys function, arguments, result, count")
+        require(isinstance(raw, dict), ("entries", number), f"{where}: must be an object")
+        require(set(raw) == {"function", "arguments", "result", "count"}, ("entries", number),
+                f"{where}: needs exactly the keys function, arguments, result, count")
         function = raw["function"]
-        _require(isinstance(function, str) and function in RECORDED_ARITY,
-                 lambda: at("entries", number, "function"), f"{where}: unknown function {function!r}")
+        require(isinstance(function, str) and function in RECORDED_ARITY, ("entries", number, "function"),
+                f"{where}: unknown function {function!r}")
         arguments = raw["arguments"]
-        _require(isinstance(arguments, list) and len(arguments) == RECORDED_ARITY[function],
-                 lambda: at("entries", number, "arguments"),
-                 f"{where}: {function} takes {RECORDED_ARITY[function]} bitmap argument(s)")
+        require(isinstance(arguments, list) and len(arguments) == RECORDED_ARITY[function],
+                ("entries", number, "arguments"),
+                f"{where}: {function} takes {RECORDED_ARITY[function]} bitmap argument(s)")
         bitmaps = [(("arguments", k), b) for k, b in enumerate(arguments)] + [(("result",), raw["result"])]
         for keys, bitmap in bitmaps:
-            _require(_is_int(bitmap), lambda: at("entries", number, *keys),
-                     f"{where}: {keys[0]} bitmap {bitmap!r} is not an integer")
-            _require(0 <= bitmap < limit, lambda: at("entries", number, *keys),
-                     f"{where}: {keys[0]} bitmap {bitmap} has bits outside the algebra's {limit.bit_length() - 1} "
-                     f"blades (0 to {limit - 1})")
-        _require(_is_int(raw["count"]) and raw["count"] >= 0, lambda: at("entries", number, "count"),
-                 f"{where}: count must be a non-negative integer, not {raw['count']!r}")
-        _require(raw["count"] < MAX_COUNT, lambda: at("entries", number, "count"),
-                 f"{where}: count of 2^128 or more")
+            require(_is_int(bitmap), ("entries", number, *keys),
+                    f"{where}: {keys[0]} bitmap {bitmap!r} is not an integer")
+            require(0 <= bitmap < limit, ("entries", number, *keys),
+                    f"{where}: {keys[0]} bitmap {bitmap} has bits outside the algebra's {limit.bit_length() - 1} "
+                    f"blades (0 to {limit - 1})")
+        require(_is_int(raw["count"]) and raw["count"] >= 0, ("entries", number, "count"),
+                f"{where}: count must be a non-negative integer, not {raw['count']!r}")
+        require(raw["count"] < MAX_COUNT, ("entries", number, "count"), f"{where}: count of 2^128 or more")
         entries.append(Entry(function, tuple(arguments), raw["result"], raw["count"]))
     return Profile(data["algebra"], data["spec_hash"], data["generator_version"], _combine(entries, path))
 
