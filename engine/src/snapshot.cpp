@@ -36,6 +36,7 @@
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <new>
 #include <optional>
 #include <string>
 #include <system_error>
@@ -44,7 +45,9 @@
 #include <vector>
 
 #if defined(__unix__) || defined(__APPLE__)
-#include <unistd.h>  // fsync
+#include <fcntl.h>     // open
+#include <sys/stat.h>  // fstat
+#include <unistd.h>    // fsync
 #endif
 
 #include "byte_stream.hpp"
@@ -1052,6 +1055,40 @@ std::filesystem::path temporary_beside(const std::filesystem::path& target, int 
   return name;
 }
 
+// The file at `path`, opened for reading if it is a regular file: a device
+// can have no end (/dev/zero filled memory until std::bad_alloc) and a named
+// pipe blocks until something writes to it. (Its type is read from the
+// file opened, not from the path, which might name another by then; it is
+// opened without waiting, for a pipe.)
+std::FILE* open_regular_file(const std::string& path) {
+#if defined(__unix__) || defined(__APPLE__)
+  const int descriptor = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (descriptor < 0) {
+    detail::reject("snapshot file ", path, ": cannot open (", system_error_text(errno), ")");
+  }
+  struct stat status {};
+  const bool regular = ::fstat(descriptor, &status) == 0 && S_ISREG(status.st_mode);
+  std::FILE* file = regular ? ::fdopen(descriptor, "rb") : nullptr;
+  if (!file) {
+    const int error = errno;
+    ::close(descriptor);
+    if (!regular) detail::reject("snapshot file ", path, ": is not a regular file");
+    detail::reject("snapshot file ", path, ": cannot open (", system_error_text(error), ")");
+  }
+  return file;
+#else
+  std::error_code status_error;
+  if (!std::filesystem::is_regular_file(std::filesystem::status(path, status_error))) {
+    detail::reject("snapshot file ", path, ": is not a regular file");
+  }
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (!file) {
+    detail::reject("snapshot file ", path, ": cannot open (", system_error_text(errno), ")");
+  }
+  return file;
+#endif
+}
+
 }  // namespace
 
 void world::save_snapshot_file(const std::string& path) const {
@@ -1101,19 +1138,26 @@ void world::save_snapshot_file(const std::string& path) const {
 }
 
 void world::restore_snapshot_file(const std::string& path) {
-  std::FILE* file = std::fopen(path.c_str(), "rb");
-  if (!file) {
-    detail::reject("snapshot file ", path, ": cannot open (", system_error_text(errno), ")");
-  }
+  if (path.empty()) detail::reject("snapshot file: the path is empty");
+  std::FILE* file = open_regular_file(path);
   std::vector<std::uint8_t> bytes;
   std::uint8_t chunk[65536];
   std::size_t got;
-  while ((got = std::fread(chunk, 1, sizeof chunk, file)) > 0) {
-    bytes.insert(bytes.end(), chunk, chunk + got);
+  bool failed = false, too_large = false;
+  try {
+    while ((got = std::fread(chunk, 1, sizeof chunk, file)) > 0) {
+      bytes.insert(bytes.end(), chunk, chunk + got);
+    }
+    failed = std::ferror(file) != 0;
+  } catch (const std::bad_alloc&) {
+    too_large = true;
   }
-  const bool failed = std::ferror(file) != 0;
   const int error = errno;
   std::fclose(file);
+  if (too_large) {
+    detail::reject("snapshot file ", path, ": too large to read into memory (over ", bytes.size(),
+                   " bytes)");
+  }
   if (failed) {
     detail::reject("snapshot file ", path, ": cannot read (", system_error_text(error), ")");
   }

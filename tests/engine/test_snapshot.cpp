@@ -17,6 +17,10 @@
 #include <type_traits>
 #include <vector>
 
+#if defined(__unix__) || defined(__APPLE__)
+#include <sys/stat.h>  // mkfifo
+#endif
+
 #include "box_helpers.hpp"
 #include "engine_test_support.hpp"
 
@@ -363,6 +367,22 @@ TEST_F(snapshot_test, files_round_trip_and_their_errors_name_the_path) {
   const std::string missing = (folder / "missing.snapshot").string();
   EXPECT_TRUE(rejects([&] { restored.restore_snapshot_file(missing); }, missing));
   EXPECT_TRUE(rejects([&] { restored.restore_snapshot_file(folder.string()); }, folder.string()));
+  EXPECT_TRUE(
+      rejects([&] { restored.restore_snapshot_file(folder.string()); }, "is not a regular file"));
+  EXPECT_TRUE(rejects([&] { restored.restore_snapshot_file(""); }, "path is empty"));
+  // Only a regular file is read: a device without end (it filled memory
+  // until std::bad_alloc) or a named pipe (opening it waited for a writer)
+  // is refused at once.
+  if (fs::exists("/dev/zero")) {
+    EXPECT_TRUE(
+        rejects([&] { restored.restore_snapshot_file("/dev/zero"); }, "is not a regular file"));
+  }
+#if defined(__unix__) || defined(__APPLE__)
+  const std::string pipe = (folder / "a pipe").string();
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+  EXPECT_TRUE(rejects([&] { restored.restore_snapshot_file(pipe); }, "is not a regular file"));
+  fs::remove(pipe);
+#endif
   const std::string unwritable = (folder / "no such folder" / "world.snapshot").string();
   EXPECT_TRUE(rejects([&] { original.save_snapshot_file(unwritable); }, unwritable));
   EXPECT_TRUE(rejects([&] { original.save_snapshot_file(""); }, "path is empty"));

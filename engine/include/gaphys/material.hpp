@@ -18,7 +18,8 @@
 //   5 c_s g / (2 ρ) rad/s² and stops.
 //
 // The rolling radius ρ of a contact is the smaller radius of its round
-// shapes (spheres); a contact with none resists neither rolling nor spin.
+// shapes (spheres and capsules); a contact with none resists neither rolling
+// nor spin.
 #pragma once
 
 #include <algorithm>

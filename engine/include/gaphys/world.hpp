@@ -68,8 +68,8 @@ struct world_settings {
   real sleep_linear_speed = 0.01;   // m/s, of the centre of mass
   real sleep_angular_speed = 0.01;  // rad/s
   real time_to_sleep = 0.5;         // s
-  // Threads a step runs on; 0: every core, or one where one steps faster
-  // (the world times a step on the other count now and then:
+  // Threads a step runs on (at most 1024); 0: every core, or one where one
+  // steps faster (the world times a step on the other count now and then:
   // detail/thread_choice.hpp). The step computes the same to the bit with
   // any number (docs/engine.md, "Threads"), so snapshots do not keep it: a
   // restored world keeps its own.
