@@ -170,3 +170,24 @@ class Batches(unittest.TestCase):
         self.assertTrue(polynomials)
         for body in polynomials:
             self.assertIn("no batch form", body)
+
+
+class BuildDeclaresEveryFile(unittest.TestCase):
+    def test_gaphys_add_algebra_names_the_files_the_generator_writes(self):
+        # cmake/GaphysGenerate.cmake declares the generated headers to the
+        # build (Ninja rebuilds what includes them only if it knows who writes
+        # them); a file written but not named there would be stale one build
+        # long, a name never written would make every build run the generator.
+        with open(os.path.join(REPO_DIR, "cmake", "GaphysGenerate.cmake"), encoding="utf-8") as cmake:
+            match = re.search(r"foreach\(header IN ITEMS ([^)]*)\)", cmake.read())
+        self.assertIsNotNone(match)
+        declared = {name.replace("${namespace}", "{ns}") + ".hpp" for name in match.group(1).split()}
+        for variant in ("reference", "instrumented", "optimized"):
+            for sparse in (False, True):
+                written = {name for _, name in render.files_for(variant, sparse)}
+                self.assertEqual(declared, written, (variant, sparse))
+        # And render writes exactly those (the namespace in place of {ns}).
+        self.assertEqual(
+            set(rendered(spec_path("e3ga"), "optimized")),
+            {name.replace("{ns}", "e3ga") for name in declared},
+        )

@@ -3,7 +3,8 @@
 # gaphys_add_algebra() on the app's own spec, built in two passes by the
 # installed GaphysTwoPass.cmake: its workload's mv calls must get kernels) and
 # examples/demo (the engine, gaphys::scenes and gaphys::gaphys, checked through
-# the trajectory it writes).
+# the trajectory it writes); and an app whose spec is edited is rebuilt with
+# the new algebra by one build (spec_edit.cmake).
 # The demo is built without three.js, as a copy outside the gaphys tree would
 # be: it must build, and its --html must say how to get three.js.
 # Inputs: BUILD_DIR (gaphys's build), SOURCE_DIR, WORK_DIR, PYTHON, GENERATOR.
@@ -18,6 +19,7 @@ function(run)
 endfunction()
 run("${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${WORK_DIR}/install")
 include("${CMAKE_CURRENT_LIST_DIR}/two_pass.cmake")
+include("${CMAKE_CURRENT_LIST_DIR}/spec_edit.cmake")
 
 # The demo links the engine and generates nothing, so it must configure and
 # build with no Python that has Jinja2: the only python3 on its PATH runs
