@@ -5,15 +5,25 @@
 // a coefficient left by cancellation (1e-17 after a rotation) counts as zero.
 // At exit, or on flush(), the counts are written as a gaphys profile (see
 // generator/gaphys_gen/profile.py) to $GAPHYS_PROFILE_DIR/<namespace>.json,
-// added to the counts already in that file. The file is replaced atomically
-// (written beside it, then renamed); an existing file that is not a profile of
-// the same algebra and spec is left alone, with a message on stderr.
+// added to the counts already in that file, in whatever layout it is (as
+// gaphys-gen merge, a formatter or this recorder left it). The file is
+// replaced atomically (written beside it, then renamed), under a lock on the
+// folder, so processes recording at once (ctest -j) add up instead of one
+// replacing another's counts. An existing file that is not a profile of the
+// same algebra and spec, or holds what the recorder cannot carry over
+// exactly (a count over 2^64 - 1), is left alone, with a message on stderr.
 #pragma once
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -24,8 +34,7 @@
 #include <tuple>
 #include <vector>
 
-#include <unistd.h>
-
+#include "json_reader.hpp"
 #include "mv_algorithms.hpp"
 
 namespace gaphys::ga {
@@ -72,24 +81,40 @@ class profile_recorder {
     const char* folder = std::getenv("GAPHYS_PROFILE_DIR");
     if (folder == nullptr || *folder == '\0' || counts_.empty()) return true;
     const std::string path = std::string(folder) + "/" + file_stem_ + ".json";
-    std::map<std::tuple<std::string, std::uint32_t, std::uint32_t, std::uint32_t>, unsigned long long> merged;
+    const folder_lock held(folder);
+    if (!held) {
+      std::cerr << "gaphys: cannot use the profile folder " << folder << " ("
+                << std::strerror(held.error) << "); profile " << path << " not written\n";
+      return false;
+    }
+    counts merged;
     if (!read_existing(path, merged)) return false;
+    bool overflow = false;
     counts_.for_each([&](const key& k, unsigned long long count) {
       const auto& [function, a, b, result] = k;
-      merged[{functions_[function].first, a, b, result}] += count;
+      overflow = !add(merged[{functions_[function].first, a, b, result}], count) || overflow;
     });
+    if (overflow) {
+      std::cerr << "gaphys: " << path << ": a count would pass 2^64 - 1; profile not updated\n";
+      return false;
+    }
     const std::string temporary = path + ".tmp" + std::to_string(::getpid());
     {
       std::ofstream out(temporary, std::ios::trunc);
       write(out, merged);
+      out.flush();
       if (!out) {
-        std::cerr << "gaphys: cannot write profile " << temporary << "\n";
+        const int error = errno;
+        std::cerr << "gaphys: cannot write profile " << path << " (" << std::strerror(error)
+                  << ")\n";
         std::remove(temporary.c_str());
         return false;
       }
     }
     if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-      std::cerr << "gaphys: cannot replace profile " << path << "\n";
+      const int error = errno;
+      std::cerr << "gaphys: cannot replace profile " << path << " (" << std::strerror(error)
+                << ")\n";
       std::remove(temporary.c_str());
       return false;
     }
@@ -98,15 +123,45 @@ class profile_recorder {
   }
 
  private:
+  // function name, argument bitmaps (unused ones 0), result bitmap -> calls
+  using counts = std::map<std::tuple<std::string, std::uint32_t, std::uint32_t, std::uint32_t>,
+                          unsigned long long>;
+
+  // An exclusive lock on the profile folder for as long as it lives
+  // (flock: released when its descriptor closes, the process's end too).
+  struct folder_lock {
+    explicit folder_lock(const char* folder)
+        : descriptor(::open(folder, O_RDONLY | O_DIRECTORY | O_CLOEXEC)) {
+      if (descriptor >= 0) {
+        while (::flock(descriptor, LOCK_EX) != 0 && errno == EINTR) {
+        }
+      }
+      error = descriptor < 0 ? errno : 0;
+    }
+    ~folder_lock() {
+      if (descriptor >= 0) ::close(descriptor);
+    }
+    folder_lock(const folder_lock&) = delete;
+    folder_lock& operator=(const folder_lock&) = delete;
+    explicit operator bool() const { return descriptor >= 0; }
+    int descriptor;
+    int error = 0;
+  };
+
+  // total += count, false where it would pass 2^64 - 1.
+  static bool add(unsigned long long& total, unsigned long long count) {
+    if (count > std::numeric_limits<unsigned long long>::max() - total) return false;
+    total += count;
+    return true;
+  }
+
   int arity(const std::string& name) const {
     for (const auto& [f, n] : functions_)
       if (f == name) return n;
     return -1;
   }
 
-  void write(std::ostream& out,
-             const std::map<std::tuple<std::string, std::uint32_t, std::uint32_t, std::uint32_t>,
-                            unsigned long long>& merged) const {
+  void write(std::ostream& out, const counts& merged) const {
     out << "{\n  \"format\": \"gaphys-profile\",\n  \"version\": 1,\n  \"algebra\": \"" << algebra_
         << "\",\n  \"spec_hash\": \"" << spec_hash_ << "\",\n  \"generator_version\": \"" << generator_version_
         << "\",\n  \"entries\": [";
@@ -121,57 +176,90 @@ class profile_recorder {
     out << (merged.empty() ? "]\n}\n" : "\n  ]\n}\n");
   }
 
-  // Reads a profile this recorder (or gaphys-gen merge) wrote. A missing file
-  // is an empty profile; anything else unexpected is an error.
-  bool read_existing(const std::string& path,
-                     std::map<std::tuple<std::string, std::uint32_t, std::uint32_t, std::uint32_t>,
-                              unsigned long long>& merged) const {
-    std::ifstream in(path);
-    if (!in) return true;
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    const std::string text = buffer.str();
+  // Adds the counts of the profile at `path` to `merged`: a missing file is
+  // an empty profile. It is read as gaphys-gen reads one (profile.py: the
+  // same keys and types, an integer version 1, this algebra and spec), in
+  // any layout; a bitmap must fit 32 bits and a count 64 (gaphys-gen allows
+  // 128). Anything else leaves the file alone, with a message.
+  bool read_existing(const std::string& path, counts& merged) const {
     auto fail = [&](const std::string& why) {
       std::cerr << "gaphys: " << path << ": " << why << "; profile not updated\n";
       return false;
     };
-    auto string_field = [&](const std::string& name) -> std::string {
-      const std::string tag = "\"" + name + "\": \"";
-      const auto at = text.find(tag);
-      if (at == std::string::npos) return {};
-      const auto end = text.find('"', at + tag.size());
-      return end == std::string::npos ? std::string{} : text.substr(at + tag.size(), end - at - tag.size());
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+      if (errno == ENOENT) return true;
+      return fail(std::string("cannot read (") + std::strerror(errno) + ")");
+    }
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    json::value profile;
+    std::string error;
+    if (!json::parse(buffer.str(), profile, error)) return fail("malformed JSON at " + error);
+    using kind = json::value::kind;
+    const auto is_string = [](const json::value* v) {
+      return v != nullptr && v->type == kind::string;
     };
-    if (text.find("\"format\": \"gaphys-profile\"") == std::string::npos) return fail("not a gaphys profile");
-    if (string_field("algebra") != algebra_) return fail("profile of another algebra");
-    if (string_field("spec_hash") != spec_hash_) return fail("profile of another version of the spec");
-    // Entries: {"function": "gp", "arguments": [a, b], "result": r, "count": n}
-    std::size_t at = text.find("\"entries\"");
-    while ((at = text.find("{\"function\": \"", at)) != std::string::npos) {
-      at += 14;
-      const auto name_end = text.find('"', at);
-      const std::string function = text.substr(at, name_end - at);
-      const int n = arity(function);
-      if (n < 0) return fail("unknown function " + function);
-      unsigned long long values[4] = {0, 0, 0, 0};
-      const char* labels[] = {"\"arguments\": [", "\"result\": ", "\"count\": "};
-      std::size_t pos = name_end;
-      int read = 0;
-      for (int field = 0; field < 3; ++field) {
-        pos = text.find(labels[field], pos);
-        if (pos == std::string::npos) return fail("malformed entry");
-        pos += std::string(labels[field]).size();
-        for (int k = 0; k < (field == 0 ? n : 1); ++k) {
-          char* end = nullptr;
-          values[read++] = std::strtoull(text.c_str() + pos, &end, 10);
-          if (end == text.c_str() + pos) return fail("malformed number");
-          pos = static_cast<std::size_t>(end - text.c_str());
-          if (field == 0 && k + 1 < n) pos = text.find(',', pos) + 1;
-        }
+    if (profile.type != kind::object) return fail("not a gaphys profile (not a JSON object)");
+    const json::value* format = profile.member("format");
+    if (!is_string(format) || format->text != "gaphys-profile") return fail("not a gaphys profile");
+    const json::value* version = profile.member("version");
+    if (version == nullptr || !version->is_unsigned_integer() || version->magnitude != 1) {
+      return fail("profile format version not supported (expected 1)");
+    }
+    for (const auto& [name, unused] : profile.members) {
+      (void)unused;
+      if (name != "format" && name != "version" && name != "algebra" && name != "spec_hash" &&
+          name != "generator_version" && name != "entries") {
+        return fail("unknown key \"" + name + "\"");
       }
-      const std::uint32_t a = std::uint32_t(values[0]), b = n == 2 ? std::uint32_t(values[1]) : 0;
-      merged[{function, a, b, std::uint32_t(values[n])}] += values[n + 1];
-      at = pos;
+    }
+    if (!is_string(profile.member("generator_version")))
+      return fail("\"generator_version\" must be a string");
+    const json::value* algebra = profile.member("algebra");
+    if (!is_string(algebra) || algebra->text != algebra_) return fail("profile of another algebra");
+    const json::value* spec_hash = profile.member("spec_hash");
+    if (!is_string(spec_hash) || spec_hash->text != spec_hash_) {
+      return fail("profile of another version of the spec");
+    }
+    const json::value* entries = profile.member("entries");
+    if (entries == nullptr || entries->type != kind::array)
+      return fail("\"entries\" must be a list");
+    for (std::size_t number = 0; number < entries->items.size(); ++number) {
+      const json::value& entry = entries->items[number];
+      const std::string where = "entry " + std::to_string(number) + ": ";
+      if (entry.type != kind::object || entry.members.size() != 4) {
+        return fail(where + "needs exactly the keys function, arguments, result, count");
+      }
+      const json::value* function = entry.member("function");
+      const json::value* arguments = entry.member("arguments");
+      const json::value* result = entry.member("result");
+      const json::value* count = entry.member("count");
+      if (!function || !arguments || !result || !count) {
+        return fail(where + "needs exactly the keys function, arguments, result, count");
+      }
+      const int n = is_string(function) ? arity(function->text) : -1;
+      if (n < 0) return fail(where + "unknown function");
+      if (arguments->type != kind::array || arguments->items.size() != std::size_t(n)) {
+        return fail(where + function->text + " takes " + std::to_string(n) + " bitmap argument(s)");
+      }
+      std::uint32_t bitmaps[3] = {0, 0, 0};  // arguments, then the result
+      for (int k = 0; k <= n; ++k) {
+        const json::value& bitmap = k < n ? arguments->items[std::size_t(k)] : *result;
+        if (!bitmap.is_unsigned_integer() || bitmap.magnitude > 0xFFFFFFFFu) {
+          return fail(where + "a bitmap that is not an integer in [0, 2^32)");
+        }
+        bitmaps[k] = std::uint32_t(bitmap.magnitude);
+      }
+      if (count->type != kind::integer || count->negative) {
+        return fail(where + "count must be a non-negative integer");
+      }
+      if (count->too_large)
+        return fail(where + "a count over 2^64 - 1, more than the recorder can add to");
+      const std::uint32_t b = n == 2 ? bitmaps[1] : 0;
+      if (!add(merged[{function->text, bitmaps[0], b, bitmaps[n]}], count->magnitude)) {
+        return fail("a count would pass 2^64 - 1");
+      }
     }
     return true;
   }
