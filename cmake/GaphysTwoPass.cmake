@@ -124,10 +124,18 @@ endif()
 
 # ---- merge -----------------------------------------------------------------
 if(NOT PYTHON)
-  # The Python the app's configure found, else one on the PATH.
-  file(STRINGS "${instrumented}/CMakeCache.txt" cached REGEX "^Python3_EXECUTABLE:")
-  string(REGEX REPLACE "^[^=]*=" "" PYTHON "${cached}")
+  # The Python the app's configure used: Python3_EXECUTABLE where the user
+  # gave one, else the one find_package(Python3) found (which it caches as
+  # _Python3_EXECUTABLE); else one on the PATH.
+  foreach(entry IN ITEMS Python3_EXECUTABLE _Python3_EXECUTABLE)
+    file(STRINGS "${instrumented}/CMakeCache.txt" cached REGEX "^${entry}:")
+    string(REGEX REPLACE "^[^=]*=" "" PYTHON "${cached}")
+    if(PYTHON)
+      break()
+    endif()
+  endforeach()
   if(NOT PYTHON)
+    unset(PYTHON)  # (an empty PYTHON would hide the one find_program caches)
     find_program(PYTHON NAMES python3 REQUIRED)
   endif()
 endif()

@@ -7,8 +7,8 @@ that the committed output reads like hand-written code.
 
 import shutil
 import subprocess
+import sys
 
-import jinja2
 
 from . import VERSION, profile, view
 from .errors import UsageError
@@ -26,7 +26,14 @@ _RECORDING = {"reference": "off", "instrumented": "on", "optimized": "off"}
 CLANG_FORMAT_STYLE = "{BasedOnStyle: Google, ColumnLimit: 100, SortIncludes: false, ReflowComments: false}"
 
 
-def environment() -> jinja2.Environment:
+def environment() -> "jinja2.Environment":
+    # (Imported here: merge, report and --help need no Jinja2, and a Python
+    # without it, as Debian's python3 alone, runs them.)
+    try:
+        import jinja2
+    except ImportError as error:
+        raise UsageError(f"generating needs Jinja2, which {sys.executable} cannot import: install Debian's "
+                         "python3-jinja2, or run gaphys-gen with a Python that has it") from error
     return jinja2.Environment(
         loader=jinja2.PackageLoader("gaphys_gen", "templates"),
         undefined=jinja2.StrictUndefined,

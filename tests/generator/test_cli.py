@@ -163,6 +163,32 @@ class CommandLine(unittest.TestCase):
         self.assertEqual(stale.returncode, 1)
         self.assertIn("e3ga_test.hpp", stale.stderr)
 
+    def test_only_generating_needs_jinja2(self):
+        # A Python without Jinja2 (Debian's python3 alone): a jinja2 package
+        # first on the path that fails to import stands in for none.
+        blocker = os.path.join(self.work.name, "no_jinja2")
+        os.makedirs(os.path.join(blocker, "jinja2"))
+        with open(os.path.join(blocker, "jinja2", "__init__.py"), "w", encoding="utf-8") as stub:
+            stub.write("raise ImportError('no Jinja2 here')\n")
+        environment = dict(os.environ, PYTHONPATH=blocker + os.pathsep + GENERATOR_DIR)
+
+        def run(*arguments: str) -> subprocess.CompletedProcess:
+            return subprocess.run([sys.executable, "-m", "gaphys_gen", *arguments], capture_output=True, text=True,
+                                  env=environment, timeout=300)
+
+        profile_path = os.path.join(REPO_DIR, "profiling", "profiles", "e3ga.json")
+        for arguments in (["--help"], ["report", profile_path, "--spec", spec_path("e3ga")],
+                          ["merge", "--spec", spec_path("e3ga"), "--out", os.path.join(self.work.name, "m.json"),
+                           profile_path]):
+            result = run(*arguments)
+            self.assertEqual(result.returncode, 0, (arguments, result.stderr))
+            self.assertNotIn("Traceback", result.stderr)
+        result = run("generate", spec_path("e3ga"), "--variant", "optimized", "--out", self.out)
+        self.assertNotEqual(result.returncode, 0)
+        self.assertNotIn("Traceback", result.stderr)
+        self.assertIn("generating needs Jinja2", result.stderr)
+        self.assertEqual(files_under(self.out), [])
+
     def test_profile_commands_name_a_path_they_cannot_use(self):
         profile_path = os.path.join(REPO_DIR, "profiling", "profiles", "e3ga.json")
         missing = os.path.join(self.work.name, "missing.ga")
