@@ -222,9 +222,16 @@ def mv_kernel_view(algebra: Algebra, mk) -> dict:
     shown = " x ".join(
         "{" + ", ".join(b.name for b in algebra.blades if bits >> b.index & 1) + "}" for bits in mk.argument_bits
     )
-    prologue = [f"const T inv = T(1) / ({cpp.expression(kernel.divisor)});"] if divides else []
+    # On mv, apply and inverse throw std::domain_error for a null versor
+    # (<v ~v>_0 = 0), as the generic path does, even where the result would
+    # be zero anyway: a profiled kernel may not give infinities, or a zero,
+    # where the reference variant throws.
+    prologue = []
+    if kernel.divisor is not None:
+        reciprocal = f"gaphys::ga::inverse_norm2<T>({cpp.expression(kernel.divisor)})"
+        prologue = [f"const T inv = {reciprocal};" if divides else f"(void){reciprocal};"]
     evaluated = [p for _, p in kernel.outputs] + [p for _, p in kernel.temporaries]
-    evaluated += [kernel.divisor] if divides else []
+    evaluated += [kernel.divisor] if kernel.divisor is not None else []
     read = variables_read(evaluated)
     # Kernels write every coefficient of the caller's result, zeros included,
     # in canonical order: the result is not zeroed first (one pass of stores,

@@ -10,11 +10,12 @@
 
 #include <c3ga/c3ga.hpp>
 #include <c3ga_ref/c3ga_ref.hpp>
+#include <cmath>
 #include <e3ga/e3ga.hpp>
 #include <e3ga_ref/e3ga_ref.hpp>
-#include <cmath>
 #include <limits>
 #include <random>
+#include <stdexcept>
 #include <string>
 
 #include "variants_agree.hpp"
@@ -188,11 +189,50 @@ GAPHYS_DISPATCHED(c3ga)
   }                                                                                              \
   EXPECT_GT(checked, 0);
 
-TEST(ProfiledKernels, E3gaKernelsWriteEveryCoefficient) { GAPHYS_CHECK_WRITES_EVERY_COEFFICIENT(e3ga) }
-TEST(ProfiledKernels, C3gaKernelsWriteEveryCoefficient) { GAPHYS_CHECK_WRITES_EVERY_COEFFICIENT(c3ga) }
+// A null versor (<v ~v>_0 = 0) with a profiled bitmap: apply and inverse on
+// mv throw std::domain_error in the optimized variant as in the reference,
+// also where the result would be zero (x = 0). (The profiled kernels
+// divided by zero: NaN, where the reference threw.)
+template <class F>
+void expect_domain_error(F&& f) {
+  EXPECT_THROW(f(), std::domain_error);
+}
+#define GAPHYS_CHECK_NULL_VERSORS(ns)                                                          \
+  std::mt19937 rng(5);                                                                         \
+  int checked = 0;                                                                             \
+  for (const auto* c = ns::detail::specialized_combinations; c->function != nullptr; ++c) {    \
+    const std::string f = c->function;                                                         \
+    if (f != "apply" && f != "inverse") continue;                                              \
+    SCOPED_TRACE(f + " on bitmaps " + std::to_string(c->a) + ", " + std::to_string(c->b));     \
+    ns::mv v; /* zero coefficients, stored bits of the kernel */                               \
+    v.bits = c->a;                                                                             \
+    const ns::mv x = with_bits<ns::mv>(rng, c->b);                                             \
+    const auto rv = same_coordinates<ns##_ref::mv>(v), rx = same_coordinates<ns##_ref::mv>(x); \
+    if (f == "apply") {                                                                        \
+      /* the kernel itself throws, not only the generic path */                                \
+      expect_domain_error([&] { (void)dispatched_##ns(f, v, x); });                            \
+      expect_domain_error([&] { (void)ns::apply(v, x); });                                     \
+      expect_domain_error([&] { (void)ns##_ref::apply(rv, rx); });                             \
+    } else {                                                                                   \
+      expect_domain_error([&] { (void)ns::inverse(v); });                                      \
+      expect_domain_error([&] { (void)ns##_ref::inverse(rv); });                               \
+    }                                                                                          \
+    ++checked;                                                                                 \
+  }                                                                                            \
+  EXPECT_GT(checked, 0) << "the committed profile specialized no apply";
 
-TEST(ProfiledKernels, E3gaSupersetKernelsServeSubsets) { GAPHYS_CHECK_SUBSETS(e3ga) }
-TEST(ProfiledKernels, C3gaSupersetKernelsServeSubsets) { GAPHYS_CHECK_SUBSETS(c3ga) }
+TEST(ProfiledKernels, E3gaNullVersorsThrowAsInTheReference){
+    GAPHYS_CHECK_NULL_VERSORS(e3ga)} TEST(ProfiledKernels, C3gaNullVersorsThrowAsInTheReference){
+    GAPHYS_CHECK_NULL_VERSORS(c3ga)}
+
+TEST(ProfiledKernels, E3gaKernelsWriteEveryCoefficient){
+    GAPHYS_CHECK_WRITES_EVERY_COEFFICIENT(e3ga)} TEST(ProfiledKernels,
+                                                      C3gaKernelsWriteEveryCoefficient){
+    GAPHYS_CHECK_WRITES_EVERY_COEFFICIENT(c3ga)}
+
+TEST(ProfiledKernels, E3gaSupersetKernelsServeSubsets){
+    GAPHYS_CHECK_SUBSETS(e3ga)} TEST(ProfiledKernels,
+                                     C3gaSupersetKernelsServeSubsets){GAPHYS_CHECK_SUBSETS(c3ga)}
 
 // A named type widened to mv marks only its nonzero coordinates (and its
 // constant ones), so its exact zeros reach the kernels made for them.

@@ -251,7 +251,7 @@ void apply_4000f001_10(const basic_mv<T>& GAPHYS_RESTRICT a, const basic_mv<T>& 
   const T t1 = a.c[0] * b.c[4];
   const T t2 = -a.c[15] * b.c[4];
   const T t5 = -a.c[14] * b.c[4];
-  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[13] * a.c[13]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[13] * a.c[13]);
   r.c[0] = T(0);
   r.c[1] = T(0);
   r.c[2] = T(0);
@@ -274,8 +274,8 @@ void apply_4000fc01_10(const basic_mv<T>& GAPHYS_RESTRICT a, const basic_mv<T>& 
   const T t5 = -a.c[30] * b.c[4];
   const T t6 = -a.c[12] * b.c[4];
   const T t7 = -a.c[14] * b.c[4];
-  const T inv =
-      T(1) / (a.c[0] * a.c[0] + a.c[10] * a.c[10] + a.c[11] * a.c[11] + a.c[13] * a.c[13]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[10] * a.c[10] +
+                                             a.c[11] * a.c[11] + a.c[13] * a.c[13]);
   r.c[0] = T(0);
   r.c[1] = T(0);
   r.c[2] = (a.c[0] * t0 + a.c[10] * t1 + a.c[11] * t2 + a.c[13] * t3) * inv;
@@ -308,8 +308,8 @@ void apply_4000fc01_3e(const basic_mv<T>& GAPHYS_RESTRICT a, const basic_mv<T>& 
   const T t13 = a.c[11] * b.c[5] - a.c[12] * b.c[4] + a.c[15] * b.c[2] + a.c[30] * b.c[3];
   const T t14 = a.c[13] * b.c[5] - a.c[14] * b.c[4] + a.c[15] * b.c[3] - a.c[30] * b.c[2];
   const T t15 = a.c[30] * b.c[1];
-  const T inv =
-      T(1) / (a.c[0] * a.c[0] + a.c[10] * a.c[10] + a.c[11] * a.c[11] + a.c[13] * a.c[13]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[10] * a.c[10] +
+                                             a.c[11] * a.c[11] + a.c[13] * a.c[13]);
   r.c[0] = T(0);
   r.c[1] = (a.c[0] * t0 + a.c[10] * t3 + a.c[11] * t5 + a.c[13] * t6) * inv;
   r.c[2] = (a.c[0] * t1 + a.c[10] * t2 + a.c[11] * t4 - a.c[12] * t0 + a.c[13] * t7 - a.c[14] * t3 -

@@ -93,7 +93,7 @@ template <class T>
 void apply_1_2(const basic_mv<T>& GAPHYS_RESTRICT a, const basic_mv<T>& GAPHYS_RESTRICT b,
                basic_mv<T>& GAPHYS_RESTRICT r) {
   const T t0 = a.c[0] * b.c[1];
-  const T inv = T(1) / (a.c[0] * a.c[0]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0]);
   r.c[0] = T(0);
   r.c[1] = (a.c[0] * t0) * inv;
   gaphys::ga::set_zero<2, 6>(r.c);
@@ -105,7 +105,7 @@ template <class T>
 void apply_1_4(const basic_mv<T>& GAPHYS_RESTRICT a, const basic_mv<T>& GAPHYS_RESTRICT b,
                basic_mv<T>& GAPHYS_RESTRICT r) {
   const T t0 = a.c[0] * b.c[2];
-  const T inv = T(1) / (a.c[0] * a.c[0]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0]);
   r.c[0] = T(0);
   r.c[1] = T(0);
   r.c[2] = (a.c[0] * t0) * inv;
@@ -118,7 +118,7 @@ template <class T>
 void apply_1_8(const basic_mv<T>& GAPHYS_RESTRICT a, const basic_mv<T>& GAPHYS_RESTRICT b,
                basic_mv<T>& GAPHYS_RESTRICT r) {
   const T t0 = a.c[0] * b.c[3];
-  const T inv = T(1) / (a.c[0] * a.c[0]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0]);
   r.c[0] = T(0);
   r.c[1] = T(0);
   r.c[2] = T(0);
@@ -133,7 +133,7 @@ void apply_1_a(const basic_mv<T>& GAPHYS_RESTRICT a, const basic_mv<T>& GAPHYS_R
                basic_mv<T>& GAPHYS_RESTRICT r) {
   const T t0 = a.c[0] * b.c[1];
   const T t1 = a.c[0] * b.c[3];
-  const T inv = T(1) / (a.c[0] * a.c[0]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0]);
   r.c[0] = T(0);
   r.c[1] = (a.c[0] * t0) * inv;
   r.c[2] = T(0);
@@ -144,18 +144,21 @@ void apply_1_a(const basic_mv<T>& GAPHYS_RESTRICT a, const basic_mv<T>& GAPHYS_R
 
 // apply on mv {1, e2^e3} x {}: 2 mul, 1 add, 1 div (724 profiled calls)
 template <class T>
-void apply_41_0([[maybe_unused]] const basic_mv<T>& GAPHYS_RESTRICT a,
+void apply_41_0(const basic_mv<T>& GAPHYS_RESTRICT a,
                 [[maybe_unused]] const basic_mv<T>& GAPHYS_RESTRICT b,
                 basic_mv<T>& GAPHYS_RESTRICT r) {
+  (void)gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[6] * a.c[6]);
   gaphys::ga::set_zero<0, 8>(r.c);
   r.bits = 0x0u;
 }
 
 // apply on mv {1, e1^e2, e1^e3, e2^e3} x {}: 4 mul, 3 add, 1 div (9277 profiled calls)
 template <class T>
-void apply_71_0([[maybe_unused]] const basic_mv<T>& GAPHYS_RESTRICT a,
+void apply_71_0(const basic_mv<T>& GAPHYS_RESTRICT a,
                 [[maybe_unused]] const basic_mv<T>& GAPHYS_RESTRICT b,
                 basic_mv<T>& GAPHYS_RESTRICT r) {
+  (void)gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[4] * a.c[4] + a.c[5] * a.c[5] +
+                                     a.c[6] * a.c[6]);
   gaphys::ga::set_zero<0, 8>(r.c);
   r.bits = 0x0u;
 }
@@ -168,7 +171,8 @@ void apply_71_8(const basic_mv<T>& GAPHYS_RESTRICT a, const basic_mv<T>& GAPHYS_
   const T t1 = a.c[6] * b.c[3];
   const T t2 = a.c[0] * b.c[3];
   const T t3 = a.c[4] * b.c[3];
-  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[4] * a.c[4] + a.c[5] * a.c[5] +
+                                             a.c[6] * a.c[6]);
   r.c[0] = T(0);
   r.c[1] = (a.c[0] * t0 + a.c[4] * t1 + a.c[5] * t2 + a.c[6] * t3) * inv;
   r.c[2] = (a.c[0] * t1 - a.c[4] * t0 - a.c[5] * t3 + a.c[6] * t2) * inv;
@@ -185,7 +189,8 @@ void apply_71_e(const basic_mv<T>& GAPHYS_RESTRICT a, const basic_mv<T>& GAPHYS_
   const T t1 = a.c[0] * b.c[2] - a.c[4] * b.c[1] + a.c[6] * b.c[3];
   const T t2 = a.c[0] * b.c[3] - a.c[5] * b.c[1] - a.c[6] * b.c[2];
   const T t3 = a.c[4] * b.c[3] - a.c[5] * b.c[2] + a.c[6] * b.c[1];
-  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[4] * a.c[4] + a.c[5] * a.c[5] +
+                                             a.c[6] * a.c[6]);
   r.c[0] = T(0);
   r.c[1] = (a.c[0] * t0 + a.c[4] * t1 + a.c[5] * t2 + a.c[6] * t3) * inv;
   r.c[2] = (a.c[0] * t1 - a.c[4] * t0 - a.c[5] * t3 + a.c[6] * t2) * inv;
@@ -202,7 +207,8 @@ void apply_71_10(const basic_mv<T>& GAPHYS_RESTRICT a, const basic_mv<T>& GAPHYS
   const T t1 = a.c[0] * b.c[4];
   const T t2 = -a.c[6] * b.c[4];
   const T t3 = a.c[5] * b.c[4];
-  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[4] * a.c[4] + a.c[5] * a.c[5] +
+                                             a.c[6] * a.c[6]);
   gaphys::ga::set_zero<0, 4>(r.c);
   r.c[4] = (a.c[0] * t1 - a.c[4] * t0 - a.c[5] * t3 + a.c[6] * t2) * inv;
   r.c[5] = (a.c[0] * t2 + a.c[4] * t3 - a.c[5] * t0 - a.c[6] * t1) * inv;
@@ -219,7 +225,8 @@ void apply_71_20(const basic_mv<T>& GAPHYS_RESTRICT a, const basic_mv<T>& GAPHYS
   const T t1 = a.c[6] * b.c[5];
   const T t2 = a.c[0] * b.c[5];
   const T t3 = -a.c[4] * b.c[5];
-  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[4] * a.c[4] + a.c[5] * a.c[5] +
+                                             a.c[6] * a.c[6]);
   gaphys::ga::set_zero<0, 4>(r.c);
   r.c[4] = (a.c[0] * t1 - a.c[4] * t0 - a.c[5] * t3 + a.c[6] * t2) * inv;
   r.c[5] = (a.c[0] * t2 + a.c[4] * t3 - a.c[5] * t0 - a.c[6] * t1) * inv;
@@ -236,7 +243,8 @@ void apply_71_40(const basic_mv<T>& GAPHYS_RESTRICT a, const basic_mv<T>& GAPHYS
   const T t1 = -a.c[5] * b.c[6];
   const T t2 = a.c[4] * b.c[6];
   const T t3 = a.c[0] * b.c[6];
-  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[4] * a.c[4] + a.c[5] * a.c[5] +
+                                             a.c[6] * a.c[6]);
   gaphys::ga::set_zero<0, 4>(r.c);
   r.c[4] = (a.c[0] * t1 - a.c[4] * t0 - a.c[5] * t3 + a.c[6] * t2) * inv;
   r.c[5] = (a.c[0] * t2 + a.c[4] * t3 - a.c[5] * t0 - a.c[6] * t1) * inv;
@@ -253,7 +261,8 @@ void apply_71_60(const basic_mv<T>& GAPHYS_RESTRICT a, const basic_mv<T>& GAPHYS
   const T t1 = -a.c[5] * b.c[6] + a.c[6] * b.c[5];
   const T t2 = a.c[0] * b.c[5] + a.c[4] * b.c[6];
   const T t3 = a.c[0] * b.c[6] - a.c[4] * b.c[5];
-  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[4] * a.c[4] + a.c[5] * a.c[5] +
+                                             a.c[6] * a.c[6]);
   gaphys::ga::set_zero<0, 4>(r.c);
   r.c[4] = (a.c[0] * t1 - a.c[4] * t0 - a.c[5] * t3 + a.c[6] * t2) * inv;
   r.c[5] = (a.c[0] * t2 + a.c[4] * t3 - a.c[5] * t0 - a.c[6] * t1) * inv;
@@ -270,7 +279,8 @@ void apply_71_70(const basic_mv<T>& GAPHYS_RESTRICT a, const basic_mv<T>& GAPHYS
   const T t1 = a.c[0] * b.c[4] - a.c[5] * b.c[6] + a.c[6] * b.c[5];
   const T t2 = a.c[0] * b.c[5] + a.c[4] * b.c[6] - a.c[6] * b.c[4];
   const T t3 = a.c[0] * b.c[6] - a.c[4] * b.c[5] + a.c[5] * b.c[4];
-  const T inv = T(1) / (a.c[0] * a.c[0] + a.c[4] * a.c[4] + a.c[5] * a.c[5] + a.c[6] * a.c[6]);
+  const T inv = gaphys::ga::inverse_norm2<T>(a.c[0] * a.c[0] + a.c[4] * a.c[4] + a.c[5] * a.c[5] +
+                                             a.c[6] * a.c[6]);
   gaphys::ga::set_zero<0, 4>(r.c);
   r.c[4] = (a.c[0] * t1 - a.c[4] * t0 - a.c[5] * t3 + a.c[6] * t2) * inv;
   r.c[5] = (a.c[0] * t2 + a.c[4] * t3 - a.c[5] * t0 - a.c[6] * t1) * inv;
