@@ -52,7 +52,7 @@ def parse_arguments(argv: list[str]) -> argparse.Namespace:
         command.add_argument("--namespace", help="C++ namespace and header folder (default: the algebra name)")
         command.add_argument("--no-format", action="store_true", help="skip clang-format")
         command.add_argument("--profile", help="a profile of this spec: specialize mv calls (optimized only)")
-        command.add_argument("--coverage", type=coverage, default=0.999,
+        command.add_argument("--coverage", type=coverage, default=None,
                              help="share of the profile's calls to specialize (default 0.999)")
     merge = commands.add_parser("merge", help="add the counts of several profiles")
     merge.add_argument("inputs", nargs="+", help="profiles to merge")
@@ -130,6 +130,12 @@ def run(arguments: argparse.Namespace) -> int:
         except OSError as error:
             print(os_error_text(error, arguments.spec), file=sys.stderr)
             return 1
+    if arguments.coverage is not None and not arguments.profile:
+        print("gaphys-gen: --coverage needs --profile (it is the share of the profile's calls to specialize)",
+              file=sys.stderr)
+        return 2
+    if arguments.coverage is None:
+        arguments.coverage = 0.999
     try:
         try:
             algebra = model.load(arguments.spec)

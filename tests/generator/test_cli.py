@@ -163,6 +163,14 @@ class CommandLine(unittest.TestCase):
         self.assertEqual(stale.returncode, 1)
         self.assertIn("e3ga_test.hpp", stale.stderr)
 
+    def test_coverage_without_a_profile_is_a_usage_error(self):
+        # (As gaphys_add_algebra refuses COVERAGE without PROFILE: silently
+        # ignored, it would look as if it had been applied.)
+        result = run_cli("generate", spec_path("e3ga"), "--variant", "optimized", "--out", self.out, "--coverage", "0.5")
+        self.assertEqual(result.returncode, 2)
+        self.assertIn("--coverage needs --profile", result.stderr)
+        self.assertEqual(files_under(self.out), [])
+
     def test_only_generating_needs_jinja2(self):
         # A Python without Jinja2 (Debian's python3 alone): a jinja2 package
         # first on the path that fails to import stands in for none.
