@@ -134,6 +134,11 @@ def _locate(starts: list[int], path: str, offset: int) -> str:
     return f"{path}:{line}:{offset - starts[line - 1] + 1}"
 
 
+def _shown(value) -> str:
+    """A value of the profile as its JSON reads (true, "gp", 1.5), not as Python's repr."""
+    return json.dumps(value)
+
+
 def parse(text: str, path: str, algebra: Algebra | None = None) -> Profile:
     try:
         data = json.loads(text)
@@ -159,7 +164,7 @@ def parse(text: str, path: str, algebra: Algebra | None = None) -> Profile:
     require(isinstance(data, dict), (), "a profile is a JSON object")
     require(data.get("format") == FORMAT, ("format",), f"not a gaphys profile (\"format\" must be \"{FORMAT}\")")
     require(_is_int(data.get("version")) and data["version"] == FORMAT_VERSION, ("version",),  # not true, not 1.0
-            f"profile format version {data.get('version')!r} is not supported (expected {FORMAT_VERSION})")
+            f"profile format version {_shown(data.get('version'))} is not supported (expected {FORMAT_VERSION})")
     for key in ("algebra", "spec_hash", "generator_version"):
         require(isinstance(data.get(key), str), (key,), f"\"{key}\" must be a string")
     require(isinstance(data.get("entries"), list), ("entries",), "\"entries\" must be a list")
@@ -167,7 +172,7 @@ def parse(text: str, path: str, algebra: Algebra | None = None) -> Profile:
     require(not unknown, tuple(unknown[:1]), f"unknown key(s): {', '.join(unknown)}")
     if algebra is not None:
         require(data["algebra"] == algebra.name, ("algebra",),
-                f"profile is for algebra {data['algebra']!r}, not {algebra.name!r}")
+                f"profile is for algebra {_shown(data['algebra'])}, not {_shown(algebra.name)}")
         require(data["spec_hash"] == algebra.spec_hash, ("spec_hash",),
                 f"profile was recorded with another version of the spec (spec_hash {data['spec_hash'][:12]}..., "
                 f"current {algebra.spec_hash[:12]}...): record it again")
@@ -180,7 +185,7 @@ def parse(text: str, path: str, algebra: Algebra | None = None) -> Profile:
                 f"{where}: needs exactly the keys function, arguments, result, count")
         function = raw["function"]
         require(isinstance(function, str) and function in RECORDED_ARITY, ("entries", number, "function"),
-                f"{where}: unknown function {function!r}")
+                f"{where}: unknown function {_shown(function)}")
         arguments = raw["arguments"]
         require(isinstance(arguments, list) and len(arguments) == RECORDED_ARITY[function],
                 ("entries", number, "arguments"),
@@ -188,12 +193,12 @@ def parse(text: str, path: str, algebra: Algebra | None = None) -> Profile:
         bitmaps = [(("arguments", k), b) for k, b in enumerate(arguments)] + [(("result",), raw["result"])]
         for keys, bitmap in bitmaps:
             require(_is_int(bitmap), ("entries", number, *keys),
-                    f"{where}: {keys[0]} bitmap {bitmap!r} is not an integer")
+                    f"{where}: {keys[0]} bitmap {_shown(bitmap)} is not an integer")
             require(0 <= bitmap < limit, ("entries", number, *keys),
                     f"{where}: {keys[0]} bitmap {bitmap} has bits outside the algebra's {limit.bit_length() - 1} "
                     f"blades (0 to {limit - 1})")
         require(_is_int(raw["count"]) and raw["count"] >= 0, ("entries", number, "count"),
-                f"{where}: count must be a non-negative integer, not {raw['count']!r}")
+                f"{where}: count must be a non-negative integer, not {_shown(raw['count'])}")
         require(raw["count"] < MAX_COUNT, ("entries", number, "count"), f"{where}: count of 2^128 or more")
         entries.append(Entry(function, tuple(arguments), raw["result"], raw["count"]))
     return Profile(data["algebra"], data["spec_hash"], data["generator_version"], _combine(entries, path))
