@@ -12,8 +12,10 @@ namespace demo {
 
 class atomic_file {
  public:
-  // Creates the temporary; throws std::runtime_error when it cannot (for
-  // example when the target's directory does not exist).
+  // Creates the temporary; throws std::runtime_error naming the target when
+  // it cannot (the target's directory does not exist) or when the target is
+  // there and not a regular file (a folder, a device: a rename would put the
+  // output in place of /dev/null).
   explicit atomic_file(const std::string& path);
   // Removes the temporary unless commit() succeeded.
   ~atomic_file();
@@ -22,9 +24,17 @@ class atomic_file {
 
   std::ostream& stream() { return out_; }
 
+  // Throws std::runtime_error, with the system's reason, once a write to the
+  // stream has failed (a full disk): a long run stops there, not at its end.
+  void check();
+
   // Closes the temporary and renames it over the target; throws
   // std::runtime_error when either fails.
   void commit();
+
+  // Whether two paths name the same file, however spelled ("a.json",
+  // "./a.json"), whether or not it exists yet.
+  static bool same_target(const std::string& a, const std::string& b);
 
  private:
   std::string path_;

@@ -138,6 +138,8 @@ options parse(int argc, char** argv) {
       o.every = positive_count(option, value, max_steps);
     } else if (option == "--remove-at") {
       o.remove_at = positive_count(option, value, max_steps);
+    } else if (value.empty()) {
+      throw usage_error(option + " needs a file name, not an empty one");
     } else if (option == "--out") {
       o.out = value;
     } else {
@@ -153,7 +155,7 @@ options parse(int argc, char** argv) {
     if (!format) throw usage_error("--out needs a .csv or .json file, not '" + o.out + "'");
     o.format = *format;
   }
-  if (!o.html.empty() && o.html == o.out) {
+  if (!o.html.empty() && !o.out.empty() && demo::atomic_file::same_target(o.html, o.out)) {
     throw usage_error("--out and --html need two different files, not both '" + o.out + "'");
   }
   return o;
@@ -253,15 +255,22 @@ void remove_what_the_ray_hits(gaphys::world& world) {
             << hit->point.e3() << " m, t = " << world.time() << " s\n";
 }
 
-// Set by Ctrl-C or a kill: the run stops between steps and unwinds, so the
-// output's temporary file is removed instead of left behind.
+// Set by Ctrl-C, a kill or a closed terminal: the run stops between steps and
+// unwinds, so the output's temporary file is removed instead of left behind.
 volatile std::sig_atomic_t stop_signal = 0;
 extern "C" void request_stop(int signal) { stop_signal = signal; }
 
+// Catches `signal` unless the demo was started with it ignored (a
+// background job ignores Ctrl-C; nohup, a closed terminal).
+void stop_on(int signal) {
+  if (std::signal(signal, request_stop) == SIG_IGN) std::signal(signal, SIG_IGN);
+}
+
 int run(const options& o) {
   if (!o.html.empty()) demo::require_viewer();  // before any file is made
-  std::signal(SIGINT, request_stop);
-  std::signal(SIGTERM, request_stop);
+  stop_on(SIGINT);
+  stop_on(SIGTERM);
+  stop_on(SIGHUP);
   const gaphys::real h = gaphys::scenes::time_step;
   gaphys::world world =
       o.spheres ? gaphys::scenes::falling_spheres_in_box(*o.spheres) : o.scene->build();
@@ -288,6 +297,9 @@ int run(const options& o) {
   const auto record = [&] {
     if (writer) writer->write_frame(world);
     if (page_writer) page_writer->write_frame(world);
+    // A write that failed (a full disk) stops the run now.
+    if (file) file->check();
+    if (page_file) page_file->check();
   };
   record();
 
