@@ -72,7 +72,11 @@ function(_gaphys_check_profile caller variant profile coverage out_profile out_c
                         "(the profile chooses the optimized variant's mv kernels)")
   endif()
   get_filename_component(profile "${profile}" ABSOLUTE)
-  if(NOT EXISTS "${profile}" OR IS_DIRECTORY "${profile}")
+  if(IS_DIRECTORY "${profile}")
+    message(FATAL_ERROR "${caller}: profile '${profile}' is a folder, not a profile file (the "
+                        "instrumented variant writes <folder>/<namespace>.json)")
+  endif()
+  if(NOT EXISTS "${profile}")
     message(FATAL_ERROR "${caller}: profile '${profile}' not found (record one by running the "
                         "instrumented variant with GAPHYS_PROFILE_DIR set)")
   endif()

@@ -70,6 +70,7 @@ file(WRITE "${bad}/CMakeLists.txt"
 foreach(case
     "VARIANT reference PROFILE '${profile}'|PROFILE goes with VARIANT optimized, not reference"
     "PROFILE '${WORK_DIR}/missing.json'|profile '${WORK_DIR}/missing.json' not found"
+    "PROFILE '${WORK_DIR}'|profile '${WORK_DIR}' is a folder, not a profile file"
     "COVERAGE 0.5|COVERAGE 0.5 needs a PROFILE"
     "PROFILE '${profile}' COVERAGE 2|COVERAGE must be a share of calls in \\(0, 1\\], not '2'")
   string(REPLACE "|" ";" case "${case}")
