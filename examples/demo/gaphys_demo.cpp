@@ -147,6 +147,10 @@ options parse(int argc, char** argv) {
     }
   }
   o.scene = &find_scene(scene);
+  if (o.remove_at && *o.remove_at > o.steps) {
+    throw usage_error("--remove-at " + std::to_string(*o.remove_at) + " is after the last step, " +
+                      std::to_string(o.steps));
+  }
   if (o.spheres && o.scene->name != "falling_spheres") {
     throw usage_error("--spheres applies only to falling_spheres, not " + scene);
   }
@@ -355,6 +359,7 @@ int main(int argc, char** argv) {
     } else {
       return run(o);
     }
+    if (!std::cout.flush()) throw std::runtime_error("cannot write to standard output");
     return 0;
   } catch (const usage_error& e) {
     std::cerr << "gaphys_demo: " << e.what() << "\n\n" << usage;
