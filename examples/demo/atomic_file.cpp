@@ -37,6 +37,10 @@ atomic_file::atomic_file(const std::string& path) : path_(path) {
   const int made = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
   if (made < 0) throw failure("create a file beside", path, errno);
   ::close(made);
+  // A file replaced keeps its permissions (a private 600 stays private).
+  if (std::filesystem::is_regular_file(status)) {
+    std::filesystem::permissions(temporary_, status.permissions(), ignored);
+  }
   out_.open(temporary_, std::ios::out | std::ios::trunc);
   if (!out_) {
     const int error = errno;

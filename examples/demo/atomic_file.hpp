@@ -15,7 +15,7 @@ class atomic_file {
   // Creates the temporary; throws std::runtime_error naming the target when
   // it cannot (the target's directory does not exist) or when the target is
   // there and not a regular file (a folder, a device: a rename would put the
-  // output in place of /dev/null).
+  // output in place of /dev/null). A file replaced keeps its permissions.
   explicit atomic_file(const std::string& path);
   // Removes the temporary unless commit() succeeded.
   ~atomic_file();

@@ -1,5 +1,6 @@
 #include "trajectory_writer.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 
@@ -9,9 +10,14 @@ namespace demo {
 
 namespace {
 
+// Whether `text` ends with `suffix` (lower case) in any case: "run.CSV" too.
 bool ends_with(const std::string& text, const std::string& suffix) {
-  return text.size() >= suffix.size() &&
-         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+  if (text.size() < suffix.size()) return false;
+  const std::size_t start = text.size() - suffix.size();
+  for (std::size_t i = 0; i < suffix.size(); ++i) {
+    if (std::tolower(static_cast<unsigned char>(text[start + i])) != suffix[i]) return false;
+  }
+  return true;
 }
 
 // Nine significant digits: nanometres on a metre-sized scene, and far below
