@@ -4,9 +4,11 @@
 # - Ninja, and a Python 3 that has Jinja2 (tools/find-python.sh);
 # - RelWithDebInfo with line tables only (-g1): enough for a backtrace's
 #   file:line, and 20-30% less compile time than full debug info;
-# - the reference and optimized GoogleTest suites left to the sanitized
-#   build (tools/test-sanitized.sh), which builds and runs them under ASan and
-#   UBSan, instead of compiling the same sources twice;
+# - the algebra's GoogleTest suites (reference and optimized),
+#   algebra_variants_agree and the engine's optimized suite left to the
+#   sanitized build (tools/test-sanitized.sh), which builds and runs them
+#   under ASan and UBSan, instead of compiling the same sources twice (the
+#   engine's reference and float suites stay here);
 # - unity builds (CMake's CMAKE_UNITY_BUILD, eight sources a batch): each
 #   engine variant and each test suite includes the same generated algebras
 #   in every file and compiles their inline kernels again in each; a batch
