@@ -26,14 +26,27 @@ std::runtime_error failure(const std::string& what, const std::string& path, int
 // The process id and a count keep two demos, or two outputs of one, from
 // sharing a temporary; the same directory keeps the final rename on one file
 // system. The temporary is made anew (O_EXCL): never a file already there.
-atomic_file::atomic_file(const std::string& path) : path_(path) {
+atomic_file::atomic_file(const std::string& path) : path_(path), target_(path) {
   std::error_code ignored;
   const std::filesystem::file_status status = std::filesystem::status(path, ignored);
   if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
     throw std::runtime_error("cannot write " + path + ": it exists and is not a regular file");
   }
+  // A symbolic link stays a link: the file it names is replaced (renaming
+  // over the link itself would put a plain file in its place).
+  // (Followed link by link: a link to a file not made yet leads to it too.)
+  std::filesystem::path followed = path;
+  for (int links = 0;
+       std::filesystem::is_symlink(std::filesystem::symlink_status(followed, ignored)); ++links) {
+    std::error_code error;
+    const std::filesystem::path next = std::filesystem::read_symlink(followed, error);
+    if (error) throw failure("follow the link", path, error.value());
+    if (links == 40) throw failure("follow the link", path, ELOOP);
+    followed = next.is_absolute() ? next : followed.parent_path() / next;
+  }
+  target_ = followed.string();
   static std::atomic<int> count{0};
-  temporary_ = path + ".tmp." + std::to_string(getpid()) + "." + std::to_string(count++);
+  temporary_ = target_ + ".tmp." + std::to_string(getpid()) + "." + std::to_string(count++);
   const int made = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
   if (made < 0) throw failure("create a file beside", path, errno);
   ::close(made);
@@ -64,7 +77,7 @@ void atomic_file::commit() {
   errno = 0;     // a reason left from earlier calls is not this one's
   out_.close();  // flushes; a failed write or flush sets failbit
   if (!out_) throw failure("write", path_, errno);
-  if (std::rename(temporary_.c_str(), path_.c_str()) != 0) throw failure("replace", path_, errno);
+  if (std::rename(temporary_.c_str(), target_.c_str()) != 0) throw failure("replace", path_, errno);
   committed_ = true;
 }
 

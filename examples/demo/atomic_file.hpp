@@ -15,7 +15,8 @@ class atomic_file {
   // Creates the temporary; throws std::runtime_error naming the target when
   // it cannot (the target's directory does not exist) or when the target is
   // there and not a regular file (a folder, a device: a rename would put the
-  // output in place of /dev/null). A file replaced keeps its permissions.
+  // output in place of /dev/null). A file replaced keeps its permissions,
+  // and a symbolic link is followed: the file it names is replaced.
   explicit atomic_file(const std::string& path);
   // Removes the temporary unless commit() succeeded.
   ~atomic_file();
@@ -37,7 +38,8 @@ class atomic_file {
   static bool same_target(const std::string& a, const std::string& b);
 
  private:
-  std::string path_;
+  std::string path_;    // as given: named in messages
+  std::string target_;  // the file replaced: path_, or where its link leads
   std::string temporary_;
   std::ofstream out_;
   bool committed_ = false;

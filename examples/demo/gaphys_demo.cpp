@@ -11,6 +11,7 @@
 #include <iomanip>
 #include <iostream>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -55,6 +56,7 @@ Progress goes to standard error: percent done and the time left (ETA).
                              default: fitted to the scene, 45 degrees)
   --list        print the scenes and exit
   --help, -h    print this help and exit
+Each option may be given once.
 )";
 
 // A bad command line: reported with the usage, exit code 2.
@@ -108,6 +110,7 @@ const gaphys::scenes::entry& find_scene(const std::string& name) {
 options parse(int argc, char** argv) {
   options o;
   std::string scene = "falling_spheres";
+  std::set<std::string> given;  // the run's options seen so far
   for (int i = 1; i < argc; ++i) {
     const std::string option = argv[i];
     if (option == "--help" || option == "-h") {
@@ -123,6 +126,8 @@ options parse(int argc, char** argv) {
         option != "--html") {
       throw usage_error("unknown option '" + option + "'");
     }
+    // "--steps 10 ... --steps 1000" is a slip more often than a wish.
+    if (!given.insert(option).second) throw usage_error(option + " is given twice");
     // "--out --steps 5" means a forgotten value, not a file named --steps.
     if (i + 1 == argc || std::string(argv[i + 1]).rfind("--", 0) == 0) {
       throw usage_error(option + " needs a value");
@@ -145,6 +150,10 @@ options parse(int argc, char** argv) {
     } else {
       o.html = value;
     }
+  }
+  // "--list --out scenes.json" would write nothing: say so.
+  if (o.list && !o.help && !given.empty()) {
+    throw usage_error("--list takes no other options, not " + *given.begin());
   }
   o.scene = &find_scene(scene);
   if (o.remove_at && *o.remove_at > o.steps) {
