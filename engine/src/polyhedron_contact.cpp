@@ -447,7 +447,15 @@ void clip_by_side(const buffer<clip_point>& polygon, const vec3& side_normal, re
 // Up to four of the candidates (indices into `chosen`), spread to keep the
 // support polygon wide: the deepest, the farthest from it, the one making
 // the largest triangle with those two, and the one adding the most area
-// outside that triangle. Returns how many.
+// outside that triangle. Each is chosen first among the candidates level
+// with the deepest (touching, or as deep as the deepest when none touch,
+// give or take a thousandth of their spread over the plane, which keeps
+// rounding from splitting a resting face), and among all only when none of
+// those serves. A wheel of many sides lying on its bottom edge, with the
+// wide margin of a rolling wheel, has corners a few centimetres up that are
+// farther from the deepest than the touching corner at the edge's other
+// end: chosen instead of it, they left the wheel on one corner, and it
+// rolled 2-3 cm deep at 60 Hz. Returns how many.
 int choose_four(const buffer<candidate>& c, const vec3& normal, std::array<int, 4>& chosen) {
   const int n = int(c.count);
   if (n <= 4) {
@@ -458,36 +466,55 @@ int choose_four(const buffer<candidate>& c, const vec3& normal, std::array<int, 
   for (int i = 1; i < n; ++i) {
     if (c[i].gap < c[first].gap) first = i;
   }
-  int second = -1;
-  real farthest = -1;
+  real spread = 0;
   for (int i = 0; i < n; ++i) {
+    const vec3 apart = c[i].position - c[first].position;
+    const vec3 beside = apart - dot(apart, normal) * normal;
+    spread = std::max(spread, dot(beside, beside));
+  }
+  const real level_gap = std::max(c[first].gap, real(0)) + real(1e-3) * std::sqrt(spread);
+  const auto level = [&](int i) { return c[i].gap <= level_gap; };
+  // The candidate with the largest positive score, the level ones tried
+  // first; -1 when no score is positive.
+  const auto best = [&](const auto& score) {
+    for (const bool level_only : {true, false}) {
+      int found = -1;
+      real most = 0;
+      for (int i = 0; i < n; ++i) {
+        if (level_only && !level(i)) continue;
+        const real value = score(i);
+        if (value > most) most = value, found = i;
+      }
+      if (found >= 0) return found;
+    }
+    return -1;
+  };
+  const int second = best([&](int i) {
     const vec3 d = c[i].position - c[first].position;
-    if (dot(d, d) > farthest) farthest = dot(d, d), second = i;
-  }
-  int third = -1;
-  real largest = -1, oriented = 0;
+    return dot(d, d);
+  });
+  chosen = {first, second, -1, -1};
+  if (second < 0) return 1;
   const vec3 base = c[second].position - c[first].position;
-  for (int i = 0; i < n; ++i) {
-    const real area = dot(cross(base, c[i].position - c[first].position), normal);
-    if (std::fabs(area) > largest) largest = std::fabs(area), oriented = area, third = i;
-  }
-  chosen = {first, second, third, -1};
-  if (!(largest > 0)) return 2;
+  const auto area = [&](int i) {
+    return dot(cross(base, c[i].position - c[first].position), normal);
+  };
+  const int third = best([&](int i) { return std::fabs(area(i)); });
+  if (third < 0) return 2;
+  chosen[2] = third;
   // Orient the triangle counter-clockwise about the normal; a point outside
   // edge (p, q) has a negative area with it.
-  const std::array<int, 3> corner = oriented > 0 ? std::array<int, 3>{first, second, third}
-                                                 : std::array<int, 3>{first, third, second};
-  int fourth = -1;
-  real added = 0;
-  for (int i = 0; i < n; ++i) {
+  const std::array<int, 3> corner = area(third) > 0 ? std::array<int, 3>{first, second, third}
+                                                    : std::array<int, 3>{first, third, second};
+  const int fourth = best([&](int i) {
     real outside = 0;
     for (int k = 0; k < 3; ++k) {
       const vec3& p = c[corner[k]].position;
       const vec3& q = c[corner[(k + 1) % 3]].position;
       outside = std::min(outside, dot(cross(q - p, c[i].position - p), normal));
     }
-    if (-outside > added) added = -outside, fourth = i;
-  }
+    return -outside;
+  });
   if (fourth < 0) return 3;
   chosen[3] = fourth;
   return 4;

@@ -355,6 +355,36 @@ TEST_F(ConvexContactHulls, octahedron_on_its_vertex) {
   }
 }
 
+// A wheel of 64 sides (a prism along y, radius 0.5 m, 1 m wide) lying on
+// the floor on the corners at its bottom, 1.5 mm deep, one end 1 mm lower,
+// with the wide margin of a wheel rolling at 60 Hz: of the corners
+// within it, the four kept hold both touching corners, one at each end. (The
+// corner farthest from the deepest was one 4 cm up at the other end, and the
+// wheel, left on one touching corner, sank 3 cm rolling at 60 Hz.)
+TEST_F(ConvexContactHulls, a_wheel_on_its_bottom_edge_keeps_a_corner_at_each_end) {
+  std::vector<vector> wheel;
+  const int sides = 64;
+  for (int i = 0; i < sides; ++i) {
+    const real angle = 2 * real(M_PI) * i / sides;
+    for (const real y : {real(-0.5), real(0.5)}) {
+      wheel.push_back({real(0.5) * std::cos(angle), y, real(0.5) * std::sin(angle)});
+    }
+  }
+  const real camber = 0.001;  // rad, about the rolling direction x
+  const placed_shape w = hull(wheel, {0.2, 0.1, real(0.5) - real(0.0015)}, about(e1, camber));
+  const contact_manifold m = collide(w, floor(), 0.06);
+  ASSERT_EQ(m.count, 4);
+  int touching_low_end = 0, touching_high_end = 0;
+  for (int i = 0; i < m.count; ++i) {
+    const contact_geometry& g = m.points[i].geometry;
+    if (g.depth <= 0) continue;
+    EXPECT_NEAR(x(g.point), 0.2, convex_closed_form_tolerance);
+    (y(g.point) < 0.1 ? touching_low_end : touching_high_end) += 1;
+  }
+  EXPECT_EQ(touching_low_end, 1);
+  EXPECT_EQ(touching_high_end, 1);
+}
+
 // A random hull sunk into the floor: its deepest contact is its lowest
 // point, whatever the hull.
 TEST_F(ConvexContactHulls, random_hull_on_plane_reaches_its_lowest_point) {
