@@ -125,6 +125,28 @@ real non_negative(detail::byte_reader& in, const char* what) {
   return x;
 }
 
+// A shape's size as the shape factories take it (validate.hpp,
+// smallest_length): a static sphere of radius 1e300 restored moved a ball
+// by 2e299 m, and a capsule of radius 1e-300 made every step throw.
+void require_shape_length(detail::byte_reader& in, std::size_t at, real value, const char* what) {
+  if (!(value >= detail::smallest_length && value <= detail::largest_length)) {
+    in.fail_at(at, what, " must be between ", detail::smallest_length, " and ",
+               detail::largest_length, " m (got ", value, ")");
+  }
+}
+
+// A speed the step can use, as body::set_velocity asks: its square finite.
+template <class Named>
+Named steppable_numbers(detail::byte_reader& in, const char* what) {
+  const Named value = in.numbers<Named>(what);
+  real squares = 0;
+  for (real x : value.c) squares += x * x;
+  if (!std::isfinite(squares)) {
+    in.fail(what, " must be finite, its square too (got ", e3ga::basic_mv<real>(value), ")");
+  }
+  return value;
+}
+
 template <class Named>
 Named finite_numbers(detail::byte_reader& in, const char* what) {
   const Named value = in.numbers<Named>(what);
@@ -374,8 +396,24 @@ void check_hull(detail::byte_reader& in, std::size_t at, const convex_polyhedron
     fail("a hull needs at least 4 vertices, 4 faces and 6 edges");
   }
   real radius = 0;
-  for (const vector& v : p.vertices) radius = std::max(radius, length(v));
+  vector low = p.vertices[0], high = p.vertices[0];
+  for (const vector& v : p.vertices) {
+    radius = std::max(radius, length(v));
+    for (int i = 0; i < 3; ++i) {
+      low.c[i] = std::min(low.c[i], v.c[i]);
+      high.c[i] = std::max(high.c[i], v.c[i]);
+    }
+  }
   if (!(radius > 0 && std::isfinite(radius))) fail("the hull's size must be finite and > 0");
+  // The sizes convex_polyhedron::hull accepts.
+  if (radius > detail::largest_length) {
+    fail("the hull's vertices must lie within ", detail::largest_length,
+         " m of its origin (got one ", radius, " m from it)");
+  }
+  const real span = std::max({high.c[0] - low.c[0], high.c[1] - low.c[1], high.c[2] - low.c[2]});
+  if (span < detail::smallest_length) {
+    fail("the hull must span at least ", detail::smallest_length, " m (got ", span, ")");
+  }
   if (!(std::fabs(p.bounding_radius - radius) <= detail::by_precision(1e-9, 1e-5) * radius)) {
     fail("the hull's bounding radius is ", p.bounding_radius, ", its farthest vertex ", radius);
   }
@@ -392,33 +430,6 @@ void check_hull(detail::byte_reader& in, std::size_t at, const convex_polyhedron
   }
   if (corners != p.vertex_indices.size()) {
     fail("the faces have ", corners, " corners, the vertex indices ", p.vertex_indices.size());
-  }
-  const real tolerance = detail::by_precision(1e-6, 1e-4) * radius;
-  for (std::size_t f = 0; f < p.faces.size(); ++f) {
-    const polyhedron_face& face = p.faces[f];
-    const vector& n = face.normal;
-    const auto corner = [&](std::uint32_t k) {
-      return p.vertices[p.vertex_indices[face.first + k % face.count]];
-    };
-    real turning = 0;
-    for (std::uint32_t k = 0; k < face.count; ++k) {
-      const vector v = corner(k);
-      const real height = dot(n, v) - face.offset;
-      if (!(std::fabs(height) <= tolerance)) fail("face ", f, ": corner ", k, " is off its plane");
-      const vector in_edge = minus(v, corner(k + face.count - 1));
-      const vector out_edge = minus(corner(k + 1), v);
-      const real left = dot(n, cross(in_edge, out_edge));
-      if (!(left > 0)) fail("face ", f, " is not strictly convex at corner ", k);
-      turning += std::atan2(left, dot(in_edge, out_edge));
-    }
-    // Left turns all the way round, once: a convex polygon (a star would
-    // wind twice).
-    if (!(std::fabs(turning - 2 * pi) < 1e-3)) fail("face ", f, " winds more than once");
-    for (const vector& v : p.vertices) {
-      if (!(dot(n, v) - face.offset <= tolerance)) {
-        fail("the hull is not convex: a vertex is in front of face ", f);
-      }
-    }
   }
   if (corners != 2 * std::uint64_t(p.edges.size())) {
     fail("the hull has ", p.edges.size(), " edges for ", corners, " face sides");
@@ -455,6 +466,35 @@ void check_hull(detail::byte_reader& in, std::size_t at, const convex_polyhedron
     const polyhedron_edge& edge = p.edges[e];
     claim(edge.tail, edge.head, edge.left, e);
     claim(edge.head, edge.tail, edge.right, e);
+  }
+  // The geometry last, as it costs O(F V): a hull of one face repeated
+  // 40,000 times took 12 s to be refused for its edges.
+  const real tolerance = detail::by_precision(1e-6, 1e-4) * radius;
+  for (std::size_t f = 0; f < p.faces.size(); ++f) {
+    const polyhedron_face& face = p.faces[f];
+    const vector& n = face.normal;
+    const auto corner = [&](std::uint32_t k) {
+      return p.vertices[p.vertex_indices[face.first + k % face.count]];
+    };
+    real turning = 0;
+    for (std::uint32_t k = 0; k < face.count; ++k) {
+      const vector v = corner(k);
+      const real height = dot(n, v) - face.offset;
+      if (!(std::fabs(height) <= tolerance)) fail("face ", f, ": corner ", k, " is off its plane");
+      const vector in_edge = minus(v, corner(k + face.count - 1));
+      const vector out_edge = minus(corner(k + 1), v);
+      const real left = dot(n, cross(in_edge, out_edge));
+      if (!(left > 0)) fail("face ", f, " is not strictly convex at corner ", k);
+      turning += std::atan2(left, dot(in_edge, out_edge));
+    }
+    // Left turns all the way round, once: a convex polygon (a star would
+    // wind twice).
+    if (!(std::fabs(turning - 2 * pi) < 1e-3)) fail("face ", f, " winds more than once");
+    for (const vector& v : p.vertices) {
+      if (!(dot(n, v) - face.offset <= tolerance)) {
+        fail("the hull is not convex: a vertex is in front of face ", f);
+      }
+    }
   }
 }
 
@@ -662,9 +702,8 @@ struct snapshot_access {
       const std::uint8_t kind = in.u8("polyhedron kind");
       if (kind == static_cast<std::uint8_t>(polyhedron_entry::box)) {
         const vector h = in.numbers<vector>("box half extents");
-        for (real x : h.c) {
-          if (!(std::isfinite(x) && x > 0)) in.fail("box half extents must be finite and > 0");
-        }
+        const std::size_t at = in.last_offset();
+        for (real x : h.c) require_shape_length(in, at, x, "a box's half extents");
         table.push_back({std::make_shared<const convex_polyhedron>(convex_polyhedron::box(h)),
                          polyhedron_entry::box, h});
       } else if (kind == static_cast<std::uint8_t>(polyhedron_entry::hull)) {
@@ -696,19 +735,23 @@ struct snapshot_access {
     const auto fail = [&](const auto&... parts) { in.fail_at(radius_at, parts...); };
     switch (s.kind_) {
       case shape_kind::sphere:
-        if (!(s.radius_ > 0)) fail("a sphere's radius must be > 0 (got ", s.radius_, ")");
+        require_shape_length(in, radius_at, s.radius_, "a sphere's radius");
         break;
       case shape_kind::plane:
         if (!(std::fabs(gaphys::length(s.normal_) - 1) <= unit_tolerance)) {
           fail("a plane's normal must be unit");
         }
+        if (!(std::fabs(s.offset_) <= detail::largest_length)) {
+          fail("a plane's offset must be at most ", detail::largest_length,
+               " m from the origin (got ", s.offset_, ")");
+        }
         break;
       case shape_kind::point:
         break;
       case shape_kind::capsule:
-        if (!(s.radius_ > 0 && s.half_height_ >= 0)) {
-          fail("a capsule needs a radius > 0 and a half height >= 0");
-        }
+        require_shape_length(in, radius_at, s.radius_, "a capsule's radius");
+        if (s.half_height_ != 0)
+          require_shape_length(in, radius_at, s.half_height_, "a capsule's half height");
         break;
       case shape_kind::box:
       case shape_kind::convex_hull: {
@@ -749,6 +792,10 @@ struct snapshot_access {
     b.shapes_.reserve(shape_count);
     for (std::size_t i = 0; i < shape_count; ++i) {
       const vector offset = finite_numbers<vector>(in, "shape offset");
+      if (!(length(offset) <= detail::largest_length)) {
+        in.fail_at(in.last_offset(), "a shape's offset must be at most ", detail::largest_length,
+                   " m from its body's origin (got ", e3ga::basic_mv<real>(offset), ")");
+      }
       const rotor attitude = read_unit_rotor(in, "shape attitude");
       const std::size_t shape_at = in.offset();
       b.shapes_.push_back(attached_shape{read_shape(in, table), offset, attitude});
@@ -772,9 +819,9 @@ struct snapshot_access {
     }
 
     b.position_ = finite_numbers<vector>(in, "position");
-    b.velocity_ = finite_numbers<vector>(in, "velocity");
+    b.velocity_ = steppable_numbers<vector>(in, "velocity");
     b.attitude_ = read_unit_rotor(in, "attitude");
-    b.angular_velocity_ = finite_numbers<bivector>(in, "angular velocity");
+    b.angular_velocity_ = steppable_numbers<bivector>(in, "angular velocity");
     if (b.is_static_ && !(is_zero(b.velocity_) && is_zero(b.angular_velocity_))) {
       in.fail("a static body must be at rest");
     }
@@ -1049,10 +1096,30 @@ std::string system_error_text(int error) {
 std::filesystem::path temporary_beside(const std::filesystem::path& target, int attempt) {
   static std::atomic<std::uint64_t> counter{0};
   const auto ticks = std::chrono::steady_clock::now().time_since_epoch().count();
-  std::filesystem::path name = target;
+  // The target's name cut to 100 bytes: a name of 255 bytes, the most most
+  // file systems take, left no room for the suffix.
+  std::string name = target.filename().string().substr(0, 100);
   name += ".tmp-" + std::to_string(ticks) + "-" + std::to_string(counter.fetch_add(1)) + "-" +
           std::to_string(attempt);
-  return name;
+  return target.parent_path() / name;
+}
+
+// The file a path names once its symbolic links are followed, link by link
+// (a link to a file not made yet leads to it too): saving replaces that
+// file and leaves the link a link.
+std::filesystem::path followed_links(const std::string& path) {
+  std::filesystem::path followed = path;
+  std::error_code error;
+  for (int links = 0; std::filesystem::is_symlink(std::filesystem::symlink_status(followed, error));
+       ++links) {
+    const std::filesystem::path next = std::filesystem::read_symlink(followed, error);
+    if (error) {
+      detail::reject("snapshot file ", path, ": cannot follow its link (", error.message(), ")");
+    }
+    if (links == 40) detail::reject("snapshot file ", path, ": too many levels of links");
+    followed = next.is_absolute() ? next : followed.parent_path() / next;
+  }
+  return followed;
 }
 
 // The file at `path`, opened for reading if it is a regular file: a device
@@ -1094,7 +1161,7 @@ std::FILE* open_regular_file(const std::string& path) {
 void world::save_snapshot_file(const std::string& path) const {
   if (path.empty()) detail::reject("snapshot file: the path is empty");
   const std::vector<std::uint8_t> bytes = save_snapshot();
-  const std::filesystem::path target(path);
+  const std::filesystem::path target = followed_links(path);
   // Only a regular file is replaced: the rename below would put the
   // snapshot in place of a device or a named pipe (as root, of /dev/full).
   std::error_code status_error;
@@ -1115,6 +1182,11 @@ void world::save_snapshot_file(const std::string& path) const {
     detail::reject("snapshot file ", path, ": cannot write beside it (", system_error_text(error),
                    ")");
   }
+  // A file replaced keeps its permissions (a private 600 save stays private).
+  std::error_code ignored;
+  if (std::filesystem::is_regular_file(status)) {
+    std::filesystem::permissions(temporary, status.permissions(), ignored);
+  }
   bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
   written = std::fflush(file) == 0 && written;
 #if defined(__unix__) || defined(__APPLE__)
@@ -1124,7 +1196,6 @@ void world::save_snapshot_file(const std::string& path) const {
 #endif
   error = errno;
   written = std::fclose(file) == 0 && written;
-  std::error_code ignored;
   if (!written) {
     std::filesystem::remove(temporary, ignored);
     detail::reject("snapshot file ", path, ": cannot write (", system_error_text(error), ")");

@@ -83,6 +83,22 @@ std::size_t find_reals(const bytes& b, const std::vector<real>& values) {
   return again == b.end() ? std::size_t(first - b.begin()) : b.size();
 }
 
+// Every place the real `from` is written, made `to` (a sphere's radius and
+// its body's bounding radius, a box's half extents in its polyhedron and
+// its shape). Returns how many.
+int replace_reals(bytes& b, real from, real to) {
+  bytes pattern;
+  for (std::size_t i = 0; i < sizeof(real); ++i)
+    pattern.push_back(std::uint8_t(bits_of(from) >> (8 * i)));
+  int count = 0;
+  for (auto at = std::search(b.begin(), b.end(), pattern.begin(), pattern.end()); at != b.end();
+       at = std::search(at + 1, b.end(), pattern.begin(), pattern.end())) {
+    put_real(b, std::size_t(at - b.begin()), to);
+    ++count;
+  }
+  return count;
+}
+
 bool same_polyhedron(const convex_polyhedron& a, const convex_polyhedron& b) {
   const auto same = [](const vector& u, const vector& v) {
     return bits_of(u.c[0]) == bits_of(v.c[0]) && bits_of(u.c[1]) == bits_of(v.c[1]) &&
@@ -401,6 +417,41 @@ TEST_F(snapshot_test, files_round_trip_and_their_errors_name_the_path) {
   fs::remove_all(folder);
 }
 
+// Saving replaces a file as an editor would: a private file stays private
+// (a 600 file became 644), a symbolic link stays a link and the file it
+// names is replaced (the link became a plain file), and a name of 255 bytes
+// takes its temporary too (its name plus a suffix was too long).
+TEST_F(snapshot_test, a_saved_file_keeps_its_permissions_its_link_and_a_long_name) {
+  namespace fs = std::filesystem;
+  const fs::path folder = fs::temp_directory_path() /
+                          ("gaphys_snapshot_test_" + std::to_string(std::random_device{}()));
+  fs::create_directories(folder / "saves");
+  world w = make_world();
+  mixed(w);
+  simulate(w, 5);
+  const fs::path file = folder / "saves" / "game.snapshot";
+  std::ofstream(file) << "old";
+  fs::permissions(file, fs::perms::owner_read | fs::perms::owner_write);
+  const fs::path link = folder / "latest.snapshot";
+  fs::create_symlink(fs::path("saves") / "game.snapshot", link);
+  w.save_snapshot_file(link.string());
+  EXPECT_TRUE(fs::is_symlink(link));
+  std::ifstream in(file, std::ios::binary);
+  EXPECT_EQ(bytes(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()),
+            w.save_snapshot());
+  EXPECT_EQ(fs::status(file).permissions() & fs::perms::all,
+            fs::perms::owner_read | fs::perms::owner_write);
+  const fs::path long_name = folder / (std::string(246, 'n') + ".snapshot");
+  w.save_snapshot_file(long_name.string());
+  world restored = busy_world();
+  restored.restore_snapshot_file(long_name.string());
+  EXPECT_EQ(restored.state_hash(), w.state_hash());
+  // Nothing else left beside them.
+  EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()), 3);
+  EXPECT_EQ(std::distance(fs::directory_iterator(folder / "saves"), fs::directory_iterator()), 1);
+  fs::remove_all(folder);
+}
+
 class corrupt_snapshot_test : public snapshot_test {
  protected:
   // A small world to save, and a target world that must come through every
@@ -501,7 +552,25 @@ TEST_F(corrupt_snapshot_test, resealed_bad_values_are_rejected_by_name) {
   // bounding radius has the same bits, but not these after it.
   const std::size_t radius = find_reals(good, {0.2718281828, 0, 0, 0, 0});
   ASSERT_LT(radius, good.size());
-  EXPECT_TRUE(rejected(edited([&](bytes& b) { put_real(b, radius, -0.5); }), "radius must be > 0"));
+  EXPECT_TRUE(rejected(edited([&](bytes& b) { put_real(b, radius, -0.5); }),
+                       "a sphere's radius must be between"));
+  // Sizes and speeds the API refuses (a static sphere of radius 1e300
+  // restored moved a ball by 2e299 m; a capsule of radius 1e-300 made every
+  // step throw; a speed whose square overflows, every step too).
+  const real beyond = sizeof(real) == 8 ? real(1e300) : real(1e30);
+  const real below = sizeof(real) == 8 ? real(1e-300) : real(1e-30);
+  for (const real size : {beyond, below}) {
+    EXPECT_TRUE(
+        rejected(edited([&](bytes& b) { EXPECT_GE(replace_reals(b, 0.2718281828, size), 2); }),
+                 "a sphere's radius must be between"));
+    EXPECT_TRUE(rejected(edited([&](bytes& b) { EXPECT_GE(replace_reals(b, 0.3, size), 6); }),
+                         "polyhedron 1: a box's half extents must be between"));
+  }
+  const real falling = source.bodies()[1].velocity().e3();
+  const std::size_t velocity = find_reals(good, {0, 0, falling});
+  ASSERT_LT(velocity, good.size());
+  EXPECT_TRUE(rejected(edited([&](bytes& b) { put_real(b, velocity, beyond); }),
+                       "velocity must be finite, its square too"));
   EXPECT_TRUE(rejected(edited([&](bytes& b) { b[radius - 1] = 9; }), "shape kind is 9"));
   const rotor& turn = source.bodies()[2].attitude();
   const std::size_t attitude = find_reals(good, {turn.c[0], turn.c[1], turn.c[2], turn.c[3]});
@@ -543,6 +612,14 @@ TEST_F(corrupt_snapshot_test, resealed_bad_values_are_rejected_by_name) {
   const real enormous = sizeof(real) == 8 ? real(1e306) : real(1e37);
   EXPECT_TRUE(
       rejected(edited([&](bytes& b) { put_real(b, resting, enormous); }), "is too large to step"));
+  // A vertex moved far out: beyond the sizes hull() takes.
+  const real far = sizeof(real) == 8 ? real(1e100) : real(1e15);
+  EXPECT_TRUE(rejected(edited([&](bytes& b) {
+                         for (int k = 0; k < 3; ++k) {
+                           put_real(b, first_vertex + k * sizeof(real), far);
+                         }
+                       }),
+                       "polyhedron 0: the hull's vertices must lie within"));
   // A vertex moved out: the hull is no longer convex.
   EXPECT_TRUE(
       rejected(edited([&](bytes& b) { put_real(b, first_vertex, real(1.01) * corner.c[0]); }),

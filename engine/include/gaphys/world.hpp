@@ -213,9 +213,10 @@ class world {
   std::vector<std::uint8_t> save_snapshot() const;
   void restore_snapshot(const std::vector<std::uint8_t>& bytes);
   // The same through a file. Saving writes a temporary file in the same
-  // folder and renames it over `path`, so a crash never leaves half a
-  // snapshot there; errors (a folder that does not exist, a file that
-  // cannot be read) are invalid_input naming the path.
+  // folder and renames it over `path` (over the file a symbolic link
+  // names, keeping a replaced file's permissions), so a crash never leaves
+  // half a snapshot there; errors (a folder that does not exist, a file
+  // that cannot be read) are invalid_input naming the path.
   void save_snapshot_file(const std::string& path) const;
   void restore_snapshot_file(const std::string& path);
 
