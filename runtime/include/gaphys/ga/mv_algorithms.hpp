@@ -370,8 +370,21 @@ MV log_two_planes(const MV& r, const MV& b, const MV& q) {
   const T c2_squared = c * c - l1, c1_squared = c * c - l2;
   if (!(c2_squared >= -tolerance(T(1)) && c1_squared >= -tolerance(T(1))))
     throw std::domain_error(unsupported);
-  const T c2 = std::sqrt(std::max(c2_squared, T(0)));
-  const T c1 = std::sqrt(std::max(c1_squared, T(0))) * (c < 0 ? T(-1) : T(1));
+  // The larger cosine from its square, the smaller as c over it: the
+  // smaller square is a difference of nearly equal numbers when the other
+  // plane is a large boost (c^2 - l1 = cos^2 t, with c^2 and l1 near
+  // cosh^2 phi), and a boost of rapidity 6 times a rotation came back too
+  // inexact to pass the check below.
+  const T sign = c < 0 ? T(-1) : T(1);
+  T c1 = 0, c2 = 0;
+  if (c2_squared >= c1_squared) {
+    c2 = std::sqrt(std::max(c2_squared, T(0)));
+    c1 = c2 > 0 ? c / c2 : std::sqrt(std::max(c1_squared, T(0))) * sign;
+  } else {
+    const T c1_size = std::sqrt(c1_squared);
+    c1 = c1_size * sign;
+    c2 = std::abs(c) / c1_size;
+  }
   // P1 P2 = q, and P_i^2 = c_i^2 - 1: P1 = q P2 / P2^2, P2 = P1 q / P1^2.
   MV p1, p2;
   if (std::min(c2, std::abs(c1)) >= T(0.25)) {  // both from b
