@@ -92,19 +92,17 @@ void query_grid::build(const std::vector<bound>& bounds) {
     cells = cells > (std::size_t{1} << 40) / span ? (std::size_t{1} << 40) : cells * span;
   }
   dense_ = cells <= 8 * entries_.size() + 4096;
-  const auto decode = [](key k, int axis) {
-    return static_cast<std::int64_t>((k >> (21 * axis)) & 0x1fffff) - coordinate_limit;
-  };
   if (dense_) {
     starts_.assign(cells + 1, 0);
     for (const auto& [k, shape] : entries_) {
-      ++starts_[dense_index(decode(k, 0), decode(k, 1), decode(k, 2)) + 1];
+      ++starts_[dense_index(coordinate_of(k, 0), coordinate_of(k, 1), coordinate_of(k, 2)) + 1];
     }
     for (std::size_t i = 0; i < cells; ++i) starts_[i + 1] += starts_[i];
     fill_.assign(starts_.begin(), starts_.end() - 1);
     shapes_.resize(entries_.size());
     for (const auto& [k, shape] : entries_) {
-      shapes_[fill_[dense_index(decode(k, 0), decode(k, 1), decode(k, 2))]++] = shape;
+      shapes_[fill_[dense_index(coordinate_of(k, 0), coordinate_of(k, 1), coordinate_of(k, 2))]++] =
+          shape;
     }
     return;
   }

@@ -58,6 +58,10 @@ class query_grid {
   using key = std::uint64_t;
   static constexpr std::int64_t coordinate_limit = (std::int64_t{1} << 20) - 1;
   static key key_of(std::int64_t x, std::int64_t y, std::int64_t z);
+  // key_of's inverse, one axis (0: x, 1: y, 2: z) at a time.
+  static std::int64_t coordinate_of(key k, int axis) {
+    return static_cast<std::int64_t>((k >> (21 * axis)) & 0x1fffff) - coordinate_limit;
+  }
   std::optional<cell_shapes> cell(std::int64_t x, std::int64_t y, std::int64_t z) const;
   std::size_t dense_index(std::int64_t x, std::int64_t y, std::int64_t z) const;
 

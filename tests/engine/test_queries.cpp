@@ -354,6 +354,32 @@ TEST_F(query_test, a_sparse_grid_finds_the_hits_that_testing_every_shape_finds) 
   EXPECT_EQ(w.overlap_sphere(w.bodies()[far].position(), 0.01), std::vector<body_id>{far});
 }
 
+// Overlaps far larger than the cells of a sparse grid: tiny balls strewn
+// over 100 m (cells of 2 mm) and one of 1 m. Each query finds what testing
+// every shape finds. (Every cell of the query's bounds was looked up: a
+// 2 m sphere took a minute, 10^10 lookups.)
+TEST_F(query_test, a_large_overlap_in_a_sparse_grid_finds_every_shape_it_overlaps) {
+  world w = make_world();
+  for (int i = 0; i < 200; ++i) add_static(w, shape::sphere(0.001), random_point(50));
+  add_static(w, shape::sphere(1), vector{0.5, 0, 0});
+  for (int i = 0; i < 200; ++i) add_static(w, shape::sphere(0.001), random_point(3));
+  for (const real size : {real(2), real(5), real(40)}) {
+    std::vector<body_id> in_sphere, in_box;
+    for (std::size_t i = 0; i < w.body_count(); ++i) {
+      const vector c = w.bodies()[i].position();
+      const real r = w.bodies()[i].shape()->bounding_radius();
+      if (length(c) <= size + r) in_sphere.push_back(w.id_of(i));
+      // The ball's centre from the cube [-size, size]^3.
+      const vector outside{std::max(std::fabs(c.e1()) - size, real(0)),
+                           std::max(std::fabs(c.e2()) - size, real(0)),
+                           std::max(std::fabs(c.e3()) - size, real(0))};
+      if (length(outside) <= r) in_box.push_back(w.id_of(i));
+    }
+    EXPECT_EQ(w.overlap_sphere(vector{}, size), in_sphere) << size;
+    EXPECT_EQ(w.overlap_box(vector{}, vector{size, size, size}, rotor{1, 0, 0, 0}), in_box) << size;
+  }
+}
+
 TEST_F(query_test, a_query_sees_the_bodies_where_they_are_now) {
   world w = make_world();
   const body_id ball = add_sphere(w, vector{0, 0, 5}, 0.5);
