@@ -792,7 +792,7 @@ struct snapshot_access {
     b.shapes_.reserve(shape_count);
     for (std::size_t i = 0; i < shape_count; ++i) {
       const vector offset = finite_numbers<vector>(in, "shape offset");
-      if (!(length(offset) <= detail::largest_length)) {
+      if (!(e3ga::norm(offset) <= detail::largest_length)) {
         in.fail_at(in.last_offset(), "a shape's offset must be at most ", detail::largest_length,
                    " m from its body's origin (got ", e3ga::basic_mv<real>(offset), ")");
       }
