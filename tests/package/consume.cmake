@@ -7,7 +7,8 @@
 # the new algebra by one build (spec_edit.cmake).
 # The demo is built without three.js, as a copy outside the gaphys tree would
 # be: it must build, and its --html must say how to get three.js.
-# Inputs: BUILD_DIR (gaphys's build), SOURCE_DIR, WORK_DIR, PYTHON, GENERATOR.
+# Inputs: BUILD_DIR (gaphys's build), SOURCE_DIR, WORK_DIR, PYTHON, GENERATOR, GAPHYS_OTHER_REAL
+# (the scalar the package was not built with).
 include("${CMAKE_CURRENT_LIST_DIR}/no_jinja2_python.cmake")
 file(REMOVE_RECURSE "${WORK_DIR}")
 function(run)
@@ -63,4 +64,19 @@ endif()
 file(GLOB temporaries "${WORK_DIR}/*.tmp.*")
 if(temporaries)
   message(FATAL_ERROR "the demo left temporary files: ${temporaries}")
+endif()
+
+# An app asking for the other scalar than the package's does not find it, and
+# is told why (it was given a double engine unasked).
+execute_process(COMMAND "${CMAKE_COMMAND}" -E env "PATH=${no_jinja2}:$ENV{PATH}"
+                "${CMAKE_COMMAND}" -S "${SOURCE_DIR}/examples/demo" -B "${WORK_DIR}/demo_other_real"
+                -G "${GENERATOR}" "-DCMAKE_PREFIX_PATH=${WORK_DIR}/install"
+                "-DGAPHYS_DEMO_THREE_JS=" "-DGAPHYS_REAL=${GAPHYS_OTHER_REAL}"
+                RESULT_VARIABLE code OUTPUT_VARIABLE output ERROR_VARIABLE errors)
+string(REGEX REPLACE "[ \n]+" " " said "${output}${errors}")  # as CMake wraps it
+if(code EQUAL 0 OR NOT said MATCHES
+   "was built with GAPHYS_REAL=[a-z]+, and GAPHYS_REAL is ${GAPHYS_OTHER_REAL} here")
+  message(FATAL_ERROR "the demo configured with GAPHYS_REAL=${GAPHYS_OTHER_REAL} against the "
+                      "package: exit code ${code}, expected a failure naming both scalars:\n"
+                      "${output}${errors}")
 endif()
