@@ -92,7 +92,10 @@ struct step_timings {
   double response = 0;      // impulses and position correction
   double events = 0;        // sensor overlaps named by id (contact events: world::events())
   std::size_t candidate_pairs = 0;
-  int threads = 0;  // the threads the step ran on (for world_settings::threads 0, as chosen)
+  // The threads the step asked for (for world_settings::threads 0, as
+  // chosen); inside an application's parallel region without nesting,
+  // OpenMP runs it on one.
+  int threads = 0;
 };
 
 class contact_solver;
@@ -121,7 +124,10 @@ class world {
   // never equal it. Events never name a dead id: the last step's events of
   // the body are dropped, and its touches end with no `ended` event (one
   // counting a sensor's or a plate's touches subtracts the removed body's
-  // itself). Throws invalid_input for an id of no body.
+  // itself). Throws invalid_input for an id of no body. It edits
+  // contacts(), events() and sensor_overlaps() in place: to remove the
+  // bodies a list names, copy the list first (a loop over events().began
+  // that removed body_b skipped every other event).
   void remove_body(body_id id);
   // The body of a live id; invalid_input for a removed or unknown one. A
   // reference stays valid until the next create_body or remove_body.
