@@ -131,6 +131,9 @@ class world {
   void remove_body(body_id id);
   // The body of a live id; invalid_input for a removed or unknown one. A
   // reference stays valid until the next create_body or remove_body.
+  // Change a body through its setters: a whole body assigned over it
+  // (w.at(id) = other) leaves the world's sleeping contacts naming the old
+  // body's shapes, and a snapshot of that world cannot be restored.
   body& at(body_id id);
   const body& at(body_id id) const;
   bool contains(body_id id) const;
