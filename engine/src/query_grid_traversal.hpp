@@ -85,14 +85,13 @@ void query_grid::within(const vector& low, const vector& high, Visit&& visit) co
     real probes = 1;
     for (int axis = 0; axis < 3; ++axis) probes *= static_cast<real>(to[axis] - from[axis] + 1);
     if (probes > static_cast<real>(cells_.size())) {
-      for (std::size_t begin = 0, end = 0; begin < entries_.size(); begin = end) {
-        while (end < entries_.size() && entries_[end].first == entries_[begin].first) ++end;
+      for (const auto& [k, run] : cells_) {
         bool inside = true;
         for (int axis = 0; axis < 3; ++axis) {
-          const std::int64_t at = coordinate_of(entries_[begin].first, axis);
+          const std::int64_t at = coordinate_of(k, axis);
           inside = inside && at >= from[axis] && at <= to[axis];
         }
-        if (inside) visit(cell_shapes{shapes_.data() + begin, shapes_.data() + end});
+        if (inside) visit(cell_shapes{shapes_.data() + run.first, shapes_.data() + run.second});
       }
       return;
     }
