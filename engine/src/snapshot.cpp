@@ -139,9 +139,7 @@ void require_shape_length(detail::byte_reader& in, std::size_t at, real value, c
 template <class Named>
 Named steppable_numbers(detail::byte_reader& in, const char* what) {
   const Named value = in.numbers<Named>(what);
-  real squares = 0;
-  for (real x : value.c) squares += x * x;
-  if (!std::isfinite(squares)) {
+  if (!std::isfinite(e3ga::norm2(value))) {
     in.fail(what, " must be finite, its square too (got ", e3ga::basic_mv<real>(value), ")");
   }
   return value;
