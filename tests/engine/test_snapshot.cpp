@@ -68,15 +68,21 @@ void put_real(bytes& b, std::size_t at, real x) {
   for (std::size_t i = 0; i < sizeof(real); ++i) b[at + i] = std::uint8_t(bits_of(x) >> (8 * i));
 }
 
-// Where the reals appear in a row in the snapshot, as it writes them
-// (little-endian bit patterns); the test needs them to be there once.
-std::size_t find_reals(const bytes& b, const std::vector<real>& values) {
+// The reals' bytes as the snapshot writes them (little-endian bit patterns).
+bytes pattern_of(const std::vector<real>& values) {
   bytes pattern;
   for (real x : values) {
     for (std::size_t i = 0; i < sizeof(real); ++i) {
       pattern.push_back(std::uint8_t(bits_of(x) >> (8 * i)));
     }
   }
+  return pattern;
+}
+
+// Where the reals appear in a row in the snapshot; the test needs them to
+// be there once.
+std::size_t find_reals(const bytes& b, const std::vector<real>& values) {
+  const bytes pattern = pattern_of(values);
   const auto first = std::search(b.begin(), b.end(), pattern.begin(), pattern.end());
   if (first == b.end()) return b.size();
   const auto again = std::search(first + 1, b.end(), pattern.begin(), pattern.end());
@@ -87,9 +93,7 @@ std::size_t find_reals(const bytes& b, const std::vector<real>& values) {
 // its body's bounding radius, a box's half extents in its polyhedron and
 // its shape). Returns how many.
 int replace_reals(bytes& b, real from, real to) {
-  bytes pattern;
-  for (std::size_t i = 0; i < sizeof(real); ++i)
-    pattern.push_back(std::uint8_t(bits_of(from) >> (8 * i)));
+  const bytes pattern = pattern_of({from});
   int count = 0;
   for (auto at = std::search(b.begin(), b.end(), pattern.begin(), pattern.end()); at != b.end();
        at = std::search(at + 1, b.end(), pattern.begin(), pattern.end())) {
